@@ -1,0 +1,49 @@
+#include "camera.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "rt/errors.hpp"
+
+namespace rt {
+
+PinholeCamera make_pinhole_camera(const CameraDesc& desc, int width, int height) {
+    if (width <= 0 || height <= 0) {
+        throw InputError("camera: image size must be positive, got " + std::to_string(width) + "x" +
+                         std::to_string(height));
+    }
+    if (!(desc.vfov > 0 && desc.vfov < 180)) {
+        throw InputError("camera.vfov: must be in (0, 180) degrees, got " + std::to_string(desc.vfov));
+    }
+    const Vec3d view = Vec3d(desc.at) - Vec3d(desc.from);
+    if (glm::length(view) == 0) throw InputError("camera.at: must differ from camera.from");
+    if (parallel(view, Vec3d(desc.up))) {
+        throw InputError("camera.up: must not be parallel to the view direction (at - from)");
+    }
+    const Vec3d w = glm::normalize(view);
+    const Vec3d u = glm::normalize(glm::cross(w, Vec3d(desc.up)));
+    const Vec3d v = glm::cross(u, w);
+    const double half_height = std::tan(double(desc.vfov) * std::numbers::pi / 360.0);
+    return PinholeCamera{desc.from,
+                         Vec3(w),
+                         Vec3(u),
+                         Vec3(v),
+                         Real(half_height * double(width) / double(height)),
+                         Real(half_height),
+                         width,
+                         height};
+}
+
+Vec3 film_direction(const PinholeCamera& c, Real px, Real py) {
+    const Real a = (Real(2) * px / Real(c.width) - Real(1)) * c.half_width;
+    const Real b = (Real(1) - Real(2) * py / Real(c.height)) * c.half_height;
+    return c.forward + a * c.right + b * c.up;
+}
+
+Ray camera_ray(const PinholeCamera& camera, Real px, Real py) {
+    // EXERCISE(ch01.camera_ray)
+    return Ray{camera.eye, glm::normalize(film_direction(camera, px, py))};
+    // END EXERCISE
+}
+
+}  // namespace rt

@@ -1,0 +1,24 @@
+// Where inside a pixel each sample's ray passes: the centre, a uniformly jittered point, or a jittered
+// point in its own stratum. Pixel (x, y) covers film points [x, x+1) × [y, y+1).
+#pragma once
+
+#include <string_view>
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+enum class PixelSampler { kCenter, kUniform, kStratified };
+
+// "center", "uniform" or "stratified".
+std::string_view to_string(PixelSampler sampler);
+// The sampler of that name; throws InputError for any other name.
+PixelSampler pixel_sampler_from_string(std::string_view name);
+
+// The film point of sample `index` of `count` in pixel (x, y), from a uniform random pair u in [0, 1)².
+// center: (x + ½, y + ½). uniform: (x + u₁, y + u₂). stratified: the pixel is cut into n×n strata,
+// n = ⌊√count⌋; sample i < n² lies in stratum (i mod n, ⌊i / n⌋) at (x + (i mod n + u₁)/n, y + (⌊i/n⌋ + u₂)/n);
+// samples past n² are uniform.
+Vec2 pixel_sample_point(PixelSampler sampler, int x, int y, int index, int count, Vec2 u);
+
+}  // namespace rt

@@ -1,0 +1,60 @@
+// What every chapter executable does around its render: the core flags of DESIGN.md, loading and checking
+// the scene, the output files, the summary, and exit statuses (0 done, 2 bad usage or input, 1 failure,
+// 130 interrupted with a partial image saved).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rt/effect_set.hpp"
+#include "rt/image.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/scene.hpp"
+
+namespace rt {
+
+struct CoreOptions {
+    std::string scene;  // empty: the chapter's default scene
+    std::string out;    // empty: <executable>.png in the current folder
+    std::optional<int> width, height, spp;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    std::string reference;
+    bool quiet = false;
+};
+
+struct ChapterInfo {
+    const char* executable;     // "ch01_ray_generation"
+    const char* description;    // one line for --help
+    const char* default_scene;  // file name in assets/scenes
+    EffectSet supported;
+};
+
+// What a chapter's render is given: the scene, the settings from it and the flags, and what to simulate.
+struct RunContext {
+    const Scene& scene;
+    RenderSettings settings;
+    EffectSet simulated;
+};
+
+// What it gives back: the render, notes for the summary ("dielectric material 'glass': ..."), and an exact
+// image when the chapter knows one analytically.
+struct ChapterRun {
+    RenderResult result;
+    std::vector<std::string> notes;
+    std::optional<Image> exact;
+};
+
+using ChapterFlags = std::function<void(CLI::App&)>;
+// Returns nothing when a demo mode printed its own report instead of rendering an image.
+using ChapterRender = std::function<std::optional<ChapterRun>(const RunContext&)>;
+
+int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
+                const ChapterRender& render);
+
+}  // namespace rt

@@ -1,0 +1,43 @@
+#include "rt/effects.hpp"
+
+#include <array>
+
+namespace rt {
+namespace {
+
+bool reflects_diffusely(const Material& m) {
+    const bool lobe = m.type == MaterialType::kDiffuse || m.type == MaterialType::kGlossy ||
+                      m.type == MaterialType::kRetroreflective;
+    return lobe && (m.albedo.r > 0 || m.albedo.g > 0 || m.albedo.b > 0);
+}
+
+}  // namespace
+
+EffectSet needed(const Scene& scene) {
+    EffectSet content{Effect::kCameraRays};
+    const bool lights = !scene.point_lights.empty() || scene.environment || scene.has_area_lights();
+    bool diffuse = false;
+    for (const Shape& shape : scene.shapes) {
+        const Material& m = scene.material_of(shape);
+        diffuse = diffuse || reflects_diffusely(m);
+        if (m.type == MaterialType::kMirror) content.insert(Effect::kReflection);
+        if (m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective) content.insert(Effect::kGlossy);
+        if (m.type == MaterialType::kDielectric) {
+            content.insert(Effect::kRefraction);
+            content.insert(Effect::kReflection);
+        }
+    }
+    if (lights && diffuse) {
+        content.insert(Effect::kShadows);
+        content.insert(Effect::kDirect);
+        content.insert(Effect::kIndirect);
+    }
+    return scene.effects ? content & *scene.effects : content;
+}
+
+std::string chapter_that_adds(Effect effect) {
+    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05", "04", "05", "07"};
+    return std::string("chapter ") + kChapter[std::size_t(effect)];
+}
+
+}  // namespace rt

@@ -1,0 +1,19 @@
+// Only the effects a scene calls for are simulated: needed(scene) ∩ supported(chapter).
+#pragma once
+
+#include <string>
+
+#include "rt/effect_set.hpp"
+#include "rt/scene.hpp"
+
+namespace rt {
+
+// What the scene's content calls for (lights → shadows and direct light; mirrors → reflection; glossy or
+// retro-reflective materials → glossy; lights and diffusely reflecting surfaces → indirect; dielectrics →
+// refraction, and reflection), narrowed by the scene's "effects" list when it has one.
+EffectSet needed(const Scene& scene);
+
+// The course chapter that first simulates `effect` ("chapter 07"), for messages about skipped effects.
+std::string chapter_that_adds(Effect effect);
+
+}  // namespace rt

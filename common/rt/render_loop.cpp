@@ -1,0 +1,133 @@
+#include "rt/render_loop.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+#include <vector>
+
+#include "rt/interrupt.hpp"
+
+namespace rt::detail {
+namespace {
+
+constexpr int kTileSize = 16;
+constexpr int kPasses = 8;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+class Progress {
+public:
+    explicit Progress(ProgressStyle style) : style_(style) {}
+
+    void show(double fraction, double elapsed) {
+        const double remaining = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
+        if (style_ == ProgressStyle::kBar) {
+            constexpr int kWidth = 30;
+            const int filled = std::clamp(int(fraction * kWidth), 0, kWidth);
+            std::fprintf(stderr, "\r[%.*s%*s] %3d%%  elapsed %.1fs  remaining %.1fs ", filled,
+                         "##############################", kWidth - filled, "", int(fraction * 100), elapsed,
+                         remaining);
+            std::fflush(stderr);
+        } else if (style_ == ProgressStyle::kLines) {
+            const int decile = int(fraction * 10);
+            if (decile > last_decile_ && decile < 10) {
+                std::fprintf(stderr, "progress: %d%% (elapsed %.1fs, remaining %.1fs)\n", decile * 10, elapsed,
+                             remaining);
+                last_decile_ = decile;
+            }
+        }
+    }
+    void clear() {
+        if (style_ == ProgressStyle::kBar) std::fprintf(stderr, "\r%*s\r", 72, "");
+    }
+    bool animated() const { return style_ == ProgressStyle::kBar; }
+
+private:
+    ProgressStyle style_;
+    int last_decile_ = 0;
+};
+
+}  // namespace
+
+RenderResult render_tiles(const RenderSettings& settings, Image& sums, const TileFunction& render_tile) {
+    const int spp = std::max(settings.samples_per_pixel, 1);
+    const int threads =
+        settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    ProgressStyle style = settings.progress;
+    if (style == ProgressStyle::kAuto) style = isatty(STDERR_FILENO) ? ProgressStyle::kBar : ProgressStyle::kLines;
+    Progress progress(style);
+
+    const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
+    const int tiles_y = (settings.height + kTileSize - 1) / kTileSize;
+    const int tile_count = tiles_x * tiles_y;
+    const double total_samples = double(settings.width) * double(settings.height) * spp;
+    auto tile_bounds = [&](int tile) {
+        const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+        return std::array<int, 4>{x0, y0, std::min(x0 + kTileSize, settings.width),
+                                  std::min(y0 + kTileSize, settings.height)};
+    };
+
+    std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
+    std::vector<int> tile_samples(static_cast<std::size_t>(tile_count), 0);  // samples each pixel of a tile has
+    std::atomic<std::uint64_t> samples_done{0};
+    const auto start = Clock::now();
+
+    const int per_pass = std::max(1, (spp + kPasses - 1) / kPasses);
+    for (int first = 0; first < spp && !interrupt_requested(); first += per_pass) {
+        const int end = std::min(spp, first + per_pass);
+        std::atomic<int> next_tile{0};
+        std::atomic<int> workers_running{threads};
+        auto worker = [&](int thread_index) {
+            RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
+            for (int tile = next_tile++; tile < tile_count && !interrupt_requested(); tile = next_tile++) {
+                const auto [x0, y0, x1, y1] = tile_bounds(tile);
+                render_tile(x0, y0, x1, y1, first, end, rays);
+                tile_samples[std::size_t(tile)] = end;
+                samples_done += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(end - first);
+            }
+            --workers_running;
+        };
+        std::vector<std::thread> pool;
+        for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+        if (progress.animated()) {
+            std::thread own(worker, 0);
+            while (workers_running.load() > 0) {
+                progress.show(double(samples_done.load()) / total_samples, seconds_since(start));
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            }
+            own.join();
+        } else {
+            worker(0);
+        }
+        for (auto& t : pool) t.join();
+        progress.show(double(samples_done.load()) / total_samples, seconds_since(start));
+    }
+    progress.clear();
+
+    RenderResult result;
+    result.seconds = seconds_since(start);
+    for (const RayCounts& r : rays_per_thread) result.rays += r;
+    // Each pixel is the mean of the samples it has; after an interrupt, tiles may differ by one pass.
+    result.samples_per_pixel = spp;
+    for (int tile = 0; tile < tile_count; ++tile) {
+        const int n = tile_samples[std::size_t(tile)];
+        result.samples_per_pixel = std::min(result.samples_per_pixel, n);
+        const auto [x0, y0, x1, y1] = tile_bounds(tile);
+        const Real inverse = n > 0 ? Real(1) / Real(n) : Real(0);
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) sums.at(x, y) *= inverse;
+    }
+    result.samples = samples_done.load();
+    result.interrupted = result.samples_per_pixel < spp;
+    result.image = std::move(sums);
+    return result;
+}
+
+}  // namespace rt::detail

@@ -1,0 +1,112 @@
+// The scene description: plain data, as read from a scene file (see DESIGN.md "Scene files"). Each chapter
+// turns it into what it can simulate.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "rt/effect_set.hpp"
+#include "rt/math.hpp"
+
+namespace rt {
+
+struct CameraDesc {
+    Vec3 from{0, 0, 0};
+    Vec3 at{0, 0, -1};
+    Vec3 up{0, 1, 0};
+    Real vfov = 40;  // vertical field of view, degrees
+};
+
+struct ImageDesc {
+    int width = 320;
+    int height = 240;
+    int spp = 16;  // samples per pixel
+};
+
+enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric };
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::kDiffuse;
+    Color albedo{0.8f};        // diffuse, glossy, retroreflective: reflectance in [0, 1]
+    Color reflectance{1.0f};   // mirror: the fraction reflected
+    Color emission{0.0f};      // radiance emitted (any type): makes its shapes area lights
+    Real roughness = 0.2f;     // glossy, retroreflective: width of the lobe in (0, 1]
+    Real ior = 1.5f;           // dielectric: index of refraction
+    Color absorption{0.0f};    // dielectric: Beer–Lambert absorption coefficient per unit length
+
+    bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
+};
+
+// Scale, then rotations about x, y and z (degrees), then translation.
+struct Transform {
+    Vec3 scale{1};
+    Vec3 rotate_degrees{0};
+    Vec3 translate{0};
+
+    Vec3 apply_to_point(const Vec3& p) const;
+};
+
+struct SphereShape {
+    Vec3 center{0};
+    Real radius = 1;
+};
+// The parallelogram origin + a·u + b·v, a and b in [0, 1]; its front side is the side of u × v.
+struct QuadShape {
+    Vec3 origin{0};
+    Vec3 u{1, 0, 0};
+    Vec3 v{0, 1, 0};
+};
+struct TriangleShape {
+    std::array<Vec3, 3> vertices{};
+};
+struct PlaneShape {
+    Vec3 point{0};
+    Vec3 normal{0, 1, 0};
+};
+struct BoxShape {
+    Vec3 min{0};
+    Vec3 max{1};
+    Transform transform;
+};
+// A triangle mesh with shared vertices; positions are already transformed into the scene.
+struct MeshShape {
+    std::string file;
+    Transform transform;
+    std::vector<Vec3> positions;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct Shape {
+    std::variant<SphereShape, QuadShape, TriangleShape, PlaneShape, BoxShape, MeshShape> geometry;
+    int material = 0;   // index into Scene::materials
+    std::string place;  // where it stands in the file, e.g. "shapes[3]"
+};
+
+struct PointLight {
+    Vec3 position{0};
+    Color intensity{1};  // radiant intensity, W/sr
+};
+struct EnvironmentLight {
+    Color radiance{1};  // of every ray that leaves the scene
+};
+
+struct Scene {
+    std::string file;  // where it was loaded from, for messages
+    CameraDesc camera;
+    ImageDesc image;
+    std::vector<Material> materials;
+    std::vector<Shape> shapes;
+    std::vector<PointLight> point_lights;
+    std::optional<EnvironmentLight> environment;
+    std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
+
+    const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }
+    bool has_area_lights() const;
+};
+
+}  // namespace rt

@@ -1,0 +1,413 @@
+#include "rt/scene_loader.hpp"
+
+#include <tiny_obj_loader.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "rt/did_you_mean.hpp"
+#include "rt/errors.hpp"
+#include "rt/image.hpp"
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+// Numbers above this cannot be geometry or radiance in a float renderer; they are typos or overflow.
+constexpr double kLargestNumber = 1e30;
+
+std::string show(double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+}
+
+std::string quote(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+std::string suggestion(std::string_view word, std::span<const std::string_view> candidates) {
+    const auto match = closest_match(word, candidates);
+    return match ? " (did you mean " + quote(*match) + "?)" : "";
+}
+
+// A value in the scene file and its place ("shapes[3].radius"); every read checks type and range.
+class Node {
+public:
+    Node(const Json& value, std::string place, const std::string& file) : value_(value), place_(std::move(place)), file_(file) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw InputError(file_ + ": " + (place_.empty() ? "" : place_ + ": ") + what);
+    }
+    const std::string& place() const { return place_; }
+    const Json& json() const { return value_; }
+
+    bool has(const char* key) const { return value_.contains(key); }
+    Node operator[](const char* key) const {
+        if (!value_.contains(key)) fail("missing required field " + quote(key));
+        return Node(value_.at(key), child_place(key), file_);
+    }
+    Node element(std::size_t i) const { return Node(value_.at(i), place_ + "[" + std::to_string(i) + "]", file_); }
+
+    void expect_object(std::span<const std::string_view> allowed_keys) const {
+        if (!value_.is_object()) fail("must be an object, got " + std::string(value_.type_name()));
+        for (const auto& [key, unused] : value_.items()) {
+            bool known = false;
+            for (std::string_view k : allowed_keys) known = known || k == key;
+            if (!known) {
+                throw InputError(file_ + ": " + child_place(key) + ": unknown key" + suggestion(key, allowed_keys));
+            }
+        }
+    }
+    std::size_t array_size() const {
+        if (!value_.is_array()) fail("must be an array, got " + std::string(value_.type_name()));
+        return value_.size();
+    }
+    std::string string() const {
+        if (!value_.is_string()) fail("must be a string, got " + std::string(value_.type_name()));
+        return value_.get<std::string>();
+    }
+    double number() const {
+        if (!value_.is_number()) fail("must be a number, got " + std::string(value_.type_name()));
+        const double x = value_.get<double>();
+        if (!std::isfinite(x) || std::abs(x) > kLargestNumber) {
+            fail("must be a finite number of magnitude at most 1e30, got " + show(x));
+        }
+        return x;
+    }
+    Real real() const { return Real(number()); }
+    Real real_in(double low, double high, bool low_open, bool high_open) const {
+        const double x = number();
+        if ((low_open ? x <= low : x < low) || (high_open ? x >= high : x > high)) {
+            fail("must be in " + std::string(low_open ? "(" : "[") + show(low) + ", " + show(high) +
+                 (high_open ? ")" : "]") + ", got " + show(x));
+        }
+        return Real(x);
+    }
+    Real positive() const {
+        const double x = number();
+        if (!(x > 0)) fail("must be > 0, got " + show(x));
+        return Real(x);
+    }
+    int integer(long long low, long long high) const {
+        if (!value_.is_number_integer()) fail("must be a whole number, got " + std::string(value_.type_name()));
+        const long long x = value_.get<long long>();
+        if (x < low || x > high) fail("must be in [" + show(double(low)) + ", " + show(double(high)) + "], got " + show(double(x)));
+        return int(x);
+    }
+    Vec3 vec3() const {
+        if (!value_.is_array() || value_.size() != 3) {
+            fail("must be an array of 3 numbers, got " +
+                 (value_.is_array() ? "an array of " + std::to_string(value_.size()) : std::string(value_.type_name())));
+        }
+        return {element(0).real(), element(1).real(), element(2).real()};
+    }
+    Vec3 nonzero_vec3() const {
+        const Vec3 v = vec3();
+        if (v == Vec3(0)) fail("must not be the zero vector");
+        return v;
+    }
+    Color color_in(double high) const {
+        const Vec3 c = vec3();
+        for (int i = 0; i < 3; ++i) {
+            if (c[i] < 0 || c[i] > high) {
+                element(std::size_t(i)).fail("must be in [0, " + show(high) + "], got " + show(c[i]));
+            }
+        }
+        return c;
+    }
+
+private:
+    std::string child_place(std::string_view key) const {
+        return place_.empty() ? std::string(key) : place_ + "." + std::string(key);
+    }
+
+    const Json& value_;
+    std::string place_;
+    const std::string& file_;
+};
+
+constexpr std::string_view kTopKeys[] = {"description", "camera", "image", "materials", "shapes", "lights", "effects"};
+constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov"};
+constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
+constexpr std::string_view kMaterialTypes[] = {"diffuse", "mirror", "glossy", "retroreflective", "dielectric"};
+constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
+constexpr std::string_view kLightTypes[] = {"point", "environment"};
+constexpr std::string_view kTransformKeys[] = {"scale", "rotate_x", "rotate_y", "rotate_z", "translate"};
+
+CameraDesc read_camera(const Node& node) {
+    node.expect_object(kCameraKeys);
+    CameraDesc camera;
+    camera.from = node["from"].vec3();
+    camera.at = node["at"].vec3();
+    if (node.has("up")) camera.up = node["up"].nonzero_vec3();
+    if (node.has("vfov")) camera.vfov = node["vfov"].real_in(0, 180, true, true);
+    if (camera.at == camera.from) node["at"].fail("must differ from camera.from");
+    if (parallel(Vec3d(camera.at - camera.from), Vec3d(camera.up))) {
+        node["up"].fail("must not be parallel to the view direction (at - from)");
+    }
+    return camera;
+}
+
+ImageDesc read_image(const Node& node) {
+    node.expect_object(kImageKeys);
+    ImageDesc image;
+    if (node.has("width")) image.width = node["width"].integer(1, kMaxImageSide);
+    if (node.has("height")) image.height = node["height"].integer(1, kMaxImageSide);
+    if (node.has("spp")) image.spp = node["spp"].integer(1, kMaxSamplesPerPixel);
+    try {
+        check_image_size(image.width, image.height);
+    } catch (const InputError& e) {
+        node.fail(e.what());
+    }
+    return image;
+}
+
+Material read_material(const Node& node, const std::string& name) {
+    if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
+    const std::string type = node["type"].string();
+    Material m;
+    m.name = name;
+    if (type == "diffuse") {
+        m.type = MaterialType::kDiffuse;
+        node.expect_object(std::array<std::string_view, 3>{"type", "albedo", "emission"});
+    } else if (type == "mirror") {
+        m.type = MaterialType::kMirror;
+        node.expect_object(std::array<std::string_view, 3>{"type", "reflectance", "emission"});
+    } else if (type == "glossy" || type == "retroreflective") {
+        m.type = type == "glossy" ? MaterialType::kGlossy : MaterialType::kRetroreflective;
+        node.expect_object(std::array<std::string_view, 4>{"type", "albedo", "roughness", "emission"});
+    } else if (type == "dielectric") {
+        m.type = MaterialType::kDielectric;
+        node.expect_object(std::array<std::string_view, 3>{"type", "ior", "absorption"});
+    } else {
+        node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypes) +
+                          "; expected diffuse, mirror, glossy, retroreflective or dielectric");
+    }
+    if (node.has("albedo")) m.albedo = node["albedo"].color_in(1);
+    if (node.has("reflectance")) m.reflectance = node["reflectance"].color_in(1);
+    if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
+    if (node.has("roughness")) m.roughness = node["roughness"].real_in(0, 1, true, false);
+    if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
+    if (node.has("absorption")) m.absorption = node["absorption"].color_in(kLargestNumber);
+    return m;
+}
+
+Transform read_transform(const Node& node) {
+    node.expect_object(kTransformKeys);
+    Transform t;
+    if (node.has("scale")) {
+        const Node scale = node["scale"];
+        t.scale = scale.json().is_array() ? scale.vec3() : Vec3(scale.real());
+        for (int i = 0; i < 3; ++i) {
+            if (t.scale[i] == 0) scale.fail("must not be zero (it would flatten the shape)");
+        }
+    }
+    if (node.has("rotate_x")) t.rotate_degrees.x = node["rotate_x"].real();
+    if (node.has("rotate_y")) t.rotate_degrees.y = node["rotate_y"].real();
+    if (node.has("rotate_z")) t.rotate_degrees.z = node["rotate_z"].real();
+    if (node.has("translate")) t.translate = node["translate"].vec3();
+    return t;
+}
+
+// |a × b| ≤ 1e-7 |a| |b|: the parallelogram (or triangle) of a and b has no area worth rendering.
+bool zero_area(const Vec3& a, const Vec3& b) {
+    const Vec3d da(a), db(b);
+    return glm::length(glm::cross(da, db)) <= 1e-7 * glm::length(da) * glm::length(db);
+}
+
+MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
+    MeshShape mesh;
+    const Node file = node["file"];
+    mesh.file = file.string();
+    if (node.has("transform")) mesh.transform = read_transform(node["transform"]);
+    const fs::path path = scene_folder / mesh.file;
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) file.fail("cannot open mesh " + path.string());
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(path.string(), config)) {
+        std::string error = reader.Error();
+        if (const auto newline = error.find('\n'); newline != std::string::npos) error.resize(newline);
+        file.fail("malformed OBJ " + path.string() + ": " + error);
+    }
+    const auto& vertices = reader.GetAttrib().vertices;
+    const std::size_t vertex_count = vertices.size() / 3;
+    for (std::size_t i = 0; i < vertex_count; ++i) {
+        const Vec3 p(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);
+        if (!is_finite(p)) file.fail(path.string() + ": vertex " + std::to_string(i + 1) + " is not finite");
+        mesh.positions.push_back(mesh.transform.apply_to_point(p));
+    }
+    for (const auto& shape : reader.GetShapes()) {
+        const auto& indices = shape.mesh.indices;
+        for (std::size_t f = 0; f + 2 < indices.size(); f += 3) {
+            std::array<std::uint32_t, 3> triangle{};
+            for (std::size_t k = 0; k < 3; ++k) {
+                const int index = indices[f + k].vertex_index;
+                if (index < 0 || std::size_t(index) >= vertex_count) {
+                    file.fail(path.string() + ": face " + std::to_string(f / 3 + 1) + " uses vertex " +
+                              std::to_string(index + 1) + " but the file has " + std::to_string(vertex_count));
+                }
+                triangle[k] = std::uint32_t(index);
+            }
+            mesh.triangles.push_back(triangle);
+        }
+    }
+    if (mesh.triangles.empty()) file.fail("mesh " + path.string() + " has no triangles");
+    return mesh;
+}
+
+Shape read_shape(const Node& node, const std::map<std::string, int>& material_index, const fs::path& folder,
+                 const std::vector<std::string_view>& material_names) {
+    if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
+    const std::string type = node["type"].string();
+    Shape shape;
+    shape.place = node.place();
+    using Keys = std::vector<std::string_view>;
+    auto keys = [](Keys k) {
+        k.push_back("type");
+        k.push_back("material");
+        return k;
+    };
+    if (type == "sphere") {
+        node.expect_object(keys({"center", "radius"}));
+        shape.geometry = SphereShape{node["center"].vec3(), node["radius"].positive()};
+    } else if (type == "quad") {
+        node.expect_object(keys({"origin", "u", "v"}));
+        QuadShape q{node["origin"].vec3(), node["u"].vec3(), node["v"].vec3()};
+        if (zero_area(q.u, q.v)) node.fail("quad has zero area (u and v are parallel or zero)");
+        shape.geometry = q;
+    } else if (type == "triangle") {
+        node.expect_object(keys({"vertices"}));
+        const Node vertices = node["vertices"];
+        if (vertices.array_size() != 3) vertices.fail("must be an array of 3 vertices, got " + std::to_string(vertices.array_size()));
+        TriangleShape t{{vertices.element(0).vec3(), vertices.element(1).vec3(), vertices.element(2).vec3()}};
+        if (zero_area(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0])) {
+            node.fail("triangle has zero area (its vertices are repeated or collinear)");
+        }
+        shape.geometry = t;
+    } else if (type == "plane") {
+        node.expect_object(keys({"point", "normal"}));
+        shape.geometry = PlaneShape{node["point"].vec3(), node["normal"].nonzero_vec3()};
+    } else if (type == "box") {
+        node.expect_object(keys({"min", "max", "transform"}));
+        BoxShape b{node["min"].vec3(), node["max"].vec3(), {}};
+        for (int i = 0; i < 3; ++i) {
+            if (!(b.max[i] > b.min[i])) node["max"].fail("must exceed min on every axis");
+        }
+        if (node.has("transform")) b.transform = read_transform(node["transform"]);
+        shape.geometry = b;
+    } else if (type == "mesh") {
+        node.expect_object(keys({"file", "transform"}));
+        shape.geometry = read_mesh(node, folder);
+    } else {
+        node["type"].fail("unknown shape type " + quote(type) + suggestion(type, kShapeTypes) +
+                          "; expected sphere, quad, triangle, plane, box or mesh");
+    }
+    const Node material = node["material"];
+    const std::string name = material.string();
+    const auto found = material_index.find(name);
+    if (found == material_index.end()) {
+        material.fail("unknown material " + quote(name) + suggestion(name, material_names));
+    }
+    shape.material = found->second;
+    return shape;
+}
+
+void read_light(const Node& node, Scene& scene) {
+    if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
+    const std::string type = node["type"].string();
+    if (type == "point") {
+        node.expect_object(std::array<std::string_view, 3>{"type", "position", "intensity"});
+        scene.point_lights.push_back({node["position"].vec3(), node["intensity"].color_in(kLargestNumber)});
+    } else if (type == "environment") {
+        node.expect_object(std::array<std::string_view, 2>{"type", "radiance"});
+        if (scene.environment) node.fail("a scene has at most one environment light");
+        scene.environment = EnvironmentLight{node["radiance"].color_in(kLargestNumber)};
+    } else {
+        node["type"].fail("unknown light type " + quote(type) + suggestion(type, kLightTypes) +
+                          "; expected point or environment");
+    }
+}
+
+EffectSet read_effects(const Node& node) {
+    EffectSet effects{Effect::kCameraRays};
+    for (std::size_t i = 0; i < node.array_size(); ++i) {
+        const Node item = node.element(i);
+        const std::string name = item.string();
+        const auto effect = effect_from_name(name);
+        if (!effect) item.fail("unknown effect " + quote(name) + suggestion(name, kEffectNames));
+        effects.insert(*effect);
+    }
+    return effects;
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& text, const fs::path& file) {
+    const std::string name = file.string();
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::parse_error& e) {
+        std::string what = e.what();
+        if (const auto at = what.find("parse error"); at != std::string::npos) what = what.substr(at);
+        throw InputError(name + ": not valid JSON: " + what);
+    }
+    const Node top(root, "", name);
+    top.expect_object(kTopKeys);
+
+    Scene scene;
+    scene.file = name;
+    scene.camera = read_camera(top["camera"]);
+    if (top.has("image")) scene.image = read_image(top["image"]);
+
+    std::map<std::string, int> material_index;
+    std::vector<std::string_view> material_names;
+    if (top.has("materials")) {
+        const Node materials = top["materials"];
+        if (!materials.json().is_object()) materials.fail("must be an object of named materials");
+        for (const auto& [key, value] : root.at("materials").items()) {
+            material_index[key] = int(scene.materials.size());
+            scene.materials.push_back(read_material(Node(value, "materials." + key, name), key));
+        }
+        for (const Material& m : scene.materials) material_names.push_back(m.name);
+    }
+    if (top.has("shapes")) {
+        const Node shapes = top["shapes"];
+        const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+        for (std::size_t i = 0; i < shapes.array_size(); ++i) {
+            scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
+        }
+    }
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        if (!used[i]) Node(root, "materials." + scene.materials[i].name, name).fail("defined but used by no shape");
+    }
+    if (top.has("lights")) {
+        const Node lights = top["lights"];
+        for (std::size_t i = 0; i < lights.array_size(); ++i) read_light(lights.element(i), scene);
+    }
+    if (top.has("effects")) scene.effects = read_effects(top["effects"]);
+    return scene;
+}
+
+Scene load_scene(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec)) throw InputError(file.string() + ": cannot open the scene file");
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError(file.string() + ": cannot open the scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_scene(text.str(), file);
+}
+
+}  // namespace rt
