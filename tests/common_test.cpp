@@ -1,1 +1,269 @@
+// Tests of common: images and their files, random numbers, the render loop, scene loading, effects.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <vector>
+
+#include "rt/assets.hpp"
+#include "rt/did_you_mean.hpp"
+#include "rt/effects.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
+#include "rt/image_io.hpp"
+#include "rt/random.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/scene_loader.hpp"
+
+using namespace rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temporary_folder() {
+    const fs::path folder = fs::temp_directory_path() / ("rt_common_test_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    return folder;
+}
+
+std::string load_error(const std::string& text) {
+    try {
+        parse_scene(text, "bad.json");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+const char* kMinimalCamera = R"("camera": {"from": [0,0,0], "at": [0,0,-1], "up": [0,1,0], "vfov": 45})";
+
+}  // namespace
+
+TEST_CASE("A PFM written and read back is the same image, bit for bit", "[image]") {
+    Image image(7, 5);
+    Pcg32 rng(1, 2);
+    for (Color& c : image.pixels()) c = Color(rng.next_real() * 100, rng.next_real() * 1e-3f, -rng.next_real());
+    const fs::path file = temporary_folder() / "round_trip.pfm";
+    write_pfm(image, file);
+    const Image back = read_pfm(file);
+    REQUIRE(back.width() == 7);
+    REQUIRE(back.height() == 5);
+    for (std::size_t i = 0; i < image.pixel_count(); ++i) CHECK(back.pixels()[i] == image.pixels()[i]);
+    const ErrorMetrics e = compare(back, image);
+    CHECK(e.rmse == 0);
+    CHECK(e.mean_error == 0);
+}
+
+TEST_CASE("A PNG is written whole under its name, with no temporary file left", "[image]") {
+    const fs::path folder = temporary_folder();
+    Image image(4, 3);
+    image.at(1, 1) = Color(0.5f);
+    write_png(image, folder / "picture.png");
+    CHECK(fs::file_size(folder / "picture.png") > 0);
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
+    }
+}
+
+TEST_CASE("Writing into a missing folder is bad input and creates nothing", "[image]") {
+    const fs::path file = temporary_folder() / "no_such_folder" / "x.png";
+    CHECK_THROWS_AS(write_png(Image(2, 2), file), InputError);
+    CHECK_FALSE(fs::exists(file.parent_path()));
+}
+
+TEST_CASE("Reading a broken PFM names the file and the problem", "[image]") {
+    const fs::path file = temporary_folder() / "broken.pfm";
+    std::ofstream(file) << "PF\n4 4\n-1.0\n" << "short";
+    CHECK_THROWS_WITH(read_pfm(file), Catch::Contains("broken.pfm") && Catch::Contains("truncated"));
+    CHECK_THROWS_WITH(read_pfm(temporary_folder() / "absent.pfm"), Catch::Contains("cannot open"));
+}
+
+TEST_CASE("sRGB encoding follows the standard's two pieces and clamps", "[image]") {
+    CHECK(srgb_encode(0) == 0);
+    CHECK(srgb_encode(1) == Approx(1).epsilon(1e-6));
+    CHECK(srgb_encode(0.002f) == Approx(12.92 * 0.002));
+    CHECK(srgb_encode(0.5f) == Approx(1.055 * std::pow(0.5, 1 / 2.4) - 0.055));
+    CHECK(to_display_byte(2.0f) == 255);
+    CHECK(to_display_byte(-1.0f) == 0);
+    CHECK(to_display_byte(std::nanf("")) == 0);
+}
+
+TEST_CASE("Image sizes that are not positive or would not fit in memory are refused before allocation", "[image]") {
+    CHECK_THROWS_WITH(check_image_size(0, 10), Catch::Contains("must be positive"));
+    CHECK_THROWS_WITH(check_image_size(65536, 65536), Catch::Contains("needs") && Catch::Contains("GB"));
+    CHECK_NOTHROW(check_image_size(640, 480));
+}
+
+TEST_CASE("PCG32 is deterministic per (pixel, sample, seed) and streams differ", "[random]") {
+    Pcg32 a = Pcg32::for_sample(12, 3, 7), b = Pcg32::for_sample(12, 3, 7);
+    for (int i = 0; i < 100; ++i) REQUIRE(a.next_uint() == b.next_uint());
+    std::set<std::uint32_t> firsts;
+    for (std::uint64_t pixel = 0; pixel < 1000; ++pixel) firsts.insert(Pcg32::for_sample(pixel, 0, 7).next_uint());
+    for (std::uint64_t sample = 0; sample < 1000; ++sample) firsts.insert(Pcg32::for_sample(5, sample, 7).next_uint());
+    CHECK(firsts.size() >= 1995);  // 2000 streams; a 32-bit collision among them is rare, not forbidden
+    CHECK(Pcg32::for_sample(1, 1, 1).next_uint() != Pcg32::for_sample(1, 1, 2).next_uint());
+}
+
+TEST_CASE("PCG32 reals are uniform in [0, 1): chi-square over 100 cells", "[random][statistical]") {
+    constexpr int kCells = 100;
+    constexpr int kSamples = 1'000'000;
+    std::vector<int> counts(kCells, 0);
+    Pcg32 rng(42, 54);
+    for (int i = 0; i < kSamples; ++i) {
+        const Real u = rng.next_real();
+        REQUIRE(u >= 0);
+        REQUIRE(u < 1);
+        ++counts[std::size_t(u * kCells)];
+    }
+    const double expected = double(kSamples) / kCells;
+    double chi_square = 0;
+    for (int c : counts) chi_square += (c - expected) * (c - expected) / expected;
+    // The 99th percentile of the chi-square distribution with 99 degrees of freedom is 134.64.
+    CHECK(chi_square < 134.64);
+}
+
+TEST_CASE("The largest uniform real is the largest float below 1", "[random]") {
+    CHECK(Real(0xFFFFFF) * Real(0x1.0p-24) == kOneMinusEpsilon);
+    CHECK(kOneMinusEpsilon < 1);
+    CHECK(std::nextafter(kOneMinusEpsilon, Real(2)) == 1);
+}
+
+TEST_CASE("The render loop gives the same image, bit for bit, for 1 and 2 threads", "[render]") {
+    auto sample = [](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        rays.add(RayKind::kCamera);
+        return Color(rng.next_real(), Real(s.x) * 0.01f + rng.next_real(), Real(s.index));
+    };
+    RenderSettings settings{37, 29, 7, 5, 1, ProgressStyle::kNone};
+    const RenderResult one = render(settings, sample);
+    settings.threads = 2;
+    const RenderResult two = render(settings, sample);
+    REQUIRE(one.image.pixel_count() == two.image.pixel_count());
+    for (std::size_t i = 0; i < one.image.pixel_count(); ++i) REQUIRE(one.image.pixels()[i] == two.image.pixels()[i]);
+    CHECK(one.rays[RayKind::kCamera] == 37u * 29u * 7u);
+    CHECK(two.rays[RayKind::kCamera] == 37u * 29u * 7u);
+    CHECK(one.samples == 37u * 29u * 7u);
+    CHECK_FALSE(one.interrupted);
+    // Sample indices 0..6 average to 3: each pixel is the mean of its samples.
+    CHECK(one.image.at(36, 28).b == Approx(3));
+}
+
+TEST_CASE("Edit distance and did-you-mean find near misses only", "[scene]") {
+    CHECK(edit_distance("radius", "radius") == 0);
+    CHECK(edit_distance("raduis", "radius") == 2);
+    CHECK(edit_distance("", "abc") == 3);
+    constexpr std::string_view names[] = {"sphere", "quad", "triangle"};
+    CHECK(closest_match("sphre", names) == std::optional<std::string>("sphere"));
+    CHECK_FALSE(closest_match("cylinder", names).has_value());
+}
+
+TEST_CASE("The course's scenes all load", "[scene]") {
+    int loaded = 0;
+    for (const auto& entry : fs::directory_iterator(assets_dir() / "scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        INFO(entry.path());
+        CHECK_NOTHROW(load_scene(entry.path()));
+        ++loaded;
+    }
+    CHECK(loaded >= 2);
+}
+
+TEST_CASE("The Cornell box loads as DESIGN.md describes it", "[scene]") {
+    const Scene scene = load_scene(scene_path("cornell.json"));
+    CHECK(scene.shapes.size() == 8);
+    CHECK(scene.materials.size() == 5);
+    CHECK(scene.image.width == 600);
+    CHECK(scene.camera.vfov == 40);
+    const auto& box = std::get<BoxShape>(scene.shapes[6].geometry);
+    CHECK(box.transform.rotate_degrees.y == 15);
+    // The turned box's corner (165, 0, 0) lands at (265 + 165 cos 15°, 0, 295 − 165 sin 15°).
+    const Vec3 corner = box.transform.apply_to_point(Vec3(165, 0, 0));
+    CHECK(corner.x == Approx(265 + 165 * std::cos(radians(15))));
+    CHECK(corner.z == Approx(295 - 165 * std::sin(radians(15))));
+    CHECK(scene.has_area_lights());
+}
+
+TEST_CASE("Scene errors name the file, the place and what was expected", "[scene]") {
+    const std::string camera = kMinimalCamera;
+    CHECK(load_error(R"({"camera": {"from": [0,0,0], "at": [0,0,-1], "vfov": 0}})") ==
+          "bad.json: camera.vfov: must be in (0, 180), got 0");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "white"},
+                   {"type": "sphere", "center": [0,0,0], "radius": -1, "material": "white"}]})") ==
+          "bad.json: shapes[1].radius: must be > 0, got -1");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "centre": [0,0,0], "radius": 1, "material": "white"}]})") ==
+          "bad.json: shapes[0].centre: unknown key (did you mean \"center\"?)");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0,0], "radius": 1, "material": "white"}]})") ==
+          "bad.json: shapes[0].center: must be an array of 3 numbers, got an array of 2");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "whte"}]})") ==
+          "bad.json: shapes[0].material: unknown material \"whte\" (did you mean \"white\"?)");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "quad", "origin": [0,0,0], "u": [1,0,0], "v": [2,0,0], "material": "white"}]})") ==
+          "bad.json: shapes[0]: quad has zero area (u and v are parallel or zero)");
+    CHECK(load_error(R"({"camera": {"from": [0,0,0], "at": [0,1,0], "up": [0,2,0]}})") ==
+          "bad.json: camera.up: must not be parallel to the view direction (at - from)");
+    CHECK(load_error(R"({"camera": {"at": [0,1,0]}})") == "bad.json: camera: missing required field \"from\"");
+    CHECK(load_error(R"({"camera": {"from": [0,0,0], "at": [0,0,1e40]}})") ==
+          "bad.json: camera.at[2]: must be a finite number of magnitude at most 1e30, got 1e+40");
+    CHECK_THAT(load_error(R"({"camera": {"from": [0,0,0], )"), Catch::StartsWith("bad.json: not valid JSON"));
+    CHECK(load_error("{" + camera + R"(, "materials": {"lamp": {"type": "diffuse", "emission": [1,-1,1]}},
+        "shapes": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "lamp"}]})") ==
+          "bad.json: materials.lamp.emission[1]: must be in [0, 1e+30], got -1");
+    CHECK(load_error("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}}})") ==
+          "bad.json: materials.white: defined but used by no shape");
+}
+
+TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
+    const fs::path folder = temporary_folder();
+    auto scene_with_mesh = [&](const std::string& obj_name) {
+        return "{" + std::string(kMinimalCamera) + R"(, "materials": {"white": {"type": "diffuse"}},
+            "shapes": [{"type": "mesh", "file": ")" + obj_name + R"(", "material": "white"}]})";
+    };
+    auto error_for = [&](const std::string& text) {
+        try {
+            parse_scene(text, folder / "mesh.json");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK_THAT(error_for(scene_with_mesh("absent.obj")),
+               Catch::Contains("shapes[0].file: cannot open mesh") && Catch::Contains("absent.obj"));
+    std::ofstream(folder / "empty.obj") << "# nothing\n";
+    CHECK_THAT(error_for(scene_with_mesh("empty.obj")), Catch::Contains("has no triangles"));
+    std::ofstream(folder / "out_of_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
+    CHECK_THAT(error_for(scene_with_mesh("out_of_range.obj")), Catch::Contains("shapes[0].file"));
+    std::ofstream(folder / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+    const Scene scene = parse_scene(scene_with_mesh("good.obj"), folder / "mesh.json");
+    const auto& mesh = std::get<MeshShape>(scene.shapes[0].geometry);
+    CHECK(mesh.positions.size() == 4);  // shared vertices stay shared
+    CHECK(mesh.triangles.size() == 2);
+}
+
+TEST_CASE("needed(scene) follows the content, narrowed by the scene's effects list", "[effects]") {
+    const std::string camera = kMinimalCamera;
+    const Scene empty = parse_scene("{" + camera + "}", "e.json");
+    CHECK(needed(empty) == EffectSet{Effect::kCameraRays});
+
+    const Scene lit = parse_scene("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0,0,-3], "radius": 1, "material": "white"}],
+        "lights": [{"type": "point", "position": [0,5,0], "intensity": [10,10,10]}]})", "l.json");
+    CHECK(needed(lit) == EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kIndirect});
+
+    const Scene unlit_glass = parse_scene("{" + camera + R"(, "materials": {"glass": {"type": "dielectric"}},
+        "shapes": [{"type": "sphere", "center": [0,0,-3], "radius": 1, "material": "glass"}]})", "g.json");
+    CHECK(needed(unlit_glass) == EffectSet{Effect::kCameraRays, Effect::kReflection, Effect::kRefraction});
+
+    const Scene narrowed = parse_scene("{" + camera + R"(, "materials": {"white": {"type": "diffuse"}},
+        "shapes": [{"type": "sphere", "center": [0,0,-3], "radius": 1, "material": "white"}],
+        "lights": [{"type": "environment", "radiance": [1,1,1]}], "effects": ["shadows", "direct"]})", "n.json");
+    CHECK(needed(narrowed) == EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect});
+
+    const Scene cornell = load_scene(scene_path("cornell.json"));
+    CHECK(needed(cornell) == EffectSet::all().without(EffectSet{Effect::kGlossy}));
+}

@@ -23,16 +23,24 @@ PixelSampler pixel_sampler_from_string(std::string_view name) {
     throw InputError("--pixel-sampler: unknown sampler \"" + std::string(name) + "\"; expected center, uniform or stratified");
 }
 
+namespace {
+
+// The largest float below c + 1: x + u rounds up to x + 1 for u just below 1 once x ≥ 1 (3 + (1 − 2⁻²⁴) is 4 in
+// float), which would put the sample in the next pixel; clamping keeps it inside.
+Vec2 inside_pixel(const Vec2& corner, const Vec2& p) {
+    return glm::min(p, Vec2(std::nextafter(corner.x + 1, corner.x), std::nextafter(corner.y + 1, corner.y)));
+}
+
+}  // namespace
+
 Vec2 pixel_sample_point(PixelSampler sampler, int x, int y, int index, int count, Vec2 u) {
     const Vec2 corner{Real(x), Real(y)};
     // EXERCISE(ch01.pixel_sample)
     if (sampler == PixelSampler::kCenter) return corner + Vec2(0.5f);
     const int n = int(std::sqrt(double(count)));
-    if (sampler == PixelSampler::kUniform || index >= n * n) return corner + u;
+    if (sampler == PixelSampler::kUniform || index >= n * n) return inside_pixel(corner, corner + u);
     const Vec2 stratum{Real(index % n), Real(index / n)};
-    // (stratum + u) / n < 1 for u < 1, but rounding can reach 1 exactly: keep the point inside its pixel.
-    const Vec2 inside = glm::min((stratum + u) / Real(n), Vec2(kOneMinusEpsilon));
-    return corner + inside;
+    return inside_pixel(corner, corner + (stratum + u) / Real(n));
     // END EXERCISE
 }
 
