@@ -107,7 +107,7 @@ TEST_CASE("PCG32 is deterministic per (pixel, sample, seed) and streams differ",
     CHECK(Pcg32::for_sample(1, 1, 1).next_uint() != Pcg32::for_sample(1, 1, 2).next_uint());
 }
 
-TEST_CASE("PCG32 reals are uniform in [0, 1): chi-square over 100 cells", "[random][statistical]") {
+TEST_CASE("PCG32 reals are uniform between 0 and 1: chi-square over 100 cells", "[random][statistical]") {
     constexpr int kCells = 100;
     constexpr int kSamples = 1'000'000;
     std::vector<int> counts(kCells, 0);
