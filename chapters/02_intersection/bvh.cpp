@@ -1,0 +1,123 @@
+#include "bvh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+namespace rt {
+namespace {
+
+constexpr int kBins = 16;
+constexpr std::uint32_t kMaxLeafSize = 8;
+constexpr int kMaxDepth = 36;  // below it, splits are median splits: the traversal stack of 64 never overflows
+// SAH costs, in units of one primitive test: a node visit (two box tests) costs about one primitive test.
+constexpr Real kTraversalCost = 1;
+
+struct Builder {
+    std::span<const Aabb> bounds;
+    std::vector<Vec3> centroids;
+    std::vector<std::uint32_t>& indices;
+    std::vector<BvhNode>& nodes;
+
+    void make_leaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
+        nodes[node].offset = begin;
+        nodes[node].count = end - begin;
+    }
+
+    // Splits [begin, end) at its middle along `axis` (the fallback when the SAH finds no useful split).
+    std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, int axis) {
+        const std::uint32_t middle = begin + (end - begin) / 2;
+        std::nth_element(indices.begin() + begin, indices.begin() + middle, indices.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+        return middle;
+    }
+
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
+        Aabb box, centroid_box;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            box.extend(bounds[indices[i]]);
+            centroid_box.extend(centroids[indices[i]]);
+        }
+        nodes[node].min = box.min;
+        nodes[node].max = box.max;
+        const std::uint32_t count = end - begin;
+        if (count == 1) return make_leaf(node, begin, end);
+        const int axis = centroid_box.longest_axis();
+        const Real lo = centroid_box.min[axis];
+        const Real extent = centroid_box.max[axis] - lo;
+        std::uint32_t middle = 0;
+        if (!(extent > 0)) {
+            // Every centroid in one point: no plane separates them.
+            if (count <= kMaxLeafSize) return make_leaf(node, begin, end);
+            middle = median_split(begin, end, axis);
+        } else if (depth >= kMaxDepth) {
+            middle = median_split(begin, end, axis);
+        } else {
+            // Bin the centroids into kBins slabs along the axis and evaluate the SAH at each bin boundary:
+            // cost(split) = C_trav + (A_left N_left + A_right N_right) / A, against cost(leaf) = N.
+            std::array<Aabb, kBins> bin_box;
+            std::array<std::uint32_t, kBins> bin_count{};
+            const Real scale = Real(kBins) / extent;
+            auto bin_of = [&](std::uint32_t p) {
+                return std::min(kBins - 1, int((centroids[p][axis] - lo) * scale));
+            };
+            for (std::uint32_t i = begin; i < end; ++i) {
+                const int b = bin_of(indices[i]);
+                ++bin_count[b];
+                bin_box[b].extend(bounds[indices[i]]);
+            }
+            std::array<Real, kBins - 1> left_cost{};
+            Aabb left;
+            std::uint32_t left_count = 0;
+            for (int b = 0; b < kBins - 1; ++b) {
+                left.extend(bin_box[b]);
+                left_count += bin_count[b];
+                left_cost[b] = left_count > 0 ? left.half_area() * Real(left_count) : 0;
+            }
+            Aabb right;
+            std::uint32_t right_count = 0;
+            int best = -1;
+            Real best_cost = kInfinity;
+            for (int b = kBins - 1; b > 0; --b) {
+                right.extend(bin_box[b]);
+                right_count += bin_count[b];
+                const Real cost = left_cost[b - 1] + (right_count > 0 ? right.half_area() * Real(right_count) : 0);
+                if (cost < best_cost) {
+                    best_cost = cost;
+                    best = b;  // bins [0, b) go left
+                }
+            }
+            const Real split_cost = kTraversalCost + best_cost / box.half_area();
+            if (count <= kMaxLeafSize && !(split_cost < Real(count))) return make_leaf(node, begin, end);
+            middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
+                                                  [&](std::uint32_t p) { return bin_of(p) < best; }) -
+                                   indices.begin());
+            if (middle == begin || middle == end) middle = median_split(begin, end, axis);
+        }
+        const std::uint32_t first = std::uint32_t(nodes.size());
+        nodes.push_back({});
+        nodes[node].count = 0;
+        build(first, begin, middle, depth + 1);
+        const std::uint32_t second = std::uint32_t(nodes.size());
+        nodes.push_back({});
+        nodes[node].offset = second;
+        build(second, middle, end, depth + 1);
+    }
+};
+
+}  // namespace
+
+Bvh::Bvh(std::span<const Aabb> bounds) {
+    if (bounds.empty()) return;
+    indices_.resize(bounds.size());
+    std::iota(indices_.begin(), indices_.end(), 0u);
+    Builder builder{bounds, {}, indices_, nodes_};
+    builder.centroids.reserve(bounds.size());
+    for (const Aabb& b : bounds) builder.centroids.push_back(b.center());
+    nodes_.reserve(bounds.size() * 2);
+    nodes_.push_back({});
+    builder.build(0, 0, std::uint32_t(bounds.size()), 0);
+    nodes_.shrink_to_fit();
+}
+
+}  // namespace rt

@@ -1,0 +1,106 @@
+// A bounding volume hierarchy: a binary tree of boxes over the primitives. A ray skips every subtree whose
+// box it misses (or meets beyond the nearest hit found so far), so a query visits O(log n) nodes instead of
+// testing all n primitives. Built top-down with the binned surface area heuristic (SAH).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "aabb.hpp"
+
+namespace rt {
+
+// 32 bytes, depth-first order: an interior node's first child is the node right after it.
+struct BvhNode {
+    Vec3 min;
+    std::uint32_t offset;  // leaf: first entry in Bvh::indices; interior: index of the second child
+    Vec3 max;
+    std::uint32_t count;   // leaf: number of primitives (> 0); interior: 0
+
+    Aabb box() const { return {min, max}; }
+    bool leaf() const { return count > 0; }
+};
+static_assert(sizeof(BvhNode) == 32);
+
+// What a query cost: boxes tested and primitives tested (the heat map of `--show cost`).
+struct TraversalStats {
+    std::uint32_t nodes = 0;
+    std::uint32_t primitives = 0;
+};
+
+class Bvh {
+public:
+    Bvh() = default;
+    // Builds over primitives 0..n−1 with these bounds.
+    explicit Bvh(std::span<const Aabb> bounds);
+
+    const std::vector<BvhNode>& nodes() const { return nodes_; }
+    const std::vector<std::uint32_t>& indices() const { return indices_; }
+    // The memory the hierarchy adds to the primitives: nodes and the primitive index list.
+    std::size_t bytes() const { return nodes_.size() * sizeof(BvhNode) + indices_.size() * sizeof(std::uint32_t); }
+    bool empty() const { return nodes_.empty(); }
+
+    // Visits, nearest box first, every leaf whose box the ray meets before t_max, calling
+    // `test(primitive, t_max)` for each primitive there: it returns true on a hit and then lowers t_max to it.
+    // With any_hit, returns at the first hit. Returns whether anything was hit.
+    template <typename Test>
+    bool traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_hit, Test&& test,
+                  TraversalStats* stats = nullptr) const;
+
+private:
+    std::vector<BvhNode> nodes_;
+    std::vector<std::uint32_t> indices_;
+};
+
+template <typename Test>
+bool Bvh::traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_hit, Test&& test,
+                   TraversalStats* stats) const {
+    // EXERCISE(ch02.bvh_traversal)
+    if (nodes_.empty()) return false;
+    if (stats) ++stats->nodes;
+    if (slab_entry(nodes_[0].box(), ray, inverse_d, t_max) == kInfinity) return false;
+    struct Pending {
+        std::uint32_t node;
+        Real t_enter;
+    };
+    Pending stack[64];
+    int top = 0;
+    std::uint32_t current = 0;
+    bool hit = false;
+    while (true) {
+        const BvhNode& node = nodes_[current];
+        if (node.leaf()) {
+            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) {
+                if (stats) ++stats->primitives;
+                if (test(indices_[i], t_max)) {
+                    hit = true;
+                    if (any_hit) return true;
+                }
+            }
+        } else {
+            const std::uint32_t first = current + 1;
+            const std::uint32_t second = node.offset;
+            if (stats) stats->nodes += 2;
+            const Real t_first = slab_entry(nodes_[first].box(), ray, inverse_d, t_max);
+            const Real t_second = slab_entry(nodes_[second].box(), ray, inverse_d, t_max);
+            if (t_first < kInfinity && t_second < kInfinity) {
+                const bool first_nearer = t_first <= t_second;
+                stack[top++] = first_nearer ? Pending{second, t_second} : Pending{first, t_first};
+                current = first_nearer ? first : second;
+                continue;
+            }
+            if (t_first < kInfinity) { current = first; continue; }
+            if (t_second < kInfinity) { current = second; continue; }
+        }
+        // Pop the next subtree that may still hold a nearer hit.
+        do {
+            if (top == 0) return hit;
+            --top;
+        } while (stack[top].t_enter > t_max);
+        current = stack[top].node;
+    }
+    // END EXERCISE
+}
+
+}  // namespace rt

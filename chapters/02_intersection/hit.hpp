@@ -1,0 +1,26 @@
+// The hit record: what a ray learns about the nearest surface it meets.
+#pragma once
+
+#include <cstdint>
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+struct Hit {
+    Real t = kInfinity;      // distance along the ray (directions are unit length)
+    Vec3 point{0};           // ray.at(t) (or the more precise point the shape computes)
+    Vec3 normal{0, 0, 1};    // unit geometric normal, facing the side the ray came from: dot(normal, ray.direction) <= 0
+    bool front_face = true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
+    Vec2 uv{0};              // surface coordinates (quad: (a, b); triangle: barycentrics (b1, b2); sphere: (phi, theta)/(2pi, pi))
+    int material = -1;       // index into Scene::materials
+    std::uint32_t primitive = 0;  // the primitive's index in the World
+};
+
+// Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.
+inline void set_face_normal(Hit& hit, const Vec3& direction, const Vec3& outward_normal) {
+    hit.front_face = glm::dot(direction, outward_normal) < 0;
+    hit.normal = hit.front_face ? outward_normal : -outward_normal;
+}
+
+}  // namespace rt

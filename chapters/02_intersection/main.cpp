@@ -1,0 +1,2 @@
+#include "world.hpp"
+int main() { return 0; }

@@ -1,0 +1,31 @@
+// Ray–quad intersection. The parallelogram Q + a u + b v (a, b in [0, 1]) lies in the plane with normal
+// n = u × v; the ray meets that plane at t = n · (Q − o) / (n · d), and with p = o + t d and w = n / (n · n),
+// a = w · ((p − Q) × v), b = w · (u × (p − Q)).
+#pragma once
+
+#include <optional>
+
+#include "rt/math.hpp"
+#include "rt/ray.hpp"
+
+namespace rt {
+
+struct Quad {
+    Vec3 origin{0};
+    Vec3 u{1, 0, 0};
+    Vec3 v{0, 1, 0};
+    Vec3 normal{0, 0, 1};  // unit u × v: the front side
+    Vec3 w{0, 0, 1};       // n / (n · n) with n = u × v, for the coordinates a, b
+};
+
+Quad make_quad(const Vec3& origin, const Vec3& u, const Vec3& v);
+
+struct QuadHit {
+    Real t;
+    Vec2 ab;  // the coordinates (a, b) of the hit point
+};
+
+// The hit with t in (0, t_max) and a, b in [0, 1], if any; a degenerate quad (u × v = 0) is never hit.
+std::optional<QuadHit> intersect_quad(const Ray& ray, const Quad& quad, Real t_max);
+
+}  // namespace rt

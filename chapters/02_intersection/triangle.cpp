@@ -1,0 +1,86 @@
+#include "triangle.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace rt {
+
+WatertightRay make_watertight_ray(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    const Vec3 a = glm::abs(d);
+    const int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    int kx = (kz + 1) % 3;
+    int ky = (kx + 1) % 3;
+    if (d[kz] < 0) std::swap(kx, ky);
+    return {kx, ky, kz, d[kx] / d[kz], d[ky] / d[kz], Real(1) / d[kz]};
+}
+
+std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const WatertightRay& s,
+                                                         const Triangle& triangle, Real t_max) {
+    // EXERCISE(ch02.triangle_watertight)
+    // Translate: the vertices relative to the ray's origin.
+    const Vec3 a = triangle.p0 - ray.origin;
+    const Vec3 b = triangle.p1 - ray.origin;
+    const Vec3 c = triangle.p2 - ray.origin;
+    // Permute and shear: the ray becomes the +z axis; (x, y) is where each vertex lies around it.
+    const Real ax = a[s.kx] - s.sx * a[s.kz], ay = a[s.ky] - s.sy * a[s.kz];
+    const Real bx = b[s.kx] - s.sx * b[s.kz], by = b[s.ky] - s.sy * b[s.kz];
+    const Real cx = c[s.kx] - s.sx * c[s.kz], cy = c[s.ky] - s.sy * c[s.kz];
+    // Edge functions: twice the signed area of the triangle (0, vertex, vertex) opposite each vertex.
+    Real u = cx * by - cy * bx;
+    Real v = ax * cy - ay * cx;
+    Real w = bx * ay - by * ax;
+    // Exactly zero in float may be rounding: decide the sign in double, where products of floats are exact.
+    if (u == 0 || v == 0 || w == 0) {
+        u = Real(double(cx) * double(by) - double(cy) * double(bx));
+        v = Real(double(ax) * double(cy) - double(ay) * double(cx));
+        w = Real(double(bx) * double(ay) - double(by) * double(ax));
+    }
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return std::nullopt;
+    const Real det = u + v + w;
+    if (det == 0) return std::nullopt;  // the ray lies in the triangle's plane, or the triangle is degenerate
+    // The scaled distance T = det · t, tested against (0, t_max) before dividing.
+    const Real t_scaled = u * (s.sz * a[s.kz]) + v * (s.sz * b[s.kz]) + w * (s.sz * c[s.kz]);
+    if (det < 0 ? (t_scaled >= 0 || t_scaled < t_max * det) : (t_scaled <= 0 || t_scaled > t_max * det)) {
+        return std::nullopt;
+    }
+    const Real inverse = Real(1) / det;
+    const Real t = t_scaled * inverse;
+    if (!(t > 0 && t < t_max)) return std::nullopt;
+    return TriangleHit{t, {v * inverse, w * inverse}};
+    // END EXERCISE
+}
+
+std::optional<TriangleHit> intersect_triangle_moller(const Ray& ray, const Triangle& triangle, Real t_max) {
+    // EXERCISE(ch02.triangle_moller)
+    const Vec3 e1 = triangle.p1 - triangle.p0;
+    const Vec3 e2 = triangle.p2 - triangle.p0;
+    const Vec3 p = glm::cross(ray.direction, e2);
+    const Real det = glm::dot(e1, p);
+    if (det == 0) return std::nullopt;
+    const Real inverse = Real(1) / det;
+    const Vec3 s = ray.origin - triangle.p0;
+    const Real b1 = glm::dot(s, p) * inverse;
+    if (!(b1 >= 0 && b1 <= 1)) return std::nullopt;
+    const Vec3 q = glm::cross(s, e1);
+    const Real b2 = glm::dot(ray.direction, q) * inverse;
+    if (!(b2 >= 0 && b1 + b2 <= 1)) return std::nullopt;
+    const Real t = glm::dot(e2, q) * inverse;
+    if (!(t > 0 && t < t_max)) return std::nullopt;
+    return TriangleHit{t, {b1, b2}};
+    // END EXERCISE
+}
+
+std::optional<TriangleHit> intersect_triangle(const Ray& ray, const Triangle& triangle, Real t_max,
+                                              TriangleTest test) {
+    if (test == TriangleTest::kMollerTrumbore) return intersect_triangle_moller(ray, triangle, t_max);
+    return intersect_triangle_watertight(ray, make_watertight_ray(ray), triangle, t_max);
+}
+
+Vec3 triangle_normal(const Triangle& triangle) {
+    const Vec3 n = glm::cross(triangle.p1 - triangle.p0, triangle.p2 - triangle.p0);
+    const Real length = glm::length(n);
+    return length > 0 ? n / length : Vec3{0, 0, 1};
+}
+
+}  // namespace rt

@@ -1,0 +1,230 @@
+#include "world.hpp"
+
+#include <type_traits>
+#include <variant>
+
+namespace rt {
+namespace {
+
+// The 6 faces of a transformed box as quads (origin, u, v), each turned so u × v points outward.
+std::array<Quad, 6> box_faces(const BoxShape& box) {
+    auto corner = [&](int x, int y, int z) {
+        return box.transform.apply_to_point({x ? box.max.x : box.min.x, y ? box.max.y : box.min.y,
+                                             z ? box.max.z : box.min.z});
+    };
+    const Vec3 center = box.transform.apply_to_point((box.min + box.max) * Real(0.5));
+    std::array<Quad, 6> faces;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            std::array<int, 3> o{0, 0, 0}, a{0, 0, 0}, b{0, 0, 0};
+            o[axis] = a[axis] = b[axis] = side;
+            a[(axis + 1) % 3] = 1;
+            b[(axis + 2) % 3] = 1;
+            const Vec3 origin = corner(o[0], o[1], o[2]);
+            Vec3 u = corner(a[0], a[1], a[2]) - origin;
+            Vec3 v = corner(b[0], b[1], b[2]) - origin;
+            if (glm::dot(glm::cross(u, v), origin + (u + v) * Real(0.5) - center) < 0) std::swap(u, v);
+            faces[std::size_t(axis * 2 + side)] = make_quad(origin, u, v);
+        }
+    }
+    return faces;
+}
+
+}  // namespace
+
+World::World(const Scene& scene, WorldOptions options) : options_(options) {
+    for (const Shape& shape : scene.shapes) add(shape);
+    if (options_.acceleration == Acceleration::kBvh) {
+        std::vector<Aabb> boxes;
+        boxes.reserve(primitives_.size());
+        for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
+        bvh_ = Bvh(boxes);
+    }
+}
+
+void World::add_primitive(Kind kind, std::uint32_t index, int material) {
+    primitives_.push_back({kind, index, material});
+}
+
+void World::add(const Shape& shape) {
+    const int material = shape.material;
+    std::visit(
+        [&](const auto& g) {
+            using T = std::decay_t<decltype(g)>;
+            if constexpr (std::is_same_v<T, SphereShape>) {
+                add_primitive(Kind::kSphere, std::uint32_t(spheres_.size()), material);
+                spheres_.push_back({g.center, g.radius});
+            } else if constexpr (std::is_same_v<T, QuadShape>) {
+                add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material);
+                quads_.push_back(make_quad(g.origin, g.u, g.v));
+            } else if constexpr (std::is_same_v<T, TriangleShape>) {
+                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material);
+                triangles_.push_back({g.vertices[0], g.vertices[1], g.vertices[2]});
+            } else if constexpr (std::is_same_v<T, PlaneShape>) {
+                planes_.push_back({make_plane(g.point, g.normal), material});
+            } else if constexpr (std::is_same_v<T, BoxShape>) {
+                for (const Quad& face : box_faces(g)) {
+                    add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material);
+                    quads_.push_back(face);
+                }
+            } else if constexpr (std::is_same_v<T, MeshShape>) {
+                // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
+                // floats on both sides of every edge.
+                for (const auto& tri : g.triangles) {
+                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material);
+                    triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
+                }
+            }
+        },
+        shape.geometry);
+}
+
+Aabb World::bounds(const Primitive& p) const {
+    Aabb box;
+    switch (p.kind) {
+        case Kind::kSphere: {
+            const Sphere& s = spheres_[p.index];
+            box.extend(s.center - Vec3{s.radius});
+            box.extend(s.center + Vec3{s.radius});
+            break;
+        }
+        case Kind::kQuad: {
+            const Quad& q = quads_[p.index];
+            for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v}) box.extend(c);
+            break;
+        }
+        case Kind::kTriangle: {
+            const Triangle& t = triangles_[p.index];
+            for (const Vec3& c : {t.p0, t.p1, t.p2}) box.extend(c);
+            break;
+        }
+    }
+    return box;
+}
+
+bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t primitive, Real t_max,
+                 Candidate& found) const {
+    const Primitive& p = primitives_[primitive];
+    switch (p.kind) {
+        case Kind::kSphere:
+            if (const auto t = intersect_sphere(ray, spheres_[p.index], t_max)) {
+                found = {*t, primitive, Vec2{0}};
+                return true;
+            }
+            return false;
+        case Kind::kQuad:
+            if (const auto h = intersect_quad(ray, quads_[p.index], t_max)) {
+                found = {h->t, primitive, h->ab};
+                return true;
+            }
+            return false;
+        case Kind::kTriangle: {
+            const Triangle& tri = triangles_[p.index];
+            const auto h = options_.triangle_test == TriangleTest::kWatertight
+                               ? intersect_triangle_watertight(ray, sheared, tri, t_max)
+                               : intersect_triangle_moller(ray, tri, t_max);
+            if (h) {
+                found = {h->t, primitive, h->barycentrics};
+                return true;
+            }
+            return false;
+        }
+    }
+    return false;
+}
+
+bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const {
+    bool hit = false;
+    const std::uint32_t bounded = std::uint32_t(primitives_.size());
+    for (std::uint32_t i = 0; i < planes_.size(); ++i) {
+        if (const auto t = intersect_plane(ray, planes_[i].plane, t_max)) {
+            found = {*t, bounded + i, Vec2{0}};
+            t_max = *t;
+            hit = true;
+            if (any_hit) return true;
+        }
+    }
+    const WatertightRay sheared = make_watertight_ray(ray);
+    auto test_one = [&](std::uint32_t primitive, Real& limit) {
+        if (!test(ray, sheared, primitive, limit, found)) return false;
+        limit = found.t;
+        return true;
+    };
+    if (options_.acceleration == Acceleration::kBvh) {
+        return bvh_.traverse(ray, inverse_direction(ray.direction), t_max, any_hit, test_one, stats) || hit;
+    }
+    for (std::uint32_t i = 0; i < bounded; ++i) {
+        if (stats) ++stats->primitives;
+        if (test_one(i, t_max)) {
+            hit = true;
+            if (any_hit) return true;
+        }
+    }
+    return hit;
+}
+
+Hit World::make_hit(const Ray& ray, const Candidate& found) const {
+    Hit hit;
+    hit.t = found.t;
+    hit.primitive = found.primitive;
+    const std::uint32_t bounded = std::uint32_t(primitives_.size());
+    if (found.primitive >= bounded) {
+        const MaterialPlane& p = planes_[found.primitive - bounded];
+        hit.point = ray.at(found.t);
+        hit.uv = plane_uv(p.plane, hit.point);
+        hit.material = p.material;
+        set_face_normal(hit, ray.direction, p.plane.normal);
+        return hit;
+    }
+    const Primitive& p = primitives_[found.primitive];
+    hit.material = p.material;
+    switch (p.kind) {
+        case Kind::kSphere: {
+            const Sphere& s = spheres_[p.index];
+            hit.point = ray.at(found.t);
+            const Vec3 n = sphere_normal(s, hit.point);
+            hit.uv = sphere_uv(n);
+            set_face_normal(hit, ray.direction, n);
+            break;
+        }
+        case Kind::kQuad: {
+            const Quad& q = quads_[p.index];
+            hit.uv = found.uv;
+            hit.point = q.origin + found.uv.x * q.u + found.uv.y * q.v;
+            set_face_normal(hit, ray.direction, q.normal);
+            break;
+        }
+        case Kind::kTriangle: {
+            const Triangle& t = triangles_[p.index];
+            const Real b1 = found.uv.x, b2 = found.uv.y;
+            hit.uv = found.uv;
+            hit.point = (1 - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2;
+            set_face_normal(hit, ray.direction, triangle_normal(t));
+            break;
+        }
+    }
+    return hit;
+}
+
+std::optional<Hit> World::intersect(const Ray& ray, Real t_max) const {
+    Candidate found{};
+    if (!search(ray, t_max, false, found, nullptr)) return std::nullopt;
+    return make_hit(ray, found);
+}
+
+std::optional<Hit> World::intersect(const Ray& ray, Real t_max, TraversalStats& stats) const {
+    Candidate found{};
+    if (!search(ray, t_max, false, found, &stats)) return std::nullopt;
+    return make_hit(ray, found);
+}
+
+bool World::occluded(const Ray& ray, Real t_max) const {
+    Candidate found{};
+    return search(ray, t_max, true, found, nullptr);
+}
+
+std::size_t World::primitive_count() const { return primitives_.size() + planes_.size(); }
+
+const WorldOptions& World::options() const { return options_; }
+
+}  // namespace rt

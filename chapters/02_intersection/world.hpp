@@ -1,0 +1,81 @@
+// The world: every shape of a Scene as intersectable primitives — spheres, quads (a box becomes 6 quads,
+// transformed), triangles (a mesh becomes its triangles) — in a BVH, and unbounded planes tested outside it.
+// The nearest intersection is the smallest t in (0, t_max) over all primitives.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "bvh.hpp"
+#include "hit.hpp"
+#include "plane.hpp"
+#include "quad.hpp"
+#include "rt/ray.hpp"
+#include "rt/scene.hpp"
+#include "sphere.hpp"
+#include "triangle.hpp"
+
+namespace rt {
+
+enum class Acceleration { kBvh, kNone };
+
+struct WorldOptions {
+    TriangleTest triangle_test = TriangleTest::kWatertight;
+    Acceleration acceleration = Acceleration::kBvh;
+};
+
+class World {
+public:
+    explicit World(const Scene& scene, WorldOptions options = {});
+
+    // The nearest hit with 0 < t < t_max, if any. No offset is applied: spawning rays is chapter 03's topic.
+    std::optional<Hit> intersect(const Ray& ray, Real t_max = kInfinity) const;
+    // The same, counting the boxes and primitives tested into `stats`.
+    std::optional<Hit> intersect(const Ray& ray, Real t_max, TraversalStats& stats) const;
+    // Whether anything is hit with 0 < t < t_max (any-hit: stops at the first hit found).
+    bool occluded(const Ray& ray, Real t_max) const;
+
+    std::size_t primitive_count() const;
+    const WorldOptions& options() const;
+    // The hierarchy (empty with Acceleration::kNone).
+    const Bvh& bvh() const { return bvh_; }
+    std::size_t triangle_count() const { return triangles_.size(); }
+
+private:
+    enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle };
+    // A bounded primitive: which array holds it, where, and its material.
+    struct Primitive {
+        Kind kind;
+        std::uint32_t index;
+        int material;
+    };
+    struct MaterialPlane {
+        Plane plane;
+        int material;
+    };
+    // The nearest hit found so far, before its hit record is made.
+    struct Candidate {
+        Real t;
+        std::uint32_t primitive;
+        Vec2 uv;
+    };
+
+    void add(const Shape& shape);
+    void add_primitive(Kind kind, std::uint32_t index, int material);
+    Aabb bounds(const Primitive& p) const;
+    bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t primitive, Real t_max,
+              Candidate& found) const;
+    bool search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const;
+    Hit make_hit(const Ray& ray, const Candidate& found) const;
+
+    WorldOptions options_;
+    std::vector<Sphere> spheres_;
+    std::vector<Quad> quads_;
+    std::vector<Triangle> triangles_;
+    std::vector<Primitive> primitives_;  // the bounded ones; planes are numbered after them
+    std::vector<MaterialPlane> planes_;
+    Bvh bvh_;
+};
+
+}  // namespace rt
