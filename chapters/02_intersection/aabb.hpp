@@ -4,8 +4,8 @@
 #pragma once
 
 #include <algorithm>
-#include <limits>
 
+#include "float_error.hpp"
 #include "rt/math.hpp"
 #include "rt/ray.hpp"
 
@@ -36,7 +36,9 @@ struct Aabb {
 };
 
 // 1 / d per component, computed once per ray: d_i = +0 gives +∞ and d_i = −0 gives −∞.
-inline Vec3 inverse_direction(const Vec3& d) { return Vec3{1} / d; }
+inline Vec3 inverse_direction(const Vec3& d) {
+    return Vec3{1} / d;
+}
 
 // The slab test on [0, t_max]: the entry distance into the box, or +∞ when the ray misses it.
 // A direction component d_i = ±0 never reaches 1 / d_i: the ray is parallel to slab i and stays inside it
@@ -45,8 +47,7 @@ inline Vec3 inverse_direction(const Vec3& d) { return Vec3{1} / d; }
 // culls a surface lying on the box; a box of zero thickness (min_i = max_i) is entered and left at one t.
 inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, Real t_max) {
     // EXERCISE(ch02.slab_test)
-    constexpr Real kGamma3 = 3 * (std::numeric_limits<Real>::epsilon() / 2) /
-                             (1 - 3 * (std::numeric_limits<Real>::epsilon() / 2));
+    constexpr Real kGamma3 = gamma_bound(3);
     Real t_enter = 0;
     Real t_exit = t_max;
     for (int i = 0; i < 3; ++i) {

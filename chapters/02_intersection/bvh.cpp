@@ -9,7 +9,9 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxLeafSize = 8;
-constexpr int kMaxDepth = 36;  // below it, splits are median splits: the traversal stack of 64 never overflows
+constexpr std::uint32_t kMinSplitCount = 2;
+constexpr int kMaxDepth =
+    36;  // below it, splits are median splits: the traversal stack of 64 never overflows
 // SAH costs, in units of one primitive test: a node visit (two box tests) costs about one primitive test.
 constexpr Real kTraversalCost = 1;
 
@@ -27,8 +29,9 @@ struct Builder {
     // Splits [begin, end) at its middle along `axis` (the fallback when the SAH finds no useful split).
     std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, int axis) {
         const std::uint32_t middle = begin + (end - begin) / 2;
-        std::nth_element(indices.begin() + begin, indices.begin() + middle, indices.begin() + end,
-                         [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+        std::nth_element(
+            indices.begin() + begin, indices.begin() + middle, indices.begin() + end,
+            [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
         return middle;
     }
 
@@ -41,7 +44,8 @@ struct Builder {
         nodes[node].min = box.min;
         nodes[node].max = box.max;
         const std::uint32_t count = end - begin;
-        if (count == 1) return make_leaf(node, begin, end);
+        // Two primitives stay together: splitting them would add two nodes (64 bytes) to save one test.
+        if (count <= kMinSplitCount) return make_leaf(node, begin, end);
         const int axis = centroid_box.longest_axis();
         const Real lo = centroid_box.min[axis];
         const Real extent = centroid_box.max[axis] - lo;
@@ -81,7 +85,8 @@ struct Builder {
             for (int b = kBins - 1; b > 0; --b) {
                 right.extend(bin_box[b]);
                 right_count += bin_count[b];
-                const Real cost = left_cost[b - 1] + (right_count > 0 ? right.half_area() * Real(right_count) : 0);
+                const Real cost =
+                    left_cost[b - 1] + (right_count > 0 ? right.half_area() * Real(right_count) : 0);
                 if (cost < best_cost) {
                     best_cost = cost;
                     best = b;  // bins [0, b) go left

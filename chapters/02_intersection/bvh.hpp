@@ -16,7 +16,7 @@ struct BvhNode {
     Vec3 min;
     std::uint32_t offset;  // leaf: first entry in Bvh::indices; interior: index of the second child
     Vec3 max;
-    std::uint32_t count;   // leaf: number of primitives (> 0); interior: 0
+    std::uint32_t count;  // leaf: number of primitives (> 0); interior: 0
 
     Aabb box() const { return {min, max}; }
     bool leaf() const { return count > 0; }
@@ -30,7 +30,7 @@ struct TraversalStats {
 };
 
 class Bvh {
-public:
+  public:
     Bvh() = default;
     // Builds over primitives 0..n−1 with these bounds.
     explicit Bvh(std::span<const Aabb> bounds);
@@ -38,17 +38,19 @@ public:
     const std::vector<BvhNode>& nodes() const { return nodes_; }
     const std::vector<std::uint32_t>& indices() const { return indices_; }
     // The memory the hierarchy adds to the primitives: nodes and the primitive index list.
-    std::size_t bytes() const { return nodes_.size() * sizeof(BvhNode) + indices_.size() * sizeof(std::uint32_t); }
+    std::size_t bytes() const {
+        return nodes_.size() * sizeof(BvhNode) + indices_.size() * sizeof(std::uint32_t);
+    }
     bool empty() const { return nodes_.empty(); }
 
     // Visits, nearest box first, every leaf whose box the ray meets before t_max, calling
-    // `test(primitive, t_max)` for each primitive there: it returns true on a hit and then lowers t_max to it.
-    // With any_hit, returns at the first hit. Returns whether anything was hit.
+    // `test(primitive, t_max)` for each primitive there: it returns true on a hit and then lowers t_max to
+    // it. With any_hit, returns at the first hit. Returns whether anything was hit.
     template <typename Test>
     bool traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_hit, Test&& test,
                   TraversalStats* stats = nullptr) const;
 
-private:
+  private:
     std::vector<BvhNode> nodes_;
     std::vector<std::uint32_t> indices_;
 };
@@ -90,8 +92,14 @@ bool Bvh::traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_
                 current = first_nearer ? first : second;
                 continue;
             }
-            if (t_first < kInfinity) { current = first; continue; }
-            if (t_second < kInfinity) { current = second; continue; }
+            if (t_first < kInfinity) {
+                current = first;
+                continue;
+            }
+            if (t_second < kInfinity) {
+                current = second;
+                continue;
+            }
         }
         // Pop the next subtree that may still hold a nearer hit.
         do {

@@ -10,7 +10,7 @@ namespace rt {
 
 struct Plane {
     Vec3 point{0};
-    Vec3 normal{0, 1, 0};  // unit, outward (the front side)
+    Vec3 normal{0, 1, 0};   // unit, outward (the front side)
     Vec3 tangent{1, 0, 0};  // unit, in the plane: uv = ((p − p₀) · tangent, (p − p₀) · bitangent)
     Vec3 bitangent{0, 0, 1};
 };

@@ -1,6 +1,7 @@
 // Ray–triangle intersection, two ways. A point of the triangle is b0 p0 + b1 p1 + b2 p2 with barycentrics
 // b0 + b1 + b2 = 1, all >= 0.
-//  - Möller–Trumbore (1997): solve o + t d = p0 + b1 e1 + b2 e2 (e1 = p1 − p0, e2 = p2 − p0) by Cramer's rule.
+//  - Möller–Trumbore (1997): solve o + t d = p0 + b1 e1 + b2 e2 (e1 = p1 − p0, e2 = p2 − p0) by Cramer's
+//  rule.
 //    Each triangle computes its own edge tests, so a ray through an edge shared by two triangles can be
 //    rounded outside both: it leaks.
 //  - Watertight (Woop, Benthin, Wald 2013): move the ray's origin to 0, permute the axes so the ray's largest

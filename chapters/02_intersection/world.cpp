@@ -3,14 +3,16 @@
 #include <type_traits>
 #include <variant>
 
+#include "float_error.hpp"
+
 namespace rt {
 namespace {
 
 // The 6 faces of a transformed box as quads (origin, u, v), each turned so u × v points outward.
 std::array<Quad, 6> box_faces(const BoxShape& box) {
     auto corner = [&](int x, int y, int z) {
-        return box.transform.apply_to_point({x ? box.max.x : box.min.x, y ? box.max.y : box.min.y,
-                                             z ? box.max.z : box.min.z});
+        return box.transform.apply_to_point(
+            {x ? box.max.x : box.min.x, y ? box.max.y : box.min.y, z ? box.max.z : box.min.z});
     };
     const Vec3 center = box.transform.apply_to_point((box.min + box.max) * Real(0.5));
     std::array<Quad, 6> faces;
@@ -90,7 +92,8 @@ Aabb World::bounds(const Primitive& p) const {
         }
         case Kind::kQuad: {
             const Quad& q = quads_[p.index];
-            for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v}) box.extend(c);
+            for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v})
+                box.extend(c);
             break;
         }
         case Kind::kTriangle: {
@@ -170,8 +173,11 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     const std::uint32_t bounded = std::uint32_t(primitives_.size());
     if (found.primitive >= bounded) {
         const MaterialPlane& p = planes_[found.primitive - bounded];
-        hit.point = ray.at(found.t);
-        hit.uv = plane_uv(p.plane, hit.point);
+        // Rebuilt from the plane's own coordinates, p = p0 + a T + b B: in the plane up to rounding.
+        hit.uv = plane_uv(p.plane, ray.at(found.t));
+        const Vec3 along_t = hit.uv.x * p.plane.tangent, along_b = hit.uv.y * p.plane.bitangent;
+        hit.point = p.plane.point + along_t + along_b;
+        hit.point_error = gamma_bound(5) * (glm::abs(p.plane.point) + glm::abs(along_t) + glm::abs(along_b));
         hit.material = p.material;
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
@@ -181,8 +187,11 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     switch (p.kind) {
         case Kind::kSphere: {
             const Sphere& s = spheres_[p.index];
-            hit.point = ray.at(found.t);
-            const Vec3 n = sphere_normal(s, hit.point);
+            // Reprojected onto the sphere, p = c + r (p − c) / |p − c|: only the radial rounding remains.
+            const Vec3 n = sphere_normal(s, ray.at(found.t));
+            const Vec3 radial = s.radius * n;
+            hit.point = s.center + radial;
+            hit.point_error = gamma_bound(5) * (glm::abs(s.center) + glm::abs(radial));
             hit.uv = sphere_uv(n);
             set_face_normal(hit, ray.direction, n);
             break;
@@ -190,7 +199,9 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         case Kind::kQuad: {
             const Quad& q = quads_[p.index];
             hit.uv = found.uv;
-            hit.point = q.origin + found.uv.x * q.u + found.uv.y * q.v;
+            const Vec3 along_u = found.uv.x * q.u, along_v = found.uv.y * q.v;
+            hit.point = q.origin + along_u + along_v;
+            hit.point_error = gamma_bound(3) * (glm::abs(q.origin) + glm::abs(along_u) + glm::abs(along_v));
             set_face_normal(hit, ray.direction, q.normal);
             break;
         }
@@ -198,7 +209,9 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Triangle& t = triangles_[p.index];
             const Real b1 = found.uv.x, b2 = found.uv.y;
             hit.uv = found.uv;
-            hit.point = (1 - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2;
+            const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
+            hit.point = w0 + w1 + w2;
+            hit.point_error = gamma_bound(7) * (glm::abs(w0) + glm::abs(w1) + glm::abs(w2));
             set_face_normal(hit, ray.direction, triangle_normal(t));
             break;
         }
@@ -223,8 +236,12 @@ bool World::occluded(const Ray& ray, Real t_max) const {
     return search(ray, t_max, true, found, nullptr);
 }
 
-std::size_t World::primitive_count() const { return primitives_.size() + planes_.size(); }
+std::size_t World::primitive_count() const {
+    return primitives_.size() + planes_.size();
+}
 
-const WorldOptions& World::options() const { return options_; }
+const WorldOptions& World::options() const {
+    return options_;
+}
 
 }  // namespace rt

@@ -26,7 +26,7 @@ struct WorldOptions {
 };
 
 class World {
-public:
+  public:
     explicit World(const Scene& scene, WorldOptions options = {});
 
     // The nearest hit with 0 < t < t_max, if any. No offset is applied: spawning rays is chapter 03's topic.
@@ -42,7 +42,7 @@ public:
     const Bvh& bvh() const { return bvh_; }
     std::size_t triangle_count() const { return triangles_.size(); }
 
-private:
+  private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle };
     // A bounded primitive: which array holds it, where, and its material.
     struct Primitive {

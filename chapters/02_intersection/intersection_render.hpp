@@ -1,0 +1,36 @@
+// Chapter 02's pictures: each camera ray's nearest hit shown by its normal, its distance, or by what finding
+// it cost (boxes plus primitives tested, as a heat map).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "camera.hpp"
+#include "rt/render_loop.hpp"
+#include "world.hpp"
+
+namespace rt {
+
+enum class ShowMode { kNormal, kDistance, kCost };
+
+ShowMode show_mode_from_string(std::string_view name);
+
+// The normal n as the colour (n + 1) / 2.
+Color normal_colour(const Vec3& n);
+// exp(−t / scale): white near the camera, darker far away.
+Color distance_colour(Real t, Real scale);
+// A black–blue–red–yellow–white ramp for x in [0, 1].
+Color heat_colour(Real x);
+// The heat of a query that tested `tests` boxes and primitives: log₂(1 + tests) / 11, white at 2047 tests.
+Real cost_heat(std::uint32_t tests);
+
+struct IntersectionRender {
+    RenderResult result;
+    double mean_tests = 0;  // boxes plus primitives tested per camera ray
+};
+
+// Every sample traces one camera ray (stratified in its pixel) and shows its nearest hit; misses are black.
+IntersectionRender render_intersections(const World& world, const PinholeCamera& camera, ShowMode mode,
+                                        Real distance_scale, const RenderSettings& settings);
+
+}  // namespace rt

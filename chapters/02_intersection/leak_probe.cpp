@@ -1,0 +1,50 @@
+#include "leak_probe.hpp"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include "world.hpp"
+
+namespace rt {
+namespace {
+
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> edge_uses(const MeshShape& mesh) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+    for (const auto& t : mesh.triangles) {
+        for (int i = 0; i < 3; ++i) ++uses[std::minmax(t[std::size_t(i)], t[std::size_t((i + 1) % 3)])];
+    }
+    return uses;
+}
+
+}  // namespace
+
+bool is_closed(const MeshShape& mesh) {
+    for (const auto& [edge, count] : edge_uses(mesh)) {
+        if (count != 2) return false;
+    }
+    return !mesh.triangles.empty();
+}
+
+LeakProbe probe_leaks(const MeshShape& mesh, TriangleTest test) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    scene.shapes.push_back(Shape{mesh, 0, "probe"});
+    const World world(scene, {test, Acceleration::kBvh});
+    Vec3d sum{0};
+    for (const Vec3& p : mesh.positions) sum += Vec3d(p);
+    const Vec3 centroid{sum / double(mesh.positions.size())};
+    LeakProbe probe;
+    auto shoot = [&](const Vec3& target) {
+        ++probe.rays;
+        if (!world.intersect(Ray{centroid, glm::normalize(target - centroid)})) ++probe.escaped;
+    };
+    for (const Vec3& p : mesh.positions) shoot(p);
+    for (const auto& [edge, count] : edge_uses(mesh)) {
+        const Vec3 a = mesh.positions[edge.first], b = mesh.positions[edge.second];
+        for (Real s : {Real(0.25), Real(0.5), Real(0.75)}) shoot(a + s * (b - a));
+    }
+    return probe;
+}
+
+}  // namespace rt
