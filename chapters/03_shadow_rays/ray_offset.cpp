@@ -1,0 +1,65 @@
+#include "ray_offset.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "rt/errors.hpp"
+
+namespace rt {
+
+std::string_view to_string(OffsetMethod method) {
+    switch (method) {
+        case OffsetMethod::kNone:
+            return "none";
+        case OffsetMethod::kEpsilon:
+            return "epsilon";
+        case OffsetMethod::kRobust:
+            return "robust";
+    }
+    return "?";
+}
+
+OffsetMethod offset_method_from_string(std::string_view name) {
+    for (OffsetMethod m : {OffsetMethod::kNone, OffsetMethod::kEpsilon, OffsetMethod::kRobust}) {
+        if (to_string(m) == name) return m;
+    }
+    throw InputError("--offset: unknown method \"" + std::string(name) +
+                     "\"; expected none, epsilon or robust");
+}
+
+Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction) {
+    // EXERCISE(ch03.robust_offset)
+    const Real distance = glm::dot(glm::abs(n), point_error);
+    Vec3 offset = distance * n;
+    if (glm::dot(direction, n) < 0) offset = -offset;
+    Vec3 origin = p + offset;
+    // p + offset is rounded too, possibly back toward the surface: one more ulp outward covers that.
+    for (int i = 0; i < 3; ++i) {
+        if (offset[i] > 0) origin[i] = std::nextafter(origin[i], kInfinity);
+        if (offset[i] < 0) origin[i] = std::nextafter(origin[i], -kInfinity);
+    }
+    return origin;
+    // END EXERCISE
+}
+
+Vec3 epsilon_offset(const Vec3& p, const Vec3& n, const Vec3& direction, Real epsilon) {
+    return glm::dot(direction, n) < 0 ? p - epsilon * n : p + epsilon * n;
+}
+
+Vec3 offset_origin(const Hit& hit, const Vec3& direction, const RayOffset& offset) {
+    switch (offset.method) {
+        case OffsetMethod::kNone:
+            return hit.point;
+        case OffsetMethod::kEpsilon:
+            return epsilon_offset(hit.point, hit.normal, direction, offset.epsilon);
+        case OffsetMethod::kRobust:
+            return robust_offset(hit.point, hit.point_error, hit.normal, direction);
+    }
+    return hit.point;
+}
+
+Ray spawn_ray(const Hit& hit, const Vec3& direction, const RayOffset& offset) {
+    return Ray{offset_origin(hit, direction, offset), direction};
+}
+
+}  // namespace rt

@@ -1,0 +1,45 @@
+// Spawning a ray from a surface without hitting that surface again. The hit point is rounded: it lies up to
+// hit.point_error off the true surface, on either side, so a ray started exactly there can meet its own
+// surface at a tiny t > 0 (shadow acne). Three answers, kept side by side for the lesson:
+//  - none:    o = p. Roughly half the rays leaving a surface re-hit it.
+//  - epsilon: o = p + s ε n, s = sign(d · n): a fixed distance along the normal. Too small far from the
+//             origin (p + ε n rounds back to p once ε < ulp(p)), too large for small scenes (rays start
+//             beyond a nearby occluder: light leaks).
+//  - robust:  o = p + s δ n with δ = |n_x| e_x + |n_y| e_y + |n_z| e_z (e = hit.point_error), the distance
+//             along n that clears the box of possible true points, then each component rounded one ulp
+//             further away from the surface (PBRT 4 §6.8.6): scale-free, and never short.
+#pragma once
+
+#include <string_view>
+
+#include "hit.hpp"
+#include "rt/math.hpp"
+#include "rt/ray.hpp"
+
+namespace rt {
+
+enum class OffsetMethod { kNone, kEpsilon, kRobust };
+
+struct RayOffset {
+    OffsetMethod method = OffsetMethod::kRobust;
+    Real epsilon = Real(1e-4);  // the fixed distance of OffsetMethod::kEpsilon
+};
+
+// "none", "epsilon" or "robust".
+std::string_view to_string(OffsetMethod method);
+// The method of that name ("none"|"epsilon"|"robust"); throws InputError for any other name.
+OffsetMethod offset_method_from_string(std::string_view name);
+
+// The robust origin: δ = |n| · e, o = p + s δ n (s = sign(d · n), +1 when d · n = 0), then every component of
+// o that moved is stepped one ulp further in the direction it moved (std::nextafter).
+Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction);
+// The fixed-epsilon origin: o = p + s ε n, s = sign(d · n).
+Vec3 epsilon_offset(const Vec3& p, const Vec3& n, const Vec3& direction, Real epsilon);
+
+// The origin for a ray leaving the surface at `hit` toward `direction` (any length), on the side `direction`
+// points to.
+Vec3 offset_origin(const Hit& hit, const Vec3& direction, const RayOffset& offset);
+// A ray leaving the surface at `hit` along the unit `direction`.
+Ray spawn_ray(const Hit& hit, const Vec3& direction, const RayOffset& offset = {});
+
+}  // namespace rt
