@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <bit>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -21,7 +24,8 @@ namespace fs = std::filesystem;
 
 Real srgb_encode(Real linear) {
     const Real c = std::clamp(linear, Real(0), Real(1));
-    return c <= Real(0.0031308) ? Real(12.92) * c : Real(1.055) * std::pow(c, Real(1) / Real(2.4)) - Real(0.055);
+    return c <= Real(0.0031308) ? Real(12.92) * c
+                                : Real(1.055) * std::pow(c, Real(1) / Real(2.4)) - Real(0.055);
 }
 
 std::uint8_t to_display_byte(Real linear) {
@@ -31,32 +35,57 @@ std::uint8_t to_display_byte(Real linear) {
 
 void check_writable(const fs::path& path) {
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const std::string where = path.string() + ": cannot be written: ";
     std::error_code ec;
+    if (!fs::exists(folder, ec)) throw InputError(where + "folder " + folder.string() + " does not exist");
     if (!fs::is_directory(folder, ec)) {
-        throw InputError(path.string() + ": output folder " + folder.string() + " does not exist");
+        throw InputError(where + folder.string() + " is a file, not a folder");
     }
     if (::access(folder.c_str(), W_OK) != 0) {
-        throw InputError(path.string() + ": output folder " + folder.string() + " is not writable");
+        throw InputError(where + "folder " + folder.string() + " is not writable");
     }
+    if (fs::is_directory(path, ec)) throw InputError(where + "it is a folder");
 }
 
 namespace {
 
-// Writes through `write_to(temporary)` then renames over `path`: all or nothing.
-void write_atomically(const fs::path& path, const std::function<bool(const fs::path&)>& write_to) {
+// What went wrong, from errno, for a message: " (No space left on device)".
+std::string system_reason(int error) {
+    return error != 0 ? " (" + std::string(std::strerror(error)) + ")" : "";
+}
+
+// Writes through `write_to(file)` into a temporary file beside `path`, then renames it over `path`: all or
+// nothing. Every write, the flush and the close are checked, so a full disk cannot leave a truncated file.
+void write_atomically(const fs::path& path, const std::function<bool(std::FILE*)>& write_to) {
     check_writable(path);
     const fs::path temporary = path.string() + ".partial-" + std::to_string(::getpid());
-    const bool ok = write_to(temporary);
+    errno = 0;
+    std::FILE* file = std::fopen(temporary.c_str(), "wb");
+    if (!file) {
+        throw std::runtime_error(path.string() + ": could not create " + temporary.string() +
+                                 system_reason(errno));
+    }
+    bool ok = write_to(file);
+    ok = std::fflush(file) == 0 && ok;
+    const int error = errno;
+    ok = std::fclose(file) == 0 && ok;
     std::error_code ec;
     if (!ok) {
         fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() + ": could not write the file (disk full or I/O error)");
+        throw std::runtime_error(path.string() + ": could not write the file" +
+                                 system_reason(error ? error : errno) +
+                                 "; an earlier file of that name is left as it was");
     }
     fs::rename(temporary, path, ec);
     if (ec) {
         fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() + ": could not rename the finished file: " + ec.message());
+        throw std::runtime_error(path.string() +
+                                 ": could not rename the finished file into place: " + ec.message());
     }
+}
+
+bool write_bytes(std::FILE* file, const void* data, std::size_t size) {
+    return std::fwrite(data, 1, size, file) == size;
 }
 
 }  // namespace
@@ -69,42 +98,82 @@ void write_png(const Image& image, const fs::path& path) {
         bytes[i++] = to_display_byte(c.g);
         bytes[i++] = to_display_byte(c.b);
     }
-    write_atomically(path, [&](const fs::path& temporary) {
-        return stbi_write_png(temporary.c_str(), image.width(), image.height(), 3, bytes.data(),
-                              image.width() * 3) != 0;
+    // stbi_write_png (to a file name) ignores write errors; encoding through a callback lets us check them.
+    struct Sink {
+        std::FILE* file;
+        bool ok;
+    };
+    write_atomically(path, [&](std::FILE* file) {
+        Sink sink{file, true};
+        const int encoded = stbi_write_png_to_func(
+            [](void* context, void* data, int size) {
+                auto* s = static_cast<Sink*>(context);
+                s->ok = s->ok && write_bytes(s->file, data, std::size_t(size));
+            },
+            &sink, image.width(), image.height(), 3, bytes.data(), image.width() * 3);
+        return encoded != 0 && sink.ok;
     });
 }
 
 // PFM: "PF\n<width> <height>\n<scale>\n" then float RGB rows from the bottom up; a negative scale is
 // little-endian.
 void write_pfm(const Image& image, const fs::path& path) {
-    write_atomically(path, [&](const fs::path& temporary) {
-        std::ofstream out(temporary, std::ios::binary);
-        out << "PF\n" << image.width() << ' ' << image.height() << "\n-1.0\n";
-        for (int y = image.height() - 1; y >= 0; --y) {
+    static_assert(std::endian::native == std::endian::little, "the PFM writer marks its data little-endian");
+    write_atomically(path, [&](std::FILE* file) {
+        const std::string header =
+            "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n-1.0\n";
+        bool ok = write_bytes(file, header.data(), header.size());
+        std::vector<float> row(std::size_t(image.width()) * 3);
+        for (int y = image.height() - 1; y >= 0 && ok; --y) {
             for (int x = 0; x < image.width(); ++x) {
                 const Color& c = image.at(x, y);
-                const float rgb[3] = {float(c.r), float(c.g), float(c.b)};
-                out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
+                row[3 * std::size_t(x)] = float(c.r);
+                row[3 * std::size_t(x) + 1] = float(c.g);
+                row[3 * std::size_t(x) + 2] = float(c.b);
             }
+            ok = write_bytes(file, row.data(), row.size() * sizeof(float));
         }
-        out.flush();
-        return bool(out);
+        return ok;
     });
 }
 
 Image read_pfm(const fs::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) {
+        throw InputError(name + ": must be a PFM file, got " +
+                         (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
+    }
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string() + ": cannot open the file for reading");
+    if (!in) throw InputError(name + ": cannot be opened for reading");
     std::string magic;
-    long width = 0, height = 0;
+    long long width = 0, height = 0;
     double scale = 0;
+    in.width(3);  // the magic is "PF"; read no more than that of whatever else the file holds
     in >> magic >> width >> height >> scale;
-    if (!in || magic != "PF") throw InputError(path.string() + ": not a colour PFM file (expected \"PF\")");
-    if (width <= 0 || height <= 0 || width > 1 << 16 || height > 1 << 16 || scale == 0 || !std::isfinite(scale)) {
-        throw InputError(path.string() + ": bad PFM header");
+    if (magic != "PF") {
+        std::string shown;
+        for (char c : magic) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+        throw InputError(name + ": must be a colour PFM file starting with \"PF\", got \"" + shown + "\"");
+    }
+    if (!in || width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide || scale == 0 ||
+        !std::isfinite(scale)) {
+        throw InputError(name + ": PFM header must give a width and height in [1, " +
+                         std::to_string(kMaxImageSide) + "] and a non-zero scale, got " +
+                         std::to_string(width) + " " + std::to_string(height) + " " + std::to_string(scale));
     }
     in.get();  // the single whitespace after the scale
+    // The data must all be there before the image is allocated: a short file with a huge header is refused.
+    const auto data_start = in.tellg();
+    const auto file_size = fs::file_size(path, ec);
+    const unsigned long long needed = (unsigned long long)(width) * (unsigned long long)(height)*12ull;
+    if (ec || data_start < 0 || file_size < (unsigned long long)(data_start) + needed) {
+        throw InputError(
+            name + ": PFM data must be " + std::to_string(needed) + " bytes for " + std::to_string(width) +
+            "x" + std::to_string(height) + ", got " +
+            std::to_string(ec || data_start < 0 ? 0 : file_size - (unsigned long long)(data_start)) +
+            " (truncated)");
+    }
     const bool file_little_endian = scale < 0;
     const bool swap = file_little_endian != (std::endian::native == std::endian::little);
     Image image{int(width), int(height)};
@@ -112,7 +181,7 @@ Image read_pfm(const fs::path& path) {
         for (int x = 0; x < image.width(); ++x) {
             float rgb[3];
             in.read(reinterpret_cast<char*>(rgb), sizeof rgb);
-            if (!in) throw InputError(path.string() + ": truncated PFM data");
+            if (!in) throw InputError(name + ": PFM data is truncated");
             if (swap) {
                 for (float& v : rgb) {
                     std::uint32_t bits;
@@ -121,7 +190,13 @@ Image read_pfm(const fs::path& path) {
                     std::memcpy(&v, &bits, 4);
                 }
             }
-            image.at(x, y) = Color(rgb[0], rgb[1], rgb[2]);
+            const Color c(rgb[0], rgb[1], rgb[2]);
+            if (!is_finite(c)) {
+                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                 ") must be finite, got " + std::to_string(c.r) + " " + std::to_string(c.g) +
+                                 " " + std::to_string(c.b));
+            }
+            image.at(x, y) = c;
         }
     }
     return image;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -20,8 +21,10 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-// Numbers above this cannot be geometry or radiance in a float renderer; they are typos or overflow.
-constexpr double kLargestNumber = 1e30;
+// The largest magnitude a number in a scene may have. Ray tests multiply up to three coordinates (a triple
+// product), and (2·1e9)³·3 ≈ 2.4e28 stays far below float's 3.4e38; a scene beyond 1e9 units could not hold
+// a unit-sized object in float anyway (the spacing of floats there is 64).
+constexpr double kLargestNumber = 1e9;
 
 std::string show(double x) {
     std::ostringstream out;
@@ -29,7 +32,39 @@ std::string show(double x) {
     return out.str();
 }
 
-std::string quote(std::string_view s) { return "\"" + std::string(s) + "\""; }
+// A name from the file, made printable so a message stays one line: control bytes become \n, \xNN.
+std::string printable(std::string_view s) {
+    constexpr std::size_t kLongest = 64;
+    std::string out;
+    for (const char c : s.substr(0, kLongest)) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (byte < 0x20 || byte == 0x7f) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "\\x%02x", byte);
+            out += hex;
+        } else {
+            out += c;
+        }
+    }
+    if (s.size() > kLongest) out += "...";
+    return out;
+}
+
+std::string quote(std::string_view s) {
+    return "\"" + printable(s) + "\"";
+}
+
+std::string show(const Vec3& v) {
+    return "[" + show(v.x) + ", " + show(v.y) + ", " + show(v.z) + "]";
+}
+
+// A vector that float arithmetic can normalise: its length in Real is positive and finite.
+bool normalisable(const Vec3& v) {
+    const Real length = glm::length(v);
+    return length > 0 && std::isfinite(length) && is_finite(v / length);
+}
 
 std::string suggestion(std::string_view word, std::span<const std::string_view> candidates) {
     const auto match = closest_match(word, candidates);
@@ -38,8 +73,9 @@ std::string suggestion(std::string_view word, std::span<const std::string_view> 
 
 // A value in the scene file and its place ("shapes[3].radius"); every read checks type and range.
 class Node {
-public:
-    Node(const Json& value, std::string place, const std::string& file) : value_(value), place_(std::move(place)), file_(file) {}
+  public:
+    Node(const Json& value, std::string place, const std::string& file)
+        : value_(value), place_(std::move(place)), file_(file) {}
 
     [[noreturn]] void fail(const std::string& what) const {
         throw InputError(file_ + ": " + (place_.empty() ? "" : place_ + ": ") + what);
@@ -52,15 +88,19 @@ public:
         if (!value_.contains(key)) fail("missing required field " + quote(key));
         return Node(value_.at(key), child_place(key), file_);
     }
-    Node element(std::size_t i) const { return Node(value_.at(i), place_ + "[" + std::to_string(i) + "]", file_); }
+    Node element(std::size_t i) const {
+        return Node(value_.at(i), place_ + "[" + std::to_string(i) + "]", file_);
+    }
 
-    void expect_object(std::span<const std::string_view> allowed_keys) const {
+    // `owner` says whose keys these are in the message ("a mirror material"), when the type decides them.
+    void expect_object(std::span<const std::string_view> allowed_keys, const std::string& owner = "") const {
         if (!value_.is_object()) fail("must be an object, got " + std::string(value_.type_name()));
         for (const auto& [key, unused] : value_.items()) {
             bool known = false;
             for (std::string_view k : allowed_keys) known = known || k == key;
             if (!known) {
-                throw InputError(file_ + ": " + child_place(key) + ": unknown key" + suggestion(key, allowed_keys));
+                throw InputError(file_ + ": " + child_place(key) + ": unknown key" +
+                                 (owner.empty() ? "" : " for " + owner) + suggestion(key, allowed_keys));
             }
         }
     }
@@ -76,7 +116,7 @@ public:
         if (!value_.is_number()) fail("must be a number, got " + std::string(value_.type_name()));
         const double x = value_.get<double>();
         if (!std::isfinite(x) || std::abs(x) > kLargestNumber) {
-            fail("must be a finite number of magnitude at most 1e30, got " + show(x));
+            fail("must be a finite number of magnitude at most " + show(kLargestNumber) + ", got " + show(x));
         }
         return x;
     }
@@ -95,21 +135,31 @@ public:
         return Real(x);
     }
     int integer(long long low, long long high) const {
-        if (!value_.is_number_integer()) fail("must be a whole number, got " + std::string(value_.type_name()));
+        const std::string range = "[" + std::to_string(low) + ", " + std::to_string(high) + "]";
+        if (!value_.is_number_integer()) {
+            fail("must be a whole number in " + range + ", got " +
+                 (value_.is_number() ? show(value_.get<double>()) : std::string(value_.type_name())));
+        }
+        if (value_.is_number_unsigned() &&
+            value_.get<unsigned long long>() > static_cast<unsigned long long>(high)) {
+            fail("must be in " + range + ", got " + std::to_string(value_.get<unsigned long long>()));
+        }
         const long long x = value_.get<long long>();
-        if (x < low || x > high) fail("must be in [" + show(double(low)) + ", " + show(double(high)) + "], got " + show(double(x)));
+        if (x < low || x > high) fail("must be in " + range + ", got " + std::to_string(x));
         return int(x);
     }
     Vec3 vec3() const {
         if (!value_.is_array() || value_.size() != 3) {
-            fail("must be an array of 3 numbers, got " +
-                 (value_.is_array() ? "an array of " + std::to_string(value_.size()) : std::string(value_.type_name())));
+            fail("must be an array of 3 numbers, got " + (value_.is_array()
+                                                              ? "an array of " + std::to_string(value_.size())
+                                                              : std::string(value_.type_name())));
         }
         return {element(0).real(), element(1).real(), element(2).real()};
     }
-    Vec3 nonzero_vec3() const {
+    // A direction: float must be able to normalise it (not zero, not so short that its length underflows).
+    Vec3 direction() const {
         const Vec3 v = vec3();
-        if (v == Vec3(0)) fail("must not be the zero vector");
+        if (!normalisable(v)) fail("must be a direction of non-zero length, got " + show(v));
         return v;
     }
     Color color_in(double high) const {
@@ -122,9 +172,9 @@ public:
         return c;
     }
 
-private:
+  private:
     std::string child_place(std::string_view key) const {
-        return place_.empty() ? std::string(key) : place_ + "." + std::string(key);
+        return place_.empty() ? printable(key) : place_ + "." + printable(key);
     }
 
     const Json& value_;
@@ -132,10 +182,12 @@ private:
     const std::string& file_;
 };
 
-constexpr std::string_view kTopKeys[] = {"description", "camera", "image", "materials", "shapes", "lights", "effects"};
+constexpr std::string_view kTopKeys[] = {"description", "camera", "image",  "materials",
+                                         "shapes",      "lights", "effects"};
 constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
-constexpr std::string_view kMaterialTypes[] = {"diffuse", "mirror", "glossy", "retroreflective", "dielectric"};
+constexpr std::string_view kMaterialTypes[] = {"diffuse", "mirror", "glossy", "retroreflective",
+                                               "dielectric"};
 constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
 constexpr std::string_view kLightTypes[] = {"point", "environment"};
 constexpr std::string_view kTransformKeys[] = {"scale", "rotate_x", "rotate_y", "rotate_z", "translate"};
@@ -145,11 +197,15 @@ CameraDesc read_camera(const Node& node) {
     CameraDesc camera;
     camera.from = node["from"].vec3();
     camera.at = node["at"].vec3();
-    if (node.has("up")) camera.up = node["up"].nonzero_vec3();
+    if (node.has("up")) camera.up = node["up"].direction();
     if (node.has("vfov")) camera.vfov = node["vfov"].real_in(0, 180, true, true);
-    if (camera.at == camera.from) node["at"].fail("must differ from camera.from");
+    if (!normalisable(camera.at - camera.from)) {
+        node["at"].fail("must differ from camera.from, so that at - from is a direction, got at - from = " +
+                        show(camera.at - camera.from));
+    }
     if (parallel(Vec3d(camera.at - camera.from), Vec3d(camera.up))) {
-        node["up"].fail("must not be parallel to the view direction (at - from)");
+        node["up"].fail("must not be parallel to the view direction at - from = " +
+                        show(camera.at - camera.from) + ", got " + show(camera.up));
     }
     return camera;
 }
@@ -175,16 +231,20 @@ Material read_material(const Node& node, const std::string& name) {
     m.name = name;
     if (type == "diffuse") {
         m.type = MaterialType::kDiffuse;
-        node.expect_object(std::array<std::string_view, 3>{"type", "albedo", "emission"});
+        node.expect_object(std::array<std::string_view, 3>{"type", "albedo", "emission"},
+                           "a diffuse material");
     } else if (type == "mirror") {
         m.type = MaterialType::kMirror;
-        node.expect_object(std::array<std::string_view, 3>{"type", "reflectance", "emission"});
+        node.expect_object(std::array<std::string_view, 3>{"type", "reflectance", "emission"},
+                           "a mirror material");
     } else if (type == "glossy" || type == "retroreflective") {
         m.type = type == "glossy" ? MaterialType::kGlossy : MaterialType::kRetroreflective;
-        node.expect_object(std::array<std::string_view, 4>{"type", "albedo", "roughness", "emission"});
+        node.expect_object(std::array<std::string_view, 4>{"type", "albedo", "roughness", "emission"},
+                           "a " + type + " material");
     } else if (type == "dielectric") {
         m.type = MaterialType::kDielectric;
-        node.expect_object(std::array<std::string_view, 3>{"type", "ior", "absorption"});
+        node.expect_object(std::array<std::string_view, 3>{"type", "ior", "absorption"},
+                           "a dielectric material");
     } else {
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypes) +
                           "; expected diffuse, mirror, glossy, retroreflective or dielectric");
@@ -215,52 +275,88 @@ Transform read_transform(const Node& node) {
     return t;
 }
 
-// |a × b| ≤ 1e-7 |a| |b|: the parallelogram (or triangle) of a and b has no area worth rendering.
+// |a × b| ≤ 1e-7 |a| |b| (in double), or a × b too short for float to normalise: the parallelogram (or
+// triangle) of a and b has no area worth rendering, and its normal would be NaN.
 bool zero_area(const Vec3& a, const Vec3& b) {
     const Vec3d da(a), db(b);
-    return glm::length(glm::cross(da, db)) <= 1e-7 * glm::length(da) * glm::length(db);
+    return glm::length(glm::cross(da, db)) <= 1e-7 * glm::length(da) * glm::length(db) ||
+           !normalisable(glm::cross(a, b));
 }
 
+// A point after a transform (scale · rotation + translation) must stay inside the limits of a scene file.
+void check_within_limits(const Node& node, const std::string& what, const Vec3& p) {
+    for (int i = 0; i < 3; ++i) {
+        if (!(std::abs(double(p[i])) <= kLargestNumber)) {
+            node.fail("moves " + what + " to " + show(p) + ", beyond the limit of " + show(kLargestNumber));
+        }
+    }
+}
+
+// An OBJ file's triangles: polygons are split into fans (0, k, k + 1) here, after every index is checked,
+// because tinyobjloader's own triangulation reads vertex positions before anyone has checked the indices.
 MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     MeshShape mesh;
     const Node file = node["file"];
     mesh.file = file.string();
     if (node.has("transform")) mesh.transform = read_transform(node["transform"]);
     const fs::path path = scene_folder / mesh.file;
+    const std::string obj = printable(path.string());
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) file.fail("cannot open mesh " + path.string());
+    if (!fs::is_regular_file(path, ec)) {
+        file.fail("must name an OBJ file, got " + obj +
+                  (fs::exists(path, ec) ? " (not a file)" : " (no such file)"));
+    }
     tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
+    config.triangulate = false;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
     if (!reader.ParseFromFile(path.string(), config)) {
         std::string error = reader.Error();
         if (const auto newline = error.find('\n'); newline != std::string::npos) error.resize(newline);
-        file.fail("malformed OBJ " + path.string() + ": " + error);
+        file.fail(obj + ": malformed OBJ: " + printable(error));
     }
     const auto& vertices = reader.GetAttrib().vertices;
     const std::size_t vertex_count = vertices.size() / 3;
     for (std::size_t i = 0; i < vertex_count; ++i) {
         const Vec3 p(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);
-        if (!is_finite(p)) file.fail(path.string() + ": vertex " + std::to_string(i + 1) + " is not finite");
+        const std::string vertex = "vertex " + std::to_string(i + 1);
+        if (!is_finite(p) || std::abs(p.x) > kLargestNumber || std::abs(p.y) > kLargestNumber ||
+            std::abs(p.z) > kLargestNumber) {
+            file.fail(obj + ": " + vertex + ": must be finite, of magnitude at most " + show(kLargestNumber) +
+                      ", got " + show(p));
+        }
         mesh.positions.push_back(mesh.transform.apply_to_point(p));
+        if (node.has("transform")) check_within_limits(node["transform"], vertex, mesh.positions.back());
     }
+    std::size_t face_number = 0;
     for (const auto& shape : reader.GetShapes()) {
         const auto& indices = shape.mesh.indices;
-        for (std::size_t f = 0; f + 2 < indices.size(); f += 3) {
-            std::array<std::uint32_t, 3> triangle{};
-            for (std::size_t k = 0; k < 3; ++k) {
-                const int index = indices[f + k].vertex_index;
-                if (index < 0 || std::size_t(index) >= vertex_count) {
-                    file.fail(path.string() + ": face " + std::to_string(f / 3 + 1) + " uses vertex " +
-                              std::to_string(index + 1) + " but the file has " + std::to_string(vertex_count));
-                }
-                triangle[k] = std::uint32_t(index);
+        std::size_t first = 0;
+        for (const unsigned int corners : shape.mesh.num_face_vertices) {
+            ++face_number;
+            const std::string face = obj + ": face " + std::to_string(face_number);
+            if (first + corners > indices.size())
+                file.fail(face + ": must list its vertices, got a truncated list");
+            if (corners < 3) {
+                file.fail(face + ": must have at least 3 vertices, got " + std::to_string(corners));
             }
-            mesh.triangles.push_back(triangle);
+            std::vector<std::uint32_t> polygon;
+            for (std::size_t k = 0; k < corners; ++k) {
+                const int index = indices[first + k].vertex_index;
+                if (index < 0 || std::size_t(index) >= vertex_count) {
+                    file.fail(face + ": vertex indices must be in [1, " + std::to_string(vertex_count) +
+                              "] (negative ones count back from the last vertex), got " +
+                              std::to_string(static_cast<long long>(index) + 1));
+                }
+                polygon.push_back(std::uint32_t(index));
+            }
+            for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+                mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+            }
+            first += corners;
         }
     }
-    if (mesh.triangles.empty()) file.fail("mesh " + path.string() + " has no triangles");
+    if (mesh.triangles.empty()) file.fail(obj + ": must have at least one face, got none");
     return mesh;
 }
 
@@ -277,35 +373,50 @@ Shape read_shape(const Node& node, const std::map<std::string, int>& material_in
         return k;
     };
     if (type == "sphere") {
-        node.expect_object(keys({"center", "radius"}));
+        node.expect_object(keys({"center", "radius"}), "a sphere");
         shape.geometry = SphereShape{node["center"].vec3(), node["radius"].positive()};
     } else if (type == "quad") {
-        node.expect_object(keys({"origin", "u", "v"}));
+        node.expect_object(keys({"origin", "u", "v"}), "a quad");
         QuadShape q{node["origin"].vec3(), node["u"].vec3(), node["v"].vec3()};
-        if (zero_area(q.u, q.v)) node.fail("quad has zero area (u and v are parallel or zero)");
+        if (zero_area(q.u, q.v)) {
+            node.fail("quad must have an area (u and v not parallel, not zero), got u = " + show(q.u) +
+                      ", v = " + show(q.v));
+        }
         shape.geometry = q;
     } else if (type == "triangle") {
-        node.expect_object(keys({"vertices"}));
+        node.expect_object(keys({"vertices"}), "a triangle");
         const Node vertices = node["vertices"];
-        if (vertices.array_size() != 3) vertices.fail("must be an array of 3 vertices, got " + std::to_string(vertices.array_size()));
+        if (vertices.array_size() != 3)
+            vertices.fail("must be an array of 3 vertices, got " + std::to_string(vertices.array_size()));
         TriangleShape t{{vertices.element(0).vec3(), vertices.element(1).vec3(), vertices.element(2).vec3()}};
         if (zero_area(t.vertices[1] - t.vertices[0], t.vertices[2] - t.vertices[0])) {
-            node.fail("triangle has zero area (its vertices are repeated or collinear)");
+            node.fail("triangle must have an area (vertices neither repeated nor collinear), got " +
+                      show(t.vertices[0]) + ", " + show(t.vertices[1]) + ", " + show(t.vertices[2]));
         }
         shape.geometry = t;
     } else if (type == "plane") {
-        node.expect_object(keys({"point", "normal"}));
-        shape.geometry = PlaneShape{node["point"].vec3(), node["normal"].nonzero_vec3()};
+        node.expect_object(keys({"point", "normal"}), "a plane");
+        shape.geometry = PlaneShape{node["point"].vec3(), node["normal"].direction()};
     } else if (type == "box") {
-        node.expect_object(keys({"min", "max", "transform"}));
+        node.expect_object(keys({"min", "max", "transform"}), "a box");
         BoxShape b{node["min"].vec3(), node["max"].vec3(), {}};
         for (int i = 0; i < 3; ++i) {
-            if (!(b.max[i] > b.min[i])) node["max"].fail("must exceed min on every axis");
+            if (!(b.max[i] > b.min[i])) {
+                node["max"].fail("must exceed min on every axis, got min " + show(b.min) + ", max " +
+                                 show(b.max));
+            }
         }
-        if (node.has("transform")) b.transform = read_transform(node["transform"]);
+        if (node.has("transform")) {
+            b.transform = read_transform(node["transform"]);
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                             (corner & 4) ? b.max.z : b.min.z);
+                check_within_limits(node["transform"], "corner " + show(p), b.transform.apply_to_point(p));
+            }
+        }
         shape.geometry = b;
     } else if (type == "mesh") {
-        node.expect_object(keys({"file", "transform"}));
+        node.expect_object(keys({"file", "transform"}), "a mesh");
         shape.geometry = read_mesh(node, folder);
     } else {
         node["type"].fail("unknown shape type " + quote(type) + suggestion(type, kShapeTypes) +
@@ -325,10 +436,10 @@ void read_light(const Node& node, Scene& scene) {
     if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
     const std::string type = node["type"].string();
     if (type == "point") {
-        node.expect_object(std::array<std::string_view, 3>{"type", "position", "intensity"});
+        node.expect_object(std::array<std::string_view, 3>{"type", "position", "intensity"}, "a point light");
         scene.point_lights.push_back({node["position"].vec3(), node["intensity"].color_in(kLargestNumber)});
     } else if (type == "environment") {
-        node.expect_object(std::array<std::string_view, 2>{"type", "radiance"});
+        node.expect_object(std::array<std::string_view, 2>{"type", "radiance"}, "an environment light");
         if (scene.environment) node.fail("a scene has at most one environment light");
         scene.environment = EnvironmentLight{node["radiance"].color_in(kLargestNumber)};
     } else {
@@ -356,13 +467,16 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
     Json root;
     try {
         root = Json::parse(text);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // a parse error, or a number too large for a double (1e400)
         std::string what = e.what();
-        if (const auto at = what.find("parse error"); at != std::string::npos) what = what.substr(at);
-        throw InputError(name + ": not valid JSON: " + what);
+        if (const auto at = what.find("] "); what.starts_with("[json.exception") && at != std::string::npos) {
+            what = what.substr(at + 2);
+        }
+        throw InputError(name + ": not valid JSON: " + printable(what));
     }
     const Node top(root, "", name);
     top.expect_object(kTopKeys);
+    if (top.has("description")) top["description"].string();
 
     Scene scene;
     scene.file = name;
@@ -376,13 +490,13 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
         if (!materials.json().is_object()) materials.fail("must be an object of named materials");
         for (const auto& [key, value] : root.at("materials").items()) {
             material_index[key] = int(scene.materials.size());
-            scene.materials.push_back(read_material(Node(value, "materials." + key, name), key));
+            scene.materials.push_back(read_material(Node(value, "materials." + printable(key), name), key));
         }
         for (const Material& m : scene.materials) material_names.push_back(m.name);
     }
     if (top.has("shapes")) {
         const Node shapes = top["shapes"];
-        const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+        const fs::path folder = file.parent_path();  // empty for a bare file name: the current folder
         for (std::size_t i = 0; i < shapes.array_size(); ++i) {
             scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
         }
@@ -390,7 +504,10 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
     std::vector<bool> used(scene.materials.size(), false);
     for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
     for (std::size_t i = 0; i < used.size(); ++i) {
-        if (!used[i]) Node(root, "materials." + scene.materials[i].name, name).fail("defined but used by no shape");
+        if (!used[i]) {
+            Node(root, "materials." + printable(scene.materials[i].name), name)
+                .fail("defined but used by no shape (use it or remove it)");
+        }
     }
     if (top.has("lights")) {
         const Node lights = top["lights"];
