@@ -1,0 +1,114 @@
+#include "direct_lighting.hpp"
+
+#include <algorithm>
+
+#include "area_light_sampling.hpp"
+#include "frame.hpp"
+#include "sampling.hpp"
+#include "shadow_ray.hpp"
+#include "sphere_light_sampling.hpp"
+
+namespace rt {
+namespace {
+
+bool black(const Color& c) {
+    return !(c.r > 0 || c.g > 0 || c.b > 0);
+}
+
+// With the glossy effect off, a lobe is shaded as a Lambert surface of the same albedo.
+Brdf without_lobes(const Brdf& brdf) {
+    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
+    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
+    return brdf;
+}
+
+}  // namespace
+
+DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options)
+    : world_(world), scene_(scene), lights_(std::move(lights)), options_(options) {
+    options_.shadow_samples = std::max(1, options_.shadow_samples);
+    const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
+    for (const Material& m : scene.materials) {
+        const Brdf b = brdf_of(m, stand_in);
+        brdfs_.push_back(options_.glossy ? b : without_lobes(b));
+    }
+}
+
+Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Vec3& target,
+                                   const Vec3& wi, const Color& radiance, Real pdf, RayCounts& rays) const {
+    const Real cos_i = glm::dot(wi, hit.normal);
+    if (!(cos_i > 0) || !(pdf > 0) || black(radiance)) return Color(0);
+    const Color f = eval(brdf, wo, wi, hit.normal);
+    if (black(f)) return Color(0);
+    if (options_.shadows && !visible(world_, hit, target, options_.offset, rays)) return Color(0);
+    return f * radiance * (cos_i / pdf);
+}
+
+Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
+    // EXERCISE(ch04.direct_light)
+    const Brdf& b = brdf(hit.material);
+    if (!options_.direct || is_delta(b) || is_black(b))
+        return Color(0);  // a delta is never hit by a light sample
+    const int n = options_.shadow_samples;
+    const Real weight = Real(1) / Real(n);
+    Color sum(0);
+    const Vec3& p = hit.point;
+    for (const QuadLight& light : lights_.quads) {
+        for (int j = 0; j < n; ++j) {
+            if (const auto s = sample_quad_light(light, p, rng.next_vec2())) {
+                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+            }
+        }
+    }
+    for (const TriangleLight& light : lights_.triangles) {
+        for (int j = 0; j < n; ++j) {
+            if (const auto s = sample_triangle_light(light, p, rng.next_vec2())) {
+                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+            }
+        }
+    }
+    for (const SphereLight& light : lights_.spheres) {
+        for (int j = 0; j < n; ++j) {
+            if (const auto s = sample_sphere_light(light, p, rng.next_vec2())) {
+                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+            }
+        }
+    }
+    // A point light is a delta: its one direction carries E = I cos θ / d², i.e. L_e / pdf = I / d².
+    for (const PointLight& light : lights_.points) {
+        const Vec3 to_light = light.position - p;
+        const Real d2 = glm::dot(to_light, to_light);
+        if (!(d2 > 0)) continue;
+        const Real d = std::sqrt(d2);
+        sum += contribution(hit, wo, b, light.position, to_light / d, light.intensity / d2, 1, rays);
+    }
+    // The environment: cosine-weighted directions (pdf = cos θ / π); the shadow ray goes to infinity.
+    if (lights_.environment && !black(lights_.environment->radiance)) {
+        const Frame frame = make_frame(hit.normal);
+        for (int j = 0; j < n; ++j) {
+            const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(rng.next_vec2())));
+            const Real cos_i = glm::dot(wi, hit.normal);
+            if (!(cos_i > 0)) continue;
+            const Color f = eval(b, wo, wi, hit.normal);
+            if (black(f)) continue;
+            if (options_.shadows) {
+                rays.add(RayKind::kShadow);
+                if (world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity)) continue;
+            }
+            sum += weight * f * lights_.environment->radiance * kPi;  // f L cos / (cos / π)
+        }
+    }
+    return sum;
+    // END EXERCISE
+}
+
+Color DirectLighting::radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const {
+    const auto hit = world_.intersect(ray);
+    if (!hit) return lights_.environment ? lights_.environment->radiance : Color(0);
+    const Material& m = scene_.materials[std::size_t(hit->material)];
+    // Emission is one-sided: the front of a quad (u × v), the outside of a sphere.
+    const Color emitted = hit->front_face ? m.emission : Color(0);
+    return emitted + direct(*hit, -ray.direction, rng, rays);
+}
+
+}  // namespace rt

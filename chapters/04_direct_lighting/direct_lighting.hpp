@@ -1,0 +1,60 @@
+// The direct term of the rendering equation at a surface point p seen from direction wo:
+//   L_o(p, wo) = L_e(p, wo) + ∫ f(wo, wi) L_e(x(wi), −wi) V(p, x) cos θ_i dω_i
+// where x(wi) is the light seen along wi and V its visibility. Estimated light by light: N directions wi_j
+// drawn from each light's own density pdf(wi) (area lights), one for a point light (a delta: L_e dω becomes
+// I / d²), N cosine-weighted ones for the environment:
+//   L_direct ≈ Σ_lights (1 / N) Σ_j f(wo, wi_j) L_e(wi_j) cos θ_j V_j / pdf(wi_j).
+// A shadow ray is traced only when its sample could carry light (f, L_e and cos θ all > 0).
+#pragma once
+
+#include <vector>
+
+#include "brdf.hpp"
+#include "hit.hpp"
+#include "light_set.hpp"
+#include "ray_offset.hpp"
+#include "rt/random.hpp"
+#include "rt/ray_counts.hpp"
+#include "rt/scene.hpp"
+#include "world.hpp"
+
+namespace rt {
+
+struct DirectOptions {
+    int shadow_samples = 1;  // N: shadow rays per area light (and environment) per hit
+    bool direct = true;      // effect "direct": sample the lights at all
+    bool shadows = true;     // effect "shadows": trace shadow rays (false: every light counts as visible)
+    bool glossy = true;      // effect "glossy": false shades glossy and retro-reflective lobes as Lambert
+    RayOffset offset{};
+    Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo until chapter 07
+};
+
+// What shading needs, built once per render.
+class DirectLighting {
+  public:
+    DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options);
+
+    // The direct term at `hit` toward wo (unit, pointing away from the surface, on the side of hit.normal).
+    Color direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const;
+    // The radiance arriving along a camera ray: emission and direct light at the nearest hit, or the
+    // environment when the ray leaves the scene.
+    Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;
+
+    const Brdf& brdf(int material) const { return brdfs_[std::size_t(material)]; }
+    const LightSet& lights() const { return lights_; }
+    const DirectOptions& options() const { return options_; }
+    const World& world() const { return world_; }
+
+  private:
+    // One light sample's contribution f L cos / pdf, with its shadow ray; 0 without tracing when it is 0.
+    Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Vec3& target, const Vec3& wi,
+                       const Color& radiance, Real pdf, RayCounts& rays) const;
+
+    const World& world_;
+    const Scene& scene_;
+    LightSet lights_;
+    DirectOptions options_;
+    std::vector<Brdf> brdfs_;  // one per scene material
+};
+
+}  // namespace rt

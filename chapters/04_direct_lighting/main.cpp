@@ -1,0 +1,149 @@
+// Chapter 04: direct lighting. Renders the direct term of the rendering equation (emission plus light
+// arriving straight from area, point and environment lights, with soft shadows from N shadow rays per light)
+// through four BRDFs; on the analytic scene (a plane under a quad light) it reports the error against the
+// exact image, and `--shadow-study` measures shadow samples per pixel against error and time there.
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "analytic_scene.hpp"
+#include "camera.hpp"
+#include "direct_render.hpp"
+#include "rt/app.hpp"
+#include "rt/assets.hpp"
+#include "rt/errors.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+namespace {
+
+std::string count_text(std::size_t n, const char* what) {
+    return std::to_string(n) + " " + what;
+}
+
+// What the scene asks for that this chapter shades differently or not at all, one note per material.
+std::vector<std::string> material_notes(const rt::Scene& scene, const rt::DirectOptions& options) {
+    using namespace rt;
+    std::vector<std::string> notes;
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (!used[i]) continue;
+        const Material& m = scene.materials[i];
+        if (m.type == MaterialType::kMirror) {
+            notes.push_back(
+                "mirror material '" + m.name +
+                "': a delta BRDF, so its direct term from lights is 0 (it shows only its emission); "
+                "mirror reflection is simulated from chapter 05 on");
+        } else if (m.type == MaterialType::kDielectric) {
+            char albedo[64];
+            std::snprintf(albedo, sizeof albedo, "%.2g", double(options.dielectric_albedo.g));
+            notes.push_back(
+                "dielectric material '" + m.name +
+                "': refraction is simulated from chapter 07 on; shaded as diffuse white (albedo " + albedo +
+                ")");
+        } else if (!options.glossy &&
+                   (m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective)) {
+            notes.push_back("material '" + m.name +
+                            "': the glossy effect is off; its lobe is shaded as Lambert");
+        }
+    }
+    return notes;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace rt;
+    int shadow_samples = 1;
+    bool study = false;
+    std::string csv;
+    const ChapterInfo chapter{
+        "ch04_direct_lighting", "Chapter 04: direct lighting, four BRDFs, area lights and soft shadows",
+        "ch04_default.json",
+        EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kGlossy}};
+    auto flags = [&](CLI::App& app) {
+        app.add_option("--shadow-samples", shadow_samples,
+                       "Shadow rays per light per hit (N; soft shadows converge as N grows)")
+            ->check(CLI::Range(1, 1 << 16));
+        app.add_flag(
+            "--shadow-study", study,
+            "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
+            "1, 4, 16, 64, 256 shadow samples per pixel");
+        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV");
+    };
+    auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
+        const RenderSettings& settings = context.settings;
+        DirectOptions options;
+        options.shadow_samples = shadow_samples;
+        options.direct = context.simulated.contains(Effect::kDirect);
+        options.shadows = context.simulated.contains(Effect::kShadows);
+        options.glossy = context.simulated.contains(Effect::kGlossy);
+        if (study) {
+            // The study runs on the analytic scene; --scene may name another plane under a quad light.
+            const bool default_scene = context.scene.file == scene_path(chapter.default_scene).string();
+            const Scene scene = default_scene ? load_scene(scene_path("ch04_analytic.json")) : context.scene;
+            const auto analytic = find_plane_under_quad(scene);
+            if (!analytic) {
+                throw InputError(scene.file +
+                                 ": --shadow-study needs a plane under one quad light and nothing else");
+            }
+            if (!csv.empty()) {
+                std::ofstream probe(csv, std::ios::app);
+                if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
+            }
+            const World world(scene);
+            const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+            const Image exact = exact_image(*analytic, world, camera);
+            const auto rows = shadow_study(world, scene, collect_lights(scene), options, camera, settings,
+                                           exact, {1, 4, 16, 64, 256});
+            std::printf(
+                "shadow samples per pixel against error and time: %s, %dx%d, pixel centres, %d threads\n",
+                scene.file.c_str(), settings.width, settings.height, settings.threads);
+            std::printf("%8s %12s %14s %12s %10s %12s\n", "samples", "RMSE", "relative MSE", "mean error",
+                        "time (s)", "shadow rays");
+            std::ofstream out;
+            if (!csv.empty()) {
+                out.open(csv);
+                out << "shadow_samples,rmse,relative_mse,mean_error,seconds,shadow_rays\n";
+            }
+            for (const ShadowStudyRow& row : rows) {
+                std::printf("%8d %12.6f %14.3e %+12.2e %10.4f %12llu\n", row.shadow_samples, row.rmse,
+                            row.relative_mse, row.mean_error, row.seconds,
+                            static_cast<unsigned long long>(row.shadow_rays));
+                if (out) {
+                    out << row.shadow_samples << ',' << row.rmse << ',' << row.relative_mse << ','
+                        << row.mean_error << ',' << row.seconds << ',' << row.shadow_rays << '\n';
+                }
+            }
+            return std::nullopt;
+        }
+
+        const Scene& scene = context.scene;
+        const World world(scene);
+        const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+        LightSet lights = collect_lights(scene);
+        const auto analytic = options.direct ? find_plane_under_quad(scene) : std::nullopt;
+        std::vector<std::string> notes = material_notes(scene, options);
+        notes.push_back("lights: " + count_text(lights.quads.size(), "quads, ") +
+                        count_text(lights.triangles.size(), "triangles, ") +
+                        count_text(lights.spheres.size(), "spheres, ") +
+                        count_text(lights.points.size(), "point") +
+                        (lights.environment ? ", an environment" : "") + "; " +
+                        std::to_string(shadow_samples) + " shadow sample(s) per light per hit");
+        for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
+        const DirectLighting shading(world, scene, std::move(lights), options);
+        ChapterRun run{render_direct(shading, camera, settings,
+                                     analytic ? FilmPoints::kCentre : FilmPoints::kStratified),
+                       std::move(notes), std::nullopt};
+        if (analytic) {
+            run.exact = exact_image(*analytic, world, camera);
+            run.notes.push_back(
+                "analytic scene (a diffuse plane under one quad light): rays through pixel centres, compared "
+                "with "
+                "rho/pi * E from Lambert's polygon formula");
+        }
+        return run;
+    };
+    return run_chapter(argc, argv, chapter, flags, render);
+}

@@ -1,0 +1,28 @@
+// Warps: uniform random points u in [0, 1)² turned into directions or points with a known density (pdf).
+// Directions are in a local frame whose z axis is the axis of the distribution (see frame.hpp).
+#pragma once
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+// Uniform over the hemisphere z > 0: z = u₁, φ = 2π u₂; pdf = 1 / (2π).
+Vec3 sample_uniform_hemisphere(Vec2 u);
+inline constexpr Real kUniformHemispherePdf = Real(0.5) * kInvPi;
+
+// Cosine-weighted over the hemisphere (Malley: a uniform point of the unit disc lifted to the hemisphere):
+// r = √u₁, φ = 2π u₂, z = √(1 − u₁); pdf = cos θ / π = z / π.
+Vec3 sample_cosine_hemisphere(Vec2 u);
+
+// Uniform over the cone of directions within θmax of the z axis, given one_minus_cos_max = 1 − cos θmax
+// (passed as such so a narrow cone keeps its digits): 1 − cos θ = u₁ (1 − cos θmax), φ = 2π u₂;
+// pdf = 1 / (2π (1 − cos θmax)).
+Vec3 sample_uniform_cone(Vec2 u, Real one_minus_cos_max);
+
+// The power-cosine lobe around z: cos α = u₁^(1 / (e + 1)), φ = 2π u₂; pdf = (e + 1) / (2π) cos^e α.
+Vec3 sample_power_cosine(Vec2 u, Real exponent);
+
+// Uniform over a triangle, as barycentrics (b1, b2) of p1 and p2: b1 = 1 − √u₁, b2 = u₂ √u₁; pdf = 1 / area.
+Vec2 sample_uniform_triangle(Vec2 u);
+
+}  // namespace rt

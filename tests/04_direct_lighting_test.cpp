@@ -1,0 +1,594 @@
+// Chapter 04: direct lighting. The BRDFs (ρ/π, energy, reciprocity, sampling hooks), light sampling (points
+// on the light, pdfs, the far sphere), the exact irradiance formulas against brute Monte Carlo, and renders:
+// the analytic scene against its exact image, ray counts, and the default scene end to end.
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analytic_scene.hpp"
+#include "area_light_sampling.hpp"
+#include "brdf.hpp"
+#include "camera.hpp"
+#include "direct_render.hpp"
+#include "frame.hpp"
+#include "irradiance.hpp"
+#include "quad.hpp"
+#include "rt/assets.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/random.hpp"
+#include "rt/scene_loader.hpp"
+#include "sampling.hpp"
+#include "sphere.hpp"
+#include "sphere_light_sampling.hpp"
+#include "triangle.hpp"
+
+using namespace rt;
+
+namespace {
+
+// A Monte Carlo estimate: the mean of n samples and its standard error.
+struct Estimate {
+    double mean = 0;
+    double error = 0;  // standard error of the mean
+};
+
+Estimate estimate(int n, const std::function<double()>& sample) {
+    double sum = 0, sum2 = 0;
+    for (int i = 0; i < n; ++i) {
+        const double x = sample();
+        sum += x;
+        sum2 += x * x;
+    }
+    const double mean = sum / n;
+    const double variance = std::max(0.0, sum2 / n - mean * mean);
+    return {mean, std::sqrt(variance / n)};
+}
+
+// A unit direction at polar angle θ from +z (in the xz plane, turned by φ about z).
+Vec3 polar(double theta, double phi = 0) {
+    return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                Real(std::cos(theta)));
+}
+
+Vec3 random_unit(Pcg32& rng) {
+    const Real z = 1 - 2 * rng.next_real();
+    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
+    const Real phi = 2 * kPi * rng.next_real();
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+// The BRDFs under test, each with a name, albedo 1 (the hardest case for energy conservation).
+std::vector<std::pair<std::string, Brdf>> white_brdfs() {
+    std::vector<std::pair<std::string, Brdf>> brdfs{{"lambert", LambertBrdf{Color(1)}}};
+    for (Real r : {0.05f, 0.2f, 0.5f, 1.0f}) {
+        brdfs.push_back({"glossy roughness " + std::to_string(r), GlossyBrdf{Color(1), phong_exponent(r)}});
+        brdfs.push_back(
+            {"retro roughness " + std::to_string(r), RetroreflectiveBrdf{Color(1), phong_exponent(r)}});
+    }
+    return brdfs;
+}
+
+const Vec3 kUp{0, 0, 1};
+
+// Ten outgoing directions from normal incidence to 5° above the horizon.
+std::vector<Vec3> ten_outgoing() {
+    std::vector<Vec3> wo;
+    for (int i = 0; i < 10; ++i) wo.push_back(polar(double(i) * radians(85) / 9, 0.3 * i));
+    return wo;
+}
+
+Material diffuse(Color albedo, Color emission = Color(0)) {
+    Material m;
+    m.albedo = albedo;
+    m.emission = emission;
+    return m;
+}
+
+Shape shape(decltype(Shape::geometry) geometry, int material) {
+    return Shape{geometry, material, "test"};
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// BRDFs
+
+TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[brdf]") {
+    const Brdf lambert = LambertBrdf{Color(0.2f, 0.5f, 0.8f)};
+    Pcg32 rng(1, 1);
+    for (int i = 0; i < 1000; ++i) {
+        Vec3 wo = random_unit(rng), wi = random_unit(rng);
+        wo.z = std::abs(wo.z);
+        wi.z = std::abs(wi.z);
+        const Color f = eval(lambert, wo, wi, kUp);
+        CHECK(f.r == Approx(0.2 / std::numbers::pi));
+        CHECK(f.g == Approx(0.5 / std::numbers::pi));
+        CHECK(f.b == Approx(0.8 / std::numbers::pi));
+        CHECK(eval(lambert, wo, -wi, kUp) == Color(0));
+        CHECK(eval(lambert, -wo, wi, kUp) == Color(0));
+    }
+}
+
+TEST_CASE("Every BRDF is reciprocal: f(a, b) = f(b, a)", "[brdf]") {
+    Pcg32 rng(2, 1);
+    for (const auto& [name, brdf] : white_brdfs()) {
+        INFO(name);
+        for (int i = 0; i < 2000; ++i) {
+            Vec3 a = random_unit(rng), b = random_unit(rng);
+            a.z = std::abs(a.z);
+            b.z = std::abs(b.z);
+            // Half the pairs near each other, where the lobes are large.
+            if (i % 2) b = glm::normalize(a + Real(0.3) * b);
+            const Color fab = eval(brdf, a, b, kUp), fba = eval(brdf, b, a, kUp);
+            REQUIRE(fab.r == Approx(fba.r).epsilon(1e-4).margin(1e-6));
+        }
+    }
+}
+
+TEST_CASE("Every BRDF conserves energy for ten outgoing directions", "[brdf][statistical]") {
+    // ∫ f cos θ_i dω_i estimated two ways with 2·10⁴ samples each: uniformly over the hemisphere (independent
+    // of the BRDF's own sampling) and with the BRDF's sample(); both <= 1 within 4 standard errors, and they
+    // agree with each other, which checks sample() and pdf().
+    constexpr int kSamples = 20000;
+    for (const auto& [name, brdf] : white_brdfs()) {
+        int index = 0;
+        for (const Vec3& wo : ten_outgoing()) {
+            INFO(name << ", outgoing θ = " << std::acos(double(wo.z)) * 180 / std::numbers::pi << "°");
+            Pcg32 uniform_rng(10, std::uint64_t(index)), brdf_rng(11, std::uint64_t(index++));
+            const Estimate uniform = estimate(kSamples, [&] {
+                const Vec3 wi = sample_uniform_hemisphere(uniform_rng.next_vec2());
+                return double(eval(brdf, wo, wi, kUp).g * wi.z / kUniformHemispherePdf);
+            });
+            const Estimate sampled = estimate(kSamples, [&] {
+                const BrdfSample s = sample(brdf, wo, kUp, brdf_rng.next_vec2());
+                return s.pdf > 0 ? double(s.f.g * std::max(Real(0), s.wi.z) / s.pdf) : 0.0;
+            });
+            CHECK(uniform.mean <= 1 + 4 * uniform.error);
+            CHECK(sampled.mean <= 1 + 4 * sampled.error + 1e-6);
+            CHECK(std::abs(uniform.mean - sampled.mean) <=
+                  4 * std::hypot(uniform.error, sampled.error) + 1e-6);
+        }
+    }
+}
+
+TEST_CASE("Lambert reflects all of albedo 1 and the lobes are normalized at normal incidence",
+          "[brdf][statistical]") {
+    // Not only <= 1: the (e + 2) / (2π) factor makes a lobe reflect exactly ρ when it lies wholly above the
+    // surface. Estimated with the BRDF's own sampling (f cos / pdf = ρ (e + 2)/(e + 1) cos θ_i).
+    for (const auto& [name, brdf] : white_brdfs()) {
+        INFO(name);
+        const bool wide =
+            std::holds_alternative<GlossyBrdf>(brdf) && std::get<GlossyBrdf>(brdf).exponent < 10;
+        const bool wide_retro = std::holds_alternative<RetroreflectiveBrdf>(brdf) &&
+                                std::get<RetroreflectiveBrdf>(brdf).exponent < 10;
+        if (wide || wide_retro) continue;  // a wide lobe around the normal is clipped by the horizon
+        Pcg32 rng(12, 0);
+        const Estimate e = estimate(20000, [&] {
+            const BrdfSample s = sample(brdf, kUp, kUp, rng.next_vec2());
+            return s.pdf > 0 ? double(s.f.g * std::max(Real(0), s.wi.z) / s.pdf) : 0.0;
+        });
+        CHECK(std::abs(e.mean - 1) <= 4 * e.error + 1e-3);
+    }
+}
+
+TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled direction", "[brdf]") {
+    Pcg32 rng(13, 0);
+    for (const auto& [name, brdf] : white_brdfs()) {
+        INFO(name);
+        for (const Vec3& wo : ten_outgoing()) {
+            for (int i = 0; i < 200; ++i) {
+                const BrdfSample s = sample(brdf, wo, kUp, rng.next_vec2());
+                REQUIRE(glm::length(s.wi) == Approx(1).epsilon(1e-5));
+                REQUIRE_FALSE(s.delta);
+                REQUIRE(s.pdf == Approx(pdf(brdf, wo, s.wi, kUp)).epsilon(1e-4));
+                REQUIRE(s.f.g == Approx(eval(brdf, wo, s.wi, kUp).g).epsilon(1e-4));
+            }
+        }
+    }
+}
+
+TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflects R", "[brdf]") {
+    const Brdf mirror = MirrorBrdf{Color(0.9f)};
+    CHECK(is_delta(mirror));
+    const Vec3 wo = glm::normalize(Vec3{1, 0, 1});
+    // Even the exact mirror direction gives 0 through eval(): a delta has no finite value there.
+    CHECK(eval(mirror, wo, reflect(wo, kUp), kUp) == Color(0));
+    CHECK(pdf(mirror, wo, reflect(wo, kUp), kUp) == 0);
+    Pcg32 rng(14, 0);
+    for (int i = 0; i < 100; ++i) CHECK(eval(mirror, wo, random_unit(rng), kUp) == Color(0));
+    const BrdfSample s = sample(mirror, wo, kUp, Vec2(0.5f));
+    CHECK(s.delta);
+    CHECK(s.wi.x == Approx(-wo.x));
+    CHECK(s.wi.z == Approx(wo.z));
+    CHECK(s.f.r * s.wi.z / s.pdf == Approx(0.9));  // the reflected fraction is the reflectance, <= 1
+}
+
+TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and finite near 0",
+          "[brdf][stability]") {
+    CHECK(phong_exponent(1) == 0);
+    CHECK(phong_exponent(Real(0.2)) == Approx(48));
+    const Real sharp = phong_exponent(Real(1e-9));
+    CHECK(std::isfinite(sharp));
+    // A lobe sharper than float's resolution near cos α = 1 still samples directions off the axis.
+    Pcg32 rng(15, 0);
+    const Brdf glossy = GlossyBrdf{Color(1), sharp};
+    for (int i = 0; i < 100; ++i) {
+        const BrdfSample s = sample(glossy, kUp, kUp, rng.next_vec2());
+        REQUIRE(std::isfinite(s.pdf));
+        REQUIRE(is_finite(s.f));
+        REQUIRE(is_finite(s.wi));
+    }
+}
+
+TEST_CASE("The frame of every normal is orthonormal, also near minus z", "[stability]") {
+    Pcg32 rng(16, 0);
+    std::vector<Vec3> normals{
+        {0, 0, 1}, {0, 0, -1}, glm::normalize(Vec3{1e-7f, 0, -1}), glm::normalize(Vec3{0, 1e-4f, -1})};
+    for (int i = 0; i < 1000; ++i) normals.push_back(random_unit(rng));
+    for (const Vec3& n : normals) {
+        const Frame f = make_frame(n);
+        REQUIRE(glm::length(f.t) == Approx(1).epsilon(1e-5));
+        REQUIRE(glm::length(f.b) == Approx(1).epsilon(1e-5));
+        REQUIRE(std::abs(glm::dot(f.t, f.b)) < 1e-5);
+        REQUIRE(std::abs(glm::dot(f.t, f.n)) < 1e-5);
+        REQUIRE(std::abs(glm::dot(f.b, f.n)) < 1e-5);
+        REQUIRE(glm::dot(glm::cross(f.t, f.b), f.n) > 0.99f);  // right-handed
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Exact irradiance against brute Monte Carlo
+
+namespace {
+
+// E(p) = ∫ L cos θ dω by uniform hemisphere directions around n = +z, L where `sees_light` is true.
+Estimate brute_irradiance(const Vec3& p, double radiance, const std::function<bool(const Ray&)>& sees_light,
+                          std::uint64_t seed, int n = 100000) {
+    Pcg32 rng(seed, 7);
+    return estimate(n, [&] {
+        const Vec3 wi = sample_uniform_hemisphere(rng.next_vec2());
+        return sees_light(Ray{p, wi}) ? radiance * double(wi.z) / double(kUniformHemispherePdf) : 0.0;
+    });
+}
+
+}  // namespace
+
+TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by the horizon",
+          "[irradiance][statistical]") {
+    const Vec3 p{0.1f, -0.2f, 0};
+    struct Case {
+        const char* name;
+        Vec3 origin, u, v;
+    };
+    const Case cases[] = {
+        {"square above", {-0.5f, -0.5f, 1}, {1, 0, 0}, {0, 1, 0}},
+        {"tilted, off to the side", {0.4f, -0.3f, 0.5f}, {0.8f, 0.1f, 0.2f}, {-0.1f, 0.3f, 0.9f}},
+        {"crossing the horizon (clipped)", {-0.6f, 0.5f, -0.4f}, {1.2f, 0, 0}, {0, 0.2f, 1.2f}},
+    };
+    std::uint64_t seed = 20;
+    for (const Case& c : cases) {
+        INFO(c.name);
+        const Quad quad = make_quad(c.origin, c.u, c.v);
+        const std::array<Vec3d, 4> corners{Vec3d(c.origin), Vec3d(c.origin + c.u),
+                                           Vec3d(c.origin + c.u + c.v), Vec3d(c.origin + c.v)};
+        const double exact = polygon_irradiance(corners, Vec3d(p), Vec3d(kUp), 2.0);
+        const Estimate brute = brute_irradiance(
+            p, 2.0, [&](const Ray& r) { return bool(intersect_quad(r, quad, kInfinity)); }, seed++);
+        CHECK(exact > 0);
+        CHECK(std::abs(brute.mean - exact) <= 4 * brute.error);
+    }
+    // A triangle, given in either winding.
+    const Triangle tri{{-1, 0.2f, 0.7f}, {0.6f, -0.4f, 1.1f}, {0.3f, 0.9f, 0.4f}};
+    const std::array<Vec3d, 3> forward{Vec3d(tri.p0), Vec3d(tri.p1), Vec3d(tri.p2)};
+    const std::array<Vec3d, 3> backward{Vec3d(tri.p2), Vec3d(tri.p1), Vec3d(tri.p0)};
+    const double exact = polygon_irradiance(forward, Vec3d(p), Vec3d(kUp), 1.0);
+    CHECK(polygon_irradiance(backward, Vec3d(p), Vec3d(kUp), 1.0) == Approx(exact));
+    const Estimate brute = brute_irradiance(
+        p, 1.0,
+        [&](const Ray& r) { return bool(intersect_triangle(r, tri, kInfinity, TriangleTest::kWatertight)); },
+        seed);
+    CHECK(std::abs(brute.mean - exact) <= 4 * brute.error);
+}
+
+TEST_CASE("A sphere light fully above the horizon gives pi L (r/d)^2 cos theta",
+          "[irradiance][statistical]") {
+    const Vec3 p{0, 0, 0};
+    for (const double theta : {0.0, 0.6}) {
+        INFO("centre at θ = " << theta);
+        const Sphere sphere{Vec3(polar(theta)) * Real(3), 0.9f};
+        const double exact = sphere_irradiance(3.0, 0.9, 3.0, std::cos(theta));
+        const Estimate brute = brute_irradiance(
+            p, 3.0, [&](const Ray& r) { return bool(intersect_sphere(r, sphere, kInfinity)); }, 30);
+        CHECK(std::abs(brute.mean - exact) <= 4 * brute.error);
+    }
+}
+
+TEST_CASE("A coaxial disc gives pi L R^2 / (R^2 + h^2)", "[irradiance][statistical]") {
+    const double radius = 0.7, height = 0.5;
+    auto hits_disc = [&](const Ray& r) {
+        if (!(r.direction.z > 0)) return false;
+        const double t = height / double(r.direction.z);
+        const double x = t * double(r.direction.x), y = t * double(r.direction.y);
+        return x * x + y * y <= radius * radius;
+    };
+    const Estimate brute = brute_irradiance(Vec3(0), 1.5, hits_disc, 40);
+    CHECK(std::abs(brute.mean - coaxial_disc_irradiance(1.5, radius, height)) <= 4 * brute.error);
+    // The polygon formula agrees for a regular 512-gon inscribed in the disc (area ratio 1 − O(1/k²)).
+    std::vector<Vec3d> polygon;
+    for (int i = 0; i < 512; ++i) {
+        const double a = 2 * std::numbers::pi * i / 512;
+        polygon.push_back({radius * std::cos(a), radius * std::sin(a), height});
+    }
+    CHECK(polygon_irradiance(polygon, Vec3d(0), Vec3d(0, 0, 1), 1.5) ==
+          Approx(coaxial_disc_irradiance(1.5, radius, height)).epsilon(1e-4));
+}
+
+TEST_CASE("A uniform sky gives pi L", "[irradiance][statistical]") {
+    const Estimate brute = brute_irradiance(
+        Vec3(0), 0.8, [](const Ray&) { return true; }, 50);
+    CHECK(brute.error > 0);
+    CHECK(std::abs(brute.mean - sky_irradiance(0.8)) <= 4 * brute.error);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Light sampling
+
+TEST_CASE("Quad light samples lie on the light, with the pdf of their direction", "[lights]") {
+    const QuadLight light = make_quad_light({-1, 2, -0.5f}, {0, 0.4f, -1}, {2, 0.3f, 0}, Color(5));
+    REQUIRE(light.normal.y < 0);  // faces down, toward p
+    const Vec3 p{0.3f, 0, -0.6f};
+    Pcg32 rng(60, 0);
+    for (int i = 0; i < 1000; ++i) {
+        const auto s = sample_quad_light(light, p, rng.next_vec2());
+        REQUIRE(s);
+        const Vec3 rel = s->point - light.origin;
+        REQUIRE(std::abs(glm::dot(rel, light.normal)) < 1e-5f);
+        const Real a = glm::dot(glm::cross(rel, light.v), light.normal) / light.area;
+        const Real b = glm::dot(glm::cross(light.u, rel), light.normal) / light.area;
+        REQUIRE(a >= -1e-5f);
+        REQUIRE(a <= 1 + 1e-5f);
+        REQUIRE(b >= -1e-5f);
+        REQUIRE(b <= 1 + 1e-5f);
+        REQUIRE(glm::length(p + s->distance * s->wi - s->point) < 1e-5f);
+        REQUIRE(quad_light_pdf(light, p, s->wi) == Approx(s->pdf).epsilon(1e-3));
+    }
+    // Behind a one-sided light: no sample, and the direction density is 0.
+    CHECK_FALSE(sample_quad_light(light, Vec3{0, 5, 0}, Vec2(0.5f)));
+    CHECK(quad_light_pdf(light, Vec3{0, 5, 0}, Vec3{0, -1, 0}) == 0);
+}
+
+TEST_CASE("Light sampling estimates the exact irradiance of a quad, a triangle and a sphere",
+          "[lights][statistical]") {
+    const Vec3 p{0.2f, 0, 0.1f};
+    const Vec3 n{0, 1, 0};
+    auto light_estimate = [&](auto sample_one, std::uint64_t seed) {
+        Pcg32 rng(seed, 0);
+        return estimate(20000, [&] {
+            const auto s = sample_one(rng.next_vec2());
+            return s ? double(s->radiance.g * std::max(Real(0), glm::dot(s->wi, n)) / s->pdf) : 0.0;
+        });
+    };
+    const QuadLight quad = make_quad_light({-1, 2, -0.5f}, {0, 0.4f, -1}, {2, 0.3f, 0}, Color(5));
+    const std::array<Vec3d, 4> corners{Vec3d(quad.origin), Vec3d(quad.origin + quad.u),
+                                       Vec3d(quad.origin + quad.u + quad.v), Vec3d(quad.origin + quad.v)};
+    const Estimate q = light_estimate([&](Vec2 u) { return sample_quad_light(quad, p, u); }, 61);
+    CHECK(std::abs(q.mean - polygon_irradiance(corners, Vec3d(p), Vec3d(n), 5)) <= 4 * q.error);
+
+    const TriangleLight tri = make_triangle_light({-1, 1, 0}, {1, 1.2f, -1}, {0.5f, 1.5f, 1}, Color(2));
+    REQUIRE(tri.normal.y < 0);
+    const std::array<Vec3d, 3> vertices{Vec3d(tri.p0), Vec3d(tri.p1), Vec3d(tri.p2)};
+    const Estimate t = light_estimate([&](Vec2 u) { return sample_triangle_light(tri, p, u); }, 62);
+    CHECK(std::abs(t.mean - polygon_irradiance(vertices, Vec3d(p), Vec3d(n), 2)) <= 4 * t.error);
+
+    const SphereLight sphere{{1, 3, 0.5f}, 0.6f, Color(7)};
+    const Vec3 to_centre = sphere.center - p;
+    const double d = double(glm::length(to_centre));
+    const Estimate s = light_estimate([&](Vec2 u) { return sample_sphere_light(sphere, p, u); }, 63);
+    CHECK(std::abs(s.mean - sphere_irradiance(7, 0.6, d, double(to_centre.y) / d)) <= 4 * s.error);
+}
+
+TEST_CASE("Sphere light samples lie on the sphere's near side, inside the cone", "[lights]") {
+    const SphereLight light{{2, 1, -3}, 0.5f, Color(1)};
+    const Vec3 p{0, 0, 0};
+    const Real d = glm::length(light.center - p);
+    const Real cos_max = std::sqrt(1 - (light.radius / d) * (light.radius / d));
+    Pcg32 rng(64, 0);
+    for (int i = 0; i < 1000; ++i) {
+        const auto s = sample_sphere_light(light, p, rng.next_vec2());
+        REQUIRE(s);
+        REQUIRE(glm::length(s->point - light.center) == Approx(light.radius).epsilon(1e-4));
+        REQUIRE(glm::dot(s->point - light.center, p - light.center) >= 0);  // the side facing p
+        REQUIRE(glm::dot(s->wi, (light.center - p) / d) >= cos_max - 1e-6f);
+        REQUIRE(s->pdf == Approx(sphere_light_pdf(light, p)));
+    }
+    // From inside the sphere nothing is emitted toward p (it emits outward only).
+    CHECK_FALSE(sample_sphere_light(light, light.center + Vec3{0.1f, 0, 0}, Vec2(0.5f)));
+    CHECK(sphere_light_pdf(light, light.center) == 0);
+}
+
+TEST_CASE("The cone pdf of a sphere of radius 1 at distance 1e4 is finite; the naive 1 - cos gives 0",
+          "[lights][stability]") {
+    for (const double distance : {1e4, 1e5, 1e6}) {
+        INFO("distance " << distance);
+        const Real ratio = Real(1 / distance);
+        const Real sin2 = ratio * ratio;
+        CHECK(one_minus_cos_naive(sin2) ==
+              0);  // √(1 − 10⁻⁸) rounds to 1 in float: the cone has no solid angle
+        const double exact = 1 / (2 * std::numbers::pi * (1 - std::sqrt(1 - 1 / (distance * distance))));
+        const SphereLight light{{0, 0, Real(distance)}, 1, Color(1)};
+        const Real pdf = sphere_light_pdf(light, Vec3(0));
+        REQUIRE(std::isfinite(pdf));
+        // The double reference itself cancels at 1e6; use its series 1 − cos = s²/2 + s⁴/8 there.
+        const double s2 = 1 / (distance * distance);
+        const double series = 1 / (2 * std::numbers::pi * (s2 / 2 + s2 * s2 / 8));
+        CHECK(double(pdf) == Approx(distance <= 1e4 ? exact : series).epsilon(1e-5));
+        Pcg32 rng(65, 0);
+        for (int i = 0; i < 100; ++i) {
+            const auto s = sample_sphere_light(light, Vec3(0), rng.next_vec2());
+            REQUIRE(s);
+            REQUIRE(std::isfinite(s->pdf));
+            REQUIRE(s->pdf == pdf);
+            REQUIRE(is_finite(s->point));
+            // Float at 10⁶ has a spacing of 1/16: the point is on the sphere to that resolution.
+            REQUIRE(std::abs(double(glm::length(s->point - light.center)) - 1) <= 1e-7 * distance * 2 + 1e-6);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Direct lighting
+
+namespace {
+
+// A floor (diffuse plane y = 0) under whatever `lights` adds; a 32×32 camera looking down at it.
+struct FloorScene {
+    Scene scene;
+    FloorScene() {
+        scene.camera = CameraDesc{{0, 3, 0.01f}, {0, 0, 0}, {0, 1, 0}, 60};
+        scene.materials.push_back(diffuse(Color(0.5f)));
+        scene.shapes.push_back(shape(PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0));
+    }
+    int add_material(const Material& m) {
+        scene.materials.push_back(m);
+        return int(scene.materials.size()) - 1;
+    }
+};
+
+RenderResult render_scene(const Scene& scene, DirectOptions options, int size = 32, int spp = 1,
+                          int threads = 1) {
+    const World world(scene);
+    const DirectLighting shading(world, scene, collect_lights(scene), options);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
+    const RenderSettings settings{size, size, spp, 3, threads, ProgressStyle::kNone};
+    return render_direct(shading, camera, settings, FilmPoints::kStratified);
+}
+
+}  // namespace
+
+TEST_CASE("No light in the scene: zero shadow rays, and a black image", "[direct]") {
+    FloorScene f;
+    f.scene.shapes.push_back(shape(SphereShape{{0, 0.5f, 0}, 0.5f}, 0));
+    const RenderResult r = render_scene(f.scene, {});
+    CHECK(r.rays[RayKind::kCamera] == 32u * 32u);
+    CHECK(r.rays[RayKind::kShadow] == 0);
+    CHECK(r.image.mean() == 0);
+}
+
+TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays", "[direct]") {
+    FloorScene f;
+    f.scene.point_lights.push_back({{0, 2, 0}, Color(10)});
+    Material chrome;
+    chrome.type = MaterialType::kMirror;
+    f.scene.materials[0] = chrome;  // the floor is a mirror: a delta, light samples cannot reach it
+    CHECK(render_scene(f.scene, {}).rays[RayKind::kShadow] == 0);
+    f.scene.materials[0] = diffuse(Color(0.5f));
+    DirectOptions no_shadows;
+    no_shadows.shadows = false;
+    const RenderResult r = render_scene(f.scene, no_shadows);
+    CHECK(r.rays[RayKind::kShadow] == 0);
+    CHECK(r.image.mean() > 0);
+    CHECK(render_scene(f.scene, {}).rays[RayKind::kShadow] == 32u * 32u);  // one per hit for a point light
+}
+
+TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L, with shadows", "[direct]") {
+    FloorScene f;
+    f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
+    const World world(f.scene);
+    const DirectLighting shading(world, f.scene, collect_lights(f.scene), {});
+    Pcg32 rng(70, 0);
+    RayCounts rays;
+    const Ray down{{0, 1, 0}, {0, -1, 0}};
+    const Color L = shading.radiance(down, rng, rays);
+    const double d2 = 0.25 + 4, cos_theta = 2 / std::sqrt(d2);
+    CHECK(double(L.g) == Approx(0.5 / std::numbers::pi * 8 * cos_theta / d2).epsilon(1e-5));
+    CHECK(rays[RayKind::kShadow] == 1);
+
+    // Cosine-weighted sky samples make f L cos / pdf = ρ L exactly, for any number of them.
+    FloorScene sky;
+    sky.scene.environment = EnvironmentLight{Color(2)};
+    const World sky_world(sky.scene);
+    DirectOptions four;
+    four.shadow_samples = 4;
+    const DirectLighting sky_shading(sky_world, sky.scene, collect_lights(sky.scene), four);
+    RayCounts sky_rays;
+    CHECK(double(sky_shading.radiance(down, rng, sky_rays).g) == Approx(0.5 * 2).epsilon(1e-5));
+    CHECK(sky_rays[RayKind::kShadow] == 4);
+    // Under a large blocker the sky is hidden: no light at all.
+    sky.scene.shapes.push_back(shape(QuadShape{{-50, 0.5f, -50}, {0, 0, 100}, {100, 0, 0}}, 0));
+    const World blocked(sky.scene);
+    const DirectLighting blocked_shading(blocked, sky.scene, collect_lights(sky.scene), four);
+    CHECK(blocked_shading.radiance(Ray{{0, 0.25f, 0}, {0, -1, 0}}, rng, sky_rays) == Color(0));
+}
+
+TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
+          "[direct]") {
+    FloorScene f;
+    const int lamp = f.add_material(diffuse(Color(0), Color(10)));
+    f.scene.shapes.push_back(shape(QuadShape{{-0.5f, 2, -0.5f}, {1, 0, 0}, {0, 0, 1}}, lamp));  // u × v = −y
+    f.scene.shapes.push_back(shape(QuadShape{{-0.3f, 1, -0.3f}, {0.6f, 0, 0}, {0, 0, 0.6f}}, 0));  // blocker
+    const World world(f.scene);
+    DirectOptions options;
+    options.shadow_samples = 64;
+    const DirectLighting shading(world, f.scene, collect_lights(f.scene), options);
+    Pcg32 rng(71, 0);
+    RayCounts rays;
+    auto at = [&](Real x) { return shading.radiance(Ray{{x, 0.5f, 0.001f}, {0, -1, 0}}, rng, rays).g; };
+    CHECK(at(0) == 0);  // umbra: every point of the lamp is hidden
+    const Real penumbra = at(0.3f);
+    const Real lit = at(3);
+    CHECK(penumbra > 0);
+    // Far out, the blocker hides nothing: the exact value of Lambert's formula, within sampling noise.
+    const std::array<Vec3d, 4> corners{Vec3d(-0.5, 2, -0.5), Vec3d(0.5, 2, -0.5), Vec3d(0.5, 2, 0.5),
+                                       Vec3d(-0.5, 2, 0.5)};
+    const double exact_lit =
+        0.5 / std::numbers::pi * polygon_irradiance(corners, Vec3d(3, 0, 0.001), Vec3d(0, 1, 0), 10);
+    CHECK(double(lit) == Approx(exact_lit).epsilon(0.05));
+    const double exact_centre =
+        0.5 / std::numbers::pi * polygon_irradiance(corners, Vec3d(0.3, 0, 0.001), Vec3d(0, 1, 0), 10);
+    CHECK(double(penumbra) < exact_centre);
+}
+
+TEST_CASE("The analytic scene converges to its exact image without bias", "[direct][statistical]") {
+    Scene scene = load_scene(scene_path("ch04_analytic.json"));
+    const auto analytic = find_plane_under_quad(scene);
+    REQUIRE(analytic);
+    const World world(scene);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, 48, 48);
+    const Image exact = exact_image(*analytic, world, camera);
+    CHECK(exact.all_finite());
+    CHECK(exact.mean() > 0);
+    const RenderSettings settings{48, 48, 1, 5, 2, ProgressStyle::kNone};
+    const auto rows = shadow_study(world, scene, collect_lights(scene), {}, camera, settings, exact, {4, 64});
+    REQUIRE(rows.size() == 2);
+    // Error falls like 1/√N: 16× the samples, about 4× less RMSE.
+    CHECK(rows[0].rmse / rows[1].rmse > 3);
+    CHECK(rows[0].rmse / rows[1].rmse < 5.3);
+    // Unbiased: the mean error is within 4 standard errors of 0 (pixels are independent).
+    const double pixels = 48.0 * 48.0;
+    for (const ShadowStudyRow& row : rows)
+        CHECK(std::abs(row.mean_error) <= 4 * row.rmse / std::sqrt(pixels));
+    CHECK(rows[1].shadow_rays > 16 * rows[0].shadow_rays - 48 * 48 * 16);
+    // A scene that is not a plane under one quad has no exact image.
+    scene.point_lights.push_back({{0, 1, 0}, Color(1)});
+    CHECK_FALSE(find_plane_under_quad(scene));
+}
+
+TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads", "[render]") {
+    const Scene scene = load_scene(scene_path("ch04_default.json"));
+    const LightSet lights = collect_lights(scene);
+    CHECK(lights.quads.size() == 1);
+    CHECK(lights.spheres.size() == 1);
+    const RenderResult one = render_scene(scene, {}, 40, 2, 1);
+    const RenderResult two = render_scene(scene, {}, 40, 2, 2);
+    CHECK(one.image.all_finite());
+    CHECK(one.image.pixels() == two.image.pixels());
+    CHECK(one.image.mean() > 0.05);
+    CHECK(one.image.mean() < 0.5);
+    CHECK(one.rays[RayKind::kCamera] == 40u * 40u * 2u);
+    CHECK(one.rays[RayKind::kShadow] > 0);
+    CHECK(one.rays[RayKind::kReflection] == 0);
+    CHECK(one.rays[RayKind::kIndirect] == 0);
+}
