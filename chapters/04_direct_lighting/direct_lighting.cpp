@@ -4,6 +4,8 @@
 
 #include "area_light_sampling.hpp"
 #include "frame.hpp"
+#include "pixel_sampling.hpp"
+#include "rt/errors.hpp"
 #include "sampling.hpp"
 #include "shadow_ray.hpp"
 #include "sphere_light_sampling.hpp"
@@ -23,6 +25,16 @@ Brdf without_lobes(const Brdf& brdf) {
 }
 
 }  // namespace
+
+std::string_view to_string(LightSampler sampler) {
+    return sampler == LightSampler::kIndependent ? "independent" : "stratified";
+}
+
+LightSampler light_sampler_from_string(std::string_view name) {
+    if (name == "independent") return LightSampler::kIndependent;
+    if (name == "stratified") return LightSampler::kStratified;
+    throw InputError("--light-sampler: expected independent or stratified, got '" + std::string(name) + "'");
+}
 
 DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options)
     : world_(world), scene_(scene), lights_(std::move(lights)), options_(options) {
@@ -44,6 +56,14 @@ Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& b
     return f * radiance * (cos_i / pdf);
 }
 
+Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
+    const Vec2 u = rng.next_vec2();
+    if (options_.light_sampler == LightSampler::kIndependent) return u;
+    // Stratum (j mod m, ⌊j / m⌋) of the m × m grid, m = ⌊√N⌋: chapter 01's stratified pixel sample in pixel
+    // (0, 0).
+    return pixel_sample_point(PixelSampler::kStratified, 0, 0, j, options_.shadow_samples, u);
+}
+
 Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
     // EXERCISE(ch04.direct_light)
     const Brdf& b = brdf(hit.material);
@@ -55,21 +75,21 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
     const Vec3& p = hit.point;
     for (const QuadLight& light : lights_.quads) {
         for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_quad_light(light, p, rng.next_vec2())) {
+            if (const auto s = sample_quad_light(light, p, light_point(j, rng))) {
                 sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
             }
         }
     }
     for (const TriangleLight& light : lights_.triangles) {
         for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_triangle_light(light, p, rng.next_vec2())) {
+            if (const auto s = sample_triangle_light(light, p, light_point(j, rng))) {
                 sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
             }
         }
     }
     for (const SphereLight& light : lights_.spheres) {
         for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_sphere_light(light, p, rng.next_vec2())) {
+            if (const auto s = sample_sphere_light(light, p, light_point(j, rng))) {
                 sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
             }
         }
@@ -86,7 +106,7 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
     if (lights_.environment && !black(lights_.environment->radiance)) {
         const Frame frame = make_frame(hit.normal);
         for (int j = 0; j < n; ++j) {
-            const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(rng.next_vec2())));
+            const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(light_point(j, rng))));
             const Real cos_i = glm::dot(wi, hit.normal);
             if (!(cos_i > 0)) continue;
             const Color f = eval(b, wo, wi, hit.normal);

@@ -7,6 +7,7 @@
 // A shadow ray is traced only when its sample could carry light (f, L_e and cos θ all > 0).
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "brdf.hpp"
@@ -20,11 +21,20 @@
 
 namespace rt {
 
+// How the N samples of one light are spread over the unit square they are warped from: independently, or one
+// in each cell of an m × m grid (m = ⌊√N⌋; the rest independent), which evens out where the samples land.
+enum class LightSampler { kIndependent, kStratified };
+
+std::string_view to_string(LightSampler sampler);
+// "independent" or "stratified"; throws InputError for any other name.
+LightSampler light_sampler_from_string(std::string_view name);
+
 struct DirectOptions {
     int shadow_samples = 1;  // N: shadow rays per area light (and environment) per hit
-    bool direct = true;      // effect "direct": sample the lights at all
-    bool shadows = true;     // effect "shadows": trace shadow rays (false: every light counts as visible)
-    bool glossy = true;      // effect "glossy": false shades glossy and retro-reflective lobes as Lambert
+    LightSampler light_sampler = LightSampler::kStratified;
+    bool direct = true;   // effect "direct": sample the lights at all
+    bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
+    bool glossy = true;   // effect "glossy": false shades glossy and retro-reflective lobes as Lambert
     RayOffset offset{};
     Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo until chapter 07
 };
@@ -46,6 +56,8 @@ class DirectLighting {
     const World& world() const { return world_; }
 
   private:
+    // The point of [0, 1)² that light sample j of N is warped from.
+    Vec2 light_point(int j, Pcg32& rng) const;
     // One light sample's contribution f L cos / pdf, with its shadow ray; 0 without tracing when it is 0.
     Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Vec3& target, const Vec3& wi,
                        const Color& radiance, Real pdf, RayCounts& rays) const;

@@ -24,15 +24,20 @@ RenderResult render_direct(const DirectLighting& shading, const PinholeCamera& c
 std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
                                          DirectOptions options, const PinholeCamera& camera,
                                          RenderSettings settings, const Image& exact,
+                                         const std::vector<LightSampler>& samplers,
                                          const std::vector<int>& shadow_samples) {
     std::vector<ShadowStudyRow> rows;
     settings.samples_per_pixel = 1;
-    for (int n : shadow_samples) {
-        options.shadow_samples = n;
-        const DirectLighting shading(world, scene, lights, options);
-        const RenderResult r = render_direct(shading, camera, settings, FilmPoints::kCentre);
-        const ErrorMetrics e = compare(r.image, exact);
-        rows.push_back({n, e.rmse, e.relative_mse, e.mean_error, r.seconds, r.rays[RayKind::kShadow]});
+    for (LightSampler sampler : samplers) {
+        for (int n : shadow_samples) {
+            options.light_sampler = sampler;
+            options.shadow_samples = n;
+            const DirectLighting shading(world, scene, lights, options);
+            const RenderResult r = render_direct(shading, camera, settings, FilmPoints::kCentre);
+            const ErrorMetrics e = compare(r.image, exact);
+            rows.push_back(
+                {sampler, n, e.rmse, e.relative_mse, e.mean_error, r.seconds, r.rays[RayKind::kShadow]});
+        }
     }
     return rows;
 }

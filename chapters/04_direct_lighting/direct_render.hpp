@@ -19,6 +19,7 @@ RenderResult render_direct(const DirectLighting& shading, const PinholeCamera& c
                            const RenderSettings& settings, FilmPoints film_points);
 
 struct ShadowStudyRow {
+    LightSampler sampler;
     int shadow_samples;  // per pixel (one camera ray per pixel, so also per hit)
     double rmse;         // against the exact image
     double relative_mse;
@@ -27,10 +28,11 @@ struct ShadowStudyRow {
     std::uint64_t shadow_rays;
 };
 
-// The analytic scene at 1 sample per pixel (pixel centres) with N shadow samples, for each N.
+// The analytic scene at 1 sample per pixel (pixel centres) with N shadow samples, for each sampler and N.
 std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
                                          DirectOptions options, const PinholeCamera& camera,
                                          RenderSettings settings, const Image& exact,
+                                         const std::vector<LightSampler>& samplers,
                                          const std::vector<int>& shadow_samples);
 
 }  // namespace rt
