@@ -1,0 +1,102 @@
+#include "shadow_render.hpp"
+
+#include "pixel_sampling.hpp"
+#include "point_light.hpp"
+#include "rt/effects.hpp"
+#include "shadow_ray.hpp"
+
+namespace rt {
+
+Color shading_albedo(const Material& material) {
+    switch (material.type) {
+        case MaterialType::kMirror:
+            return material.reflectance;
+        case MaterialType::kDielectric:
+            return Color(Real(0.73));
+        default:
+            return material.albedo;
+    }
+}
+
+Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng) {
+    const Vec2 film = pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, spp, rng.next_vec2());
+    return camera_ray(camera, film.x, film.y);
+}
+
+Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
+                      RayCounts& rays) {
+    if (!options.direct) return Color(0);
+    const Color albedo = shading_albedo(scene.materials[std::size_t(hit.material)]);
+    if (albedo == Color(0)) return Color(0);
+    Color irradiance(0);
+    for (const PointLight& light : scene.point_lights) {
+        const Color e = point_light_irradiance(light, hit.point, hit.normal);
+        if (e == Color(0)) continue;  // behind the surface: no shadow ray needed
+        if (options.shadows && !visible(world, hit, light.position, options.offset, rays)) continue;
+        irradiance += e;
+    }
+    return lambert_radiance(albedo, irradiance);
+}
+
+Color radiance(const World& world, const Scene& scene, const Ray& ray, const ShadowOptions& options,
+               RayCounts& rays) {
+    const auto hit = world.intersect(ray);
+    if (!hit) return scene.environment ? scene.environment->radiance : Color(0);
+    const Material& material = scene.materials[std::size_t(hit->material)];
+    return material.emission + point_lights_at(world, scene, *hit, options, rays);
+}
+
+RenderResult render_shadows(const World& world, const Scene& scene, const PinholeCamera& camera,
+                            const ShadowOptions& options, const RenderSettings& settings) {
+    const int spp = settings.samples_per_pixel;
+    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        const Ray ray = primary_ray(camera, s, spp, rng);
+        rays.add(RayKind::kCamera);
+        return radiance(world, scene, ray, options, rays);
+    });
+}
+
+std::vector<std::string> shading_notes(const Scene& scene) {
+    std::vector<std::string> notes;
+    const std::string lights_from = chapter_that_adds(Effect::kDirect);
+    if (scene.has_area_lights()) {
+        notes.push_back(
+            "emissive shapes are seen by the camera but light nothing: area lights are simulated from " +
+            lights_from + " on");
+    }
+    if (scene.environment) {
+        notes.push_back(
+            "the environment is seen as the background but lights nothing: it is a light source from " +
+            lights_from + " on");
+    }
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Shape& shape : scene.shapes) used[std::size_t(shape.material)] = true;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (!used[i]) continue;
+        const Material& m = scene.materials[i];
+        auto note = [&](const char* kind, Effect effect) {
+            notes.push_back(std::string(kind) + " material '" + m.name + "': shaded as Lambertian here; " +
+                            kEffectNames[std::size_t(effect)].data() + " is simulated from " +
+                            chapter_that_adds(effect) + " on");
+        };
+        switch (m.type) {
+            case MaterialType::kMirror:
+                note("mirror", Effect::kReflection);
+                break;
+            case MaterialType::kGlossy:
+                note("glossy", Effect::kGlossy);
+                break;
+            case MaterialType::kRetroreflective:
+                note("retroreflective", Effect::kGlossy);
+                break;
+            case MaterialType::kDielectric:
+                note("dielectric", Effect::kRefraction);
+                break;
+            case MaterialType::kDiffuse:
+                break;
+        }
+    }
+    return notes;
+}
+
+}  // namespace rt

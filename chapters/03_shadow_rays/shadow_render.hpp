@@ -1,0 +1,50 @@
+// Chapter 03's picture: what the camera sees, lit by the scene's point lights through shadow rays.
+//   L(p) = L_e(p) + Σ_lights (ρ / π) E_i V_i,   E_i = I_i cos θ_i / r_i²,   V_i = 1 if the light is visible
+// A shadow ray is traced only where it can change the answer: a light behind the surface (cos θ ≤ 0) adds
+// nothing and costs nothing, and a scene without point lights traces no shadow rays at all.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "ray_offset.hpp"
+#include "rt/random.hpp"
+#include "rt/ray_counts.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/scene.hpp"
+#include "world.hpp"
+
+namespace rt {
+
+struct ShadowOptions {
+    RayOffset offset{};
+    bool direct = true;   // effect "direct": light the surfaces at all
+    bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
+};
+
+// The albedo a surface is shaded with here: diffuse, glossy and retro-reflective materials by their albedo,
+// mirrors by their reflectance, dielectrics as a grey 0.73 (each is shaded as Lambertian before its chapter).
+Color shading_albedo(const Material& material);
+
+// The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
+Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);
+
+// The direct light of the scene's point lights at `hit`: Σ (ρ / π) E_i V_i, one shadow ray per light in
+// front.
+Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
+                      RayCounts& rays);
+
+// The radiance along a camera ray: at the nearest hit, emission plus the point lights' direct light; on a
+// miss, the environment's radiance (black without one).
+Color radiance(const World& world, const Scene& scene, const Ray& ray, const ShadowOptions& options,
+               RayCounts& rays);
+
+RenderResult render_shadows(const World& world, const Scene& scene, const PinholeCamera& camera,
+                            const ShadowOptions& options, const RenderSettings& settings);
+
+// What this chapter does not simulate in `scene`, one line each: lights other than point lights, and
+// materials shaded as Lambertian, with the chapter that adds them.
+std::vector<std::string> shading_notes(const Scene& scene);
+
+}  // namespace rt
