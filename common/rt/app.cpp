@@ -72,8 +72,11 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     }
     std::printf(" (total %llu)\n", static_cast<unsigned long long>(r.rays.total()));
     if (r.interrupted) {
-        std::printf("  interrupted: partial image with %d of %d samples per pixel\n", r.samples_per_pixel,
-                    s.samples_per_pixel);
+        const double pixels = double(s.width) * double(s.height);
+        std::printf(
+            "  interrupted: partial image with %.4g samples per pixel on average (every pixel has at least "
+            "%d) of the %d asked for\n",
+            double(r.samples) / pixels, r.samples_per_pixel, s.samples_per_pixel);
     }
     auto print_error = [&](const char* against, const Image& image) {
         const ErrorMetrics e = compare(r.image, image);

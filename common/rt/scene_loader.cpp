@@ -519,9 +519,12 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
 
 Scene load_scene(const fs::path& file) {
     std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) throw InputError(file.string() + ": cannot open the scene file");
+    if (!fs::is_regular_file(file, ec)) {
+        throw InputError(file.string() + ": must be a scene file (JSON), got " +
+                         (fs::exists(file, ec) ? "something else (a folder?)" : "no such file"));
+    }
     std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string() + ": cannot open the scene file");
+    if (!in) throw InputError(file.string() + ": cannot be opened for reading");
     std::ostringstream text;
     text << in.rdbuf();
     return parse_scene(text.str(), file);

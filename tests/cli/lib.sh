@@ -1,0 +1,54 @@
+# Shared by the scripts in tests/cli: a scratch folder, failures that say what went wrong, and a check that a
+# folder holds exactly the files it held before (nothing created, nothing overwritten).
+set -u
+
+failures=0
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/rt_cli_test.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+work="$scratch/work"  # where commands run, and where their output would land
+
+fail() {
+    echo "FAIL: $*" >&2
+    failures=$((failures + 1))
+}
+
+# snapshot DIR: one line per file, "name checksum", sorted.
+snapshot() {
+    (cd "$1" && find . -type f -print0 | sort -z | xargs -0 -r md5sum)
+}
+
+# expect_bad_input WHAT EXPECTED_LINE PREFIX_ONLY -- COMMAND...: runs COMMAND in $work, which holds an
+# earlier out.png and out.pfm; checks exit status 2, exactly one line on stderr that equals EXPECTED_LINE (or
+# starts with it when PREFIX_ONLY is 1), nothing on stdout, and no file created or changed.
+expect_bad_input() {
+    local what=$1 expected=$2 prefix_only=$3
+    shift 4
+    rm -rf "$work" && mkdir -p "$work"
+    echo "earlier png" > "$work/out.png"
+    echo "earlier pfm" > "$work/out.pfm"
+    local before after status
+    before=$(snapshot "$work")
+    (cd "$work" && "$@" > "$scratch/stdout" 2> "$scratch/stderr")
+    status=$?
+    after=$(snapshot "$work")
+    local lines line
+    lines=$(wc -l < "$scratch/stderr")
+    line=$(head -n 1 "$scratch/stderr")
+    [ "$status" -eq 2 ] || fail "$what: exit status $status, expected 2 (stderr: $line)"
+    [ "$lines" -eq 1 ] || fail "$what: $lines lines on stderr, expected 1: $(cat "$scratch/stderr")"
+    if [ "$prefix_only" = 1 ]; then
+        [[ "$line" == "$expected"* ]] || fail "$what: message was: $line ... expected it to start: $expected"
+    else
+        [ "$line" = "$expected" ] || fail "$what: message was: $line ... expected: $expected"
+    fi
+    [ ! -s "$scratch/stdout" ] || fail "$what: printed on stdout: $(head -c 200 "$scratch/stdout")"
+    [ "$before" = "$after" ] || fail "$what: files changed: $(diff <(echo "$before") <(echo "$after") | tr '\n' ' ')"
+}
+
+finish() {
+    if [ "$failures" -gt 0 ]; then
+        echo "$failures failure(s)" >&2
+        exit 1
+    fi
+    echo "all checks passed"
+}
