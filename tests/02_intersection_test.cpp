@@ -185,7 +185,8 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
         b.extend(c + Vec3{rng.next_real(), rng.next_real(), rng.next_real()});
         boxes.push_back(b);
     }
-    const Bvh bvh(boxes);
+    std::vector<std::uint32_t> order;
+    const Bvh bvh(boxes, order);
     std::vector<int> seen(boxes.size(), 0);
     for (std::size_t n = 0; n < bvh.nodes().size(); ++n) {
         const BvhNode& node = bvh.nodes()[n];
@@ -195,8 +196,8 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
         };
         if (node.leaf()) {
             for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) {
-                ++seen[bvh.indices()[i]];
-                CHECK(contains(boxes[bvh.indices()[i]]));
+                ++seen[order[i]];
+                CHECK(contains(boxes[order[i]]));
             }
         } else {
             CHECK(contains(bvh.nodes()[n + 1].box()));
@@ -204,7 +205,7 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
         }
     }
     for (int s : seen) CHECK(s == 1);
-    CHECK(bvh.bytes() <= boxes.size() * 64);
+    CHECK(bvh.bytes() <= boxes.size() * 64);  // the lesson's memory target: 64 bytes per primitive at most
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads", "[render]") {
@@ -212,25 +213,25 @@ TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 
     const World world(scene);
     RenderSettings settings{64, 36, 1, 1, 1, ProgressStyle::kNone};
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-    const IntersectionRender one = render_intersections(world, camera, ShowMode::kNormal, 5, settings);
+    const RenderResult one = render_intersections(world, camera, ShowMode::kNormal, 5, settings);
     settings.threads = 2;
-    const IntersectionRender two = render_intersections(world, camera, ShowMode::kNormal, 5, settings);
+    const RenderResult two = render_intersections(world, camera, ShowMode::kNormal, 5, settings);
     double sum = 0;
     bool identical = true;
     for (int y = 0; y < settings.height; ++y) {
         for (int x = 0; x < settings.width; ++x) {
-            const Color c = one.result.image.at(x, y);
+            const Color c = one.image.at(x, y);
             REQUIRE(is_finite(c));
             sum += double(c.r + c.g + c.b) / 3;
-            identical = identical && c == two.result.image.at(x, y);
+            identical = identical && c == two.image.at(x, y);
         }
     }
     CHECK(identical);
     const double mean = sum / (settings.width * settings.height);
     CHECK(mean > 0.3);
     CHECK(mean < 0.9);
-    CHECK(one.result.rays[RayKind::kCamera] == 64u * 36u);
-    CHECK(one.result.rays[RayKind::kShadow] == 0);
+    CHECK(one.rays[RayKind::kCamera] == 64u * 36u);
+    CHECK(one.rays[RayKind::kShadow] == 0);
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -14,7 +14,7 @@ namespace rt {
 // 32 bytes, depth-first order: an interior node's first child is the node right after it.
 struct BvhNode {
     Vec3 min;
-    std::uint32_t offset;  // leaf: first entry in Bvh::indices; interior: index of the second child
+    std::uint32_t offset;  // leaf: first slot of its primitives; interior: index of the second child
     Vec3 max;
     std::uint32_t count;  // leaf: number of primitives (> 0); interior: 0
 
@@ -32,27 +32,25 @@ struct TraversalStats {
 class Bvh {
   public:
     Bvh() = default;
-    // Builds over primitives 0..n−1 with these bounds.
-    explicit Bvh(std::span<const Aabb> bounds);
+    // Builds over primitives 0..n−1 with these bounds. The leaves hold slots 0..n−1: slot i is primitive
+    // order[i], and the caller stores its primitives in that order, so a leaf's primitives are neighbours
+    // in memory (one cache line, not one per primitive).
+    Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order);
 
     const std::vector<BvhNode>& nodes() const { return nodes_; }
-    const std::vector<std::uint32_t>& indices() const { return indices_; }
-    // The memory the hierarchy adds to the primitives: nodes and the primitive index list.
-    std::size_t bytes() const {
-        return nodes_.size() * sizeof(BvhNode) + indices_.size() * sizeof(std::uint32_t);
-    }
+    // The memory the hierarchy adds to the primitives: its nodes.
+    std::size_t bytes() const { return nodes_.size() * sizeof(BvhNode); }
     bool empty() const { return nodes_.empty(); }
 
-    // Visits, nearest box first, every leaf whose box the ray meets before t_max, calling
-    // `test(primitive, t_max)` for each primitive there: it returns true on a hit and then lowers t_max to
-    // it. With any_hit, returns at the first hit. Returns whether anything was hit.
+    // Visits, nearest box first, every leaf whose box the ray meets before t_max, calling `test(slot, t_max)`
+    // for each primitive slot there: it returns true on a hit and then lowers t_max to it.
+    // With any_hit, returns at the first hit. Returns whether anything was hit.
     template <typename Test>
     bool traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_hit, Test&& test,
                   TraversalStats* stats = nullptr) const;
 
   private:
     std::vector<BvhNode> nodes_;
-    std::vector<std::uint32_t> indices_;
 };
 
 template <typename Test>
@@ -73,9 +71,9 @@ bool Bvh::traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_
     while (true) {
         const BvhNode& node = nodes_[current];
         if (node.leaf()) {
-            for (std::uint32_t i = node.offset; i < node.offset + node.count; ++i) {
+            for (std::uint32_t slot = node.offset; slot < node.offset + node.count; ++slot) {
                 if (stats) ++stats->primitives;
-                if (test(indices_[i], t_max)) {
+                if (test(slot, t_max)) {
                     hit = true;
                     if (any_hit) return true;
                 }

@@ -1,7 +1,6 @@
 #include "intersection_render.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -38,32 +37,38 @@ Real cost_heat(std::uint32_t tests) {
     return std::log2(Real(1) + Real(tests)) / 11;
 }
 
-IntersectionRender render_intersections(const World& world, const PinholeCamera& camera, ShowMode mode,
-                                        Real distance_scale, const RenderSettings& settings) {
-    std::atomic<std::uint64_t> tests{0};
+RenderResult render_intersections(const World& world, const PinholeCamera& camera, ShowMode mode,
+                                  Real distance_scale, const RenderSettings& settings) {
     const int count = settings.samples_per_pixel;
-    IntersectionRender out;
-    out.result = render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
         const Vec2 film =
             pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
         const Ray ray = camera_ray(camera, film.x, film.y);
         rays.add(RayKind::kCamera);
-        TraversalStats stats;
-        const auto hit = world.intersect(ray, kInfinity, stats);
-        tests.fetch_add(stats.nodes + stats.primitives, std::memory_order_relaxed);
-        switch (mode) {
-            case ShowMode::kNormal:
-                return hit ? normal_colour(hit->normal) : Color{0};
-            case ShowMode::kDistance:
-                return hit ? distance_colour(hit->t, distance_scale) : Color{0};
-            case ShowMode::kCost:
-                return heat_colour(cost_heat(stats.nodes + stats.primitives));
+        if (mode == ShowMode::kCost) {
+            TraversalStats stats;
+            world.intersect(ray, kInfinity, stats);
+            return heat_colour(cost_heat(stats.nodes + stats.primitives));
         }
-        return Color{0};
+        const auto hit = world.intersect(ray);
+        if (!hit) return Color{0};
+        return mode == ShowMode::kNormal ? normal_colour(hit->normal)
+                                         : distance_colour(hit->t, distance_scale);
     });
-    const std::uint64_t camera_rays = out.result.rays[RayKind::kCamera];
-    out.mean_tests = camera_rays > 0 ? double(tests.load()) / double(camera_rays) : 0.0;
-    return out;
+}
+
+MeanTraversalCost mean_traversal_cost(const World& world, const PinholeCamera& camera) {
+    std::uint64_t nodes = 0, primitives = 0, rays = 0;
+    for (int y = 0; y < camera.height; ++y) {
+        for (int x = 0; x < camera.width; ++x) {
+            TraversalStats stats;
+            world.intersect(camera_ray(camera, Real(x) + Real(0.5), Real(y) + Real(0.5)), kInfinity, stats);
+            nodes += stats.nodes;
+            primitives += stats.primitives;
+            ++rays;
+        }
+    }
+    return {double(nodes) / double(rays), double(primitives) / double(rays)};
 }
 
 }  // namespace rt

@@ -24,13 +24,16 @@ Color heat_colour(Real x);
 // The heat of a query that tested `tests` boxes and primitives: log₂(1 + tests) / 11, white at 2047 tests.
 Real cost_heat(std::uint32_t tests);
 
-struct IntersectionRender {
-    RenderResult result;
-    double mean_tests = 0;  // boxes plus primitives tested per camera ray
-};
-
 // Every sample traces one camera ray (stratified in its pixel) and shows its nearest hit; misses are black.
-IntersectionRender render_intersections(const World& world, const PinholeCamera& camera, ShowMode mode,
-                                        Real distance_scale, const RenderSettings& settings);
+RenderResult render_intersections(const World& world, const PinholeCamera& camera, ShowMode mode,
+                                  Real distance_scale, const RenderSettings& settings);
+
+// What finding the nearest hit costs on average: boxes and primitives tested per ray, over one ray through
+// each pixel centre (measured apart from the render, so the render counts nothing but rays).
+struct MeanTraversalCost {
+    double nodes = 0;
+    double primitives = 0;
+};
+MeanTraversalCost mean_traversal_cost(const World& world, const PinholeCamera& camera);
 
 }  // namespace rt

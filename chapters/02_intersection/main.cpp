@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
-#include <thread>
 #include <variant>
 
 #include "camera.hpp"
@@ -65,14 +64,14 @@ int main(int argc, char** argv) {
         const RenderSettings& settings = context.settings;
         const PinholeCamera camera =
             make_pinhole_camera(context.scene.camera, settings.width, settings.height);
-        const Real distance_scale = glm::length(context.scene.camera.at - context.scene.camera.from);
-        const IntersectionRender r =
+        // Distances shown as exp(−t / s), s half the distance to the look-at point: exp(−2) there.
+        const Real distance_scale = glm::length(context.scene.camera.at - context.scene.camera.from) / 2;
+        const RenderResult result =
             render_intersections(world, camera, show_mode_from_string(show), distance_scale, settings);
+        const MeanTraversalCost cost = mean_traversal_cost(world, camera);
 
-        ChapterRun run{r.result, {}, std::nullopt};
-        const double camera_rays = double(r.result.rays[RayKind::kCamera]);
-        const double threads =
-            settings.threads > 0 ? settings.threads : std::max(1u, std::thread::hardware_concurrency());
+        ChapterRun run{result, {}, std::nullopt};
+        const double camera_rays = double(result.rays[RayKind::kCamera]);
         run.notes.push_back("showing " + show + "; materials are not shaded before chapter 03");
         run.notes.push_back(format("world: %.0f primitives (%.0f triangles)", double(world.primitive_count()),
                                    double(world.triangle_count())) +
@@ -83,8 +82,10 @@ int main(int argc, char** argv) {
                                  : std::string(", no acceleration: every ray tests every primitive")));
         run.notes.push_back(
             "triangle test: " + triangle_test + ", acceleration: " + accel +
-            format(": %.1f ns per camera ray (render time x threads / rays), %.1f tests per ray",
-                   camera_rays > 0 ? r.result.seconds * 1e9 * threads / camera_rays : 0.0, r.mean_tests));
+            format(": %.1f ns per camera ray (render time x threads / rays); per ray %.1f boxes and "
+                   "%.1f primitives tested",
+                   camera_rays > 0 ? result.seconds * 1e9 * settings.threads / camera_rays : 0.0, cost.nodes,
+                   cost.primitives));
         for (const Shape& shape : context.scene.shapes) {
             const auto* mesh = std::get_if<MeshShape>(&shape.geometry);
             if (!mesh) continue;

@@ -40,12 +40,49 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
         std::vector<Aabb> boxes;
         boxes.reserve(primitives_.size());
         for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
-        bvh_ = Bvh(boxes);
+        std::vector<std::uint32_t> order;
+        bvh_ = Bvh(boxes, order);
+        lay_out_in(order);
     }
 }
 
 void World::add_primitive(Kind kind, std::uint32_t index, int material) {
-    primitives_.push_back({kind, index, material});
+    primitives_.push_back({kind, index, material, std::uint32_t(primitives_.size())});
+}
+
+// Stores the primitives, and the spheres, quads and triangles they point to, in the BVH's leaf order.
+void World::lay_out_in(const std::vector<std::uint32_t>& order) {
+    std::vector<Primitive> primitives;
+    std::vector<Sphere> spheres;
+    std::vector<Quad> quads;
+    std::vector<Triangle> triangles;
+    primitives.reserve(order.size());
+    spheres.reserve(spheres_.size());
+    quads.reserve(quads_.size());
+    triangles.reserve(triangles_.size());
+    auto move_to = [](auto& to, const auto& from, std::uint32_t index) {
+        to.push_back(from[index]);
+        return std::uint32_t(to.size() - 1);
+    };
+    for (std::uint32_t old_slot : order) {
+        Primitive p = primitives_[old_slot];
+        switch (p.kind) {
+            case Kind::kSphere:
+                p.index = move_to(spheres, spheres_, p.index);
+                break;
+            case Kind::kQuad:
+                p.index = move_to(quads, quads_, p.index);
+                break;
+            case Kind::kTriangle:
+                p.index = move_to(triangles, triangles_, p.index);
+                break;
+        }
+        primitives.push_back(p);
+    }
+    primitives_ = std::move(primitives);
+    spheres_ = std::move(spheres);
+    quads_ = std::move(quads);
+    triangles_ = std::move(triangles);
 }
 
 void World::add(const Shape& shape) {
@@ -105,19 +142,19 @@ Aabb World::bounds(const Primitive& p) const {
     return box;
 }
 
-bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t primitive, Real t_max,
+bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
                  Candidate& found) const {
-    const Primitive& p = primitives_[primitive];
+    const Primitive& p = primitives_[slot];
     switch (p.kind) {
         case Kind::kSphere:
             if (const auto t = intersect_sphere(ray, spheres_[p.index], t_max)) {
-                found = {*t, primitive, Vec2{0}};
+                found = {*t, slot, Vec2{0}};
                 return true;
             }
             return false;
         case Kind::kQuad:
             if (const auto h = intersect_quad(ray, quads_[p.index], t_max)) {
-                found = {h->t, primitive, h->ab};
+                found = {h->t, slot, h->ab};
                 return true;
             }
             return false;
@@ -127,7 +164,7 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t pri
                                ? intersect_triangle_watertight(ray, sheared, tri, t_max)
                                : intersect_triangle_moller(ray, tri, t_max);
             if (h) {
-                found = {h->t, primitive, h->barycentrics};
+                found = {h->t, slot, h->barycentrics};
                 return true;
             }
             return false;
@@ -148,8 +185,8 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
         }
     }
     const WatertightRay sheared = make_watertight_ray(ray);
-    auto test_one = [&](std::uint32_t primitive, Real& limit) {
-        if (!test(ray, sheared, primitive, limit, found)) return false;
+    auto test_one = [&](std::uint32_t slot, Real& limit) {
+        if (!test(ray, sheared, slot, limit, found)) return false;
         limit = found.t;
         return true;
     };
@@ -169,10 +206,10 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
 Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     Hit hit;
     hit.t = found.t;
-    hit.primitive = found.primitive;
     const std::uint32_t bounded = std::uint32_t(primitives_.size());
-    if (found.primitive >= bounded) {
-        const MaterialPlane& p = planes_[found.primitive - bounded];
+    if (found.slot >= bounded) {
+        hit.primitive = found.slot;
+        const MaterialPlane& p = planes_[found.slot - bounded];
         // Rebuilt from the plane's own coordinates, p = p0 + a T + b B: in the plane up to rounding.
         hit.uv = plane_uv(p.plane, ray.at(found.t));
         const Vec3 along_t = hit.uv.x * p.plane.tangent, along_b = hit.uv.y * p.plane.bitangent;
@@ -182,7 +219,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
     }
-    const Primitive& p = primitives_[found.primitive];
+    const Primitive& p = primitives_[found.slot];
+    hit.primitive = p.id;
     hit.material = p.material;
     switch (p.kind) {
         case Kind::kSphere: {

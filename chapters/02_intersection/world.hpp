@@ -44,27 +44,31 @@ class World {
 
   private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle };
-    // A bounded primitive: which array holds it, where, and its material.
+    // A bounded primitive: which array holds it, where, its material, and its number in scene order
+    // (what Hit::primitive reports, whatever order the BVH lays the primitives out in).
     struct Primitive {
         Kind kind;
         std::uint32_t index;
         int material;
+        std::uint32_t id;
     };
     struct MaterialPlane {
         Plane plane;
         int material;
     };
-    // The nearest hit found so far, before its hit record is made.
+    // The nearest hit found so far, before its hit record is made: `slot` is the primitive's place in
+    // primitives_, or primitives_.size() + i for plane i.
     struct Candidate {
         Real t;
-        std::uint32_t primitive;
+        std::uint32_t slot;
         Vec2 uv;
     };
 
     void add(const Shape& shape);
     void add_primitive(Kind kind, std::uint32_t index, int material);
+    void lay_out_in(const std::vector<std::uint32_t>& order);
     Aabb bounds(const Primitive& p) const;
-    bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t primitive, Real t_max,
+    bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
               Candidate& found) const;
     bool search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;

@@ -1,0 +1,212 @@
+// What a BVH buys, measured: rays per second of nearest-hit and any-hit queries, brute force against the BVH,
+// for generated meshes of 10^3 .. 10^6 triangles, on one thread and on every core; the BVH's build time and
+// bytes per triangle; and what the watertight triangle test costs against Möller–Trumbore. Two sets of rays:
+// camera rays (a 512×512 pinhole view of the mesh, coherent, like the chapter's render) and random rays (from
+// random points around the mesh to random points inside it: incoherent, every query a new path through the
+// tree and through memory). Each figure is the median of `--repeats` runs. It checks the lesson's three
+// targets.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "camera.hpp"
+#include "mesh_generator.hpp"
+#include "rt/random.hpp"
+#include "world.hpp"
+
+namespace {
+
+using namespace rt;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+// Seconds taken by `work`, the median of `repeats` runs.
+double median_seconds(int repeats, const std::function<void()>& work) {
+    std::vector<double> seconds;
+    for (int i = 0; i < repeats; ++i) {
+        const auto start = Clock::now();
+        work();
+        seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+    return median(seconds);
+}
+
+// Rays from random points on a sphere of radius 3 around the mesh to random points within radius 1.2.
+std::vector<Ray> make_random_rays(std::size_t count, std::uint64_t seed) {
+    Pcg32 rng(seed, 1);
+    auto in_ball = [&](Real radius) {
+        while (true) {
+            const Vec3 p = Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(2) - Real(1);
+            if (glm::dot(p, p) <= 1 && glm::dot(p, p) > Real(1e-4)) return p * radius;
+        }
+    };
+    std::vector<Ray> rays(count);
+    for (Ray& ray : rays) {
+        const Vec3 origin = glm::normalize(in_ball(1)) * Real(3);
+        ray = {origin, glm::normalize(in_ball(Real(1.2)) - origin)};
+    }
+    return rays;
+}
+
+// The rays through the pixel centres of a side × side image of the unit sphere, seen from distance 3, row by
+// row.
+std::vector<Ray> make_camera_rays(int side) {
+    const PinholeCamera camera = make_pinhole_camera({{0.3f, 0.5f, 3}, {0, 0, 0}, {0, 1, 0}, 45}, side, side);
+    std::vector<Ray> rays;
+    rays.reserve(std::size_t(side) * std::size_t(side));
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            rays.push_back(camera_ray(camera, Real(x) + Real(0.5), Real(y) + Real(0.5)));
+    return rays;
+}
+
+// Traces every ray (nearest hit, or any hit), split over `threads`; returns how many hit.
+std::size_t trace_all(const World& world, const std::vector<Ray>& rays, bool any_hit, int threads) {
+    std::vector<std::size_t> hits(std::size_t(threads), 0);
+    auto work = [&](int t) {
+        for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) {
+            const bool hit =
+                any_hit ? world.occluded(rays[i], kInfinity) : world.intersect(rays[i]).has_value();
+            hits[std::size_t(t)] += hit ? 1 : 0;
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& thread : pool) thread.join();
+    std::size_t total = 0;
+    for (std::size_t h : hits) total += h;
+    return total;
+}
+
+// Million rays per second over `rays`, the median of `repeats` runs.
+double mrays_per_second(const World& world, const std::vector<Ray>& rays, bool any_hit, int threads,
+                        int repeats) {
+    const double seconds = median_seconds(repeats, [&] { trace_all(world, rays, any_hit, threads); });
+    return double(rays.size()) / seconds * 1e-6;
+}
+
+// Boxes and primitives tested per ray, on average: what the tree saves, free of the machine's noise.
+struct MeanTests {
+    double boxes = 0;
+    double primitives = 0;
+};
+MeanTests mean_tests(const World& world, const std::vector<Ray>& rays) {
+    MeanTests mean;
+    for (const Ray& ray : rays) {
+        TraversalStats stats;
+        world.intersect(ray, kInfinity, stats);
+        mean.boxes += stats.nodes;
+        mean.primitives += stats.primitives;
+    }
+    mean.boxes /= double(rays.size());
+    mean.primitives /= double(rays.size());
+    return mean;
+}
+
+Scene mesh_scene(MeshShape mesh) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    scene.shapes.push_back(Shape{std::move(mesh), 0, "mesh"});
+    return scene;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int repeats = 5;
+    int ray_count = 1 << 17;
+    int max_exponent = 6;
+    CLI::App app("Chapter 02 benchmark: BVH against brute force, 10^3 .. 10^6 triangles", "ch02_benchmark");
+    app.add_option("--repeats", repeats, "Runs per figure (the median is reported)")
+        ->check(CLI::Range(1, 99));
+    app.add_option("--rays", ray_count, "Random rays per measurement")->check(CLI::Range(1000, 1 << 24));
+    app.add_option("--max-exponent", max_exponent, "Largest mesh: 10^N triangles")->check(CLI::Range(3, 7));
+    CLI11_PARSE(app, argc, argv);
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    const std::vector<Ray> camera_rays = make_camera_rays(512);
+    const std::vector<Ray> random_rays = make_random_rays(std::size_t(ray_count), 7);
+
+    std::printf(
+        "BVH against brute force on uv spheres of n triangles: %zu camera rays, %d random rays, median of %d "
+        "runs, %d cores; Mrays/s of nearest-hit queries unless marked any-hit\n\n",
+        camera_rays.size(), ray_count, repeats, cores);
+    std::printf(
+        "| triangles | build (ms) | build (s per 10^6) | BVH bytes/tri | camera, 1 thread | camera, %d "
+        "threads | "
+        "random, 1 thread | random, %d threads | random any-hit, 1 thread | brute force, random, 1 thread | "
+        "BVH speed-up | boxes + primitives per random ray |\n",
+        cores, cores);
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    double camera_smallest = 0, camera_largest = 0, random_smallest = 0, random_largest = 0;
+    double worst_build_per_million = 0, worst_bytes = 0;
+    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
+        // A uv sphere with s segments and s/2 + 1 rings has s² triangles.
+        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
+        const Scene scene = mesh_scene(make_uv_sphere(segments, segments / 2 + 1));
+        const double triangles = double(segments) * double(segments);
+        const double build = median_seconds(repeats, [&] { const World world(scene); });
+        const World world(scene);
+        const double bytes = double(world.bvh().bytes()) / triangles;
+        const double camera_1 = mrays_per_second(world, camera_rays, false, 1, repeats);
+        const double camera_n = mrays_per_second(world, camera_rays, false, cores, repeats);
+        const double random_1 = mrays_per_second(world, random_rays, false, 1, repeats);
+        const double random_n = mrays_per_second(world, random_rays, false, cores, repeats);
+        const double any_1 = mrays_per_second(world, random_rays, true, 1, repeats);
+        // Brute force tests every triangle: about 2·10^7 triangle tests per measurement.
+        const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
+        const std::size_t brute_rays = std::max<std::size_t>(16, std::size_t(2e7 / triangles));
+        const std::vector<Ray> few(
+            random_rays.begin(),
+            random_rays.begin() + std::ptrdiff_t(std::min(brute_rays, random_rays.size())));
+        const double brute_1 = mrays_per_second(brute, few, false, 1, repeats);
+        const MeanTests tests = mean_tests(world, random_rays);
+        std::printf(
+            "| %.0f | %.1f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.0f× | %.1f + %.1f |\n",
+            triangles, build * 1e3, build / triangles * 1e6, bytes, camera_1, camera_n, random_1, random_n,
+            any_1, brute_1, random_1 / brute_1, tests.boxes, tests.primitives);
+        std::fflush(stdout);
+        if (exponent == 3) {
+            camera_smallest = 1 / camera_1;
+            random_smallest = 1 / random_1;
+        }
+        camera_largest = 1 / camera_1;
+        random_largest = 1 / random_1;
+        worst_build_per_million = std::max(worst_build_per_million, build / triangles * 1e6);
+        worst_bytes = std::max(worst_bytes, bytes);
+    }
+
+    // The cost of watertightness: the same BVH, the same rays, the two triangle tests.
+    const Scene scene = mesh_scene(make_uv_sphere(316, 159));
+    const World watertight(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
+    const World moller(scene, {TriangleTest::kMollerTrumbore, Acceleration::kBvh});
+    const double watertight_rate = mrays_per_second(watertight, random_rays, false, 1, repeats);
+    const double moller_rate = mrays_per_second(moller, random_rays, false, 1, repeats);
+    std::printf(
+        "\nTriangle test on 99856 triangles, random rays, nearest hit, 1 thread: watertight %.2f Mrays/s, "
+        "Möller–Trumbore %.2f Mrays/s: watertight takes %.2f× the time\n",
+        watertight_rate, moller_rate, moller_rate / watertight_rate);
+
+    const double camera_growth = camera_largest / camera_smallest;
+    const double random_growth = random_largest / random_smallest;
+    const bool growth_ok = camera_growth <= 3, build_ok = worst_build_per_million < 1,
+               bytes_ok = worst_bytes <= 64;
+    std::printf("\nTargets:\n");
+    std::printf("  time per camera ray at 10^%d triangles / at 10^3: %.2f (target <= 3): %s\n", max_exponent,
+                camera_growth, growth_ok ? "met" : "NOT MET");
+    std::printf("  (random rays, for comparison: %.2f; they miss the caches at every level of the tree)\n",
+                random_growth);
+    std::printf("  build time per million triangles, one core: %.2f s (target < 1 s): %s\n",
+                worst_build_per_million, build_ok ? "met" : "NOT MET");
+    std::printf("  BVH bytes per triangle: %.1f (target <= 64): %s\n", worst_bytes,
+                bytes_ok ? "met" : "NOT MET");
+    return growth_ok && build_ok && bytes_ok ? 0 : 1;
+}
