@@ -17,8 +17,9 @@
 
 namespace {
 
-std::string count_text(std::size_t n, const char* what) {
-    return std::to_string(n) + " " + what;
+// "1 quad", "2 quads".
+std::string count_text(std::size_t n, const std::string& what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
 // What the scene asks for that this chapter shades differently or not at all, one note per material.
@@ -132,12 +133,17 @@ int main(int argc, char** argv) {
         LightSet lights = collect_lights(scene);
         const auto analytic = options.direct ? find_plane_under_quad(scene) : std::nullopt;
         std::vector<std::string> notes = material_notes(scene, options);
-        notes.push_back(
-            "lights: " + count_text(lights.quads.size(), "quads, ") +
-            count_text(lights.triangles.size(), "triangles, ") +
-            count_text(lights.spheres.size(), "spheres, ") + count_text(lights.points.size(), "point") +
-            (lights.environment ? ", an environment" : "") + "; " + std::to_string(shadow_samples) +
-            " shadow sample(s) per light per hit, " + light_sampler);
+        if (lights.empty()) {
+            notes.push_back("the scene has no light to sample: no direct light, no shadow rays");
+        } else {
+            notes.push_back("lights: " + count_text(lights.quads.size(), "quad") + ", " +
+                            count_text(lights.triangles.size(), "triangle") + ", " +
+                            count_text(lights.spheres.size(), "sphere") + ", " +
+                            count_text(lights.points.size(), "point") +
+                            (lights.environment ? ", an environment" : "") + "; " +
+                            count_text(std::size_t(shadow_samples), "shadow sample") +
+                            " per light per hit, " + light_sampler);
+        }
         for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
         const DirectLighting shading(world, scene, std::move(lights), options);
         ChapterRun run{render_direct(shading, camera, settings,
