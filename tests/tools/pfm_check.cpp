@@ -24,8 +24,9 @@ int main(int argc, char** argv) {
             for (std::size_t i = 0; i < a.pixel_count(); ++i) {
                 // Bit for bit: memcmp, so that even -0 against +0 counts as a difference.
                 if (std::memcmp(&a.pixels()[i], &b.pixels()[i], sizeof(rt::Color)) != 0) {
-                    std::fprintf(stderr, "%s and %s differ first at pixel %zu (x %d, y %d)\n", argv[1], argv[2], i,
-                                 int(i % std::size_t(a.width())), int(i / std::size_t(a.width())));
+                    std::fprintf(stderr, "%s and %s differ first at pixel %zu (x %d, y %d)\n", argv[1],
+                                 argv[2], i, int(i % std::size_t(a.width())),
+                                 int(i / std::size_t(a.width())));
                     return 1;
                 }
             }
