@@ -54,8 +54,9 @@ struct RetroreflectiveBrdf {
 
 using Brdf = std::variant<LambertBrdf, MirrorBrdf, GlossyBrdf, RetroreflectiveBrdf>;
 
-// The Phong exponent of a roughness r in (0, 1]: e = 2 / r² − 2 (Walter et al. 2007's match of a Phong lobe
-// to a Beckmann lobe of width r); r = 1 gives e = 0, a diffuse-like lobe. r is clamped to >= 1e-3.
+// The Phong exponent of a roughness r in (0, 1]: e = 2 / r² − 2 (the relation Walter et al. 2007 give between
+// Phong and Beckmann microfacet distributions); r = 1 gives e = 0, a diffuse-like lobe. r is clamped to >=
+// 1e-3.
 Real phong_exponent(Real roughness);
 
 // The mirror image of w about n: r = 2 (n · w) n − w.
