@@ -56,8 +56,9 @@ ExactVisibility::ExactVisibility(const Scene& scene) {
                         }
                     }
                 } else if constexpr (std::is_same_v<T, MeshShape>) {
-                    throw InputError(shape.place +
-                                     ": the exact visibility reference takes no meshes (not convex)");
+                    throw InputError(
+                        scene.file + ": " + shape.place +
+                        ": a mesh; the exact visibility of --offset-study takes convex shapes only");
                 }
                 bounded += s.count;
                 solids_.push_back(std::move(s));

@@ -1,6 +1,7 @@
 // Chapter 03: shadow rays. Point lights light diffuse surfaces (E = I cos θ / r², L = (ρ / π) E) wherever a
 // shadow ray reaches them; `--offset none|epsilon|robust` chooses how a shadow ray leaves the surface, and
 // `--offset-study` measures what each method costs and gets wrong at scales from 1e-3 to 1e5.
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -67,18 +68,20 @@ int main(int argc, char** argv) {
     auto flags = [&](CLI::App& app) {
         app.add_option("--offset", offset_name, "How a shadow ray leaves its surface: none|epsilon|robust")
             ->check(CLI::IsMember({"none", "epsilon", "robust"}));
-        app.add_option("--epsilon", epsilon, "The fixed distance of --offset epsilon (default 1e-4)")
-            ->check(CLI::PositiveNumber);
-        app.add_option("--scale", scale, "Multiply every length of the scene by this (lights by its square)")
-            ->check(CLI::PositiveNumber);
+        app.add_option("--epsilon", epsilon, "The fixed distance of --offset epsilon (default 1e-4)");
+        app.add_option(
+            "--scale", scale,
+            "Multiply every length of the scene by this, in [1e-12, 1e12] (intensities by its square)");
         app.add_flag("--offset-study", study,
                      "Count self-hits, acne and leak pixels and time each offset at each of --study-scales");
         app.add_option("--study-scales", study_scales,
-                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)")
-            ->check(CLI::PositiveNumber);
+                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)");
         app.add_option("--csv", csv, "With --offset-study: also write the table as CSV");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
+        if (!(epsilon > 0 && std::isfinite(epsilon))) {
+            throw InputError("--epsilon: must be a finite number > 0, got " + format("%g", double(epsilon)));
+        }
         const RayOffset offset{offset_method_from_string(offset_name), epsilon};
         const RenderSettings& settings = context.settings;
         if (study) {
@@ -87,7 +90,14 @@ int main(int argc, char** argv) {
                 if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
             }
             std::vector<Real> scales;
-            for (Real s : study_scales) scales.push_back(s * scale);
+            for (Real s : study_scales) {
+                if (!(s * scale >= Real(1e-12) && s * scale <= Real(1e12))) {
+                    throw InputError(
+                        "--study-scales: each scale (times --scale) must be in [1e-12, 1e12], got " +
+                        format("%g", double(s * scale)));
+                }
+                scales.push_back(s * scale);
+            }
             const std::vector<RayOffset> methods{{OffsetMethod::kNone, epsilon},
                                                  {OffsetMethod::kEpsilon, epsilon},
                                                  {OffsetMethod::kRobust, epsilon}};

@@ -1,6 +1,7 @@
 #include "scene_scale.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -10,8 +11,12 @@
 namespace rt {
 
 Scene scale_scene(const Scene& scene, Real s) {
-    if (!(std::isfinite(s) && s > 0))
-        throw InputError("--scale: must be finite and > 0, got " + std::to_string(s));
+    // Beyond 1e12 the scaled intensities (× s²) overflow float; below 1e-12 the squared distances underflow.
+    if (!(s >= Real(1e-12) && s <= Real(1e12))) {
+        char text[96];
+        std::snprintf(text, sizeof text, "--scale: must be in [1e-12, 1e12], got %g", double(s));
+        throw InputError(text);
+    }
     Scene out = scene;
     out.camera.from *= s;
     out.camera.at *= s;

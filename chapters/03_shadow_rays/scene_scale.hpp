@@ -7,7 +7,7 @@
 
 namespace rt {
 
-// Throws InputError unless s is finite and > 0.
+// Throws InputError unless s is in [1e-12, 1e12] (intensities × s² stay finite in float).
 Scene scale_scene(const Scene& scene, Real s);
 
 }  // namespace rt
