@@ -22,7 +22,7 @@ double angle_between(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-TEST_CASE("The centre of the film looks straight ahead", "[ch01]") {
+TEST_CASE("The centre of the film looks straight ahead", "[ch01][ex:ch01.camera_ray]") {
     const PinholeCamera camera = make_pinhole_camera(looking_down_z(), 640, 360);
     const Ray ray = camera_ray(camera, 320, 180);
     CHECK(ray.origin == Vec3(0));
@@ -31,7 +31,8 @@ TEST_CASE("The centre of the film looks straight ahead", "[ch01]") {
     CHECK(ray.direction.z == Approx(-1));
 }
 
-TEST_CASE("The top and bottom edge rays make half the vertical field of view with the view", "[ch01]") {
+TEST_CASE("The top and bottom edge rays make half the vertical field of view with the view",
+          "[ch01][ex:ch01.camera_ray]") {
     for (Real vfov : {10.0f, 40.0f, 90.0f, 150.0f}) {
         const PinholeCamera camera = make_pinhole_camera(looking_down_z(vfov), 200, 100);
         const Vec3 ahead = camera.forward;
@@ -41,14 +42,14 @@ TEST_CASE("The top and bottom edge rays make half the vertical field of view wit
     }
 }
 
-TEST_CASE("The horizontal field of view follows the aspect ratio", "[ch01]") {
+TEST_CASE("The horizontal field of view follows the aspect ratio", "[ch01][ex:ch01.camera_ray]") {
     const PinholeCamera camera = make_pinhole_camera(looking_down_z(60), 400, 100);
     const double half_horizontal = angle_between(camera_ray(camera, 400, 50).direction, camera.forward);
     CHECK(std::tan(half_horizontal) == Approx(4 * std::tan(radians(30))).epsilon(1e-5));
     CHECK(camera_ray(camera, 400, 50).direction.x > 0);  // the right column looks right
 }
 
-TEST_CASE("Every camera ray has unit length", "[ch01]") {
+TEST_CASE("Every camera ray has unit length", "[ch01][ex:ch01.camera_ray]") {
     const PinholeCamera camera = make_pinhole_camera(CameraDesc{{1, 2, 3}, {-4, 5, 6}, {0, 1, 0}, 75}, 97, 61);
     for (int y = 0; y <= 61; ++y)
         for (int x = 0; x <= 97; ++x) REQUIRE(glm::length(camera_ray(camera, Real(x), Real(y)).direction) == Approx(1).epsilon(1e-6));
@@ -77,7 +78,8 @@ TEST_CASE("A camera whose up is exactly parallel to the view is refused with a c
     CHECK_THROWS_AS(make_pinhole_camera(looking_down_z(), 0, 8), InputError);
 }
 
-TEST_CASE("Jittered samples stay inside their pixel for random numbers 0 and just below 1", "[ch01][stability]") {
+TEST_CASE("Jittered samples stay inside their pixel for random numbers 0 and just below 1",
+          "[ch01][stability][ex:ch01.pixel_sample]") {
     // The naive film point x + u leaves the pixel: in float, 3 + (1 − 2⁻²⁴) rounds to 4.
     CHECK(Real(3) + kOneMinusEpsilon == Real(4));
     const Vec2 lowest(0, 0), highest(kOneMinusEpsilon, kOneMinusEpsilon);
@@ -100,7 +102,7 @@ TEST_CASE("Jittered samples stay inside their pixel for random numbers 0 and jus
     }
 }
 
-TEST_CASE("Stratified samples put one sample in each stratum", "[ch01]") {
+TEST_CASE("Stratified samples put one sample in each stratum", "[ch01][ex:ch01.pixel_sample]") {
     const int n = 4;
     std::vector<int> hits(n * n, 0);
     for (int i = 0; i < n * n; ++i) {
@@ -123,7 +125,8 @@ TEST_CASE("Exact edge coverage: whole pixels, half pixels, and the film's total 
     CHECK(total == Approx(64 * 48 / 2.0).epsilon(1e-9));
 }
 
-TEST_CASE("Coverage from many stratified samples converges to the exact coverage", "[ch01][statistical]") {
+TEST_CASE("Coverage from many stratified samples converges to the exact coverage",
+          "[ch01][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample]") {
     const PinholeCamera camera = make_pinhole_camera(looking_down_z(), 48, 32);
     const FilmEdge edge = make_film_edge(camera, 20);
     RenderSettings settings{48, 32, 256, 3, 1, ProgressStyle::kNone};
@@ -136,7 +139,8 @@ TEST_CASE("Coverage from many stratified samples converges to the exact coverage
     CHECK(uniform < centre);      // and any anti-aliasing beats one sample at the centre
 }
 
-TEST_CASE("Chapter 01's default scene renders: finite, plausible and deterministic", "[ch01]") {
+TEST_CASE("Chapter 01's default scene renders: finite, plausible and deterministic",
+          "[ch01][ex:ch01.camera_ray][ex:ch01.pixel_sample]") {
     const Scene scene = load_scene(scene_path("ch01_default.json"));
     RenderSettings settings{64, 36, 4, 1, 2, ProgressStyle::kNone};
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);

@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Tests of tools/exercises.py on a fixture chapter (tests/exercises/fixture): the marks it finds, the lesson
+sections it names, the marks it refuses, and that the stubbed sources compile with the course's warnings as
+errors. Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
+
+import importlib.util
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+FIXTURE = HERE / "fixture"
+COMPILER = "g++"
+WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion", "-Wno-sign-conversion", "-Werror"]
+
+spec = importlib.util.spec_from_file_location("exercises", ROOT / "tools" / "exercises.py")
+exercises = importlib.util.module_from_spec(spec)
+sys.modules["exercises"] = exercises
+spec.loader.exec_module(exercises)
+
+
+def copy_of_fixture(folder: Path) -> Path:
+    root = folder / "repo"
+    shutil.copytree(FIXTURE, root)
+    return root
+
+
+class Marks(unittest.TestCase):
+    def setUp(self):
+        self.folder = Path(tempfile.mkdtemp())
+        self.root = copy_of_fixture(self.folder)
+
+    def tearDown(self):
+        shutil.rmtree(self.folder)
+
+    def test_finds_every_mark_with_its_function_parameters_and_locals(self):
+        found = {e.name: e for e in exercises.find_exercises(self.root)}
+        self.assertEqual(sorted(found), ["ch07.counter", "ch07.hypotenuse", "ch07.increment", "ch07.integrate"])
+        h = found["ch07.hypotenuse"]
+        self.assertEqual(h.function, "hypotenuse")
+        self.assertEqual(h.parameters, ["a", "b", "scale"])  # the unnamed int has no name to cast
+        self.assertEqual(h.locals, ["twice", "p", "q", "pair_of"])
+        self.assertEqual(found["ch07.counter"].function, "next")
+        self.assertEqual(found["ch07.integrate"].parameters, ["interval", "steps", "f"])
+
+    def test_names_the_lesson_section(self):
+        found = {e.name: e for e in exercises.find_exercises(self.root)}
+        lesson = "chapters/07_fixture/README.md"
+        self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")  # heading
+        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # text names integrate
+        self.assertEqual(found["ch07.counter"].reference(), lesson + " § Exercises")  # neither: the exercises
+
+    def test_the_stubbed_sources_compile_with_warnings_as_errors(self):
+        out = self.folder / "edition"
+        exercises.generate(self.root, out, [], force=False)
+        source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
+        self.assertIn('throw std::logic_error("not implemented: ch07.hypotenuse — see '
+                      'chapters/07_fixture/README.md § The hypotenuse");', source)
+        self.assertNotIn("std::sqrt(square(p)", source)
+        self.assertIn("[[maybe_unused]] double square", source)
+        self.assertIn("[[maybe_unused]] int calls", source)
+        self.assertIn("[[maybe_unused]] static double cube", source)
+        self.assertIn("// EXERCISE(ch07.hypotenuse)", source)  # the marks stay, for the student and the tools
+        header = (out / "chapters/07_fixture/fixture.hpp").read_text(encoding="utf-8")
+        self.assertIn("#include <stdexcept>", header)
+        for unit in ("fixture.cpp",):
+            compiled = subprocess.run([COMPILER, "-std=c++20", "-fsyntax-only", *WARNINGS, unit],
+                                      cwd=out / "chapters/07_fixture", capture_output=True, text=True)
+            self.assertEqual(compiled.returncode, 0, compiled.stderr)
+        # The original compiles too, so the edition's success is not an accident of the fixture.
+        compiled = subprocess.run([COMPILER, "-std=c++20", "-fsyntax-only", *WARNINGS, "fixture.cpp"],
+                                  cwd=self.root / "chapters/07_fixture", capture_output=True, text=True)
+        self.assertEqual(compiled.returncode, 0, compiled.stderr)
+
+    def test_only_stubs_the_chosen_exercises_and_refuses_unknown_ones(self):
+        out = self.folder / "edition"
+        chosen = exercises.generate(self.root, out, ["ch07.counter"], force=False)
+        self.assertEqual([e.name for e in chosen], ["ch07.counter"])
+        source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
+        self.assertIn("not implemented: ch07.counter", source)
+        self.assertIn("std::sqrt(square(p)", source)
+        with self.assertRaisesRegex(exercises.ToolError, "already there"):
+            exercises.generate(self.root, out, [], force=False)
+        with self.assertRaisesRegex(exercises.ToolError, "no such exercise"):
+            exercises.generate(self.root, out, ["ch07.nothing"], force=True)
+
+    def test_refuses_to_write_over_a_folder_that_is_not_an_edition(self):
+        other = self.folder / "other"
+        other.mkdir()
+        (other / "notes.txt").write_text("mine")
+        with self.assertRaisesRegex(exercises.ToolError, "not a student edition"):
+            exercises.generate(self.root, other, [], force=True)
+        with self.assertRaisesRegex(exercises.ToolError, "over the repository"):
+            exercises.generate(self.root, self.root, [], force=True)
+
+    def rewrite(self, old, new):
+        path = self.root / "chapters/07_fixture/fixture.cpp"
+        text = path.read_text(encoding="utf-8")
+        self.assertIn(old, text)
+        path.write_text(text.replace(old, new, 1), encoding="utf-8")
+
+    def test_refuses_a_mark_that_does_not_end_the_function_body(self):
+        self.rewrite("    return value_ + step;\n    // END EXERCISE\n", "    // END EXERCISE\n    return value_ + step;\n")
+        with self.assertRaisesRegex(exercises.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) must end"):
+            exercises.find_exercises(self.root)
+
+    def test_refuses_unclosed_nested_and_misnamed_marks(self):
+        self.rewrite("    // END EXERCISE\n}\n\nvoid increment_all", "}\n\nvoid increment_all")
+        with self.assertRaisesRegex(exercises.ToolError, "inside EXERCISE\\(ch07.counter\\)"):
+            exercises.find_exercises(self.root)
+        self.rewrite("EXERCISE(ch07.increment)", "EXERCISE(ch02.increment)")
+        with self.assertRaisesRegex(exercises.ToolError, "is in chapter folder 07_fixture"):
+            exercises.find_exercises(self.root)
+
+
+class Results(unittest.TestCase):
+    def result(self, name, passed, output, tags):
+        return exercises.TestResult(name, "ch07_test", "ch07", passed, output, tags)
+
+    def test_an_exercise_is_left_failing_or_done(self):
+        marks = [exercises.Exercise(n, Path("x.cpp"), 0, 1) for n in ("ch07.a", "ch07.b", "ch07.c", "ch07.d")]
+        results = [
+            self.result("t1", False, "due to unexpected exception with message:\n  not implemented: ch07.a — see",
+                        ["ch07.a", "ch07.b"]),
+            self.result("t2", False, "CHECK( x == 1 ) with expansion: 2 == 1", ["ch07.b"]),
+            self.result("t3", True, "", ["ch07.c"]),
+        ]
+        states = {k: v["state"] for k, v in exercises.summarise(marks, results, None).items()}
+        self.assertEqual(states, {"ch07.a": "left", "ch07.b": "failing", "ch07.c": "done", "ch07.d": "untested"})
+
+
+if __name__ == "__main__":
+    if "--compiler" in sys.argv:
+        at = sys.argv.index("--compiler")
+        COMPILER = sys.argv[at + 1]
+        del sys.argv[at : at + 2]
+    unittest.main()
