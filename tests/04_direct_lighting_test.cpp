@@ -442,6 +442,40 @@ TEST_CASE("The cone pdf of a sphere of radius 1 at distance 1e4 is finite where 
     }
 }
 
+TEST_CASE("Edge-on, touching and grazing cases give no sample or a finite one, never NaN",
+          "[lights][stability]") {
+    const QuadLight quad = make_quad_light({0, 1, 0}, {0, 0, 1}, {1, 0, 0}, Color(1));  // faces −y
+    Pcg32 rng(66, 0);
+    // In the light's own plane (edge-on) and at its corner: nothing to sample.
+    for (const Vec3& p : {Vec3{-2, 1, 0.5f}, Vec3{0, 1, 0}, Vec3{0.5f, 1, 0.5f}}) {
+        for (int i = 0; i < 100; ++i) CHECK_FALSE(sample_quad_light(quad, p, rng.next_vec2()));
+    }
+    // Just below the plane, far out to the side: finite, tiny contributions.
+    for (int i = 0; i < 100; ++i) {
+        const auto s = sample_quad_light(quad, Vec3{1e4f, Real(1 - 1e-3), 0.5f}, rng.next_vec2());
+        if (s) REQUIRE((std::isfinite(s->pdf) && s->pdf > 0 && is_finite(s->wi)));
+    }
+    // A point a millionth of a radius above a sphere light: the cone is almost a hemisphere; still finite.
+    const SphereLight sphere{{0, 0, 0}, 1, Color(1)};
+    for (int i = 0; i < 100; ++i) {
+        const auto s = sample_sphere_light(sphere, Vec3{0, Real(1 + 1e-6), 0}, rng.next_vec2());
+        REQUIRE(s);
+        REQUIRE(std::isfinite(s->pdf));
+        REQUIRE(is_finite(s->point));
+        REQUIRE(s->distance >= 0);
+    }
+    // Grazing directions for every BRDF: finite values and pdfs.
+    const Vec3 grazing = glm::normalize(Vec3{1, 0, 1e-7f});
+    for (const auto& [name, brdf] : white_brdfs()) {
+        INFO(name);
+        for (int i = 0; i < 100; ++i) {
+            const BrdfSample s = sample(brdf, grazing, kUp, rng.next_vec2());
+            REQUIRE((is_finite(s.f) && std::isfinite(s.pdf) && is_finite(s.wi)));
+            REQUIRE(is_finite(eval(brdf, grazing, random_unit(rng), kUp)));
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Direct lighting
 
