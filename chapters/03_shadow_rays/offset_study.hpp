@@ -5,8 +5,9 @@
 //  - an acne pixel has a shadow ray that is blocked where the light is in fact visible (dark specks);
 //  - a leak pixel has a shadow ray that is free where the light is in fact blocked (light leaking through a
 //    thin gap or a contact: the ray started beyond the occluder).
-// The cost of the offset itself is timed apart too: spawn_shadow_ray over the shadow rays of every pixel
-// centre.
+// The cost of the offset itself is timed apart too: offset_origin for the shadow rays of every pixel centre.
+// The methods take turns round after round and each time is a median, so the load of a shared machine falls
+// on all of them alike.
 #pragma once
 
 #include <cstdint>
@@ -21,9 +22,8 @@ namespace rt {
 struct OffsetStudyRow {
     Real scale = 1;
     RayOffset offset;
-    double seconds = 0;  // the render alone, as the chapter's executable renders it
-    double offset_ns =
-        0;  // spawn_shadow_ray alone (origin, direction, t_max), ns per call on one thread (median of 5)
+    double seconds = 0;    // the render alone, as the executable renders it (median of 3)
+    double offset_ns = 0;  // offset_origin alone, ns per call on one thread (median of 7)
     std::uint64_t shadow_rays = 0;
     std::uint64_t self_hits = 0;
     std::uint64_t acne_pixels = 0;
