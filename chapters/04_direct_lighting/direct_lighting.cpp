@@ -67,8 +67,9 @@ Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
 Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
     // EXERCISE(ch04.direct_light)
     const Brdf& b = brdf(hit.material);
-    if (!options_.direct || is_delta(b) || is_black(b))
-        return Color(0);  // a delta is never hit by a light sample
+    // A light sample never falls on a delta BRDF's one direction, and a black BRDF reflects nothing: neither
+    // needs a single shadow ray.
+    if (!options_.direct || is_delta(b) || is_black(b)) return Color(0);
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
     Color sum(0);
