@@ -13,7 +13,9 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
+#include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/random.hpp"
@@ -246,6 +248,87 @@ TEST_CASE("A write that fails (file too large) leaves the earlier file as it was
         // Without the limit, the same writes replace the files whole.
         write_pfm(noise, "keep.pfm");
         CHECK(read_pfm("keep.pfm").pixels() == noise.pixels());
+    });
+    fs::remove_all(folder);
+}
+
+namespace {
+
+// Runs rt::run_chapter as a chapter's main would, with `render` standing in for the chapter's render.
+int run_fake_chapter(std::vector<std::string> args, const ChapterRender& render) {
+    args.insert(args.begin(), "ch00_fake");
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    const ChapterInfo chapter{"ch00_fake", "a stand-in chapter for tests", "ch01_default.json",
+                              EffectSet{Effect::kCameraRays}};
+    return run_chapter(int(argv.size()), argv.data(), chapter, nullptr, render);
+}
+
+ChapterRun fake_run(const RunContext& context, Color value, bool interrupted, std::uint64_t samples) {
+    ChapterRun run;
+    run.result.image = Image(context.settings.width, context.settings.height);
+    for (Color& c : run.result.image.pixels()) c = Color(0.5f);
+    run.result.image.at(1, 1) = value;
+    run.result.interrupted = interrupted;
+    run.result.samples = samples;
+    run.result.samples_per_pixel = interrupted ? 0 : context.settings.samples_per_pixel;
+    return run;
+}
+
+}  // namespace
+
+TEST_CASE("A render with a NaN or infinite pixel is a failure (exit 1) and writes nothing",
+          "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const std::vector<std::string> args{"--width", "4", "--height", "3", "--quiet", "--out", "x.png"};
+        for (const Real bad :
+             {std::numeric_limits<Real>::quiet_NaN(), std::numeric_limits<Real>::infinity()}) {
+            CHECK(run_fake_chapter(args, [&](const RunContext& c) {
+                      return fake_run(c, Color(0, bad, 0), false, 12);
+                  }) == kExitFailure);
+            CHECK_FALSE(fs::exists("x.png"));
+            CHECK_FALSE(fs::exists("x.pfm"));
+        }
+        CHECK(run_fake_chapter(args, [&](const RunContext& c) { return fake_run(c, Color(1), false, 12); }) ==
+              kExitOk);
+        CHECK(read_pfm("x.pfm").at(1, 1) == Color(1));
+        CHECK(fs::exists("x.png"));
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("An interrupted render writes NAME.partial.png and .pfm and exits 130; with no sample, nothing",
+          "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const std::vector<std::string> args{"--width", "4", "--height", "3", "--quiet", "--out", "y.png"};
+        CHECK(run_fake_chapter(
+                  args, [&](const RunContext& c) { return fake_run(c, Color(0.25f), true, 0); }) == 130);
+        CHECK(fs::is_empty("."));
+        CHECK(run_fake_chapter(
+                  args, [&](const RunContext& c) { return fake_run(c, Color(0.25f), true, 7); }) == 130);
+        CHECK(read_pfm("y.partial.pfm").at(1, 1) == Color(0.25f));
+        CHECK(fs::exists("y.partial.png"));
+        CHECK_FALSE(fs::exists("y.png"));
+        CHECK_FALSE(fs::exists("y.pfm"));
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("Bad input found by the chapter itself is exit 2, and nothing is written", "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const std::vector<std::string> args{"--width", "4", "--height", "3", "--quiet", "--out", "z.png"};
+        CHECK(run_fake_chapter(args, [](const RunContext&) -> std::optional<ChapterRun> {
+                  throw InputError("--demo: must be 1 or 2, got 3");
+              }) == kExitBadInput);
+        CHECK(
+            run_fake_chapter({"--scene", "absent.json"}, [](const RunContext&) -> std::optional<ChapterRun> {
+                FAIL("rendered a scene that does not exist");
+                return std::nullopt;
+            }) == kExitBadInput);
+        CHECK(fs::is_empty("."));
     });
     fs::remove_all(folder);
 }
