@@ -412,6 +412,7 @@ class Exercise:
     function: str = ""
     parameters: list[str] = field(default_factory=list)
     locals: list[str] = field(default_factory=list)
+    stubbed: bool = False  # its body is still the student edition's throw: not written yet
     lesson: str = ""  # "chapters/02_intersection/README.md"
     section: str = ""  # "Spheres", or "" when the lesson has no fitting heading
 
@@ -542,6 +543,8 @@ def find_exercises(root: Path) -> list[Exercise]:
                 errors.append(f"{exercise.where()}: the braces between EXERCISE({exercise.name}) and END EXERCISE do "
                               "not balance")
                 continue
+            body = "\n".join(lines[exercise.begin + 1 : exercise.end])
+            exercise.stubbed = f'"not implemented: {exercise.name} ' in body
             exercise.function = function.name
             exercise.parameters = function.parameters
             exercise.locals = locals_before(tokens, function, exercise.begin)
@@ -781,7 +784,7 @@ def run_tests(build: Path, label: str | None, jobs: int, timeout: int = 300) -> 
     """Runs the build's unit tests (one chapter's with `label`), each alone as CTest would run it."""
     tests = [t for t in unit_tests(build) if not label or t.label == label]
     tags = exercise_tags({t.command[0] for t in tests})
-    print(f"running {len(tests)} unit tests{' labelled ' + label if label else ''} in {build} ...", file=sys.stderr)
+    print(f"running {len(tests)} unit tests{' labelled ' + label if label else ''} in {build} ...", flush=True)
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
         outcomes = list(pool.map(lambda t: run_one(t, timeout), tests))
     return [TestResult(t.name, t.program, t.label, passed, output, tags.get((t.program, t.name), []))
@@ -796,7 +799,7 @@ def command_list(args: argparse.Namespace) -> int:
     exercises = find_exercises(args.root)
     for e in exercises:
         print(f"{e.name:32} {e.where():48} {e.function + '()':28} {e.reference()}")
-    print(f"{len(exercises)} exercises in {len({e.chapter for e in exercises})} chapters", file=sys.stderr)
+    print(f"{len(exercises)} exercises in {len({e.chapter for e in exercises})} chapters")
     return 0
 
 
@@ -820,27 +823,44 @@ def default_build() -> Path:
 
 
 def summarise(exercises: list[Exercise], results: list[TestResult], label: str | None) -> dict[str, dict]:
-    """Per exercise: its tests, and whether it is left (a test says "not implemented: it"), failing (its
-    code runs but a test tagged with it fails) or done (every test tagged with it passes)."""
+    """Per exercise: its tests, and whether it is left (its body is still the throw of the student
+    edition), done (written, and every test tagged with it passes), written (its failing tests also need an
+    exercise left, named in `blocked_by`), failing (a test tagged with it fails for another reason: a bug)
+    or untested."""
     summary: dict[str, dict] = {}
     for e in exercises:
-        entry = summary.setdefault(e.name, {"exercise": e, "tests": [], "state": "done"})
+        summary.setdefault(e.name, {"exercise": e, "tests": [], "state": "done", "blocked_by": set()})
     for r in results:
         for name in r.tags:
             if name in summary:
                 summary[name]["tests"].append(r)
+    stubbed = {e.name for e in exercises if e.stubbed}
     for name, entry in summary.items():
         tests = entry["tests"]
-        if any(name in r.not_implemented() for r in results):
+        if name in stubbed or any(name in r.not_implemented() for r in results):
             entry["state"] = "left"
         elif not tests:
             entry["state"] = "untested"
         elif any(not r.passed for r in tests):
-            entry["state"] = "failing"
+            failing = [r for r in tests if not r.passed]
+            entry["blocked_by"] = {t for r in failing for t in r.tags if t in stubbed}
+            # Written, and its only failing tests also need an exercise left: it waits for that one.
+            blocked = all(set(r.tags) & stubbed or set(r.not_implemented()) - {name} for r in failing)
+            entry["state"] = "written" if blocked else "failing"
     if label:
-        summary = {k: v for k, v in summary.items() if v["exercise"].chapter == label or
-                   any(r.label == label for r in v["tests"])}
+        summary = {k: v for k, v in summary.items() if v["exercise"].chapter == label}
     return summary
+
+
+def next_exercise(entries: list[dict]) -> Exercise | None:
+    """The exercise left to write first: one with a test that needs the fewest other exercises left."""
+    left = {x["exercise"].name for x in entries if x["state"] == "left"}
+
+    def others_needed(x: dict) -> int:
+        return min((len(set(r.tags) & left) for r in x["tests"]), default=99)
+
+    candidates = [x for x in entries if x["state"] == "left"]
+    return min(candidates, key=others_needed)["exercise"] if candidates else None
 
 
 def command_status(args: argparse.Namespace) -> int:
@@ -849,7 +869,7 @@ def command_status(args: argparse.Namespace) -> int:
     exercises = find_exercises(source)
     results = run_tests(build, args.label, args.jobs)
     summary = summarise(exercises, results, args.label)
-    symbols = {"done": "done", "left": "LEFT", "failing": "FAILING", "untested": "untested"}
+    symbols = {"done": "done", "written": "written", "left": "LEFT", "failing": "FAILING", "untested": "untested"}
     by_chapter: dict[str, list[dict]] = {}
     for entry in summary.values():
         by_chapter.setdefault(entry["exercise"].chapter, []).append(entry)
@@ -863,14 +883,19 @@ def command_status(args: argparse.Namespace) -> int:
             e = x["exercise"]
             tests = x["tests"]
             passed = sum(1 for r in tests if r.passed)
-            print(f"  {symbols[x['state']]:9} {e.name:30} {e.where():46} tests {passed}/{len(tests)} pass")
-            if x["state"] in ("left", "failing") and args.verbose:
-                for r in tests:
-                    if not r.passed:
-                        print(f"              failing: {r.name}")
-        left = [x["exercise"] for x in entries if x["state"] == "left"]
-        if left:
-            print(f"  next: {left[0].name} in {left[0].where()} — see {left[0].reference()}")
+            blocked = ""
+            if x["state"] == "written":
+                blocked = f" (its failing tests also need {', '.join(sorted(x['blocked_by']))})"
+            print(f"  {symbols[x['state']]:9} {e.name:30} {e.where():46} tests {passed}/{len(tests)} pass{blocked}")
+            stubbed = {y["exercise"].name for y in summary.values() if y["state"] == "left"}
+            for r in tests:
+                # A failing test that needs no exercise left is a bug to find; the others wait (with -v).
+                waits = bool(set(r.tags) & stubbed)
+                if not r.passed and ((x["state"] == "failing" and not waits) or args.verbose):
+                    print(f"              failing: {r.name}" + (" (waits for an exercise left)" if waits else ""))
+        upcoming = next_exercise(entries)
+        if upcoming:
+            print(f"  next: {upcoming.name} in {upcoming.where()} — see {upcoming.reference()}")
     other = [r for r in results if not r.passed and not r.tags]
     if other:
         print(f"{len(other)} failing tests depend on no exercise:")
@@ -904,8 +929,11 @@ def command_check(args: argparse.Namespace) -> int:
             hint = " ".join(f"[{TAG_PREFIX}{n}]" for n in named) or "none: it fails for another reason"
             problems.append(f"{where} fails but is tagged with no exercise (its failure names: {hint})")
         elif not r.passed and not (set(named) & set(r.tags)):
-            problems.append(f"{where} fails without naming one of its exercises {r.tags}: "
-                            + (f"it says not implemented: {', '.join(named)}" if named else "no 'not implemented' in its output"))
+            why = f"it says not implemented: {', '.join(named)}" if named else "no 'not implemented' in its output"
+            if "terminate called" in r.output:
+                why += (" (std::terminate: an exception escaped a thread; a render loop must pass its threads' "
+                        "exceptions to the caller)")
+            problems.append(f"{where} fails without naming one of its exercises {r.tags}: {why}")
         elif not r.passed and set(named) - set(r.tags):
             problems.append(f"{where} also depends on {', '.join(sorted(set(named) - set(r.tags)))}: add "
                             + " ".join(f"[{TAG_PREFIX}{n}]" for n in sorted(set(named) - set(r.tags))))
