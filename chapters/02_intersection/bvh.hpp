@@ -11,17 +11,18 @@
 
 namespace rt {
 
-// 32 bytes, depth-first order: an interior node's first child is the node right after it.
+// 32 bytes in float (two corners and two integers, no padding), in depth-first order: an interior node's
+// first child is the node right after it.
 struct BvhNode {
     Vec3 min;
-    std::uint32_t offset;  // leaf: first slot of its primitives; interior: index of the second child
     Vec3 max;
-    std::uint32_t count;  // leaf: number of primitives (> 0); interior: 0
+    std::uint32_t offset;  // leaf: first slot of its primitives; interior: index of the second child
+    std::uint32_t count;   // leaf: number of primitives (> 0); interior: 0
 
     Aabb box() const { return {min, max}; }
     bool leaf() const { return count > 0; }
 };
-static_assert(sizeof(BvhNode) == 32);
+static_assert(sizeof(BvhNode) == 2 * sizeof(Vec3) + 2 * sizeof(std::uint32_t));
 
 // What a query cost: boxes tested and primitives tested (the heat map of `--show cost`).
 struct TraversalStats {

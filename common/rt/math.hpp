@@ -10,8 +10,13 @@
 
 namespace rt {
 
-// The precision of geometry and radiance. Switch to double here to compare precisions.
+// The precision of geometry and radiance: float, or double in a build configured with -DRT_DOUBLE=ON (the
+// report builds both to compare them).
+#ifdef RT_REAL_IS_DOUBLE
+using Real = double;
+#else
 using Real = float;
+#endif
 using Vec2 = glm::vec<2, Real>;
 using Vec3 = glm::vec<3, Real>;
 using Vec3d = glm::dvec3;
