@@ -19,6 +19,8 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
   exercises.py lint --build DIR         any build: every [ex:...] tag names a marked exercise, every
                                         exercise has a tagged test (no test is run)
+  exercises.py deps SCRATCH [--only ch03] which tests depend on which exercise: one exercise stubbed at a
+                                        time, rebuilt and tested; prints the tags each test needs
   exercises.py check --build DIR        CI: in a student edition's build, the failing tests are exactly
                                         the tests tagged [ex:...], and each names its exercise
 
@@ -222,9 +224,9 @@ def enclosing_function(tokens: list[Token], line: int) -> Function | None:
         elif t.text == "}" and stack:
             stack.pop()
     for open_index in reversed(stack):
-        # Walk back from '{' over what may follow a parameter list: cv, ref and noexcept qualifiers, a
-        # trailing return type, attributes, override/final, a requires clause without parentheses.
-        i = open_index - 1
+        i = skip_member_initialisers(tokens, open_index - 1)
+        # Walk back over what may follow a parameter list: cv, ref and noexcept qualifiers, a trailing return
+        # type, attributes, override/final.
         while i >= 0 and tokens[i].text != ")":
             if tokens[i].text in (";", "{", "}", "="):
                 i = -1
@@ -234,7 +236,6 @@ def enclosing_function(tokens: list[Token], line: int) -> Function | None:
             i -= 1
         if i < 0:
             continue
-        # A constructor's member initialisers `) : a_(x), b_{y} {` are skipped back to the signature.
         close = i
         open_paren = matching(tokens, close)
         name_index = open_paren - 1
@@ -245,8 +246,8 @@ def enclosing_function(tokens: list[Token], line: int) -> Function | None:
             name = "lambda"
         elif name_token.kind == "ident" and name_token.text not in ("if", "for", "while", "switch", "catch"):
             name = name_token.text
-        elif name_token.text == ">" or name_token.kind == "punct":
-            # operator() and friends: take the word `operator` and what follows.
+        elif name_token.kind == "punct":
+            # operator() and friends: the word `operator` and what follows it.
             j = name_index
             while j >= 0 and tokens[j].text != "operator" and name_index - j < 4:
                 j -= 1
@@ -255,18 +256,25 @@ def enclosing_function(tokens: list[Token], line: int) -> Function | None:
             name = "operator" + "".join(t.text for t in tokens[j + 1 : open_paren])
         else:
             continue
-        # A member initialiser list: the parenthesis found belongs to an initialiser; keep its function.
-        k = name_index - 1
-        while k >= 0 and tokens[k].text in (",", ":"):
-            if tokens[k].text == ":" and k > 0 and tokens[k - 1].text == ")":
-                close = k - 1
-                open_paren = matching(tokens, close)
-                name = tokens[open_paren - 1].text
-                break
-            break
         return Function(name, parameter_names(tokens[open_paren + 1 : close]), open_index,
                         matching(tokens, open_index))
     return None
+
+
+def skip_member_initialisers(tokens: list[Token], i: int) -> int:
+    """From the token before a body's '{': past a constructor's `: a_(x), b_{y}` to the token before ':'."""
+    j = i
+    while j >= 1 and tokens[j].text in (")", "}"):
+        start = matching(tokens, j)
+        if start < 2 or tokens[start - 1].kind != "ident":
+            return i
+        before = tokens[start - 2].text
+        if before == ":":
+            return start - 3
+        if before != ",":
+            return i
+        j = start - 3
+    return i
 
 
 def declared_locals(statement: list[Token]) -> list[str]:
@@ -653,7 +661,8 @@ def write_if_changed(path: Path, data: bytes) -> None:
     path.write_bytes(data)
 
 
-def generate(root: Path, out: Path, only: list[str], force: bool) -> list[Exercise]:
+def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = True) -> list[Exercise]:
+    """Writes the edition; with stub=False, a plain copy (the baseline of `deps`)."""
     out = out.resolve()
     root = root.resolve()
     if out == root or root.is_relative_to(out):
@@ -671,7 +680,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool) -> list[Exerci
             raise ToolError(f"generate: {out}: a student edition is already there (a student's work?); add --force "
                             "to overwrite it")
     all_exercises = find_exercises(root)
-    chosen = [e for e in all_exercises if selected(e, only)]
+    chosen = [e for e in all_exercises if selected(e, only)] if stub else []
     unknown = [o for o in only if not any(e.name == o or e.chapter == o for e in all_exercises)]
     if unknown:
         raise ToolError(f"generate: --only {','.join(unknown)}: no such exercise or chapter (see `exercises.py list`)")
@@ -925,18 +934,19 @@ def command_check(args: argparse.Namespace) -> int:
             if tag not in names:
                 problems.append(f"{where} is tagged [{TAG_PREFIX}{tag}], but no such exercise is marked")
         named = r.not_implemented()
-        if not r.passed and not r.tags:
-            hint = " ".join(f"[{TAG_PREFIX}{n}]" for n in named) or "none: it fails for another reason"
-            problems.append(f"{where} fails but is tagged with no exercise (its failure names: {hint})")
-        elif not r.passed and not (set(named) & set(r.tags)):
-            why = f"it says not implemented: {', '.join(named)}" if named else "no 'not implemented' in its output"
+        missing = sorted(set(named) - set(r.tags))
+        add = " ".join(f"[{TAG_PREFIX}{n}]" for n in missing)
+        if r.passed:
+            pass
+        elif missing:
+            problems.append(f"{where} fails with \"not implemented: {missing[0]}\": it depends on {', '.join(missing)}"
+                            f"{' too' if r.tags else ''}; add {add} (`exercises.py deps` finds every dependency)")
+        elif not named:
+            why = "no 'not implemented' in its output"
             if "terminate called" in r.output:
                 why += (" (std::terminate: an exception escaped a thread; a render loop must pass its threads' "
                         "exceptions to the caller)")
-            problems.append(f"{where} fails without naming one of its exercises {r.tags}: {why}")
-        elif not r.passed and set(named) - set(r.tags):
-            problems.append(f"{where} also depends on {', '.join(sorted(set(named) - set(r.tags)))}: add "
-                            + " ".join(f"[{TAG_PREFIX}{n}]" for n in sorted(set(named) - set(r.tags))))
+            problems.append(f"{where} fails without naming an exercise{' it is tagged with' if r.tags else ''}: {why}")
         if r.passed and r.tags:
             problems.append(f"{where} is tagged {r.tags} but passes in the student edition: it does not depend on them")
     tested = {tag for r in results for tag in r.tags}
@@ -955,6 +965,58 @@ def command_check(args: argparse.Namespace) -> int:
     print("student edition check passed: the failing tests are exactly the tests of the exercises left, each "
           "naming its exercise")
     return 0
+
+
+def command_deps(args: argparse.Namespace) -> int:
+    """For instructors and chapter authors: which tests depend on which exercise, found by building an
+    edition with one exercise stubbed at a time (one build folder, rebuilt incrementally) and running the
+    unit tests. Prints, per test program, the tags each test needs and how they differ from its tags now."""
+    out = Path(args.out).resolve()
+    build = out / "build"
+    only = [o for o in (args.only or "").split(",") if o]
+    exercises = [e for e in find_exercises(args.root) if selected(e, only)]
+
+    def run(stub_only: list[str] | None) -> dict[tuple[str, str], bool]:
+        generate(args.root, out, stub_only or [], force=True, stub=stub_only is not None)
+        if not (build / "CMakeCache.txt").is_file():
+            subprocess.run(["cmake", "-S", str(out), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"], check=True,
+                           stdout=subprocess.DEVNULL)
+        targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
+            ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
+        built = subprocess.run(["cmake", "--build", str(build), "-j", str(args.jobs), "--target", *targets],
+                               capture_output=True, text=True)
+        if built.returncode != 0:
+            raise ToolError(f"deps: the edition with {stub_only or 'nothing'} stubbed does not build:\n"
+                            + built.stdout[-3000:] + built.stderr[-3000:])
+        return {(r.program, r.name): r.passed for r in run_tests(build, None, args.jobs)}
+
+    baseline = run(None)
+    broken = sorted(k for k, passed in baseline.items() if not passed)
+    needs: dict[tuple[str, str], list[str]] = {k: [] for k in baseline}
+    for e in exercises:
+        print(f"stubbing {e.name} alone ...", flush=True)
+        for key, passed in run([e.name]).items():
+            if not passed and baseline.get(key, False):
+                needs.setdefault(key, []).append(e.name)
+    tests = unit_tests(build)
+    tags = exercise_tags({t.command[0] for t in tests})
+    chosen = {e.name for e in exercises}
+    changes = 0
+    for program in sorted({p for p, _ in needs}):
+        print(f"{program}:")
+        for (p, name), found in needs.items():
+            if p != program:
+                continue
+            now = sorted(t for t in tags.get((p, name), []) if t in chosen)
+            found = sorted(found)
+            mark = "" if found == now else "   <- now " + ("".join(f"[{TAG_PREFIX}{t}]" for t in now) or "untagged")
+            changes += found != now
+            if found or now:
+                print(f"  \"{name}\": {''.join(f'[{TAG_PREFIX}{t}]' for t in found) or 'no exercise'}{mark}")
+    for program, name in broken:
+        print(f"  (fails even with nothing stubbed: {program}: \"{name}\")")
+    print(f"{changes} tests whose tags differ from what they depend on")
+    return 1 if changes else 0
 
 
 def command_lint(args: argparse.Namespace) -> int:
@@ -1010,10 +1072,14 @@ def main(argv: list[str]) -> int:
             c.add_argument("-v", "--verbose", action="store_true", help="name the failing tests")
     lint = commands.add_parser("lint", help="marks well formed, tags naming marked exercises, every exercise tested")
     lint.add_argument("--build", required=True, help="a build folder with the test programs built")
+    deps = commands.add_parser("deps", help="which tests depend on which exercise (one build per exercise)")
+    deps.add_argument("out", help="a scratch folder for the editions and their build (outside the repository)")
+    deps.add_argument("--only", help="these chapters or exercises only: ch03 or ch03.shadow_ray,ch02.quad")
+    deps.add_argument("-j", "--jobs", type=int, default=2, help="build jobs and tests run in parallel")
     args = parser.parse_args(argv)
     try:
         return {"list": command_list, "generate": command_generate, "status": command_status,
-                "check": command_check, "lint": command_lint}[args.command](args)
+                "check": command_check, "lint": command_lint, "deps": command_deps}[args.command](args)
     except ToolError as error:
         print(f"exercises.py: {error}", file=sys.stderr)
         return 2

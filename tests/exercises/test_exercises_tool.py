@@ -39,12 +39,15 @@ class Marks(unittest.TestCase):
 
     def test_finds_every_mark_with_its_function_parameters_and_locals(self):
         found = {e.name: e for e in exercises.find_exercises(self.root)}
-        self.assertEqual(sorted(found), ["ch07.counter", "ch07.hypotenuse", "ch07.increment", "ch07.integrate"])
+        self.assertEqual(sorted(found), ["ch07.counter", "ch07.counter_start", "ch07.hypotenuse", "ch07.increment",
+                                         "ch07.integrate"])
         h = found["ch07.hypotenuse"]
         self.assertEqual(h.function, "hypotenuse")
         self.assertEqual(h.parameters, ["a", "b", "scale"])  # the unnamed int has no name to cast
         self.assertEqual(h.locals, ["twice", "p", "q", "pair_of"])
         self.assertEqual(found["ch07.counter"].function, "next")
+        self.assertEqual(found["ch07.counter_start"].function, "Counter")  # past its member initialisers
+        self.assertEqual(found["ch07.counter_start"].parameters, ["start", "stride"])
         self.assertEqual(found["ch07.integrate"].parameters, ["interval", "steps", "f"])
 
     def test_names_the_lesson_section(self):
