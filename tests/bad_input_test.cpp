@@ -298,8 +298,9 @@ TEST_CASE("A render with a NaN or infinite pixel is a failure (exit 1) and write
     fs::remove_all(folder);
 }
 
-TEST_CASE("An interrupted render writes NAME.partial.png and .pfm and exits 130; with no sample, nothing",
-          "[bad_input][app]") {
+TEST_CASE(
+    "An interrupted render writes NAME.partial.png and .pfm and exits 130, and with no sample writes nothing",
+    "[bad_input][app]") {
     const fs::path folder = temporary_folder();
     in_folder(folder, [&] {
         const std::vector<std::string> args{"--width", "4", "--height", "3", "--quiet", "--out", "y.png"};
