@@ -1,0 +1,98 @@
+#include "gi_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pixel_sampling.hpp"
+#include "rt/error_metrics.hpp"
+
+namespace rt {
+namespace {
+
+constexpr int kRepeats = 3;
+
+}  // namespace
+
+RenderResult render_gi(const RecursiveTracer& tracer, const PinholeCamera& camera,
+                       const RenderSettings& settings) {
+    const int count = settings.samples_per_pixel;
+    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        const Vec2 film =
+            pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
+        const Ray ray = camera_ray(camera, film.x, film.y);
+        rays.add(RayKind::kCamera);
+        const Color L = tracer.radiance(ray, rng, rays);
+        // A last guard, so no NaN or Inf can reach an image; the tests check that none occurs.
+        return is_finite(L) ? L : Color(0);
+    });
+}
+
+std::string describe(const TerminationSettings& t) {
+    char text[96];
+    switch (t.rule) {
+        case Termination::kMaxDepth:
+            std::snprintf(text, sizeof text, "depth %d", t.max_depth);
+            break;
+        case Termination::kMinThroughput:
+            std::snprintf(text, sizeof text, "throughput %g (cap %d)", double(t.min_throughput), t.max_depth);
+            break;
+        case Termination::kRussianRoulette:
+            std::snprintf(text, sizeof text, "roulette from %d (cap %d)", t.roulette_start_depth,
+                          t.max_depth);
+            break;
+    }
+    return text;
+}
+
+std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
+                                       const PinholeCamera& camera, const RenderSettings& settings,
+                                       const std::vector<TerminationSettings>& rules,
+                                       const DirectOptions& direct) {
+    const DirectLighting shading(world, scene, collect_lights(scene), direct);
+    const Vec3d exact3 = furnace_radiance(furnace);
+    const double exact = (exact3.x + exact3.y + exact3.z) / 3;
+    const Image exact_image = furnace_image(furnace, settings.width, settings.height);
+    std::vector<DepthStudyRow> rows;
+    for (const TerminationSettings& termination : rules) {
+        const RecursiveTracer tracer(shading, scene, GiOptions{termination, true, true});
+        // The same render kRepeats times (the same image each time): the median time resists the machine's
+        // noise.
+        RenderResult r;
+        std::vector<double> seconds;
+        for (int i = 0; i < kRepeats; ++i) {
+            r = render_gi(tracer, camera, settings);
+            seconds.push_back(r.seconds);
+        }
+        std::sort(seconds.begin(), seconds.end());
+        DepthStudyRow row;
+        row.termination = termination;
+        row.light_sampling = direct.direct;
+        double sum = 0, sum2 = 0;
+        for (const Color& c : r.image.pixels()) {
+            const double m = (double(c.r) + double(c.g) + double(c.b)) / 3;
+            sum += m;
+            sum2 += m * m;
+        }
+        const double n = double(r.image.pixel_count());
+        row.mean = sum / n;
+        row.standard_error = std::sqrt(std::max(0.0, sum2 / n - row.mean * row.mean) / (n - 1));
+        // Roulette is unbiased up to its cap, so its expectation is the cap's truncation, as for max depth.
+        if (termination.rule == Termination::kMinThroughput) {
+            row.expected = std::numeric_limits<double>::quiet_NaN();
+        } else {
+            const Vec3d e = furnace_radiance_truncated(furnace, termination.max_depth);
+            row.expected = (e.x + e.y + e.z) / 3;
+        }
+        row.exact = exact;
+        row.bias = row.mean - exact;
+        row.rmse = compare(r.image, exact_image).rmse;
+        row.seconds = seconds[seconds.size() / 2];
+        const double camera_rays = double(r.rays[RayKind::kCamera]);
+        row.rays_per_path = camera_rays > 0 ? double(r.rays.total()) / camera_rays : 0;
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+}  // namespace rt

@@ -1,0 +1,238 @@
+// Chapter 05: recursive global illumination. Follows each camera ray's path bounce by bounce: emission,
+// direct light (chapter 04), mirror reflection and one uniformly sampled indirect direction per diffuse
+// bounce, until the termination rule (`--termination depth|throughput|roulette`) stops it. `--depth-study`
+// measures what each rule's bias and noise cost against time in the furnace, whose exact answer is Le / (1 −
+// ρ).
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "furnace.hpp"
+#include "gi_render.hpp"
+#include "rt/app.hpp"
+#include "rt/assets.hpp"
+#include "rt/errors.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0) {
+    char text[256];
+    std::snprintf(text, sizeof text, pattern, a, b, c);
+    return text;
+}
+
+// What this chapter shades differently from the scene's materials, or leaves to a later chapter.
+std::vector<std::string> material_notes(const rt::Scene& scene, const rt::EffectSet& simulated) {
+    using namespace rt;
+    std::vector<std::string> notes;
+    std::vector<bool> used(scene.materials.size(), false);
+    for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (!used[i]) continue;
+        const Material& m = scene.materials[i];
+        const std::string name = "material '" + m.name + "'";
+        if (m.type == MaterialType::kMirror && !simulated.contains(Effect::kReflection)) {
+            notes.push_back(name + ": the effect reflection is off, so the mirror shows only its emission");
+        } else if (m.type == MaterialType::kDielectric) {
+            notes.push_back(name +
+                            ": refraction is simulated from chapter 07 on; shaded as diffuse white "
+                            "(albedo 0.73), with direct and indirect light");
+        } else if ((m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective) &&
+                   simulated.contains(Effect::kGlossy) && simulated.contains(Effect::kIndirect)) {
+            notes.push_back(name +
+                            ": its lobe reflects direct light (chapter 04) and indirect light from uniform "
+                            "hemisphere directions, unbiased but noisy for a sharp lobe; chapter 06 samples "
+                            "the lobe itself (BRDF sampling)");
+        }
+    }
+    return notes;
+}
+
+void print_study(const std::vector<rt::DepthStudyRow>& rows, const rt::Scene& scene,
+                 const rt::Furnace& furnace, const rt::RenderSettings& settings, const std::string& csv) {
+    using namespace rt;
+    std::printf(
+        "termination rules in the furnace: %s, albedo %.3g, emission %.3g, exact L = Le / (1 - rho) = %.6g\n"
+        "%dx%d, %d spp, seed %llu, %d threads; bias = mean - exact (+- its standard error), RMSE over "
+        "pixels\n",
+        scene.file.c_str(), double(furnace.albedo.g), double(furnace.emission.g),
+        rows.empty() ? 0 : rows[0].exact, settings.width, settings.height, settings.samples_per_pixel,
+        static_cast<unsigned long long>(settings.seed), settings.threads);
+    std::printf("%-28s %-8s %10s %10s %10s %10s %10s %10s %9s\n", "rule", "lights", "mean", "expected",
+                "bias", "std.error", "RMSE", "time (s)", "rays/path");
+    std::ofstream out;
+    if (!csv.empty()) {
+        out.open(csv);
+        out << "rule,max_depth,min_throughput,roulette_start,light_sampling,mean,expected,exact,bias,"
+               "standard_error,rmse,seconds,"
+               "rays_per_path\n";
+    }
+    for (const DepthStudyRow& r : rows) {
+        const std::string expected = std::isnan(r.expected) ? "-" : format("%.5f", r.expected);
+        std::printf("%-28s %-8s %10.5f %10s %+10.5f %10.5f %10.5f %10.4f %9.2f\n",
+                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean,
+                    expected.c_str(), r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
+        if (out) {
+            out << to_string(r.termination.rule) << ',' << r.termination.max_depth << ','
+                << r.termination.min_throughput << ',' << r.termination.roulette_start_depth << ','
+                << (r.light_sampling ? "sampled" : "hit") << ',' << r.mean << ','
+                << (std::isnan(r.expected) ? std::string() : std::to_string(r.expected)) << ',' << r.exact
+                << ',' << r.bias << ',' << r.standard_error << ',' << r.rmse << ',' << r.seconds << ','
+                << r.rays_per_path << '\n';
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace rt;
+    std::string rule_name = "roulette";
+    std::optional<int> max_depth;
+    Real min_throughput = Real(0.01);
+    int roulette_start = 3;
+    bool study = false;
+    std::vector<int> study_depths{1, 2, 4, 8, 16};
+    std::string csv;
+    const CLI::App* cli = nullptr;  // to ask which core flags were given
+    const ChapterInfo chapter{
+        "ch05_recursive_gi",
+        "Chapter 05: recursive global illumination: mirrors, indirect light, termination",
+        "ch05_default.json",
+        EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kReflection,
+                  Effect::kGlossy, Effect::kIndirect}};
+    auto flags = [&](CLI::App& app) {
+        cli = &app;
+        app.add_option("--termination", rule_name,
+                       "When a path stops: depth (after --max-depth bounces), throughput (below "
+                       "--min-throughput) or roulette (Russian roulette, unbiased)")
+            ->check(CLI::IsMember({"depth", "throughput", "roulette"}));
+        app.add_option(
+               "--max-depth", max_depth,
+               "Bounces after the camera ray: the depth rule's N (default 8), a hard cap for the others "
+               "(default 64)")
+            ->check(CLI::Range(0, 1024));
+        app.add_option("--min-throughput", min_throughput,
+                       "The throughput rule's threshold on max(throughput) (default 0.01)")
+            ->check(CLI::Range(0.0, 1.0));
+        app.add_option("--roulette-start", roulette_start,
+                       "Bounces before Russian roulette starts (default 3)")
+            ->check(CLI::Range(0, 1024));
+        app.add_flag(
+            "--depth-study", study,
+            "In the furnace (default ch05_furnace.json): mean, bias, RMSE and time for the depth rule "
+            "at each of --study-depths, Russian roulette and the throughput rule");
+        app.add_option("--study-depths", study_depths, "With --depth-study: the depths (default 1 2 4 8 16)")
+            ->check(CLI::Range(0, 1024));
+        app.add_option("--csv", csv, "With --depth-study: also write the table as CSV");
+    };
+    auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
+        TerminationSettings termination;
+        termination.rule = termination_from_string(rule_name);
+        termination.max_depth =
+            max_depth.value_or(termination.rule == Termination::kMaxDepth ? 8 : kSafetyDepthCap);
+        termination.min_throughput = min_throughput;
+        termination.roulette_start_depth = roulette_start;
+        DirectOptions direct;
+        direct.direct = context.simulated.contains(Effect::kDirect);
+        direct.shadows = context.simulated.contains(Effect::kShadows);
+        direct.glossy = context.simulated.contains(Effect::kGlossy);
+
+        if (study) {
+            std::optional<Scene> loaded;
+            {
+                const World probe(context.scene);
+                if (!find_furnace(context.scene, probe)) loaded = load_scene(scene_path("ch05_furnace.json"));
+            }
+            const Scene& scene = loaded ? *loaded : context.scene;
+            // The furnace file's own image size and samples, unless the flags set them.
+            RenderSettings settings = context.settings;
+            if (loaded && cli->count("--width") == 0) settings.width = loaded->image.width;
+            if (loaded && cli->count("--height") == 0) settings.height = loaded->image.height;
+            if (loaded && cli->count("--spp") == 0) settings.samples_per_pixel = loaded->image.spp;
+            const World world(scene);
+            const auto furnace = find_furnace(scene, world);
+            if (!furnace)
+                throw InputError(scene.file + ": --depth-study: not a furnace (a closed emissive box)");
+            if (!csv.empty()) {
+                std::ofstream probe(csv, std::ios::app);
+                if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
+            }
+            std::vector<TerminationSettings> rules;
+            for (int d : study_depths)
+                rules.push_back({Termination::kMaxDepth, d, min_throughput, roulette_start});
+            const int cap = max_depth.value_or(kSafetyDepthCap);
+            rules.push_back({Termination::kRussianRoulette, cap, min_throughput, roulette_start});
+            rules.push_back({Termination::kMinThroughput, cap, min_throughput, roulette_start});
+            const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+            std::vector<DepthStudyRow> rows =
+                depth_study(world, scene, *furnace, camera, settings, rules, direct);
+            DirectOptions no_light_sampling = direct;
+            no_light_sampling.direct = false;
+            for (const DepthStudyRow& r :
+                 depth_study(world, scene, *furnace, camera, settings, rules, no_light_sampling)) {
+                rows.push_back(r);
+            }
+            print_study(rows, scene, *furnace, settings, csv);
+            return std::nullopt;
+        }
+
+        const Scene& scene = context.scene;
+        const RenderSettings& settings = context.settings;
+        const World world(scene);
+        const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+        const DirectLighting shading(world, scene, collect_lights(scene), direct);
+        const GiOptions options{termination, context.simulated.contains(Effect::kReflection),
+                                context.simulated.contains(Effect::kIndirect)};
+        const RecursiveTracer tracer(shading, scene, options);
+        ChapterRun run{render_gi(tracer, camera, settings), material_notes(scene, context.simulated),
+                       std::nullopt};
+        std::string rule = "termination: " + describe(termination);
+        if (termination.rule == Termination::kMinThroughput ||
+            termination.rule == Termination::kRussianRoulette) {
+            rule += termination.rule == Termination::kMinThroughput ? ", biased" : ", unbiased below the cap";
+        } else {
+            rule += format(", light that bounced more than %.0f times is lost (biased)",
+                           double(termination.max_depth));
+        }
+        run.notes.push_back(rule);
+        if (shading.lights().empty())
+            run.notes.push_back("the scene has no light: no direct light, no shadow rays");
+        for (const std::string& u : shading.lights().unsampled) {
+            run.notes.push_back("emitter not sampled as a light: " + u +
+                                "; indirect rays count its emission");
+        }
+        if (!direct.direct) {
+            run.notes.push_back(
+                "the effect direct is off: no light sampling; indirect rays count every emitter");
+        }
+        const double camera_rays = double(run.result.rays[RayKind::kCamera]);
+        if (camera_rays > 0) {
+            run.notes.push_back(
+                format("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
+                       double(run.result.rays[RayKind::kReflection]) / camera_rays,
+                       double(run.result.rays[RayKind::kIndirect]) / camera_rays,
+                       double(run.result.rays[RayKind::kShadow]) / camera_rays));
+        }
+        if (const auto furnace = find_furnace(scene, world); furnace && direct.direct && options.indirect) {
+            run.exact = furnace_image(*furnace, settings.width, settings.height);
+            const Vec3d exact = furnace_radiance(*furnace);
+            std::string note = format("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
+            if (termination.rule != Termination::kMinThroughput) {
+                note +=
+                    format("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
+                           furnace_radiance_truncated(*furnace, termination.max_depth).y,
+                           double(termination.max_depth));
+            }
+            run.notes.push_back(note + " (green channel)");
+        }
+        return run;
+    };
+    return run_chapter(argc, argv, chapter, flags, render);
+}

@@ -1,0 +1,38 @@
+#include "scatter.hpp"
+
+#include "frame.hpp"
+#include "sampling.hpp"
+
+namespace rt {
+namespace {
+
+bool black(const Color& c) {
+    return !(c.r > 0 || c.g > 0 || c.b > 0);
+}
+
+}  // namespace
+
+std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
+    // EXERCISE(ch05.mirror_scatter)
+    if (black(mirror.reflectance)) return std::nullopt;
+    const Vec3 r = reflect(wo, n);
+    const Real length = glm::length(r);
+    if (!(length > 0)) return std::nullopt;
+    const Vec3 wi = r / length;
+    if (!(glm::dot(wi, n) > 0)) return std::nullopt;  // grazing: the reflection would run along the surface
+    return Scatter{wi, mirror.reflectance};
+    // END EXERCISE
+}
+
+std::optional<Scatter> uniform_scatter(const Brdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u) {
+    // EXERCISE(ch05.uniform_scatter)
+    const Vec3 wi = glm::normalize(make_frame(n).to_world(sample_uniform_hemisphere(u)));
+    const Real cos_i = glm::dot(wi, n);
+    if (!(cos_i > 0)) return std::nullopt;
+    const Color f = eval(brdf, wo, wi, n);
+    if (black(f)) return std::nullopt;
+    return Scatter{wi, f * (cos_i / kUniformHemispherePdf)};
+    // END EXERCISE
+}
+
+}  // namespace rt

@@ -1,0 +1,46 @@
+// When a recursive trace stops. Each bounce multiplies the path's throughput β (the product of f cos θ / p
+// along it) into everything that follows, so a path can be cut short three ways:
+//  - max depth:      stop after N bounces. Light that bounced more than N times is lost: biased low, by
+//                    Le ρ^(N+1) / (1 − ρ) in a furnace of albedo ρ.
+//  - min throughput: stop when max(β) < β_min ("too dim to matter"). Still biased: the dim paths it drops
+//                    carried light, and many dim paths add up.
+//  - Russian roulette: from bounce d₀ on, go on with probability q = min(1, max(β)) and divide β by q when
+//                    going on: E[β'] = q · β / q + (1 − q) · 0 = β, so the estimate stays unbiased.
+// max_depth is a hard cap for every rule, so a path between two perfect mirrors ends too.
+#pragma once
+
+#include <string_view>
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+enum class Termination { kMaxDepth, kMinThroughput, kRussianRoulette };
+
+// "depth", "throughput" or "roulette".
+std::string_view to_string(Termination rule);
+// The rule of that name ("depth"|"throughput"|"roulette"); throws InputError for any other name.
+Termination termination_from_string(std::string_view name);
+
+struct TerminationSettings {
+    Termination rule = Termination::kRussianRoulette;
+    int max_depth = 8;  // kMaxDepth: bounces after the camera ray; also a hard cap for the others
+    Real min_throughput = Real(0.01);  // kMinThroughput: stop when max component of throughput falls below it
+    int roulette_start_depth = 3;      // kRussianRoulette: bounces before roulette starts
+};
+
+// The hard cap this course gives the rules that end paths by themselves (throughput and roulette), so that
+// the cap does not bias them measurably: a furnace of albedo 0.8 loses Le 0.8^65 / 0.2 ≈ 3e-6 of Le / 0.2.
+inline constexpr int kSafetyDepthCap = 64;
+
+// The probability q that a path with throughput β at `depth` (bounces made so far) bounces on:
+// 0 at or past max_depth, or when β is zero or not finite; otherwise max depth: 1; min throughput: 1 if
+// max(β) >= β_min, else 0; Russian roulette: 1 before roulette_start_depth, then min(1, max(β)).
+Real survival_probability(const TerminationSettings& settings, int depth, const Color& throughput);
+
+// Whether a path at `depth` bounces on; with Russian roulette, survival probability q = min(1, max component
+// of throughput), and on survival throughput /= q (unbiased). `u` is a uniform random number in [0, 1).
+// In general: it goes on when u < q (q from survival_probability), and then β /= q when q < 1.
+bool continue_path(const TerminationSettings& settings, int depth, Color& throughput, Real u);
+
+}  // namespace rt
