@@ -3,7 +3,6 @@
 sections it names, the marks it refuses, and that the stubbed sources compile with the course's warnings as
 errors. Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
 
-import importlib.util
 import shutil
 import subprocess
 import sys
@@ -17,10 +16,9 @@ FIXTURE = HERE / "fixture"
 COMPILER = "g++"
 WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion", "-Wno-sign-conversion", "-Werror"]
 
-spec = importlib.util.spec_from_file_location("exercises", ROOT / "tools" / "exercises.py")
-exercises = importlib.util.module_from_spec(spec)
-sys.modules["exercises"] = exercises
-spec.loader.exec_module(exercises)
+sys.path.insert(0, str(ROOT / "tools"))
+sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
+from exercise_tool import edition, marks, test_runs  # noqa: E402  (tools/ is not a package on the path)
 
 
 def copy_of_fixture(folder: Path) -> Path:
@@ -38,7 +36,7 @@ class Marks(unittest.TestCase):
         shutil.rmtree(self.folder)
 
     def test_finds_every_mark_with_its_function_parameters_and_locals(self):
-        found = {e.name: e for e in exercises.find_exercises(self.root)}
+        found = {e.name: e for e in marks.find_exercises(self.root)}
         self.assertEqual(sorted(found), ["ch07.counter", "ch07.counter_start", "ch07.hypotenuse", "ch07.increment",
                                          "ch07.integrate"])
         h = found["ch07.hypotenuse"]
@@ -51,7 +49,7 @@ class Marks(unittest.TestCase):
         self.assertEqual(found["ch07.integrate"].parameters, ["interval", "steps", "f"])
 
     def test_names_the_lesson_section(self):
-        found = {e.name: e for e in exercises.find_exercises(self.root)}
+        found = {e.name: e for e in marks.find_exercises(self.root)}
         lesson = "chapters/07_fixture/README.md"
         self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")  # heading
         self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # text names integrate
@@ -59,7 +57,7 @@ class Marks(unittest.TestCase):
 
     def test_the_stubbed_sources_compile_with_warnings_as_errors(self):
         out = self.folder / "edition"
-        exercises.generate(self.root, out, [], force=False)
+        edition.generate(self.root, out, [], force=False)
         source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
         self.assertIn('throw std::logic_error("not implemented: ch07.hypotenuse — see '
                       'chapters/07_fixture/README.md § The hypotenuse");', source)
@@ -81,24 +79,24 @@ class Marks(unittest.TestCase):
 
     def test_only_stubs_the_chosen_exercises_and_refuses_unknown_ones(self):
         out = self.folder / "edition"
-        chosen = exercises.generate(self.root, out, ["ch07.counter"], force=False)
+        chosen = edition.generate(self.root, out, ["ch07.counter"], force=False)
         self.assertEqual([e.name for e in chosen], ["ch07.counter"])
         source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
         self.assertIn("not implemented: ch07.counter", source)
         self.assertIn("std::sqrt(square(p)", source)
-        with self.assertRaisesRegex(exercises.ToolError, "already there"):
-            exercises.generate(self.root, out, [], force=False)
-        with self.assertRaisesRegex(exercises.ToolError, "no such exercise"):
-            exercises.generate(self.root, out, ["ch07.nothing"], force=True)
+        with self.assertRaisesRegex(marks.ToolError, "already there"):
+            edition.generate(self.root, out, [], force=False)
+        with self.assertRaisesRegex(marks.ToolError, "no such exercise"):
+            edition.generate(self.root, out, ["ch07.nothing"], force=True)
 
     def test_refuses_to_write_over_a_folder_that_is_not_an_edition(self):
         other = self.folder / "other"
         other.mkdir()
         (other / "notes.txt").write_text("mine")
-        with self.assertRaisesRegex(exercises.ToolError, "not a student edition"):
-            exercises.generate(self.root, other, [], force=True)
-        with self.assertRaisesRegex(exercises.ToolError, "over the repository"):
-            exercises.generate(self.root, self.root, [], force=True)
+        with self.assertRaisesRegex(marks.ToolError, "not a student edition"):
+            edition.generate(self.root, other, [], force=True)
+        with self.assertRaisesRegex(marks.ToolError, "over the repository"):
+            edition.generate(self.root, self.root, [], force=True)
 
     def rewrite(self, old, new):
         path = self.root / "chapters/07_fixture/fixture.cpp"
@@ -108,31 +106,31 @@ class Marks(unittest.TestCase):
 
     def test_refuses_a_mark_that_does_not_end_the_function_body(self):
         self.rewrite("    return value_ + step;\n    // END EXERCISE\n", "    // END EXERCISE\n    return value_ + step;\n")
-        with self.assertRaisesRegex(exercises.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) must end"):
-            exercises.find_exercises(self.root)
+        with self.assertRaisesRegex(marks.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) must end"):
+            marks.find_exercises(self.root)
 
     def test_refuses_unclosed_nested_and_misnamed_marks(self):
         self.rewrite("    // END EXERCISE\n}\n\nvoid increment_all", "}\n\nvoid increment_all")
-        with self.assertRaisesRegex(exercises.ToolError, "inside EXERCISE\\(ch07.counter\\)"):
-            exercises.find_exercises(self.root)
+        with self.assertRaisesRegex(marks.ToolError, "inside EXERCISE\\(ch07.counter\\)"):
+            marks.find_exercises(self.root)
         self.rewrite("EXERCISE(ch07.increment)", "EXERCISE(ch02.increment)")
-        with self.assertRaisesRegex(exercises.ToolError, "is in chapter folder 07_fixture"):
-            exercises.find_exercises(self.root)
+        with self.assertRaisesRegex(marks.ToolError, "is in chapter folder 07_fixture"):
+            marks.find_exercises(self.root)
 
 
 class Results(unittest.TestCase):
     def result(self, name, passed, output, tags):
-        return exercises.TestResult(name, "ch07_test", "ch07", passed, output, tags)
+        return test_runs.TestResult(name, "ch07_test", "ch07", passed, output, tags)
 
     def test_an_exercise_is_left_failing_or_done(self):
-        marks = [exercises.Exercise(n, Path("x.cpp"), 0, 1) for n in ("ch07.a", "ch07.b", "ch07.c", "ch07.d")]
+        found = [marks.Exercise(n, Path("x.cpp"), 0, 1) for n in ("ch07.a", "ch07.b", "ch07.c", "ch07.d")]
         results = [
             self.result("t1", False, "due to unexpected exception with message:\n  not implemented: ch07.a — see",
                         ["ch07.a", "ch07.b"]),
             self.result("t2", False, "CHECK( x == 1 ) with expansion: 2 == 1", ["ch07.b"]),
             self.result("t3", True, "", ["ch07.c"]),
         ]
-        states = {k: v["state"] for k, v in exercises.summarise(marks, results, None).items()}
+        states = {k: v["state"] for k, v in test_runs.summarise(found, results, None).items()}
         self.assertEqual(states, {"ch07.a": "left", "ch07.b": "failing", "ch07.c": "done", "ch07.d": "untested"})
 
 

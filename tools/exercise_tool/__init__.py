@@ -1,0 +1,1 @@
+"""The library behind tools/exercises.py (see its help)."""

@@ -1,0 +1,156 @@
+"""The student edition: a copy of the repository in which every marked exercise body throws
+"not implemented: chNN.name — see <lesson> § <section>", and still builds with warnings as errors."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+from .cpp_reader import internal_helpers, tokenize
+from .marks import Exercise, ToolError, find_exercises, selected
+
+EDITION_MARKER = ".student-edition.json"
+
+
+def cpp_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def stub_file(text: str, exercises: list[Exercise]) -> str:
+    """The file with each exercise's marked lines replaced by a throw (the marks themselves are kept, so the
+    student sees where to write and the tools still find the exercise)."""
+    lines = text.split("\n")
+    tokens = tokenize(text)
+    removed: set[str] = set()
+    for exercise in exercises:
+        removed |= {t.text for t in tokens if exercise.begin < t.line < exercise.end and t.kind == "ident"}
+    # Helpers used only by removed code would become "defined but not used" errors: mark them.
+    maybe_unused: dict[int, int] = {}
+    for helper in internal_helpers(tokens):
+        if helper.name in removed:
+            maybe_unused.setdefault(helper.line, helper.col)
+    out: list[str] = []
+    by_begin = {e.begin: e for e in exercises}
+    number = 0
+    while number < len(lines):
+        line = lines[number]
+        exercise = by_begin.get(number)
+        if exercise is None:
+            if number in maybe_unused:
+                col = maybe_unused[number]
+                line = line[:col] + "[[maybe_unused]] " + line[col:]
+            out.append(line)
+            number += 1
+            continue
+        indent = re.match(r"\s*", lines[exercise.begin + 1] if exercise.end > exercise.begin + 1 else line).group(0)
+        out.append(line)
+        unused = exercise.parameters + exercise.locals
+        if unused:
+            casts = " ".join(f"((void){n[3:]}, ...);" if n.startswith("...") else f"(void){n};" for n in unused)
+            out.append(f"{indent}{casts}")
+        message = f"not implemented: {exercise.name} — see {exercise.reference()}"
+        out.append(f"{indent}throw std::logic_error({cpp_string(message)});")
+        out.append(lines[exercise.end])
+        number = exercise.end + 1
+    result = "\n".join(out)
+    if not re.search(r"^\s*#\s*include\s*<stdexcept>", result, re.MULTILINE):
+        result = add_include(result, "#include <stdexcept>")
+    return result
+
+
+def add_include(text: str, include: str) -> str:
+    lines = text.split("\n")
+    last = None
+    for i, line in enumerate(lines):
+        if re.match(r"^\s*#\s*include\b", line):
+            last = i
+        elif last is not None and line.strip() and not line.lstrip().startswith(("#", "//")):
+            break
+    if last is None:
+        last = next((i for i, line in enumerate(lines) if re.match(r"^\s*#\s*pragma\s+once", line)), -1)
+    lines.insert(last + 1, include)
+    return "\n".join(lines)
+
+
+def edition_note(chosen: list[Exercise]) -> str:
+    chapters = ", ".join(sorted({e.chapter for e in chosen}))
+    return (f"> **Student edition.** {len(chosen)} functions of this copy ({chapters}) throw \"not implemented\" "
+            "until you write them: build with `cmake --preset release && cmake --build --preset release`, then "
+            "`python3 tools/exercises.py status` lists the exercises done and left, and each lesson's "
+            "\"Exercises\" section says what to write.\n\n")
+
+
+def repository_files(root: Path) -> list[Path]:
+    """The files of the working tree that git does not ignore (or, outside git, every file but build*/)."""
+    try:
+        listing = subprocess.run(
+            ["git", "-C", str(root), "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+            check=True, capture_output=True,
+        ).stdout.decode("utf-8")
+        files = sorted({Path(p) for p in listing.split("\0") if p})
+        return [p for p in files if (root / p).is_file()]
+    except (OSError, subprocess.CalledProcessError):
+        files = []
+        for dirpath, dirnames, filenames in os.walk(root):
+            dirnames[:] = [d for d in dirnames if not d.startswith("build") and d != ".git"]
+            for f in filenames:
+                files.append((Path(dirpath) / f).relative_to(root))
+        return sorted(files)
+
+
+def write_if_changed(path: Path, data: bytes) -> None:
+    """Leaves an identical file untouched, so a regenerated edition rebuilds only what changed."""
+    if path.is_file() and path.read_bytes() == data:
+        return
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(data)
+
+
+def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = True) -> list[Exercise]:
+    """Writes the edition; with stub=False, a plain copy (the baseline of `deps`)."""
+    out = out.resolve()
+    root = root.resolve()
+    if out == root or root.is_relative_to(out):
+        raise ToolError(f"generate: {out}: the edition cannot be written over the repository")
+    if out.is_relative_to(root):
+        top = out.relative_to(root).parts[0]
+        ignored = subprocess.run(["git", "-C", str(root), "check-ignore", "-q", top]).returncode == 0
+        if not ignored:
+            raise ToolError(f"generate: {out}: inside the repository but not in an ignored folder (use build/... "
+                            "or a folder outside it)")
+    if out.exists() and any(out.iterdir()):
+        if not (out / EDITION_MARKER).is_file():
+            raise ToolError(f"generate: {out}: exists and is not a student edition; choose an empty folder")
+        if not force:
+            raise ToolError(f"generate: {out}: a student edition is already there (a student's work?); add --force "
+                            "to overwrite it")
+    all_exercises = find_exercises(root)
+    chosen = [e for e in all_exercises if selected(e, only)] if stub else []
+    unknown = [o for o in only if not any(e.name == o or e.chapter == o for e in all_exercises)]
+    if unknown:
+        raise ToolError(f"generate: --only {','.join(unknown)}: no such exercise or chapter (see `exercises.py list`)")
+    by_file: dict[Path, list[Exercise]] = {}
+    for e in chosen:
+        by_file.setdefault(e.file, []).append(e)
+    files = repository_files(root)
+    wanted = {out / f for f in files} | {out / EDITION_MARKER}
+    if out.exists():
+        for path in sorted(out.rglob("*"), reverse=True):
+            if path.is_file() and path not in wanted and not path.is_relative_to(out / "build"):
+                path.unlink()
+    for relative in files:
+        source = root / relative
+        data = source.read_bytes()
+        if relative in by_file:
+            data = stub_file(data.decode("utf-8"), by_file[relative]).encode("utf-8")
+        elif relative == Path("README.md") and chosen:
+            data = edition_note(chosen).encode("utf-8") + data
+        write_if_changed(out / relative, data)
+        shutil.copymode(source, out / relative)
+    marker = {"source": str(root), "stubbed": [e.name for e in chosen]}
+    write_if_changed(out / EDITION_MARKER, (json.dumps(marker, indent=2) + "\n").encode("utf-8"))
+    return chosen

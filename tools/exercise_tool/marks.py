@@ -1,0 +1,181 @@
+"""Exercise marks in the chapter sources, their names, and the lesson section that explains each."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .cpp_reader import Token, enclosing_function, locals_before, matching, tokenize
+
+SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"}
+SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ and tools/ hold none
+MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)")
+END_RE = re.compile(r"^\s*//\s*END EXERCISE\b")
+NAME_RE = re.compile(r"^ch(\d\d)\.[a-z][a-z0-9_]*$")
+NOT_IMPLEMENTED_RE = re.compile(r"not implemented: (ch\d\d\.[a-z][a-z0-9_]*)")
+TAG_PREFIX = "ex:"
+
+
+class ToolError(Exception):
+    """A problem the user must fix; printed as one line, exit status 2."""
+
+
+@dataclass
+class Exercise:
+    name: str  # "ch02.sphere_stable"
+    file: Path  # relative to the root
+    begin: int  # 0-based line of // EXERCISE(...)
+    end: int  # 0-based line of // END EXERCISE
+    function: str = ""
+    parameters: list[str] = field(default_factory=list)
+    locals: list[str] = field(default_factory=list)
+    stubbed: bool = False  # its body is still the student edition's throw: not written yet
+    lesson: str = ""  # "chapters/02_intersection/README.md"
+    section: str = ""  # "Spheres", or "" when the lesson has no fitting heading
+
+    @property
+    def chapter(self) -> str:
+        return self.name.split(".")[0]
+
+    @property
+    def short(self) -> str:
+        return self.name.split(".", 1)[1]
+
+    def where(self) -> str:
+        return f"{self.file}:{self.begin + 1}"
+
+    def reference(self) -> str:
+        return f"{self.lesson} § {self.section}" if self.section else self.lesson
+
+
+def chapter_folder(root: Path, chapter: str) -> Path | None:
+    number = chapter[2:]
+    found = sorted((root / "chapters").glob(f"{number}_*"))
+    return found[0] if found else None
+
+
+def lesson_section(root: Path, exercise: Exercise) -> tuple[str, str]:
+    """Where the lesson explains an exercise: the chapter's README and its heading that names the exercise
+    or function; else the section whose text names the function; else its "Exercises" section."""
+    folder = chapter_folder(root, exercise.chapter)
+    if folder is None:
+        return "", ""
+    readme = folder / "README.md"
+    lesson = readme.relative_to(root).as_posix()
+    if not readme.is_file():
+        return lesson, "Exercises"
+    sections: list[tuple[str, list[str]]] = []
+    in_code = False
+    for line in readme.read_text(encoding="utf-8").splitlines():
+        if line.lstrip().startswith("```"):
+            in_code = not in_code
+        m = None if in_code else re.match(r"^#{2,4}\s+(.*?)\s*#*\s*$", line)
+        if m:
+            sections.append((m.group(1), []))
+        elif sections:
+            sections[-1][1].append(line)
+    def names(text: str, words: list[str]) -> bool:
+        return any(re.search(r"(?<![\w.])" + re.escape(w) + r"(?![\w])", text) for w in words if w)
+
+    function = exercise.function if exercise.function != "lambda" else ""
+    file_names = [exercise.file.name, exercise.file.stem + ".hpp", exercise.file.stem + ".cpp"]
+    ordinary = [(h, "\n".join(b)) for h, b in sections if not h.lower().startswith("exercises")]
+    # The heading that names the exercise or its function; the section whose text names the function (or the
+    # exercise); the section that names its file; the lesson's exercises.
+    for heading, _ in sections:
+        if names(heading, [exercise.short, exercise.name, function]):
+            return lesson, heading.replace("`", "")
+    for words in ([function, exercise.name], file_names):
+        for heading, body in ordinary:
+            if names(body, words):
+                return lesson, heading.replace("`", "")
+    for heading, _ in sections:
+        if heading.lower().startswith("exercises"):
+            return lesson, heading.replace("`", "")
+    return lesson, ""
+
+
+def source_files(root: Path) -> list[Path]:
+    files = []
+    for folder in SCANNED_FOLDERS:
+        base = root / folder
+        if base.is_dir():
+            for path in sorted(base.rglob("*")):
+                if path.suffix in SOURCE_SUFFIXES and path.is_file():
+                    files.append(path)
+    return files
+
+
+def find_exercises(root: Path) -> list[Exercise]:
+    """Every marked exercise under chapters/ and common/, checked: names chNN.snake_case matching the
+    chapter folder, marks paired and not nested, inside a function body, ending it."""
+    exercises: list[Exercise] = []
+    errors: list[str] = []
+    for path in source_files(root):
+        text = path.read_text(encoding="utf-8")
+        lines = text.split("\n")
+        relative = path.relative_to(root)
+        found: list[Exercise] = []
+        open_mark: Exercise | None = None
+        for number, line in enumerate(lines):
+            m = MARK_RE.match(line)
+            if m:
+                name = m.group(1).strip()
+                where = f"{relative.as_posix()}:{number + 1}"
+                if open_mark is not None:
+                    errors.append(f"{where}: EXERCISE({name}) inside EXERCISE({open_mark.name}) (line "
+                                  f"{open_mark.begin + 1}); close it with // END EXERCISE first")
+                name_match = NAME_RE.match(name)
+                if not name_match:
+                    errors.append(f"{where}: exercise name \"{name}\" must be chNN.snake_case, e.g. ch02.sphere")
+                parts = relative.parts
+                if name_match and parts[0] == "chapters" and not parts[1].startswith(name_match.group(1) + "_"):
+                    errors.append(f"{where}: exercise {name} is in chapter folder {parts[1]}; name it ch{parts[1][:2]}.…")
+                open_mark = Exercise(name, relative, number, -1)
+            elif END_RE.match(line):
+                if open_mark is None:
+                    errors.append(f"{relative.as_posix()}:{number + 1}: END EXERCISE without an EXERCISE(...) before it")
+                else:
+                    open_mark.end = number
+                    found.append(open_mark)
+                    open_mark = None
+        if open_mark is not None:
+            errors.append(f"{open_mark.where()}: EXERCISE({open_mark.name}) has no // END EXERCISE")
+        if not found:
+            continue
+        tokens = tokenize(text)
+        for exercise in found:
+            function = enclosing_function(tokens, exercise.begin)
+            if function is None:
+                errors.append(f"{exercise.where()}: EXERCISE({exercise.name}) is not inside a function body")
+                continue
+            after = next((t for t in tokens if t.line > exercise.end), None)
+            if after is None or tokens.index(after) != function.body_close:
+                errors.append(f"{exercise.where()}: EXERCISE({exercise.name}) must end the body of "
+                              f"{function.name}(): its // END EXERCISE (line {exercise.end + 1}) must be followed "
+                              "by the function's closing brace")
+                continue
+            inside = [t for t in tokens if exercise.begin < t.line < exercise.end]
+            if any(t.text == "}" for t in inside) and matching_balance(inside) != 0:
+                errors.append(f"{exercise.where()}: the braces between EXERCISE({exercise.name}) and END EXERCISE do "
+                              "not balance")
+                continue
+            body = "\n".join(lines[exercise.begin + 1 : exercise.end])
+            exercise.stubbed = f'"not implemented: {exercise.name} ' in body
+            exercise.function = function.name
+            exercise.parameters = function.parameters
+            exercise.locals = locals_before(tokens, function, exercise.begin)
+            exercise.lesson, exercise.section = lesson_section(root, exercise)
+            exercises.append(exercise)
+    if errors:
+        raise ToolError("\n".join(errors))
+    return exercises
+
+
+def matching_balance(tokens: list[Token]) -> int:
+    return sum(1 for t in tokens if t.text == "{") - sum(1 for t in tokens if t.text == "}")
+
+
+def selected(exercise: Exercise, only: list[str]) -> bool:
+    return not only or any(exercise.name == o or exercise.chapter == o for o in only)
