@@ -274,7 +274,8 @@ def locals_before(tokens: list[Token], function: Function, line: int) -> list[st
         t = tokens[i]
         if t.text == "{":
             close = matching(tokens, i)
-            if statement and statement[-1].kind in ("ident", "punct") and statement[-1].text not in (")", "else", "do", "try"):
+            last = statement[-1] if statement else None
+            if last and last.kind in ("ident", "punct") and last.text not in (")", "else", "do", "try"):
                 # A braced initialiser: part of a declaration.
                 statement += tokens[i : close + 1]
                 i = close + 1
@@ -317,7 +318,8 @@ def internal_helpers(tokens: list[Token]) -> list[Helper]:
                 i += 1
                 continue
             close = matching(tokens, i)
-            if "(" in texts and "=" not in texts and texts and texts[0] not in ("struct", "class", "union", "enum"):
+            is_function = "(" in texts and ("=" not in texts or texts.index("(") < texts.index("="))
+            if is_function and texts[0] not in ("struct", "class", "union", "enum"):
                 helper = _helper_of(decl, any(anonymous))  # a function definition: its body ends it
                 if helper:
                     helpers.append(helper)
@@ -329,7 +331,8 @@ def internal_helpers(tokens: list[Token]) -> list[Helper]:
                 anonymous.pop()
             start = i + 1
         elif t == ";":
-            if texts and not ("(" in texts and "=" not in texts):  # not a function's declaration
+            declares_function = "(" in texts and ("=" not in texts or texts.index("(") < texts.index("="))
+            if texts and not declares_function:
                 helper = _helper_of(decl, any(anonymous), variable=True)
                 if helper:
                     helpers.append(helper)
