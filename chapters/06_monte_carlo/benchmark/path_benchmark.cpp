@@ -1,0 +1,138 @@
+// What the path tracer costs, measured on the course's benchmark scene (the Cornell box of DESIGN.md with a
+// diffuse sphere, 600×600, MIS): samples (paths) per second on 1 and 2 threads (the median of `--repeats`
+// renders), whether the image is bit-identical for both, and the time to a relative MSE of 1e-3 against a
+// converged reference (cached as PFM in `--cache`). Targets: >= 3e6 samples/s on 2 threads, 2 threads >= 1.8×
+// one thread.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "camera.hpp"
+#include "convergence.hpp"
+#include "path_tracer.hpp"
+#include "rt/assets.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+namespace {
+
+using namespace rt;
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+bool identical(const Image& a, const Image& b) {
+    return a.pixels().size() == b.pixels().size() &&
+           std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app("ch06_benchmark: path tracer samples per second and time to relative MSE 1e-3",
+                 "ch06_benchmark");
+    std::string scene_file = scene_path("ch06_default.json").string();
+    int size = 600, spp = 16, repeats = 3, reference_spp = 2048;
+    std::string cache = ".";
+    std::string sampling = "mis";
+    double target = 1e-3;
+    app.add_option("--scene", scene_file,
+                   "Scene (default: ch06_default.json, the Cornell box, diffuse sphere)");
+    app.add_option("--size", size, "Image width and height")->check(CLI::Range(8, 4096));
+    app.add_option("--spp", spp, "Samples per pixel of each timed render")->check(CLI::Range(1, 1 << 16));
+    app.add_option("--repeats", repeats, "Timed renders per thread count (the median is reported)")
+        ->check(CLI::Range(1, 100));
+    app.add_option("--reference-spp", reference_spp, "Samples per pixel of the converged reference")
+        ->check(CLI::Range(2, 1 << 20));
+    app.add_option("--cache", cache, "Folder of the cached reference PFM");
+    app.add_option("--sampling", sampling, "uniform|cosine|brdf|light|mis")
+        ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
+    app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
+    CLI11_PARSE(app, argc, argv);
+    try {
+        const Scene scene = load_scene(scene_file);
+        const World world(scene);
+        const LightSet lights = collect_lights(scene);
+        PathOptions options;
+        options.strategy = sampling_strategy_from_string(sampling);
+        const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
+        RenderSettings settings;
+        settings.width = settings.height = size;
+        settings.seed = 1;
+        settings.progress = ProgressStyle::kNone;
+        const PathTracer tracer(world, scene, lights, options);
+        std::printf("ch06_benchmark: %s, %dx%d, %s, %u hardware threads\n", scene_file.c_str(), size, size,
+                    sampling.c_str(), std::thread::hardware_concurrency());
+
+        // Samples per second: the median of `repeats` renders of `spp` samples per pixel.
+        settings.samples_per_pixel = spp;
+        double rate[3] = {0, 0, 0};
+        Image images[3];
+        std::uint64_t rays = 0;
+        for (int threads : {1, 2}) {
+            settings.threads = threads;
+            std::vector<double> seconds;
+            for (int r = 0; r < repeats; ++r) {
+                RenderResult result = render_paths(tracer, camera, settings);
+                seconds.push_back(result.seconds);
+                rays = result.rays.total();
+                images[threads] = std::move(result.image);
+            }
+            rate[threads] = double(size) * size * spp / median(seconds);
+            std::printf(
+                "  %d thread%s: %.3g samples/s, %.3g rays/s (median of %d renders of %d spp: %.3f s)\n",
+                threads, threads == 1 ? " " : "s", rate[threads], double(rays) / median(seconds), repeats,
+                spp, median(seconds));
+        }
+        const double speedup = rate[2] / rate[1];
+        const bool same = identical(images[1], images[2]);
+        std::printf("  2 threads / 1 thread: %.2fx; image bit-identical on 1 and 2 threads: %s\n", speedup,
+                    same ? "yes" : "NO");
+
+        // Time to a relative MSE of `target`: relative MSE falls like 1/spp, so the spp that reaches it is
+        // predicted from the error at `spp` and then rendered to check.
+        const Reference ref =
+            converged_reference(world, scene, lights, options, camera, settings, reference_spp, cache);
+        std::printf("  reference: %s %s (relative MSE of its own noise %.2e)\n",
+                    ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(),
+                    ref.noise_relative_mse);
+        const double measured = compare(images[2], ref.image).relative_mse - ref.noise_relative_mse;
+        const int needed = std::max(1, int(std::ceil(double(spp) * measured / target)));
+        std::printf("  relative MSE at %d spp: %.3e -> about %d spp for %.0e\n", spp, measured, needed,
+                    target);
+        settings.samples_per_pixel = needed;
+        double time_to_target[3] = {0, 0, 0};
+        for (int threads : {1, 2}) {
+            settings.threads = threads;
+            const RenderResult r = render_paths(tracer, camera, settings);
+            const double reached = compare(r.image, ref.image).relative_mse - ref.noise_relative_mse;
+            time_to_target[threads] = r.seconds;
+            std::printf("  %d thread%s: %d spp in %.2f s, relative MSE %.3e (minus the reference's noise)\n",
+                        threads, threads == 1 ? " " : "s", needed, r.seconds, reached);
+        }
+        std::printf("\n| threads | samples/s | time to relative MSE %.0e |\n|---|---|---|\n", target);
+        for (int threads : {1, 2}) {
+            std::printf("| %d | %.3g | %.2f s |\n", threads, rate[threads], time_to_target[threads]);
+        }
+        std::printf(
+            "\ntargets: 2 threads >= 3e6 samples/s: %s (%.3g); 2 threads >= 1.8x one: %s (%.2fx); "
+            "identical images: %s\n",
+            rate[2] >= 3e6 ? "met" : "NOT met", rate[2], speedup >= 1.8 ? "met" : "NOT met", speedup,
+            same ? "yes" : "NO");
+        return 0;
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "ch06_benchmark: %s\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ch06_benchmark: failed: %s\n", e.what());
+        return kExitFailure;
+    }
+}

@@ -1,0 +1,195 @@
+#include "convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
+#include "rt/image_io.hpp"
+
+namespace rt {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uint64_t kReferenceSeedA = 1001;
+constexpr std::uint64_t kReferenceSeedB = 1002;
+
+// mean((a − b)²) over every channel of every pixel.
+double mean_squared_difference(const Image& a, const Image& b) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const Vec3d d = Vec3d(a.pixels()[i]) - Vec3d(b.pixels()[i]);
+        sum += glm::dot(d, d);
+    }
+    return sum / (3.0 * double(a.pixels().size()));
+}
+
+// mean((a − ref)² / (ref² + 0.01)): the relative MSE of error_metrics.hpp.
+double relative_squared_difference(const Image& a, const Image& ref) {
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double r = double(ref.pixels()[i][c]), d = double(a.pixels()[i][c]) - r;
+            sum += d * d / (r * r + 0.01);
+        }
+    }
+    return sum / (3.0 * double(a.pixels().size()));
+}
+
+RenderResult render_with(const World& world, const Scene& scene, const LightSet& lights, PathOptions options,
+                         SamplingStrategy strategy, const PinholeCamera& camera,
+                         const RenderSettings& settings) {
+    options.strategy = strategy;
+    const PathTracer tracer(world, scene, lights, options);
+    return render_paths(tracer, camera, settings);
+}
+
+}  // namespace
+
+fs::path reference_path(const fs::path& folder, const Scene& scene, int width, int height, int spp) {
+    const std::string stem = fs::path(scene.file).stem().string();
+    return folder / ("ch06_reference_" + stem + "_" + std::to_string(width) + "x" + std::to_string(height) +
+                     "_" + std::to_string(spp) + "spp.pfm");
+}
+
+Reference converged_reference(const World& world, const Scene& scene, const LightSet& lights,
+                              const PathOptions& options, const PinholeCamera& camera,
+                              RenderSettings settings, int spp, const fs::path& folder) {
+    Reference ref;
+    ref.spp = spp;
+    ref.file = reference_path(folder, scene, settings.width, settings.height, spp);
+    fs::path half = ref.file;
+    half.replace_filename(ref.file.stem().string() + "_half.pfm");
+    std::error_code ec;
+    if (fs::exists(ref.file, ec) && fs::exists(half, ec)) {
+        Image mean = read_pfm(ref.file), a = read_pfm(half);
+        if (mean.width() == settings.width && mean.height() == settings.height && a.width() == mean.width() &&
+            a.height() == mean.height()) {
+            // A − (A + B)/2 = (A − B)/2, so mean((A − ref)²) = mean((A − B)²) / 4.
+            ref.noise_mse = mean_squared_difference(a, mean);
+            ref.noise_relative_mse = relative_squared_difference(a, mean);
+            ref.image = std::move(mean);
+            ref.cached = true;
+            return ref;
+        }
+    }
+    check_writable(ref.file);
+    settings.samples_per_pixel = std::max(1, spp / 2);
+    settings.seed = kReferenceSeedA;
+    const RenderResult a =
+        render_with(world, scene, lights, options, SamplingStrategy::kMis, camera, settings);
+    settings.seed = kReferenceSeedB;
+    const RenderResult b =
+        render_with(world, scene, lights, options, SamplingStrategy::kMis, camera, settings);
+    if (a.interrupted || b.interrupted) throw std::runtime_error("the reference render was interrupted");
+    Image mean(settings.width, settings.height);
+    for (std::size_t i = 0; i < mean.pixels().size(); ++i) {
+        mean.pixels()[i] = (a.image.pixels()[i] + b.image.pixels()[i]) * Real(0.5);
+    }
+    ref.noise_mse = mean_squared_difference(a.image, mean);
+    ref.noise_relative_mse = relative_squared_difference(a.image, mean);
+    ref.seconds = a.seconds + b.seconds;
+    write_pfm(a.image, half);
+    write_pfm(mean, ref.file);
+    ref.image = std::move(mean);
+    return ref;
+}
+
+std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& scene, const LightSet& lights,
+                                              PathOptions options, const PinholeCamera& camera,
+                                              RenderSettings settings, const Reference& reference,
+                                              const std::vector<SamplingStrategy>& strategies, int max_spp) {
+    std::vector<ConvergenceRow> rows;
+    for (SamplingStrategy strategy : strategies) {
+        for (int spp = 1; spp <= max_spp; spp *= 2) {
+            settings.samples_per_pixel = spp;
+            const RenderResult r = render_with(world, scene, lights, options, strategy, camera, settings);
+            if (r.interrupted) return rows;
+            const ErrorMetrics e = compare(r.image, reference.image);
+            rows.push_back(
+                {strategy, spp, e.rmse, e.rmse * e.rmse - reference.noise_mse, r.seconds, e.relative_mse});
+        }
+    }
+    return rows;
+}
+
+std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& rows) {
+    std::vector<EfficiencyRow> table;
+    for (SamplingStrategy s : kAllStrategies) {
+        std::vector<const ConvergenceRow*> mine;
+        for (const ConvergenceRow& r : rows)
+            if (r.strategy == s) mine.push_back(&r);
+        if (mine.empty()) continue;
+        // Least squares of y = log RMSE on x = log spp.
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        for (const ConvergenceRow* r : mine) {
+            const double x = std::log(double(r->spp)), y = std::log(r->rmse);
+            sx += x, sy += y, sxx += x * x, sxy += x * y;
+        }
+        const double n = double(mine.size());
+        const double denominator = n * sxx - sx * sx;
+        const double slope = denominator > 0 ? (n * sxy - sx * sy) / denominator : 0.0;
+        const ConvergenceRow& last = *mine.back();
+        const double mse = std::max(last.mse, 1e-30);
+        table.push_back({s, slope, last.mse, last.seconds, 1.0 / (mse * std::max(last.seconds, 1e-9))});
+    }
+    return table;
+}
+
+void write_convergence_csv(const std::vector<ConvergenceRow>& rows, const fs::path& csv) {
+    std::ofstream out(csv);
+    if (!out) throw InputError("--csv: " + csv.string() + ": cannot be written");
+    out << "strategy,spp,rmse,mse,relative_mse,seconds\n";
+    for (const ConvergenceRow& r : rows) {
+        out << to_string(r.strategy) << ',' << r.spp << ',' << r.rmse << ',' << r.mse << ',' << r.relative_mse
+            << ',' << r.seconds << '\n';
+    }
+    if (!out) throw std::runtime_error(csv.string() + ": write failed");
+}
+
+bool plot_convergence(const fs::path& csv, const std::vector<SamplingStrategy>& strategies,
+                      const fs::path& png_stem, const std::string& title) {
+    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) return false;
+    // The slope −1/2 is drawn through half the first point of the last strategy, beside the curves.
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    double rmse1 = 0, rmse_last = 0, seconds_last = 0;
+    const std::string anchor(to_string(strategies.back()));
+    while (std::getline(in, line)) {
+        if (line.rfind(anchor + ",", 0) != 0) continue;
+        double values[5];
+        std::size_t at = anchor.size() + 1;
+        for (double& v : values) {
+            std::size_t used = 0;
+            v = std::stod(line.substr(at), &used);
+            at += used + 1;
+        }
+        if (rmse1 == 0) rmse1 = values[1];
+        rmse_last = values[1];
+        seconds_last = values[4];
+    }
+    const fs::path script = png_stem.string() + ".gp";
+    std::ofstream gp(script);
+    gp << "set terminal pngcairo size 640,440 font ',10'\nset datafile separator ','\nset logscale xy\n"
+       << "set grid\nset key outside right\nset title '" << title << "'\n";
+    auto plot = [&](const std::string& suffix, const std::string& x_label, int x_column, double a) {
+        gp << "set output '" << png_stem.string() << suffix << "'\nset xlabel '" << x_label
+           << "'\nset ylabel 'RMSE to the reference'\nplot ";
+        for (SamplingStrategy s : strategies) {
+            gp << "'" << csv.string() << "' using (strcol(1) eq '" << to_string(s) << "' ? $" << x_column
+               << " : 1/0):3 with linespoints title '" << to_string(s) << "', ";
+        }
+        gp << a << "/sqrt(x) with lines dashtype 2 lc 'black' title 'slope -1/2'\n";
+    };
+    plot("_spp.png", "samples per pixel", 2, rmse1 * 0.5);
+    plot("_time.png", "render time (s)", 6, rmse_last * std::sqrt(seconds_last) * 0.5);
+    gp.close();
+    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+}
+
+}  // namespace rt

@@ -1,0 +1,74 @@
+// Convergence, measured: for each sampling strategy, renders at 1, 2, 4, …, N samples per pixel and their
+// RMSE to a converged reference against their time. An unbiased estimator's RMSE falls like σ / √spp (a
+// slope of −1/2 on a log-log plot); the strategies differ in σ and in time per sample, and
+// efficiency = 1 / (MSE × time) ranks them by what a second of rendering buys.
+//
+// The reference is the mean of two independent renders A and B (MIS, many samples), cached as PFM files so
+// it is rendered once. Its own noise is not zero: its MSE to the truth is estimated as mean((A − B)²) / 4
+// and reported as the floor under which a measured MSE means nothing.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "path_tracer.hpp"
+#include "rt/image.hpp"
+
+namespace rt {
+
+struct Reference {
+    Image image;
+    double noise_mse = 0;           // estimated mean squared error of the reference itself
+    double noise_relative_mse = 0;  // the same in relative MSE: mean((A − B)² / 4 / (ref² + 0.01))
+    int spp = 0;
+    std::filesystem::path file;
+    bool cached = false;  // read from the cache rather than rendered now
+    double seconds = 0;   // render time (0 when cached)
+};
+
+// The cache file of the reference of `scene` at this size and spp: <folder>/ch06_reference_<scene stem>_
+// <W>x<H>_<spp>spp.pfm (and _half.pfm beside it: render A).
+std::filesystem::path reference_path(const std::filesystem::path& folder, const Scene& scene, int width,
+                                     int height, int spp);
+
+// Reads the cached reference if both files are there and of the right size, else renders A and B with MIS
+// (spp / 2 each, seeds 1001 and 1002) and writes them. Throws InputError if the folder is not writable.
+Reference converged_reference(const World& world, const Scene& scene, const LightSet& lights,
+                              const PathOptions& options, const PinholeCamera& camera,
+                              RenderSettings settings, int spp, const std::filesystem::path& folder);
+
+struct ConvergenceRow {
+    SamplingStrategy strategy;
+    int spp;
+    double rmse;     // against the reference
+    double mse;      // rmse², minus the reference's own noise_mse (its estimate of the true MSE)
+    double seconds;  // render time
+    double relative_mse;
+};
+
+// Every strategy at spp = 1, 2, 4, …, max_spp with the settings' seed.
+std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& scene, const LightSet& lights,
+                                              PathOptions options, const PinholeCamera& camera,
+                                              RenderSettings settings, const Reference& reference,
+                                              const std::vector<SamplingStrategy>& strategies, int max_spp);
+
+struct EfficiencyRow {
+    SamplingStrategy strategy;
+    double slope;       // least-squares slope of log RMSE against log spp (−0.5 for a converging estimator)
+    double mse;         // at the largest spp
+    double seconds;     // at the largest spp
+    double efficiency;  // 1 / (mse × seconds)
+};
+std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& rows);
+
+// Writes the rows as CSV.
+void write_convergence_csv(const std::vector<ConvergenceRow>& rows, const std::filesystem::path& csv);
+// Draws the two log-log plots (RMSE against spp, RMSE against seconds) with gnuplot, the slope −1/2 beside
+// them, as PNG files `<stem>_spp.png` and `<stem>_time.png`. Returns false (and draws nothing) when gnuplot
+// is not installed.
+bool plot_convergence(const std::filesystem::path& csv, const std::vector<SamplingStrategy>& strategies,
+                      const std::filesystem::path& png_stem, const std::string& title);
+
+}  // namespace rt

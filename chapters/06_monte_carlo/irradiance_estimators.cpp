@@ -1,0 +1,156 @@
+#include "irradiance_estimators.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "area_light_sampling.hpp"
+#include "frame.hpp"
+#include "irradiance.hpp"
+#include "mis.hpp"
+#include "pixel_sampling.hpp"
+#include "rt/random.hpp"
+#include "sampling.hpp"
+#include "sphere_light_sampling.hpp"
+#include "warp_pdfs.hpp"
+
+namespace rt {
+namespace {
+
+const Vec3 kOrigin{0, 0, 0};
+
+// L(wi): the radiance arriving at p = 0 along wi, and the light-sampling density of wi.
+struct Arrival {
+    Real radiance;
+    Real light_pdf;
+};
+
+Arrival arrival(const IrradianceCase& c, const Vec3& wi) {
+    if (!c.lights.quads.empty()) {
+        const QuadLight& q = c.lights.quads[0];
+        const Real pdf = quad_light_pdf(q, kOrigin, wi);
+        return {pdf > 0 ? q.radiance.g : Real(0), pdf};
+    }
+    if (!c.lights.spheres.empty()) {
+        const SphereLight& s = c.lights.spheres[0];
+        const Real d = glm::length(s.center);
+        const Real ratio = s.radius / d;
+        const Vec3 local = make_frame(s.center / d).to_local(wi);
+        const Real pdf = uniform_cone_pdf(local, one_minus_cos_stable(ratio * ratio));
+        return {pdf > 0 ? s.radiance.g : Real(0), pdf};
+    }
+    if (c.lights.environment) return {c.lights.environment->radiance.g, cosine_hemisphere_pdf(wi)};
+    return {0, 0};
+}
+
+// A light sample from p = 0: the direction and its density (0 when it carries no light).
+struct Drawn {
+    Vec3 wi;
+    Real pdf;
+    Real radiance;
+};
+
+Drawn light_sample(const IrradianceCase& c, Vec2 u) {
+    std::optional<LightSample> s;
+    if (!c.lights.quads.empty())
+        s = sample_quad_light(c.lights.quads[0], kOrigin, u);
+    else if (!c.lights.spheres.empty())
+        s = sample_sphere_light(c.lights.spheres[0], kOrigin, u);
+    else if (c.lights.environment) {
+        const Vec3 wi = sample_cosine_hemisphere(u);
+        return {wi, cosine_hemisphere_pdf(wi), c.lights.environment->radiance.g};
+    }
+    if (!s) return {{0, 0, 1}, 0, 0};
+    return {s->wi, s->pdf, s->radiance.g};
+}
+
+// One sample's estimate of E with `strategy` from the points u and v of [0, 1)².
+double one_estimate(const IrradianceCase& c, SamplingStrategy strategy, Vec2 u, Vec2 v) {
+    switch (strategy) {
+        case SamplingStrategy::kUniform: {
+            const Vec3 wi = sample_uniform_hemisphere(u);
+            return double(arrival(c, wi).radiance * wi.z / kUniformHemispherePdf);
+        }
+        case SamplingStrategy::kCosine:
+        case SamplingStrategy::kBrdf: {
+            const Vec3 wi = sample_cosine_hemisphere(u);
+            const Real pdf = cosine_hemisphere_pdf(wi);
+            return pdf > 0 ? double(arrival(c, wi).radiance * wi.z / pdf) : 0.0;
+        }
+        case SamplingStrategy::kLight: {
+            const Drawn d = light_sample(c, u);
+            return d.pdf > 0 && d.wi.z > 0 ? double(d.radiance * d.wi.z / d.pdf) : 0.0;
+        }
+        case SamplingStrategy::kMis: {
+            double sum = 0;
+            const Drawn d = light_sample(c, u);
+            if (d.pdf > 0 && d.wi.z > 0) {
+                sum +=
+                    double(power_heuristic(d.pdf, cosine_hemisphere_pdf(d.wi)) * d.radiance * d.wi.z / d.pdf);
+            }
+            const Vec3 wi = sample_cosine_hemisphere(v);
+            const Real pdf = cosine_hemisphere_pdf(wi);
+            const Arrival a = arrival(c, wi);
+            if (pdf > 0 && a.radiance > 0) {
+                sum += double(power_heuristic(pdf, a.light_pdf) * a.radiance * wi.z / pdf);
+            }
+            return sum;
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+std::vector<IrradianceCase> irradiance_cases() {
+    std::vector<IrradianceCase> cases;
+    {
+        // A 1×1 square at height 1, its near edge over p's x = 0.2, facing down (u × v = −z).
+        IrradianceCase c{"quad", {}, 0};
+        const Vec3 origin{0.2f, -0.5f, 1}, u{0, 1, 0}, v{1, 0, 0};
+        c.lights.quads.push_back(make_quad_light(origin, u, v, Color(1)));
+        const std::vector<Vec3d> polygon{Vec3d(origin), Vec3d(origin + u), Vec3d(origin + u + v),
+                                         Vec3d(origin + v)};
+        c.exact = polygon_irradiance(polygon, Vec3d(0), Vec3d(0, 0, 1), 1.0);
+        cases.push_back(c);
+    }
+    {
+        IrradianceCase c{"sphere", {}, 0};
+        const Vec3 center{1, 0, 2};
+        c.lights.spheres.push_back({center, 0.5f, Color(1)});
+        const double d = glm::length(Vec3d(center));
+        c.exact = sphere_irradiance(1.0, 0.5, d, double(center.z) / d);
+        cases.push_back(c);
+    }
+    {
+        IrradianceCase c{"sky", {}, 0};
+        c.lights.environment = EnvironmentLight{Color(1)};
+        c.exact = sky_irradiance(1.0);
+        cases.push_back(c);
+    }
+    return cases;
+}
+
+IrradianceEstimate estimate_irradiance(const IrradianceCase& c, SamplingStrategy strategy, int samples,
+                                       std::uint64_t seed, bool stratified) {
+    Pcg32 rng(seed, 3);
+    const auto start = std::chrono::steady_clock::now();
+    double sum = 0, sum2 = 0;
+    const PixelSampler sampler = stratified ? PixelSampler::kStratified : PixelSampler::kUniform;
+    for (int j = 0; j < samples; ++j) {
+        // Chapter 01's pixel sampler in pixel (0, 0) spreads the points over the unit square.
+        const Vec2 u = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
+        const Vec2 v = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
+        const double x = one_estimate(c, strategy, u, v);
+        sum += x;
+        sum2 += x * x;
+    }
+    IrradianceEstimate e;
+    e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double n = double(samples);
+    e.mean = sum / n;
+    e.variance = samples > 1 ? std::max(0.0, (sum2 - sum * sum / n) / (n - 1)) : 0.0;
+    e.standard_error = std::sqrt(e.variance / n);
+    return e;
+}
+
+}  // namespace rt

@@ -1,0 +1,26 @@
+// The irradiance integral as the lesson's first experiment: for each case and strategy, the RMSE of the
+// N-sample estimate over many independent runs (seeds), against the exact E, for growing N — with
+// independent and with stratified points.
+#pragma once
+
+#include <vector>
+
+#include "irradiance_estimators.hpp"
+
+namespace rt {
+
+struct IrradianceStudyRow {
+    std::string case_name;
+    double exact;
+    SamplingStrategy strategy;
+    bool stratified;
+    int samples;        // N per estimate
+    double mean;        // of all runs' estimates
+    double rmse;        // of one run's estimate, against exact
+    double sigma;       // per-sample standard deviation (independent points: rmse ≈ σ / √N)
+    double efficiency;  // 1 / (rmse² × seconds per run)
+};
+
+std::vector<IrradianceStudyRow> irradiance_study(const std::vector<int>& sample_counts, int runs);
+
+}  // namespace rt

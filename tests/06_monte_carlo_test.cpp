@@ -1,0 +1,840 @@
+// Chapter 06: Monte Carlo with importance sampling. Every sampling routine against its pdf ([statistical]:
+// chi-square goodness of fit, about 10^6 samples each, fixed seeds), the pdfs themselves (integrate to 1,
+// returned = evaluated, positive at the ends of [0, 1)), the orthonormal basis and the MIS weights at their
+// hard cases ([stability]), the irradiance integral estimated each way against its closed forms, and the path
+// tracer: the white furnace, every strategy converging to the same image, ray counts and determinism.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "area_light_sampling.hpp"
+#include "brdf.hpp"
+#include "camera.hpp"
+#include "frame.hpp"
+#include "frisvad_frame.hpp"
+#include "irradiance_estimators.hpp"
+#include "light_picker.hpp"
+#include "mis.hpp"
+#include "path_tracer.hpp"
+#include "rt/assets.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
+#include "rt/random.hpp"
+#include "rt/scene_loader.hpp"
+#include "sampling.hpp"
+#include "sphere_light_sampling.hpp"
+#include "triangle.hpp"
+#include "warp_pdfs.hpp"
+
+using namespace rt;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------------------
+// The chi-square test
+
+// Every chi-square test of this file (warps 13, BRDF samplers 25): each is run at the Šidák-corrected level
+// α' = 1 − (1 − α)^(1/m), so that all of them pass together with probability 1 − α when the samplers are
+// right.
+constexpr int kChiSquareTests = 38;
+constexpr double kAlpha = 0.01;
+const double kAlphaPerTest = 1 - std::pow(1 - kAlpha, 1.0 / kChiSquareTests);
+constexpr int kSamples = 1000000;
+
+// The regularized upper incomplete gamma function Q(a, x) = Γ(a, x) / Γ(a): by its power series for x < a +
+// 1, by its continued fraction (modified Lentz) otherwise.
+double gamma_q(double a, double x) {
+    if (x <= 0) return 1;
+    const double log_prefactor = a * std::log(x) - x - std::lgamma(a);
+    if (x < a + 1) {
+        // P(a, x) = x^a e^-x / Γ(a) Σ_n x^n / (a (a+1) … (a+n)).
+        double term = 1 / a, sum = term;
+        for (int n = 1; n < 100000; ++n) {
+            term *= x / (a + n);
+            sum += term;
+            if (term < sum * 1e-15) break;
+        }
+        return 1 - sum * std::exp(log_prefactor);
+    }
+    // Q(a, x) = x^a e^-x / Γ(a) · 1 / (x + 1 − a − 1·(1 − a) / (x + 3 − a − 2·(2 − a) / (x + 5 − a − …))).
+    const double tiny = 1e-300;
+    double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
+    for (int i = 1; i < 100000; ++i) {
+        const double an = -i * (i - a);
+        b += 2;
+        d = an * d + b;
+        if (std::abs(d) < tiny) d = tiny;
+        c = b + an / c;
+        if (std::abs(c) < tiny) c = tiny;
+        d = 1 / d;
+        const double delta = d * c;
+        h *= delta;
+        if (std::abs(delta - 1) < 1e-15) break;
+    }
+    return std::exp(log_prefactor) * h;
+}
+
+// P(χ² >= statistic) for `dof` degrees of freedom.
+double chi_square_p_value(double statistic, int dof) {
+    return gamma_q(dof / 2.0, statistic / 2.0);
+}
+
+struct ChiSquare {
+    double statistic = 0;
+    int dof = 0;
+    double p_value = 1;
+    double expected_total = 0;  // Σ expected = N ∫ pdf: N when the pdf integrates to 1
+    double expected_upper = 0;  // the same over z > 0 only
+    long long bad_samples = 0;  // not finite, not unit length, or where the pdf is 0
+};
+
+// Counts in cells against expected counts. Cells are taken from the smallest expected count up and pooled
+// until the pool expects at least 5; each pool is one cell of the statistic, and a last pool still under 5
+// joins the one before it. Cells expecting nothing (where the pdf is 0) are pooled too: a sample that lands
+// where the pdf is 0 is caught on its own, as a bad sample.
+ChiSquare chi_square(const std::vector<double>& observed, const std::vector<double>& expected) {
+    std::vector<std::size_t> order(expected.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return expected[a] < expected[b]; });
+    ChiSquare r;
+    std::vector<std::pair<double, double>> cells;  // (observed, expected)
+    double pool_observed = 0, pool_expected = 0;
+    for (std::size_t i : order) {
+        r.expected_total += expected[i];
+        pool_observed += observed[i];
+        pool_expected += std::max(0.0, expected[i]);
+        if (pool_expected >= 5) {
+            cells.push_back({pool_observed, pool_expected});
+            pool_observed = pool_expected = 0;
+        }
+    }
+    if (!cells.empty()) {
+        cells.back().first += pool_observed;
+        cells.back().second += pool_expected;
+    }
+    for (const auto& [o, e] : cells) r.statistic += (o - e) * (o - e) / e;
+    r.dof = std::max(1, int(cells.size()) - 1);
+    r.p_value = chi_square_p_value(r.statistic, r.dof);
+    return r;
+}
+
+// Cells of the unit sphere in (z, φ): z = cos θ in nz equal steps over [−1, 1], φ in nphi steps over [0, 2π);
+// equal solid angle 4π / (nz nphi) each (dω = dz dφ).
+struct SphereGrid {
+    int nz = 48;
+    int nphi = 96;
+    int cells() const { return nz * nphi; }
+    int cell_of(const Vec3& w) const {
+        const double z = std::clamp(double(w.z), -1.0, 1.0);
+        double phi = std::atan2(double(w.y), double(w.x));
+        if (phi < 0) phi += 2 * std::numbers::pi;
+        const int i = std::min(nz - 1, int((z + 1) / 2 * nz));
+        const int j = std::min(nphi - 1, int(phi / (2 * std::numbers::pi) * nphi));
+        return i * nphi + j;
+    }
+};
+
+using DirectionPdf = std::function<double(const Vec3&)>;
+
+// ∫ pdf dz dφ over [z0, z1] × [p0, p1] by adaptive Simpson's rule: the 3×3-point rule on the rectangle
+// against the sum of it on the four quarters; where they differ by more than 15 tol (an edge of a light, the
+// rim of a cone), each quarter is refined in turn, up to `depth` halvings. Steps in the pdf (which Simpson's
+// rule alone gets wrong by a fraction of a cell) are thus narrowed to 2^-depth of the rectangle.
+double adaptive_simpson(const DirectionPdf& pdf, double z0, double z1, double p0, double p1, double tol,
+                        int depth) {
+    double f[5][5];
+    for (int a = 0; a < 5; ++a) {
+        const double z = z0 + (z1 - z0) * a / 4, r = std::sqrt(std::max(0.0, 1 - z * z));
+        for (int b = 0; b < 5; ++b) {
+            const double phi = p0 + (p1 - p0) * b / 4;
+            f[a][b] = pdf(Vec3(Real(r * std::cos(phi)), Real(r * std::sin(phi)), Real(z)));
+        }
+    }
+    constexpr double w[3] = {1, 4, 1};
+    auto rule = [&](int a0, int b0, int step, double area) {
+        double sum = 0;
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) sum += w[a] * w[b] * f[a0 + a * step][b0 + b * step];
+        return sum * area / 36;
+    };
+    const double area = (z1 - z0) * (p1 - p0);
+    const double whole = rule(0, 0, 2, area);
+    const double quarters =
+        rule(0, 0, 1, area / 4) + rule(2, 0, 1, area / 4) + rule(0, 2, 1, area / 4) + rule(2, 2, 1, area / 4);
+    const double allowed = 15 * std::max(tol, 1e-5 * std::abs(quarters));  // absolute, or relative to the part
+    if (depth == 0 || std::abs(quarters - whole) <= allowed) return quarters + (quarters - whole) / 15;
+    const double zm = (z0 + z1) / 2, pm = (p0 + p1) / 2;
+    return adaptive_simpson(pdf, z0, zm, p0, pm, tol / 4, depth - 1) +
+           adaptive_simpson(pdf, zm, z1, p0, pm, tol / 4, depth - 1) +
+           adaptive_simpson(pdf, z0, zm, pm, p1, tol / 4, depth - 1) +
+           adaptive_simpson(pdf, zm, z1, pm, p1, tol / 4, depth - 1);
+}
+
+// N ∫ pdf dω over each cell: each cell cut into 2 × 2 rectangles (so no feature hides between the points of
+// the first rule), each integrated adaptively.
+std::vector<double> expected_counts(const SphereGrid& grid, const DirectionPdf& pdf, double n) {
+    const double dz = 2.0 / grid.nz, dphi = 2 * std::numbers::pi / grid.nphi;
+    constexpr int kSplit = 2;
+    std::vector<double> expected(std::size_t(grid.cells()));
+    for (int i = 0; i < grid.nz; ++i) {
+        for (int j = 0; j < grid.nphi; ++j) {
+            double sum = 0;
+            for (int a = 0; a < kSplit; ++a) {
+                for (int b = 0; b < kSplit; ++b) {
+                    const double z0 = -1 + dz * (i + double(a) / kSplit),
+                                 p0 = dphi * (j + double(b) / kSplit);
+                    sum += adaptive_simpson(pdf, z0, z0 + dz / kSplit, p0, p0 + dphi / kSplit, 1e-9, 8);
+                }
+            }
+            expected[std::size_t(i * grid.nphi + j)] = n * sum;
+        }
+    }
+    return expected;
+}
+
+// What a sampler gives: a direction and the pdf it reports for it (for a bare warp, its pdf function's).
+struct Drawn {
+    Vec3 w;
+    double pdf;
+};
+using DirectionSampler = std::function<Drawn(Vec2)>;
+
+// Draws kSamples directions and tests them against the pdf. Samples that are not finite unit vectors, or
+// where the pdf is 0, are counted as bad (and must not exist).
+ChiSquare test_directions(const DirectionSampler& sampler, const DirectionPdf& pdf, std::uint64_t seed) {
+    const SphereGrid grid;
+    std::vector<double> observed(std::size_t(grid.cells()), 0);
+    Pcg32 rng(seed, 17);
+    long long bad = 0;
+    for (int s = 0; s < kSamples; ++s) {
+        const Vec3 w = sampler(rng.next_vec2()).w;
+        if (!is_finite(w) || std::abs(glm::length(w) - 1) > 1e-4f || !(pdf(w) > 0)) {
+            ++bad;
+            continue;
+        }
+        observed[std::size_t(grid.cell_of(w))] += 1;
+    }
+    const std::vector<double> expected = expected_counts(grid, pdf, kSamples);
+    ChiSquare r = chi_square(observed, expected);
+    r.bad_samples = bad;
+    for (int i = grid.nz / 2; i < grid.nz; ++i)
+        for (int j = 0; j < grid.nphi; ++j) r.expected_upper += expected[std::size_t(i * grid.nphi + j)];
+    return r;
+}
+
+// The sample passes at the corrected level, no sample is bad, and the pdf integrates to 1 within 1e-3.
+void require_fit(const ChiSquare& r) {
+    INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value << " (level "
+                       << kAlphaPerTest << "), expected total " << r.expected_total << ", bad samples "
+                       << r.bad_samples);
+    CHECK(r.bad_samples == 0);
+    CHECK(r.p_value > kAlphaPerTest);
+    CHECK(r.expected_total / kSamples == Approx(1).margin(1e-3));
+}
+
+// A unit direction at polar angle θ from +z, turned by φ about z.
+Vec3 polar(double theta, double phi = 0) {
+    return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                Real(std::cos(theta)));
+}
+
+const Vec3 kUp{0, 0, 1};
+
+// The five outgoing directions of the BRDF tests: 0°, 30°, 60°, 80° and 89° from the normal.
+std::vector<Vec3> five_outgoing() {
+    std::vector<Vec3> wo;
+    for (double degrees : {0.0, 30.0, 60.0, 80.0, 89.0})
+        wo.push_back(polar(degrees * std::numbers::pi / 180, 0.4));
+    return wo;
+}
+
+// The BRDFs whose samplers are tested: Lambert, and the two lobes at roughness 0.2 and 0.5 (e = 48 and 6).
+std::vector<std::pair<std::string, Brdf>> sampled_brdfs() {
+    return {{"lambert", LambertBrdf{Color(0.7f)}},
+            {"glossy 0.2", GlossyBrdf{Color(0.7f), phong_exponent(0.2f)}},
+            {"glossy 0.5", GlossyBrdf{Color(0.7f), phong_exponent(0.5f)}},
+            {"retro 0.2", RetroreflectiveBrdf{Color(0.7f), phong_exponent(0.2f)}},
+            {"retro 0.5", RetroreflectiveBrdf{Color(0.7f), phong_exponent(0.5f)}}};
+}
+
+// The solid-angle density with which sample_triangle_light picks wi from p: d² / (cos θ_l A) where the ray
+// meets the triangle's plane inside its edges, else 0. Computed in double, with the edges widened by 1e-6, so
+// that a sample on an edge (u = 0 gives one) is not lost to the rounding of its own point.
+double triangle_light_pdf(const TriangleLight& light, const Vec3& p, const Vec3& wi) {
+    const Vec3d n(light.normal), d(wi), o(p), a(light.p0), b(light.p1), c(light.p2);
+    const double cos_light = -glm::dot(n, d);
+    if (!(cos_light > 0)) return 0;
+    const double t = glm::dot(n, a - o) / glm::dot(n, d);
+    if (!(t > 0)) return 0;
+    const Vec3d x = o + t * d;
+    const Vec3d normal = glm::cross(b - a, c - a);
+    const double inverse = 1 / glm::dot(normal, normal);
+    const double b1 = glm::dot(glm::cross(x - a, c - a), normal) * inverse;
+    const double b2 = glm::dot(glm::cross(b - a, x - a), normal) * inverse;
+    if (b1 < -1e-6 || b2 < -1e-6 || b1 + b2 > 1 + 1e-6) return 0;
+    return t * t / (cos_light * double(light.area));
+}
+
+// The warps under test: name, sampler (with the pdf it reports), pdf (each in its local frame).
+struct Warp {
+    std::string name;
+    DirectionSampler sample;
+    DirectionPdf pdf;
+};
+
+// A bare warp reports the pdf its pdf function gives.
+Warp bare(std::string name, std::function<Vec3(Vec2)> warp, DirectionPdf pdf) {
+    return {std::move(name),
+            [=](Vec2 u) {
+                const Vec3 w = warp(u);
+                return Drawn{w, pdf(w)};
+            },
+            pdf};
+}
+
+// A light sampler reports its LightSample's pdf (0 and no direction when it gives none).
+Drawn drawn(const std::optional<LightSample>& s) {
+    return s ? Drawn{s->wi, double(s->pdf)} : Drawn{Vec3(0), 0.0};
+}
+
+std::vector<Warp> warps() {
+    std::vector<Warp> w;
+    w.push_back(bare("uniform hemisphere", sample_uniform_hemisphere,
+                     [](const Vec3& d) { return double(uniform_hemisphere_pdf(d)); }));
+    w.push_back(bare("cosine hemisphere", sample_cosine_hemisphere,
+                     [](const Vec3& d) { return double(cosine_hemisphere_pdf(d)); }));
+    w.push_back(
+        bare("uniform sphere", sample_uniform_sphere, [](const Vec3&) { return double(kUniformSpherePdf); }));
+    for (double degrees : {20.0, 60.0, 150.0}) {
+        const Real one_minus_cos = Real(1 - std::cos(degrees * std::numbers::pi / 180));
+        w.push_back(bare(
+            "cone " + std::to_string(int(degrees)) + " degrees",
+            [=](Vec2 u) { return sample_uniform_cone(u, one_minus_cos); },
+            [=](const Vec3& d) { return double(uniform_cone_pdf(d, one_minus_cos)); }));
+    }
+    for (Real e : {0.0f, 6.0f, 48.0f}) {
+        w.push_back(bare(
+            "power cosine e = " + std::to_string(int(e)), [=](Vec2 u) { return sample_power_cosine(u, e); },
+            [=](const Vec3& d) { return double(power_cosine_pdf(d, e)); }));
+    }
+    // Points on a quad and a triangle light, seen as directions from a point close under them (so they fill
+    // a large solid angle), and a sphere light by its cone.
+    const QuadLight quad = make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1));
+    w.push_back({"quad light directions", [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u)); },
+                 [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d)); }});
+    const TriangleLight triangle =
+        make_triangle_light({-1, -1, 0.7f}, {0.5f, 1.5f, 0.3f}, {1.5f, -1, 0.4f}, Color(1));
+    w.push_back({"triangle light directions",
+                 [=](Vec2 u) { return drawn(sample_triangle_light(triangle, Vec3(0), u)); },
+                 [=](const Vec3& d) { return triangle_light_pdf(triangle, Vec3(0), d); }});
+    const SphereLight sphere{{0.3f, 0.4f, 1.2f}, 0.6f, Color(1)};
+    w.push_back({"sphere light directions",
+                 [=](Vec2 u) { return drawn(sample_sphere_light(sphere, Vec3(0), u)); },
+                 [=](const Vec3& d) {
+                     // Uniform in the cone: sphere_light_pdf inside it, 0 outside.
+                     const Vec3 axis = glm::normalize(sphere.center);
+                     const Real ratio = sphere.radius / glm::length(sphere.center);
+                     const Real cone = one_minus_cos_stable(ratio * ratio);
+                     return uniform_cone_pdf(make_frame(axis).to_local(d), cone) > 0
+                                ? double(sphere_light_pdf(sphere, Vec3(0)))
+                                : 0.0;
+                 }});
+    return w;
+}
+
+Vec3 random_unit(Pcg32& rng) {
+    return sample_uniform_sphere(rng.next_vec2());
+}
+
+// A scene for the furnace: a diffuse sphere of the given albedo under a uniform environment of radiance 1.
+Scene furnace_scene(Real albedo) {
+    Scene scene;
+    scene.file = "furnace";
+    scene.camera = CameraDesc{{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40};
+    Material m;
+    m.name = "diffuse";
+    m.albedo = Color(albedo);
+    scene.materials.push_back(m);
+    scene.shapes.push_back(Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"});
+    scene.environment = EnvironmentLight{Color(1)};
+    return scene;
+}
+
+RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int size, int spp,
+                          std::uint64_t seed, int threads = 1) {
+    const World world(scene);
+    PathOptions options;
+    options.strategy = strategy;
+    const PathTracer tracer(world, scene, collect_lights(scene), options);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
+    const RenderSettings settings{size, size, spp, seed, threads, ProgressStyle::kNone};
+    return render_paths(tracer, camera, settings);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------
+// The chi-square test itself
+
+TEST_CASE("The chi-square p-value matches known quantiles, and the test rejects a wrong pdf",
+          "[statistical]") {
+    // χ² quantiles: P(χ²₁ >= 6.635) = 0.01, P(χ²₁₀ >= 23.209) = 0.01, P(χ²₁₀₀ >= 124.342) = 0.05.
+    CHECK(chi_square_p_value(6.635, 1) == Approx(0.01).epsilon(1e-3));
+    CHECK(chi_square_p_value(23.209, 10) == Approx(0.01).epsilon(1e-3));
+    CHECK(chi_square_p_value(124.342, 100) == Approx(0.05).epsilon(1e-3));
+    CHECK(chi_square_p_value(2.0, 2) == Approx(std::exp(-1.0)).epsilon(1e-9));
+    // Uniform hemisphere directions against the cosine pdf: rejected outright.
+    const ChiSquare wrong = test_directions(
+        [](Vec2 u) {
+            return Drawn{sample_uniform_hemisphere(u), 0};
+        },
+        [](const Vec3& d) { return double(cosine_hemisphere_pdf(d)); }, 1);
+    CHECK(wrong.p_value < 1e-12);
+    // A pdf that is 0 where samples land counts them as bad.
+    const ChiSquare zero = test_directions(
+        [](Vec2 u) {
+            return Drawn{sample_uniform_sphere(u), 0};
+        },
+        [](const Vec3& d) { return double(cosine_hemisphere_pdf(d)); }, 2);
+    CHECK(zero.bad_samples > kSamples / 3);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Sampling routines against their pdfs
+
+TEST_CASE("Every warp passes the chi-square test against its pdf, which integrates to 1",
+          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+    std::uint64_t seed = 100;
+    for (const Warp& w : warps()) {
+        INFO(w.name);
+        require_fit(test_directions(w.sample, w.pdf, ++seed));
+    }
+}
+
+TEST_CASE(
+    "Every BRDF sampler passes the chi-square test for 5 outgoing directions up to 89 degrees, its pdf "
+    "integrates to 1, to at most 1 above the surface",
+    "[statistical]") {
+    std::uint64_t seed = 200;
+    for (const auto& [name, brdf] : sampled_brdfs()) {
+        for (const Vec3& wo : five_outgoing()) {
+            INFO(name << ", wo.z = " << wo.z);
+            const Brdf& b = brdf;
+            // The lobes are sampled whole: a direction below the surface carries f = 0 (the light the lobe
+            // loses), so over the sphere the pdf integrates to 1 and over the upper hemisphere to at most 1.
+            const ChiSquare r = test_directions(
+                [&](Vec2 u) {
+                    const BrdfSample s = sample(b, wo, kUp, u);
+                    return Drawn{s.wi, double(s.pdf)};
+                },
+                [&](const Vec3& wi) { return double(pdf(b, wo, wi, kUp)); }, ++seed);
+            require_fit(r);
+            CHECK(r.expected_upper / kSamples <= 1 + 1e-3);
+        }
+    }
+}
+
+TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square test", "[statistical]") {
+    // Cells of a 40×40 grid over the unit square of (b1, b2); the density is 2 on the triangle b1 + b2 <= 1.
+    constexpr int kSide = 40, kSub = 32;
+    std::vector<double> observed(kSide * kSide, 0), expected(kSide * kSide, 0);
+    Pcg32 rng(300, 1);
+    long long bad = 0;
+    for (int s = 0; s < kSamples; ++s) {
+        const Vec2 b = sample_uniform_triangle(rng.next_vec2());
+        if (!(b.x >= 0 && b.y >= 0 && b.x + b.y <= 1 + 1e-6f)) {
+            ++bad;
+            continue;
+        }
+        const int i = std::min(kSide - 1, int(b.x * kSide)), j = std::min(kSide - 1, int(b.y * kSide));
+        observed[std::size_t(i * kSide + j)] += 1;
+    }
+    for (int i = 0; i < kSide; ++i) {
+        for (int j = 0; j < kSide; ++j) {
+            int inside =
+                0;  // the fraction of the cell under the diagonal, by kSub × kSub midpoints (exact off it)
+            for (int a = 0; a < kSub; ++a)
+                for (int c = 0; c < kSub; ++c)
+                    inside += (i + (a + 0.5) / kSub) / kSide + (j + (c + 0.5) / kSub) / kSide <= 1 ? 1 : 0;
+            expected[std::size_t(i * kSide + j)] = kSamples * 2.0 * inside / (kSub * kSub) / (kSide * kSide);
+        }
+    }
+    ChiSquare r = chi_square(observed, expected);
+    INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value);
+    CHECK(bad == 0);
+    CHECK(r.p_value > kAlphaPerTest);
+    // The points themselves: sample_triangle_point lies in the triangle's plane, inside its edges.
+    const Vec3 p0{1, 2, 3}, p1{4, 2, 3}, p2{1, 6, 5};
+    for (int s = 0; s < 1000; ++s) {
+        const Vec3 x = sample_triangle_point(p0, p1, p2, rng.next_vec2());
+        CHECK(std::abs(glm::dot(x - p0, glm::normalize(glm::cross(p1 - p0, p2 - p0)))) < 1e-5f);
+    }
+    const Vec3 q = sample_quad_point({1, 1, 1}, {2, 0, 0}, {0, 3, 0}, Vec2(0.5f, 0.25f));
+    CHECK(q == Vec3(2, 1.75f, 1));
+}
+
+TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direction",
+          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+    Pcg32 rng(400, 1);
+    for (const auto& [name, brdf] : sampled_brdfs()) {
+        for (const Vec3& wo : five_outgoing()) {
+            INFO(name << ", wo.z = " << wo.z);
+            for (int s = 0; s < 2000; ++s) {
+                const BrdfSample bs = sample(brdf, wo, kUp, rng.next_vec2());
+                REQUIRE(bs.pdf == Approx(pdf(brdf, wo, bs.wi, kUp)).epsilon(1e-5));
+                REQUIRE(bs.f == eval(brdf, wo, bs.wi, kUp));
+            }
+        }
+    }
+    // Light samples: quad, sphere, and the picker's pdf through a real hit on the Cornell box's lamp.
+    const QuadLight quad = make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1));
+    const SphereLight sphere{{0.3f, 0.4f, 1.2f}, 0.6f, Color(1)};
+    for (int s = 0; s < 2000; ++s) {
+        const auto q = sample_quad_light(quad, Vec3(0), rng.next_vec2());
+        REQUIRE(q);
+        CHECK(q->pdf == Approx(quad_light_pdf(quad, Vec3(0), q->wi)).epsilon(1e-3));
+        const auto c = sample_sphere_light(sphere, Vec3(0), rng.next_vec2());
+        REQUIRE(c);
+        CHECK(c->pdf == Approx(sphere_light_pdf(sphere, Vec3(0))).epsilon(1e-6));
+    }
+    const Scene cornell = load_scene(scene_path("ch06_default.json"));
+    const World world(cornell);
+    const LightPicker picker(collect_lights(cornell));
+    REQUIRE_FALSE(picker.empty());
+    const Vec3 p{450, 10, 150};  // on the floor, in front of the box, beside the sphere
+    int checked = 0;
+    for (int s = 0; s < 2000; ++s) {
+        const auto ls = picker.sample(p, rng.next_real(), rng.next_vec2());
+        REQUIRE(ls);
+        const auto hit = world.intersect(Ray{p, ls->wi});
+        REQUIRE(hit);
+        const Material& m = cornell.materials[std::size_t(hit->material)];
+        if (!m.emissive()) continue;  // blocked by the box
+        CHECK(picker.pdf(p, ls->wi, *hit, m.emission) == Approx(ls->pdf).epsilon(1e-3));
+        ++checked;
+    }
+    CHECK(checked > 1000);
+}
+
+TEST_CASE("Lambert: f cos / pdf equals the albedo for every sample", "[statistical]") {
+    const Color albedo{0.2f, 0.5f, 0.9f};
+    const Brdf lambert = LambertBrdf{albedo};
+    Pcg32 rng(500, 1);
+    for (int s = 0; s < 100000; ++s) {
+        const Vec3 n = random_unit(rng);
+        Vec3 wo = random_unit(rng);
+        if (glm::dot(wo, n) < 0) wo = -wo;
+        const BrdfSample bs = sample(lambert, wo, n, rng.next_vec2());
+        const Real cos_i = glm::dot(bs.wi, n);
+        if (!(cos_i > 0)) continue;  // a direction rounded onto the horizon carries nothing
+        const Color weight = bs.f * cos_i / bs.pdf;
+        REQUIRE(weight.r == Approx(albedo.r).epsilon(1e-5));
+        REQUIRE(weight.g == Approx(albedo.g).epsilon(1e-5));
+        REQUIRE(weight.b == Approx(albedo.b).epsilon(1e-5));
+    }
+}
+
+TEST_CASE(
+    "Random numbers 0, 0.5 and the largest float below 1 give finite unit directions and a positive pdf",
+    "[stability][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+    const Real ends[] = {0, 0.5f, kOneMinusEpsilon};
+    for (const Warp& w : warps()) {
+        for (Real a : ends) {
+            for (Real b : ends) {
+                INFO(w.name << " at u = (" << a << ", " << b << ")");
+                const Drawn d = w.sample(Vec2(a, b));
+                CHECK(is_finite(d.w));
+                CHECK(glm::length(d.w) == Approx(1).epsilon(1e-5));
+                CHECK(d.pdf > 0);
+                CHECK(std::isfinite(d.pdf));
+                CHECK(w.pdf(d.w) > 0);
+            }
+        }
+    }
+    for (const auto& [name, brdf] : sampled_brdfs()) {
+        for (const Vec3& wo : five_outgoing()) {
+            for (Real a : ends) {
+                for (Real b : ends) {
+                    INFO(name << ", wo.z = " << wo.z << " at u = (" << a << ", " << b << ")");
+                    const BrdfSample s = sample(brdf, wo, kUp, Vec2(a, b));
+                    CHECK(is_finite(s.wi));
+                    CHECK(glm::length(s.wi) == Approx(1).epsilon(1e-5));
+                    CHECK(s.pdf > 0);
+                    CHECK(std::isfinite(s.pdf));
+                }
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The orthonormal basis
+
+namespace {
+
+// The largest departure from orthonormality: | |t|² − 1 |, | |b|² − 1 |, |t·b|, |t·n|, |b·n| (in double).
+double frame_error(const Frame& f) {
+    const Vec3d t(f.t), b(f.b), n(f.n);
+    return std::max({std::abs(glm::dot(t, t) - 1), std::abs(glm::dot(b, b) - 1), std::abs(glm::dot(t, b)),
+                     std::abs(glm::dot(t, n)), std::abs(glm::dot(b, n))});
+}
+
+// The float normal at z = cos θ and azimuth φ, from double.
+Vec3 normal_at(double z, double phi) {
+    const double r = std::sqrt(std::max(0.0, 1 - z * z));
+    return Vec3(Real(r * std::cos(phi)), Real(r * std::sin(phi)), Real(z));
+}
+
+}  // namespace
+
+TEST_CASE("The orthonormal basis is orthonormal to 1e-6 for the axes, random normals and z near -1",
+          "[stability]") {
+    for (const Vec3& n :
+         {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}}) {
+        INFO(n.x << " " << n.y << " " << n.z);
+        const Frame f = make_frame(n);
+        CHECK(frame_error(f) <= 1e-6);
+        CHECK(glm::dot(glm::cross(f.t, f.b), f.n) > 0.999f);  // right-handed
+    }
+    Pcg32 rng(600, 1);
+    double worst = 0;
+    for (int i = 0; i < 1000000; ++i) worst = std::max(worst, frame_error(make_frame(random_unit(rng))));
+    CHECK(worst <= 1e-6);
+    // z = −1 + k 2^-24 for k = 0 … 4095: every float from −1 up to −0.99976, each at 16 azimuths.
+    constexpr int kSteps = 4096;
+    double worst_duff = 0, worst_frisvad = 0;
+    for (int k = 0; k < kSteps; ++k) {
+        const double z = -1 + std::ldexp(double(k), -24);
+        for (int a = 0; a < 16; ++a) {
+            const Vec3 n = normal_at(z, 0.1 + a * std::numbers::pi / 8);
+            worst_duff = std::max(worst_duff, frame_error(make_frame(n)));
+            worst_frisvad = std::max(worst_frisvad, frame_error(make_frame_frisvad(n)));
+        }
+    }
+    INFO("worst error: Duff et al. " << worst_duff << ", Frisvad " << worst_frisvad);
+    CHECK(worst_duff <= 1e-6);
+    // The naive basis (Frisvad 2012) is not: more than 100 times the 1e-6 asked, as 1 + n_z has lost its
+    // digits.
+    CHECK(worst_frisvad > 1e-4);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// MIS weights
+
+TEST_CASE("MIS weights sum to 1 and stay finite when a pdf is 0, tiny, huge or infinite", "[stability]") {
+    const Real inf = kInfinity;
+    const std::vector<Real> pdfs{
+        0, 1e-30f, 1e-20f, 0.5f, 1, 3, 1e20f, 1e30f, std::numeric_limits<Real>::max(), inf};
+    for (Real a : pdfs) {
+        for (Real b : pdfs) {
+            INFO("p_a = " << a << ", p_b = " << b);
+            for (int beta : {1, 2}) {
+                const Real wa = mis_weight(1, a, 1, b, beta), wb = mis_weight(1, b, 1, a, beta);
+                CHECK(std::isfinite(wa));
+                CHECK(wa >= 0);
+                CHECK(wa <= 1);
+                CHECK(wa + wb == Approx(1).margin(1e-6));
+            }
+        }
+    }
+    CHECK(power_heuristic(inf, 1) == 1);
+    CHECK(power_heuristic(0, 1) == 0);
+    CHECK(power_heuristic(1, 0) == 1);
+    CHECK(power_heuristic(3, 1) == Approx(0.9));
+    CHECK(balance_heuristic(3, 1) == Approx(0.75));
+    // Sample counts: n_a p_a against n_b p_b.
+    CHECK(mis_weight(4, 1, 1, 2, 2) == Approx(0.8));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The irradiance integral each way
+
+TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the sky without bias",
+          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle][ex:ch04.lambert_polygon]") {
+    for (const IrradianceCase& c : irradiance_cases()) {
+        for (SamplingStrategy s : kAllStrategies) {
+            for (bool stratified : {false, true}) {
+                const IrradianceEstimate e = estimate_irradiance(c, s, 100000, 7, stratified);
+                INFO(c.name << ", " << to_string(s) << (stratified ? ", stratified" : "") << ": " << e.mean
+                            << " +- " << e.standard_error << ", exact " << c.exact);
+                CHECK(std::abs(e.mean - c.exact) <= 4 * e.standard_error + 1e-6 * c.exact);
+            }
+        }
+    }
+    // Importance sampling removes variance: for the sky, cosine sampling is exact (σ = 0); for the small
+    // lights, light sampling and MIS beat uniform directions by far.
+    const auto cases = irradiance_cases();
+    CHECK(estimate_irradiance(cases[2], SamplingStrategy::kCosine, 1000, 1).variance < 1e-10);
+    for (int i : {0, 1}) {
+        const double uniform =
+            estimate_irradiance(cases[std::size_t(i)], SamplingStrategy::kUniform, 100000, 1).variance;
+        CHECK(estimate_irradiance(cases[std::size_t(i)], SamplingStrategy::kLight, 100000, 1).variance <
+              uniform / 4);
+        CHECK(estimate_irradiance(cases[std::size_t(i)], SamplingStrategy::kMis, 100000, 1).variance <
+              uniform / 4);
+    }
+}
+
+TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
+          "[statistical][ex:ch04.sample_quad_light]") {
+    const IrradianceCase quad = irradiance_cases()[0];
+    auto rmse = [&](int n, bool stratified) {
+        double sum2 = 0;
+        constexpr int kRuns = 200;
+        for (int r = 0; r < kRuns; ++r) {
+            const double e =
+                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, stratified).mean -
+                quad.exact;
+            sum2 += e * e;
+        }
+        return std::sqrt(sum2 / kRuns);
+    };
+    const double r64 = rmse(64, false), r1024 = rmse(1024, false);
+    // 16× the samples: 4× less error (within the spread of 200 runs).
+    CHECK(r64 / r1024 > 3.3);
+    CHECK(r64 / r1024 < 4.8);
+    // Stratified: less error for the same N.
+    CHECK(rmse(1024, true) < r1024 / 2);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The path tracer
+
+TEST_CASE(
+    "White furnace: a diffuse sphere under uniform light 1 is exactly its albedo times 1 with cosine "
+    "sampling",
+    "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    for (Real albedo : {1.0f, 0.5f}) {
+        const Scene scene = furnace_scene(albedo);
+        const RenderResult cosine = render_scene(scene, SamplingStrategy::kCosine, 32, 4, 1);
+        const RenderResult mis = render_scene(scene, SamplingStrategy::kMis, 32, 4, 1);
+        // Pixels on the sphere see ρ·1 (one bounce, every ray escapes a convex sphere), the others see 1.
+        const PinholeCamera camera = make_pinhole_camera(scene.camera, 32, 32);
+        double worst = 0, sphere_pixels = 0, mis_sum = 0, cosine_sum = 0;
+        for (int y = 0; y < 32; ++y) {
+            for (int x = 0; x < 32; ++x) {
+                // Pixels wholly on the sphere: its four corners hit it.
+                bool inside = true;
+                for (Real dx : {0.0f, 1.0f})
+                    for (Real dy : {0.0f, 1.0f}) {
+                        const Ray r = camera_ray(camera, Real(x) + dx, Real(y) + dy);
+                        const Real b = glm::dot(r.origin, r.direction);
+                        inside = inside && (b * b - (glm::dot(r.origin, r.origin) - 1) > 0);
+                    }
+                if (!inside) continue;
+                ++sphere_pixels;
+                const Color c = cosine.image.at(x, y), m = mis.image.at(x, y);
+                worst = std::max({worst, std::abs(double(c.r) - albedo), std::abs(double(c.g) - albedo),
+                                  std::abs(double(c.b) - albedo)});
+                cosine_sum += double(c.g);
+                mis_sum += double(m.g);
+            }
+        }
+        INFO("albedo " << albedo << ": worst pixel off by " << worst << " over " << sphere_pixels
+                       << " pixels");
+        REQUIRE(sphere_pixels > 200);
+        CHECK(worst <= 1e-5);  // zero variance: float rounding only
+        CHECK(mis_sum / sphere_pixels == Approx(albedo).epsilon(1e-5));
+        CHECK(cosine.rays[RayKind::kShadow] == 0);
+    }
+}
+
+TEST_CASE("Every strategy converges to the same image on the chapter's scene",
+          "[render][statistical][ex:ch06.path_tracer][ex:ch05.termination][ex:ch04.sample_quad_light]") {
+    const Scene scene = load_scene(scene_path("ch06_default.json"));
+    // The image cut into 2×2 blocks; each block's mean over kRuns independent renders, with its standard
+    // error.
+    constexpr int kSize = 16, kSpp = 16, kRuns = 8;
+    struct Blocks {
+        double mean[4] = {0, 0, 0, 0};
+        double error[4] = {0, 0, 0, 0};
+    };
+    auto blocks_of = [&](SamplingStrategy s) {
+        double sum[4] = {0, 0, 0, 0}, sum2[4] = {0, 0, 0, 0};
+        for (int r = 0; r < kRuns; ++r) {
+            const RenderResult result = render_scene(scene, s, kSize, kSpp, 50 + std::uint64_t(r), 2);
+            REQUIRE(result.image.all_finite());
+            double block[4] = {0, 0, 0, 0};
+            for (int y = 0; y < kSize; ++y)
+                for (int x = 0; x < kSize; ++x) {
+                    const Color& c = result.image.at(x, y);
+                    block[(y * 2 / kSize) * 2 + x * 2 / kSize] +=
+                        double(c.r + c.g + c.b) / (3.0 * kSize * kSize / 4);
+                }
+            for (int b = 0; b < 4; ++b) sum[b] += block[b], sum2[b] += block[b] * block[b];
+        }
+        Blocks out;
+        for (int b = 0; b < 4; ++b) {
+            out.mean[b] = sum[b] / kRuns;
+            out.error[b] =
+                std::sqrt(std::max(0.0, sum2[b] / kRuns - out.mean[b] * out.mean[b]) / (kRuns - 1));
+        }
+        return out;
+    };
+    const Blocks reference = blocks_of(SamplingStrategy::kMis);
+    for (SamplingStrategy s : {SamplingStrategy::kUniform, SamplingStrategy::kCosine, SamplingStrategy::kBrdf,
+                               SamplingStrategy::kLight}) {
+        const Blocks other = blocks_of(s);
+        for (int b = 0; b < 4; ++b) {
+            const double sigma =
+                std::sqrt(reference.error[b] * reference.error[b] + other.error[b] * other.error[b]);
+            INFO(to_string(s) << " block " << b << ": " << other.mean[b] << " +- " << other.error[b]
+                              << ", mis " << reference.mean[b] << " +- " << reference.error[b]);
+            CHECK(std::abs(other.mean[b] - reference.mean[b]) <= 4.5 * sigma);
+            CHECK(other.error[b] > 0);
+        }
+    }
+}
+
+TEST_CASE("MIS has far less error than uniform or cosine sampling for the same samples",
+          "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    const Scene scene = load_scene(scene_path("ch06_default.json"));
+    const RenderResult reference = render_scene(scene, SamplingStrategy::kMis, 24, 256, 99, 2);
+    // The relative MSE of error_metrics.hpp: the lamp's own edge, seen directly, does not swamp the rest.
+    auto error = [&](SamplingStrategy s) {
+        return compare(render_scene(scene, s, 24, 8, 3, 2).image, reference.image).relative_mse;
+    };
+    const double uniform = error(SamplingStrategy::kUniform), cosine = error(SamplingStrategy::kCosine),
+                 mis = error(SamplingStrategy::kMis);
+    INFO("relative MSE at 8 spp: uniform " << uniform << ", cosine " << cosine << ", mis " << mis);
+    // Without light sampling a pixel's light comes from the rare paths that hit the small lamp: a few huge
+    // samples. With it, every vertex sees the lamp.
+    CHECK(mis < cosine / 10);
+    CHECK(mis < uniform / 10);
+}
+
+TEST_CASE(
+    "Ray counts: shadow rays only with light sampling, none without lights, the same image on 1 and 2 "
+    "threads",
+    "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    const Scene scene = load_scene(scene_path("ch06_default.json"));
+    const RenderResult one = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 1);
+    const RenderResult two = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 2);
+    CHECK(one.image.pixels() == two.image.pixels());
+    CHECK(one.image.all_finite());
+    CHECK(one.image.mean() > 0.05);
+    CHECK(one.image.mean() < 0.5);
+    CHECK(one.rays[RayKind::kCamera] == 24u * 24u * 4u);
+    CHECK(one.rays[RayKind::kShadow] > 0);
+    CHECK(one.rays[RayKind::kIndirect] > 0);
+    CHECK(one.rays[RayKind::kRefraction] == 0);
+    for (SamplingStrategy s :
+         {SamplingStrategy::kUniform, SamplingStrategy::kCosine, SamplingStrategy::kBrdf}) {
+        CHECK(render_scene(scene, s, 8, 2, 5).rays[RayKind::kShadow] == 0);
+    }
+    Scene dark = scene;
+    for (Material& m : dark.materials) m.emission = Color(0);
+    const RenderResult black = render_scene(dark, SamplingStrategy::kMis, 8, 2, 5);
+    CHECK(black.rays[RayKind::kShadow] == 0);
+    CHECK(black.image.mean() == 0);
+}
+
+TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
+    for (SamplingStrategy s : kAllStrategies) CHECK(sampling_strategy_from_string(to_string(s)) == s);
+    CHECK_THROWS_AS(sampling_strategy_from_string("importance"), InputError);
+}
