@@ -257,7 +257,7 @@ Estimate brute_irradiance(const Vec3& p, double radiance, const std::function<bo
 }  // namespace
 
 TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by the horizon",
-          "[irradiance][statistical][ex:ch04.lambert_polygon]") {
+          "[irradiance][statistical][ex:ch02.quad][ex:ch02.triangle_watertight][ex:ch04.lambert_polygon]") {
     const Vec3 p{0.1f, -0.2f, 0};
     struct Case {
         const char* name;
@@ -294,7 +294,7 @@ TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by 
 }
 
 TEST_CASE("A sphere light fully above the horizon gives pi L (r/d)^2 cos theta",
-          "[irradiance][statistical]") {
+          "[irradiance][statistical][ex:ch02.sphere_stable]") {
     const Vec3 p{0, 0, 0};
     for (const double theta : {0.0, 0.6}) {
         INFO("centre at θ = " << theta);
@@ -364,7 +364,7 @@ TEST_CASE("Quad light samples lie on the light, with the pdf of their direction"
 
 TEST_CASE(
     "Light sampling estimates the exact irradiance of a quad, a triangle and a sphere",
-    "[lights][statistical][ex:ch04.sample_quad_light][ex:ch04.lambert_polygon][ex:ch04.cone_solid_angle]") {
+    "[lights][statistical][ex:ch04.cone_solid_angle][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     const Vec3 p{0.2f, 0, 0.1f};
     const Vec3 n{0, 1, 0};
     auto light_estimate = [&](auto sample_one, std::uint64_t seed) {
@@ -443,7 +443,7 @@ TEST_CASE("The cone pdf of a sphere of radius 1 at distance 1e4 is finite where 
 }
 
 TEST_CASE("Edge-on, touching and grazing cases give no sample or a finite one, never NaN",
-          "[lights][stability]") {
+          "[lights][stability][ex:ch04.cone_solid_angle][ex:ch04.sample_quad_light]") {
     const QuadLight quad = make_quad_light({0, 1, 0}, {0, 0, 1}, {1, 0, 0}, Color(1));  // faces −y
     Pcg32 rng(66, 0);
     // In the light's own plane (edge-on) and at its corner: nothing to sample.
@@ -506,7 +506,9 @@ RenderResult render_scene(const Scene& scene, DirectOptions options, int size = 
 
 }  // namespace
 
-TEST_CASE("No light in the scene: zero shadow rays, and a black image", "[direct][ex:ch04.direct_light]") {
+TEST_CASE("No light in the scene: zero shadow rays, and a black image",
+          "[direct][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02."
+          "slab_test][ex:ch02.sphere_stable][ex:ch04.direct_light]") {
     FloorScene f;
     f.scene.shapes.push_back(shape(SphereShape{{0, 0.5f, 0}, 0.5f}, 0));
     const RenderResult r = render_scene(f.scene, {});
@@ -516,7 +518,8 @@ TEST_CASE("No light in the scene: zero shadow rays, and a black image", "[direct
 }
 
 TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
-          "[direct][ex:ch04.direct_light]") {
+          "[direct][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch03."
+          "robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0, 2, 0}, Color(10)});
     Material chrome;
@@ -533,7 +536,8 @@ TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
 }
 
 TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L, with shadows",
-          "[direct][ex:ch04.direct_light]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_"
+          "test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
     const World world(f.scene);
@@ -564,7 +568,9 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
 }
 
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
-          "[direct][ex:ch04.direct_light][ex:ch04.sample_quad_light][ex:ch04.lambert_polygon]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_"
+          "test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light][ex:ch04.lambert_polygon]["
+          "ex:ch04.sample_quad_light]") {
     FloorScene f;
     const int lamp = f.add_material(diffuse(Color(0), Color(10)));
     f.scene.shapes.push_back(shape(QuadShape{{-0.5f, 2, -0.5f}, {1, 0, 0}, {0, 0, 1}}, lamp));  // u × v = −y
@@ -592,7 +598,9 @@ TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra
 }
 
 TEST_CASE("The analytic scene converges to its exact image without bias",
-          "[direct][statistical][ex:ch04.direct_light][ex:ch04.sample_quad_light][ex:ch04.lambert_polygon]") {
+          "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02."
+          "plane][ex:ch02.quad][ex:ch02.slab_test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_"
+          "light][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     Scene scene = load_scene(scene_path("ch04_analytic.json"));
     const auto analytic = find_plane_under_quad(scene);
     REQUIRE(analytic);
@@ -625,7 +633,9 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch04.direct_light][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02."
+          "slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_"
+          "angle][ex:ch04.direct_light][ex:ch04.sample_quad_light]") {
     const Scene scene = load_scene(scene_path("ch04_default.json"));
     const LightSet lights = collect_lights(scene);
     CHECK(lights.quads.size() == 1);
