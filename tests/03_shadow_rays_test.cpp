@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <string_view>
 #include <variant>
 
 #include "camera.hpp"
@@ -336,10 +337,18 @@ TEST_CASE(
             const SpawnCounts robust_counts = spawn_from(k.scene, robust, s, 11, k.point, k.outward);
             REQUIRE(robust_counts.hits == 10000);
             CHECK(robust_counts.self_hits == 0);
-            // With no offset at all, a large share re-hit at every scale.
-            CHECK(spawn_from(k.scene, none, s, 11, k.point, k.outward).self_hits > 1000);
-            // The fixed epsilon (1e-4) is lost in the rounding of coordinates of 1e5 (ulp 0.008): it fails.
+            const SpawnCounts none_counts = spawn_from(k.scene, none, s, 11, k.point, k.outward);
             const SpawnCounts eps_counts = spawn_from(k.scene, epsilon, s, 11, k.point, k.outward);
+            if (std::string_view(k.name) == "triangle") {
+                // Chapter 02's watertight test accepts only t beyond the bound δt of its own rounding of t
+                // (PBRT 4 §6.8.7), so a triangle is never re-hit by a ray leaving it, offset or not.
+                CHECK(none_counts.self_hits == 0);
+                CHECK(eps_counts.self_hits == 0);
+                continue;
+            }
+            // With no offset at all, a large share re-hit at every scale.
+            CHECK(none_counts.self_hits > 1000);
+            // The fixed epsilon (1e-4) is lost in the rounding of coordinates of 1e5 (ulp 0.008): it fails.
             if (s <= Real(1)) CHECK(eps_counts.self_hits == 0);
             if (s >= Real(1e4)) CHECK(eps_counts.self_hits > 1000);
         }
@@ -348,43 +357,14 @@ TEST_CASE(
 
 namespace {
 
-// ch02's watertight ray–triangle test with PBRT 4's conservative bound on t (§6.8.7): a hit counts only when
-// t > δt, the bound of the rounding error of t computed from the sheared vertices. What a robust offset needs
-// from the intersector: with it, an origin that clears the hit point's error box is never re-hit.
-bool conservative_triangle_hit(const Ray& ray, const Triangle& triangle) {
-    const WatertightRay s = make_watertight_ray(ray);
-    const Vec3 a = triangle.p0 - ray.origin, b = triangle.p1 - ray.origin, c = triangle.p2 - ray.origin;
-    const Real ax = a[s.kx] - s.sx * a[s.kz], ay = a[s.ky] - s.sy * a[s.kz];
-    const Real bx = b[s.kx] - s.sx * b[s.kz], by = b[s.ky] - s.sy * b[s.kz];
-    const Real cx = c[s.kx] - s.sx * c[s.kz], cy = c[s.ky] - s.sy * c[s.kz];
-    Real u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-    if (u == 0 || v == 0 || w == 0) {
-        u = Real(double(cx) * double(by) - double(cy) * double(bx));
-        v = Real(double(ax) * double(cy) - double(ay) * double(cx));
-        w = Real(double(bx) * double(ay) - double(by) * double(ax));
-    }
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
-    const Real det = u + v + w;
-    if (det == 0) return false;
-    const Real az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
-    const Real t = (u * az + v * bz + w * cz) / det;
-    const Real max_z = std::max({std::abs(az), std::abs(bz), std::abs(cz)});
-    const Real max_x = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
-    const Real max_y = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
-    const Real delta_z = gamma_bound(3) * max_z;
-    const Real delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
-    const Real delta_e = 2 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    const Real max_e = std::max({std::abs(u), std::abs(v), std::abs(w)});
-    const Real delta_t =
-        3 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) / std::abs(det);
-    return t > delta_t;
-}
-
+// Re-hits of spawned rays. The robust offset clears the hit point's error box; chapter 02's watertight test
+// accepts only t beyond the bound δt of its own rounding of t (PBRT 4 §6.8.7). Both are needed: without the
+// δt check, t computed from vertices far along the ray rounds to a tiny positive value and the triangle is
+// "hit" again (1065 of these 10^4 rays were, before chapter 02 had the check).
 struct TriangleSpawns {
     int rays = 0;
-    int world_self_hits = 0;         // re-hits World::intersect reports (ch02's test: t > 0)
-    int conservative_self_hits = 0;  // re-hits with t beyond the rounding bound of t
-    int epsilon_self_hits = 0;       // World re-hits with the fixed epsilon 1e-4
+    int world_self_hits = 0;    // re-hits World::intersect reports with the robust offset
+    int epsilon_self_hits = 0;  // re-hits with the fixed epsilon 1e-4
 };
 
 // 10^4 robust rays spawned from random triangles, in either direction: half the triangles at one scale s from
@@ -403,7 +383,6 @@ TriangleSpawns spawn_from_spread_triangles() {
         const Real s = std::pow(Real(10), Real((t / 2) % 17) - Real(8));
         for (Vec3& p : v)
             p = t % 2 ? Vec3{spread(), spread(), spread()} : s * (Vec3{0.7f, -0.4f, 0.3f} + random_unit(rng));
-        const Triangle triangle{v[0], v[1], v[2]};
         const World world(scene_of({Shape{TriangleShape{v}, 0, "triangle"}}));
         const Vec3d e1 = Vec3d(v[1]) - Vec3d(v[0]), e2 = Vec3d(v[2]) - Vec3d(v[0]);
         const Vec3d n = glm::normalize(glm::cross(e1, e2));
@@ -418,7 +397,6 @@ TriangleSpawns spawn_from_spread_triangles() {
             const Vec3 d = random_on_side(rng, hit->normal, rng.next_real() < Real(0.5) ? 1 : -1);
             const Ray ray = spawn_ray(*hit, d);
             out.world_self_hits += world.intersect(ray) ? 1 : 0;
-            out.conservative_self_hits += conservative_triangle_hit(ray, triangle) ? 1 : 0;
             out.epsilon_self_hits +=
                 world.intersect(spawn_ray(*hit, d, {OffsetMethod::kEpsilon, Real(1e-4)})) ? 1 : 0;
         }
@@ -434,18 +412,10 @@ TEST_CASE("Rays spawned from triangles with coordinates spread over 1e-8 to 1e8 
     const TriangleSpawns spawns = spawn_from_spread_triangles();
     INFO("World re-hits " << spawns.world_self_hits << ", epsilon re-hits " << spawns.epsilon_self_hits);
     REQUIRE(spawns.rays == 10000);
-    CHECK(spawns.conservative_self_hits == 0);
-    CHECK(spawns.epsilon_self_hits > 1000);  // recorded: the fixed epsilon fails on large coordinates
-}
-
-// Known failure, kept visible: ch02's triangle test accepts any t > 0, and its own rounding of t (from
-// vertices far along the ray) exceeds the offset, so World still reports re-hits. It passes — and this tag
-// must go — once intersect_triangle_watertight rejects t <= δt as conservative_triangle_hit does.
-TEST_CASE("Through World, rays spawned from spread triangles never re-hit them",
-          "[ch03][stability][!shouldfail]") {
-    const TriangleSpawns spawns = spawn_from_spread_triangles();
-    INFO("World re-hits " << spawns.world_self_hits << " of " << spawns.rays);
     CHECK(spawns.world_self_hits == 0);
+    // The triangle test's δt check protects the fixed epsilon here too (the spheres, quads and planes of the
+    // test above record it failing at large scales).
+    WARN("spread triangles: the fixed epsilon re-hits " << spawns.epsilon_self_hits << " of " << spawns.rays);
 }
 
 TEST_CASE("A sphere of radius 1 inside one of radius 1 + 4e-5 is still found: offsets are not too large",

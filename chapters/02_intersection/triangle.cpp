@@ -1,7 +1,10 @@
 #include "triangle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
+
+#include "float_error.hpp"
 
 namespace rt {
 
@@ -40,13 +43,25 @@ std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const W
     const Real det = u + v + w;
     if (det == 0) return std::nullopt;  // the ray lies in the triangle's plane, or the triangle is degenerate
     // The scaled distance T = det · t, tested against (0, t_max) before dividing.
-    const Real t_scaled = u * (s.sz * a[s.kz]) + v * (s.sz * b[s.kz]) + w * (s.sz * c[s.kz]);
+    const Real az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
+    const Real t_scaled = u * az + v * bz + w * cz;
     if (det < 0 ? (t_scaled >= 0 || t_scaled < t_max * det) : (t_scaled <= 0 || t_scaled > t_max * det)) {
         return std::nullopt;
     }
     const Real inverse = Real(1) / det;
     const Real t = t_scaled * inverse;
-    if (!(t > 0 && t < t_max)) return std::nullopt;
+    // t itself is rounded: a ray leaving the triangle's own surface can compute a tiny t > 0 for it. Accept t
+    // only beyond the bound δt on its rounding error (PBRT 4 §6.8.7), from the largest sheared coordinates.
+    const Real max_z = std::max({std::abs(az), std::abs(bz), std::abs(cz)});
+    const Real max_x = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
+    const Real max_y = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
+    const Real delta_z = gamma_bound(3) * max_z;
+    const Real delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
+    const Real delta_e = 2 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const Real max_e = std::max({std::abs(u), std::abs(v), std::abs(w)});
+    const Real delta_t =
+        3 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inverse);
+    if (!(t > delta_t && t < t_max)) return std::nullopt;
     return TriangleHit{t, {v * inverse, w * inverse}};
     // END EXERCISE
 }
