@@ -7,6 +7,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -20,10 +22,12 @@ constexpr int kPasses = 8;
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 class Progress {
-public:
+  public:
     explicit Progress(ProgressStyle style) : style_(style) {}
 
     void show(double fraction, double elapsed) {
@@ -38,8 +42,8 @@ public:
         } else if (style_ == ProgressStyle::kLines) {
             const int decile = int(fraction * 10);
             if (decile > last_decile_ && decile < 10) {
-                std::fprintf(stderr, "progress: %d%% (elapsed %.1fs, remaining %.1fs)\n", decile * 10, elapsed,
-                             remaining);
+                std::fprintf(stderr, "progress: %d%% (elapsed %.1fs, remaining %.1fs)\n", decile * 10,
+                             elapsed, remaining);
                 last_decile_ = decile;
             }
         }
@@ -49,7 +53,7 @@ public:
     }
     bool animated() const { return style_ == ProgressStyle::kBar; }
 
-private:
+  private:
     ProgressStyle style_;
     int last_decile_ = 0;
 };
@@ -61,7 +65,8 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     const int threads =
         settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     ProgressStyle style = settings.progress;
-    if (style == ProgressStyle::kAuto) style = isatty(STDERR_FILENO) ? ProgressStyle::kBar : ProgressStyle::kLines;
+    if (style == ProgressStyle::kAuto)
+        style = isatty(STDERR_FILENO) ? ProgressStyle::kBar : ProgressStyle::kLines;
     Progress progress(style);
 
     const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
@@ -75,10 +80,14 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     };
 
     std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
-    std::vector<int> tile_samples(static_cast<std::size_t>(tile_count), 0);  // samples each pixel of a tile has
+    std::vector<int> tile_samples(static_cast<std::size_t>(tile_count),
+                                  0);  // samples each pixel of a tile has
     std::atomic<std::uint64_t> samples_done{0};
     const auto start = Clock::now();
 
+    std::exception_ptr failure;  // the first exception a sample threw, on any thread
+    std::mutex failure_mutex;
+    std::atomic<bool> failed{false};
     const int per_pass = std::max(1, (spp + kPasses - 1) / kPasses);
     for (int first = 0; first < spp && !interrupt_requested(); first += per_pass) {
         const int end = std::min(spp, first + per_pass);
@@ -86,11 +95,20 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
         std::atomic<int> workers_running{threads};
         auto worker = [&](int thread_index) {
             RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
-            for (int tile = next_tile++; tile < tile_count && !interrupt_requested(); tile = next_tile++) {
-                const auto [x0, y0, x1, y1] = tile_bounds(tile);
-                render_tile(x0, y0, x1, y1, first, end, rays);
-                tile_samples[std::size_t(tile)] = end;
-                samples_done += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(end - first);
+            try {
+                for (int tile = next_tile++; tile < tile_count && !interrupt_requested() && !failed;
+                     tile = next_tile++) {
+                    const auto [x0, y0, x1, y1] = tile_bounds(tile);
+                    render_tile(x0, y0, x1, y1, first, end, rays);
+                    tile_samples[std::size_t(tile)] = end;
+                    samples_done +=
+                        std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(end - first);
+                }
+            } catch (...) {
+                // An exception cannot cross a thread: keep the first, stop the others, rethrow it below.
+                const std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+                failed = true;
             }
             --workers_running;
         };
@@ -107,6 +125,7 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
             worker(0);
         }
         for (auto& t : pool) t.join();
+        if (failure) std::rethrow_exception(failure);
         progress.show(double(samples_done.load()) / total_samples, seconds_since(start));
     }
     progress.clear();

@@ -47,7 +47,8 @@ concept SampleFunction = requires(F f, const PixelSample& s, Pcg32& rng, RayCoun
 };
 
 namespace detail {
-// Runs `render_tile(x0, y0, x1, y1, first_sample, end_sample, sums, rays)` over every tile and pass.
+// Runs `render_tile(x0, y0, x1, y1, first_sample, end_sample, sums, rays)` over every tile and pass. If it
+// throws on any thread, the other threads stop after their tile and the first exception is rethrown here.
 using TileFunction = std::function<void(int, int, int, int, int, int, RayCounts&)>;
 RenderResult render_tiles(const RenderSettings& settings, Image& sums, const TileFunction& render_tile);
 }  // namespace detail
