@@ -2,14 +2,16 @@
 
 #include <cmath>
 
+#include "float_error.hpp"
 #include "sampling.hpp"
 
 namespace rt {
 namespace {
 
-// The sample toward x on a one-sided planar light with unit normal n and area A.
-std::optional<LightSample> toward(const Vec3& x, const Vec3& n, Real area, const Color& radiance,
-                                  const Vec3& p) {
+// The sample toward x (within `error` of the light's plane) on a one-sided planar light with unit normal n
+// and area A.
+std::optional<LightSample> toward(const Vec3& x, const Vec3& error, const Vec3& n, Real area,
+                                  const Color& radiance, const Vec3& p) {
     const Vec3 to_light = x - p;
     const Real distance = glm::length(to_light);
     if (!(distance > 0)) return std::nullopt;
@@ -18,15 +20,17 @@ std::optional<LightSample> toward(const Vec3& x, const Vec3& n, Real area, const
     if (!(cos_light > 0)) return std::nullopt;
     const Real pdf = area_to_solid_angle_pdf(distance, cos_light, area);
     if (!std::isfinite(pdf)) return std::nullopt;
-    return LightSample{x, wi, distance, radiance, pdf};
+    return LightSample{x, wi, distance, radiance, pdf, n, error};
 }
 
 }  // namespace
 
 std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u) {
     // EXERCISE(ch04.sample_quad_light)
-    const Vec3 x = light.origin + u.x * light.u + u.y * light.v;
-    return toward(x, light.normal, light.area, light.radiance, p);
+    const Vec3 along_u = u.x * light.u, along_v = u.y * light.v;
+    const Vec3 x = light.origin + along_u + along_v;
+    const Vec3 error = gamma_bound(3) * (glm::abs(light.origin) + glm::abs(along_u) + glm::abs(along_v));
+    return toward(x, error, light.normal, light.area, light.radiance, p);
     // END EXERCISE
 }
 
@@ -45,8 +49,9 @@ Real quad_light_pdf(const QuadLight& light, const Vec3& p, const Vec3& wi) {
 
 std::optional<LightSample> sample_triangle_light(const TriangleLight& light, const Vec3& p, Vec2 u) {
     const Vec2 b = sample_uniform_triangle(u);
-    const Vec3 x = (1 - b.x - b.y) * light.p0 + b.x * light.p1 + b.y * light.p2;
-    return toward(x, light.normal, light.area, light.radiance, p);
+    const Vec3 w0 = (1 - b.x - b.y) * light.p0, w1 = b.x * light.p1, w2 = b.y * light.p2;
+    const Vec3 error = gamma_bound(7) * (glm::abs(w0) + glm::abs(w1) + glm::abs(w2));
+    return toward(w0 + w1 + w2, error, light.normal, light.area, light.radiance, p);
 }
 
 }  // namespace rt

@@ -46,14 +46,19 @@ DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet 
     }
 }
 
-Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Vec3& target,
-                                   const Vec3& wi, const Color& radiance, Real pdf, RayCounts& rays) const {
-    const Real cos_i = glm::dot(wi, hit.normal);
-    if (!(cos_i > 0) || !(pdf > 0) || black(radiance)) return Color(0);
-    const Color f = eval(brdf, wo, wi, hit.normal);
+Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& s,
+                                   RayCounts& rays) const {
+    const Real cos_i = glm::dot(s.wi, hit.normal);
+    if (!(cos_i > 0) || !(s.pdf > 0) || black(s.radiance)) return Color(0);
+    const Color f = eval(brdf, wo, s.wi, hit.normal);
     if (black(f)) return Color(0);
-    if (options_.shadows && !visible(world_, hit, target, options_.offset, rays)) return Color(0);
-    return f * radiance * (cos_i / pdf);
+    if (options_.shadows) {
+        const bool lit = s.on_surface() ? visible(world_, hit, SurfacePoint{s.point, s.normal, s.point_error},
+                                                  options_.offset, rays)
+                                        : visible(world_, hit, s.point, options_.offset, rays);
+        if (!lit) return Color(0);
+    }
+    return f * s.radiance * (cos_i / s.pdf);
 }
 
 Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
@@ -77,21 +82,21 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
     for (const QuadLight& light : lights_.quads) {
         for (int j = 0; j < n; ++j) {
             if (const auto s = sample_quad_light(light, p, light_point(j, rng))) {
-                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+                sum += weight * contribution(hit, wo, b, *s, rays);
             }
         }
     }
     for (const TriangleLight& light : lights_.triangles) {
         for (int j = 0; j < n; ++j) {
             if (const auto s = sample_triangle_light(light, p, light_point(j, rng))) {
-                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+                sum += weight * contribution(hit, wo, b, *s, rays);
             }
         }
     }
     for (const SphereLight& light : lights_.spheres) {
         for (int j = 0; j < n; ++j) {
             if (const auto s = sample_sphere_light(light, p, light_point(j, rng))) {
-                sum += weight * contribution(hit, wo, b, s->point, s->wi, s->radiance, s->pdf, rays);
+                sum += weight * contribution(hit, wo, b, *s, rays);
             }
         }
     }
@@ -101,7 +106,8 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
         const Real d2 = glm::dot(to_light, to_light);
         if (!(d2 > 0)) continue;
         const Real d = std::sqrt(d2);
-        sum += contribution(hit, wo, b, light.position, to_light / d, light.intensity / d2, 1, rays);
+        sum += contribution(hit, wo, b, LightSample{light.position, to_light / d, d, light.intensity / d2, 1},
+                            rays);
     }
     // The environment: cosine-weighted directions (pdf = cos θ / π); the shadow ray goes to infinity.
     if (lights_.environment && !black(lights_.environment->radiance)) {

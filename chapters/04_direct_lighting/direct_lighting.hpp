@@ -12,6 +12,7 @@
 
 #include "brdf.hpp"
 #include "hit.hpp"
+#include "light_sample.hpp"
 #include "light_set.hpp"
 #include "ray_offset.hpp"
 #include "rt/random.hpp"
@@ -59,8 +60,8 @@ class DirectLighting {
     // The point of [0, 1)² that light sample j of N is warped from.
     Vec2 light_point(int j, Pcg32& rng) const;
     // One light sample's contribution f L cos / pdf, with its shadow ray; 0 without tracing when it is 0.
-    Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Vec3& target, const Vec3& wi,
-                       const Color& radiance, Real pdf, RayCounts& rays) const;
+    Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& sample,
+                       RayCounts& rays) const;
 
     const World& world_;
     const Scene& scene_;

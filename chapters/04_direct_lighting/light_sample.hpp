@@ -12,6 +12,13 @@ struct LightSample {
     Real distance = 0;  // |point − p|
     Color radiance{0};  // L_e arriving at p along −wi
     Real pdf = 0;       // solid-angle density of wi (a point light: 1, a delta)
+    // The light's surface at `point`: its unit normal and the rounding bound of `point` (chapter 03's
+    // SurfacePoint), so the shadow ray stops before that surface at any distance from the origin. Zero for a
+    // point light, which has no surface.
+    Vec3 normal{0};
+    Vec3 point_error{0};
+
+    bool on_surface() const { return normal != Vec3(0); }
 };
 
 }  // namespace rt

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "float_error.hpp"
 #include "frame.hpp"
 #include "sampling.hpp"
 
@@ -55,7 +56,12 @@ std::optional<LightSample> sample_sphere_light(const SphereLight& light, const V
     const Real root = std::sqrt(std::max(Real(0), (r - d_sin) * (r + d_sin)));
     const Real t = (d - r) * (d + r) / (d * cos_theta + root);
     const Real pdf = Real(1) / (2 * kPi * one_minus_cos_max);
-    return LightSample{p + t * wi, wi, t, light.radiance, pdf};
+    // The point pushed back onto the sphere, x = c + r w (chapter 02's reprojection), with its rounding
+    // bound.
+    const Vec3 w = glm::normalize(p + t * wi - light.center);
+    const Vec3 radial = light.radius * w;
+    const Vec3 error = gamma_bound(5) * (glm::abs(light.center) + glm::abs(radial));
+    return LightSample{light.center + radial, wi, t, light.radiance, pdf, w, error};
 }
 
 }  // namespace rt
