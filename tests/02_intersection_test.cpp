@@ -62,7 +62,7 @@ Real ulp(Real x) {
 // ---------------------------------------------------------------------------------------------------------
 // Plain cases
 
-TEST_CASE("A ray hits the near side of a sphere in front of it", "[sphere]") {
+TEST_CASE("A ray hits the near side of a sphere in front of it", "[sphere][ex:ch02.sphere_stable]") {
     const Ray ray{{0, 0, 0}, {0, 0, -1}};
     const auto t = intersect_sphere(ray, Sphere{{0, 0, -5}, 1}, kInfinity);
     REQUIRE(t);
@@ -72,7 +72,7 @@ TEST_CASE("A ray hits the near side of a sphere in front of it", "[sphere]") {
     CHECK_FALSE(intersect_sphere(Ray{{0, 0, 0}, {0, 0, 1}}, Sphere{{0, 0, -5}, 1}, kInfinity));
 }
 
-TEST_CASE("Quads are hit inside their parallelogram with coordinates a and b", "[quad]") {
+TEST_CASE("Quads are hit inside their parallelogram with coordinates a and b", "[quad][ex:ch02.quad]") {
     const Quad quad = make_quad({0, 0, -2}, {2, 0, 0}, {1, 1, 0});
     const auto hit = intersect_quad(Ray{{1.5f, 0.5f, 0}, {0, 0, -1}}, quad, kInfinity);
     REQUIRE(hit);
@@ -86,7 +86,7 @@ TEST_CASE("Quads are hit inside their parallelogram with coordinates a and b", "
                                kInfinity));  // degenerate
 }
 
-TEST_CASE("Planes are hit from either side and never by a parallel ray", "[plane]") {
+TEST_CASE("Planes are hit from either side and never by a parallel ray", "[plane][ex:ch02.plane]") {
     const Plane plane = make_plane({0, -1, 0}, {0, 2, 0});
     CHECK(plane.normal == Vec3{0, 1, 0});
     const auto t = intersect_plane(Ray{{0, 1, 0}, {0, -1, 0}}, plane, kInfinity);
@@ -97,7 +97,8 @@ TEST_CASE("Planes are hit from either side and never by a parallel ray", "[plane
     CHECK_FALSE(intersect_plane(Ray{{0, 1, 0}, {0, 1, 0}}, plane, kInfinity));
 }
 
-TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics", "[triangle]") {
+TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics",
+          "[triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
     const Triangle tri{{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
     for (TriangleTest test : {TriangleTest::kWatertight, TriangleTest::kMollerTrumbore}) {
         const auto hit = intersect_triangle(Ray{{0.25f, 0.5f, 0}, {0, 0, -1}}, tri, kInfinity, test);
@@ -111,7 +112,9 @@ TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics",
     }
 }
 
-TEST_CASE("The world returns the nearest of several shapes with a normal facing the ray", "[world]") {
+TEST_CASE(
+    "The world returns the nearest of several shapes with a normal facing the ray",
+    "[world][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]") {
     std::vector<Shape> shapes;
     shapes.push_back({SphereShape{{0, 0, -10}, 1}, 0, "s"});
     shapes.push_back({QuadShape{{-1, -1, -5}, {2, 0, 0}, {0, 2, 0}}, 0, "q"});
@@ -138,7 +141,8 @@ TEST_CASE("The world returns the nearest of several shapes with a normal facing 
     }
 }
 
-TEST_CASE("A transformed box becomes six quads with outward normals", "[world]") {
+TEST_CASE("A transformed box becomes six quads with outward normals",
+          "[world][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test]") {
     BoxShape box{{0, 0, 0}, {1, 2, 1}, {}};
     box.transform.rotate_degrees = {0, 90, 0};
     box.transform.translate = {10, 0, 0};
@@ -208,7 +212,9 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
     CHECK(bvh.bytes() <= boxes.size() * 64);  // the lesson's memory target: 64 bytes per primitive at most
 }
 
-TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads", "[render]") {
+TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02."
+          "quad][ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
     const Scene scene = load_scene(scene_path("ch02_default.json"));
     const World world(scene);
     RenderSettings settings{64, 36, 1, 1, 1, ProgressStyle::kNone};
@@ -256,7 +262,9 @@ std::uint64_t escaped(const World& world, const std::vector<Ray>& rays) {
 
 }  // namespace
 
-TEST_CASE("Rays from inside a closed mesh never escape the watertight test", "[stability][triangle]") {
+TEST_CASE("Rays from inside a closed mesh never escape the watertight test",
+          "[stability][triangle][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_moller][ex:ch02."
+          "triangle_watertight]") {
     const MeshShape mesh = jittered_closed_mesh(4);  // 5120 triangles, 2562 vertices, 7680 edges
     REQUIRE(is_closed(mesh));
     const Vec3 centre{10.3f, -5.1f, 2.9f};
@@ -287,7 +295,7 @@ TEST_CASE("Rays from inside a closed mesh never escape the watertight test", "[s
 }
 
 TEST_CASE("Rays aimed exactly at a shared diagonal always hit one of its two triangles",
-          "[stability][triangle]") {
+          "[stability][triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
     Pcg32 rng(17, 3);
     std::uint64_t watertight_misses = 0, moller_misses = 0, rays = 0;
     for (int quad = 0; quad < 100; ++quad) {
@@ -322,7 +330,8 @@ TEST_CASE("Rays aimed exactly at a shared diagonal always hit one of its two tri
 }
 
 TEST_CASE("Parallel rays and degenerate triangles give no hit and nothing non-finite",
-          "[stability][triangle]") {
+          "[stability][triangle][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_moller][ex:ch02."
+          "triangle_watertight]") {
     const Triangle flat{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     const Ray in_plane{{-1, 0.2f, 0}, {1, 0, 0}};        // slides through the triangle inside its plane
     const Ray above_plane{{-1, 0.2f, 0.5f}, {1, 0, 0}};  // parallel, off the plane
@@ -345,7 +354,7 @@ TEST_CASE("Parallel rays and degenerate triangles give no hit and nothing non-fi
 }
 
 TEST_CASE("Tiny and huge triangles are hit at their centroid with barycentrics of one third",
-          "[stability][triangle]") {
+          "[stability][triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
     for (Real scale : {Real(1e-6), Real(1), Real(1e6)}) {
         const Triangle tri{Vec3{1, 0, 0} * scale, Vec3{0, 1, 0} * scale, Vec3{0, 0, 1} * scale};
         const Vec3 centroid = (tri.p0 + tri.p1 + tri.p2) / Real(3);
@@ -363,8 +372,8 @@ TEST_CASE("Tiny and huge triangles are hit at their centroid with barycentrics o
     }
 }
 
-TEST_CASE("Small far spheres are hit within a few ulps; the textbook quadratic misses some",
-          "[stability][sphere]") {
+TEST_CASE("Small far spheres are hit within a few ulps, while the textbook quadratic misses some",
+          "[stability][sphere][ex:ch02.sphere_stable][ex:ch02.sphere_textbook]") {
     Pcg32 rng(23, 9);
     for (Real radius : {Real(0.1), Real(0.01)}) {
         for (Real distance : {Real(10), Real(400), Real(1e3), Real(1e4)}) {
@@ -402,7 +411,8 @@ TEST_CASE("Small far spheres are hit within a few ulps; the textbook quadratic m
 }
 
 TEST_CASE("Huge spheres, origins at the centre, inside and on the surface, tangents and poles",
-          "[stability][sphere]") {
+          "[stability][sphere][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02."
+          "sphere_textbook]") {
     SECTION("origins 1e-3 outside a sphere of radius 1e4") {
         // c₀ = |f|² − r² ≈ 20 is the difference of two numbers near 1e8, where floats are 8 apart: the
         // textbook form rounds it (and b² − c₀) to multiples of 8, and −b − √Δ then cancels.
@@ -463,7 +473,9 @@ TEST_CASE("Huge spheres, origins at the centre, inside and on the surface, tange
     }
 }
 
-TEST_CASE("Hit points carry an error bound that contains the exact surface point", "[stability][world]") {
+TEST_CASE("Hit points carry an error bound that contains the exact surface point",
+          "[stability][world][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]["
+          "ex:ch02.triangle_watertight]") {
     Pcg32 rng(31, 2);
     std::vector<Shape> shapes;
     shapes.push_back({SphereShape{{1000.5f, -300.25f, 77.7f}, 13.3f}, 0, "sphere"});
@@ -501,7 +513,7 @@ TEST_CASE("Hit points carry an error bound that contains the exact surface point
 }
 
 TEST_CASE("The slab test handles zero direction components of either sign and flat boxes",
-          "[stability][bvh]") {
+          "[stability][bvh][ex:ch02.slab_test]") {
     const Aabb box{{0, 0, 0}, {1, 1, 1}};
     for (Real zero : {Real(0), -Real(0)}) {
         INFO("zero component " << zero);
@@ -525,7 +537,9 @@ TEST_CASE("The slab test handles zero direction components of either sign and fl
     CHECK(hits_box(flat, diagonal, kInfinity));
 }
 
-TEST_CASE("The BVH finds the same nearest hit as testing every primitive", "[stability][bvh]") {
+TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]["
+          "ex:ch02.triangle_watertight]") {
     Pcg32 rng(41, 7);
     std::vector<Shape> shapes;
     auto random_point = [&](Real size) {
