@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "pixel_sampling.hpp"
@@ -63,6 +64,7 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
         for (int i = 0; i < kRepeats; ++i) {
             r = render_gi(tracer, camera, settings);
             seconds.push_back(r.seconds);
+            if (r.interrupted) return rows;  // Ctrl-C: the rows so far
         }
         std::sort(seconds.begin(), seconds.end());
         DepthStudyRow row;

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
     int roulette_start = 3;
     bool study = false;
     std::vector<int> study_depths{1, 2, 4, 8, 16};
+    std::vector<Real> study_throughputs{Real(0.01), Real(0.1)};
     std::string csv;
     const CLI::App* cli = nullptr;  // to ask which core flags were given
     const ChapterInfo chapter{
@@ -130,6 +131,9 @@ int main(int argc, char** argv) {
             "at each of --study-depths, Russian roulette and the throughput rule");
         app.add_option("--study-depths", study_depths, "With --depth-study: the depths (default 1 2 4 8 16)")
             ->check(CLI::Range(0, 1024));
+        app.add_option("--study-throughputs", study_throughputs,
+                       "With --depth-study: the throughput rule's thresholds (default 0.01 0.1)")
+            ->check(CLI::Range(0.0, 1.0));
         app.add_option("--csv", csv, "With --depth-study: also write the table as CSV");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
@@ -169,7 +173,8 @@ int main(int argc, char** argv) {
                 rules.push_back({Termination::kMaxDepth, d, min_throughput, roulette_start});
             const int cap = max_depth.value_or(kSafetyDepthCap);
             rules.push_back({Termination::kRussianRoulette, cap, min_throughput, roulette_start});
-            rules.push_back({Termination::kMinThroughput, cap, min_throughput, roulette_start});
+            for (Real t : study_throughputs)
+                rules.push_back({Termination::kMinThroughput, cap, t, roulette_start});
             const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
             std::vector<DepthStudyRow> rows =
                 depth_study(world, scene, *furnace, camera, settings, rules, direct);
@@ -198,7 +203,7 @@ int main(int argc, char** argv) {
             termination.rule == Termination::kRussianRoulette) {
             rule += termination.rule == Termination::kMinThroughput ? ", biased" : ", unbiased below the cap";
         } else {
-            rule += format(", light that bounced more than %.0f times is lost (biased)",
+            rule += format(", light after more than %.0f bounces is lost (biased)",
                            double(termination.max_depth));
         }
         run.notes.push_back(rule);
@@ -220,11 +225,11 @@ int main(int argc, char** argv) {
                        double(run.result.rays[RayKind::kIndirect]) / camera_rays,
                        double(run.result.rays[RayKind::kShadow]) / camera_rays));
         }
-        if (const auto furnace = find_furnace(scene, world); furnace && direct.direct && options.indirect) {
+        if (const auto furnace = find_furnace(scene, world)) {
             run.exact = furnace_image(*furnace, settings.width, settings.height);
             const Vec3d exact = furnace_radiance(*furnace);
             std::string note = format("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
-            if (termination.rule != Termination::kMinThroughput) {
+            if (termination.rule != Termination::kMinThroughput && options.indirect) {
                 note +=
                     format("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
                            furnace_radiance_truncated(*furnace, termination.max_depth).y,

@@ -30,7 +30,8 @@ struct TerminationSettings {
 };
 
 // The hard cap this course gives the rules that end paths by themselves (throughput and roulette), so that
-// the cap does not bias them measurably: a furnace of albedo 0.8 loses Le 0.8^65 / 0.2 ≈ 3e-6 of Le / 0.2.
+// the cap does not bias them measurably: a furnace of albedo 0.8 (L = 5 Le) loses Le 0.8^65 / 0.2 ≈ 2.5e-6
+// Le.
 inline constexpr int kSafetyDepthCap = 64;
 
 // The probability q that a path with throughput β at `depth` (bounces made so far) bounces on:
