@@ -1,0 +1,59 @@
+#include "depth_study.hpp"
+
+#include "camera.hpp"
+#include "light_set.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/image_io.hpp"
+#include "world.hpp"
+
+namespace rt {
+namespace {
+
+RenderResult render_glass(const Scene& scene, const RenderSettings& settings,
+                          const BsdfPathOptions& options) {
+    const World world(scene);
+    const LightSet lights = collect_lights(scene);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+    const BsdfPathTracer tracer(world, scene, lights, options);
+    return render_bsdf_paths(tracer, camera, settings);
+}
+
+}  // namespace
+
+Image depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
+                      int spp, const std::filesystem::path& folder, bool& cached) {
+    const std::filesystem::path file =
+        folder / ("ch07_reference_" + std::filesystem::path(scene.file).stem().string() + "_" +
+                  std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_" +
+                  std::to_string(spp) + "spp.pfm");
+    if (std::filesystem::exists(file)) {
+        Image image = read_pfm(file);
+        if (image.width() == settings.width && image.height() == settings.height) {
+            cached = true;
+            return image;
+        }
+    }
+    RenderSettings s = settings;
+    s.samples_per_pixel = spp;
+    s.seed = settings.seed + 1000;  // independent of the renders it is compared with
+    Image image = render_glass(scene, s, options).image;
+    write_pfm(image, file);
+    cached = false;
+    return image;
+}
+
+std::vector<DepthStudyRow> depth_study(const Scene& scene, const RenderSettings& settings,
+                                       const BsdfPathOptions& options, const Image& reference,
+                                       const std::vector<int>& depths) {
+    std::vector<DepthStudyRow> rows;
+    for (int depth : depths) {
+        BsdfPathOptions o = options;
+        o.termination = {Termination::kMaxDepth, depth};
+        const RenderResult r = render_glass(scene, settings, o);
+        const ErrorMetrics e = compare(r.image, reference);
+        rows.push_back({depth, e.rmse, e.relative_mse, e.mean_error, r.seconds, r.rays.total()});
+    }
+    return rows;
+}
+
+}  // namespace rt

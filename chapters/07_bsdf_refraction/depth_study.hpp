@@ -1,0 +1,35 @@
+// The depth glass needs, measured: the scene rendered with a fixed maximum depth D (chapter 05's depth rule)
+// for each D, its RMSE and relative MSE against a converged reference (Russian roulette, unbiased), and its
+// time. Light that needs more than D bounces is lost: behind glass a path spends two bounces per sphere it
+// crosses (in and out) and more on internal reflections, so glass needs a deeper cut than diffuse walls.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "bsdf_path_tracer.hpp"
+#include "rt/image.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/scene.hpp"
+
+namespace rt {
+
+struct DepthStudyRow {
+    int max_depth;
+    double rmse;
+    double relative_mse;
+    double mean_error;  // the bias: negative, light lost
+    double seconds;
+    std::uint64_t rays;
+};
+
+// The reference: `spp` samples with Russian roulette, read from `cache` when a file of that name and size is
+// there, else rendered and written: <folder>/ch07_reference_<scene stem>_<W>x<H>_<spp>spp.pfm.
+Image depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
+                      int spp, const std::filesystem::path& folder, bool& cached);
+
+std::vector<DepthStudyRow> depth_study(const Scene& scene, const RenderSettings& settings,
+                                       const BsdfPathOptions& options, const Image& reference,
+                                       const std::vector<int>& depths);
+
+}  // namespace rt

@@ -1,0 +1,31 @@
+#include "dielectric.hpp"
+
+#include <cmath>
+
+#include "brdf.hpp"
+#include "fresnel.hpp"
+#include "snell.hpp"
+
+namespace rt {
+
+DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real u) {
+    const Real cos_o = glm::dot(n, wo);
+    const Real R = fresnel_dielectric(cos_o, eta);
+    if (u >= R) {
+        // fresnel_dielectric is below 1 exactly when refract finds a direction (the same kTirCos2 test).
+        if (const auto wt = refract(wo, n, eta)) {
+            return {*wt, Color(1 / (eta * eta)), DielectricLobe::kTransmission, 1 - R};
+        }
+    }
+    return {glm::normalize(reflect(wo, n)), Color(1), DielectricLobe::kReflection, R};
+}
+
+Color beer_lambert(const Color& absorption, Real distance) {
+    Color t(1);
+    for (int c = 0; c < 3; ++c) {
+        if (absorption[c] > 0) t[c] = std::exp(-absorption[c] * distance);
+    }
+    return t;
+}
+
+}  // namespace rt

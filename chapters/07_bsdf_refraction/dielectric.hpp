@@ -1,0 +1,32 @@
+// The smooth dielectric BSDF = BRDF + BTDF: a delta lobe along the mirror direction r(wo) with weight R and a
+// delta lobe along the refracted direction wt with weight T = 1 − R (R the exact Fresnel reflectance). It is
+// sampled by choosing reflection with probability R and transmission with probability T, so each choice's
+// f cos θ / pdf is R / R = 1 and T / T = 1: the Fresnel factor becomes the choice, not a weight.
+// Radiance across the interface: L / η² is what is conserved along a ray through a lossless interface, so
+// radiance from the far side arrives multiplied by (η_i / η_t)² = 1 / η²: a camera path crossing into glass
+// (η = 1.5) carries weight 1 / 2.25 and crossing out 2.25 (these cancel on a path that goes in and out).
+// Light paths (chapter 08) carry importance, which does not scale: the BTDF is not symmetric.
+#pragma once
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+enum class DielectricLobe { kReflection, kTransmission };
+
+struct DielectricSample {
+    Vec3 wi{0, 0, 1};  // unit
+    Color weight{1};   // f cos θ_i / pdf: 1 for reflection, 1 / η² for transmission
+    DielectricLobe lobe = DielectricLobe::kReflection;
+    Real probability = 1;  // of the lobe chosen: R or T
+};
+
+// One sample of the BSDF for wo (unit, n · wo >= 0, n the normal on wo's side, η = η_t / η_i); u in [0, 1)
+// chooses the lobe: reflection when u < R. Under total internal reflection R = 1: always reflection.
+DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real u);
+
+// Beer–Lambert: the fraction of radiance left after a distance d inside a medium of absorption coefficient
+// σ_a (per unit length): T = exp(−σ_a d), per colour channel. σ_a = 0 gives exactly 1 for every d, even ∞.
+Color beer_lambert(const Color& absorption, Real distance);
+
+}  // namespace rt

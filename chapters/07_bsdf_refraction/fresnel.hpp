@@ -1,0 +1,36 @@
+// How much light a smooth dielectric interface reflects. η = η_t / η_i is the ratio of the index on the far
+// side (where a transmitted ray goes) to the index on the near side (where wo is); cos θ_i = n · wo.
+// Entering versus leaving: cos θ_i < 0 means wo is on the other side of n, so the sides swap: the functions
+// use −cos θ_i and 1 / η (the normal and the ratio flip together).
+// Snell's law gives the transmitted angle: sin θ_t = sin θ_i / η; when sin θ_t >= 1 nothing is transmitted
+// (total internal reflection, possible only for η < 1, i.e. leaving the denser medium).
+//   exact (Fresnel, unpolarized light):  r_par  = (η cos θ_i − cos θ_t) / (η cos θ_i + cos θ_t),
+//                                        r_perp = (cos θ_i − η cos θ_t) / (cos θ_i + η cos θ_t),
+//                                        R = (r_par² + r_perp²) / 2,  T = 1 − R.
+//   Schlick (1994):                      R ≈ R0 + (1 − R0) (1 − cos θ)^5,  R0 = ((η − 1) / (η + 1))²,
+//                                        θ the angle on the less dense side (θ_t when η < 1).
+#pragma once
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+// cos² θ_t at or below this counts as total internal reflection: a transmitted ray that close to the tangent
+// plane is only rounding away from it (exactly at the critical angle sin θ_t = 1), carries T → 0, and would
+// skim the surface. Four float ulps of 1.
+inline constexpr Real kTirCos2 = 4 * std::numeric_limits<Real>::epsilon();
+
+// cos² θ_t = 1 − (1 − cos² θ_i) / η² (Snell), clamped at 0; ≤ kTirCos2 means total internal reflection.
+// For cos_i >= 0 (wo on n's side); cos_i above 1 by rounding counts as 1.
+Real cos2_transmitted(Real cos_i, Real eta);
+
+// Turns (cos θ_i, η) to wo's side: for cos θ_i < 0, (−cos θ_i, 1 / η).
+void face_incident_side(Real& cos_i, Real& eta);
+
+// The exact Fresnel reflectance above; 1 under total internal reflection.
+Real fresnel_dielectric(Real cos_i, Real eta);
+
+// Schlick's approximation above; 1 under total internal reflection.
+Real fresnel_schlick(Real cos_i, Real eta);
+
+}  // namespace rt
