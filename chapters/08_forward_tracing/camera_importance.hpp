@@ -1,0 +1,39 @@
+// The pinhole camera seen from the scene: which pixel a point projects to, and the camera's importance We.
+// A pixel's value is the radiance averaged over its patch of the film (chapter 01: the film is the plane at
+// distance 1 along w, a pixel covers A_pix = (2 half_width)(2 half_height) / (W H) of it):
+//   I_j = (1 / A_pix) ∫_pixel L dA_film.
+// A film point at angle θ_c from w is 1 / cos θ_c from the eye and the film is tilted by θ_c to the ray, so
+// dA_film = dω / cos³θ_c, and I_j = ∫ We L cos θ_c dω with We = 1 / (A_pix cos⁴θ_c) over the pixel's
+// directions (0 elsewhere): the importance a light path must be weighted by when it reaches the camera.
+#pragma once
+
+#include <optional>
+
+#include "camera.hpp"
+#include "rt/math.hpp"
+
+namespace rt {
+
+// Where a direction from the eye meets the film.
+struct FilmPoint {
+    Real px = 0;         // in pixels from the left
+    Real py = 0;         // in pixels from the top
+    Real cos_theta = 1;  // cos θ_c = w · d / |d|
+    int x = 0;           // the pixel: (⌊px⌋, ⌊py⌋)
+    int y = 0;
+};
+
+// The film point of the direction d from the eye (any length): with z = d · w, a = (d · u) / z,
+// b = (d · v) / z, px = (a / half_width + 1) W / 2, py = (1 − b / half_height) H / 2 (chapter 01's
+// film_direction inverted). Nothing when z <= 0 (behind the eye) or the point falls outside the film.
+std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Vec3& d);
+// The film point of the scene point x: project_direction(x − eye).
+std::optional<FilmPoint> project_point(const PinholeCamera& camera, const Vec3& x);
+
+// A_pix = 4 half_width half_height / (W H): one pixel's area on the film at distance 1.
+Real pixel_area(const PinholeCamera& camera);
+
+// We = 1 / (A_pix cos⁴θ_c): the importance of a direction at angle θ_c from the view, within its pixel.
+Real pinhole_importance(const PinholeCamera& camera, Real cos_theta);
+
+}  // namespace rt

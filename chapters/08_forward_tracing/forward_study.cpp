@@ -1,0 +1,241 @@
+#include "forward_study.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "convergence.hpp"
+#include "rt/assets.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+namespace rt {
+namespace {
+
+RenderSettings study_settings(const StudyOptions& o, int spp) {
+    RenderSettings s;
+    s.width = o.size;
+    s.height = o.size;
+    s.samples_per_pixel = spp;
+    s.seed = o.seed;
+    s.threads = o.threads;
+    s.progress = ProgressStyle::kNone;
+    return s;
+}
+
+std::uint64_t paths_for(const RenderSettings& s) {
+    return std::uint64_t(s.samples_per_pixel) * std::uint64_t(s.width) * std::uint64_t(s.height);
+}
+
+// Everything one scene needs for both tracers.
+struct Setup {
+    Scene scene;
+    World world;
+    LightSet lights;
+    PinholeCamera camera;
+    explicit Setup(const char* file, int size)
+        : scene(load_scene(scene_path(file))),
+          world(scene),
+          lights(collect_lights(scene)),
+          camera(make_pinhole_camera(scene.camera, size, size)) {}
+};
+
+Reference reference_of(const Setup& s, const StudyOptions& o) {
+    std::printf("  converged reference (chapter 06, MIS, %d spp) ...", o.reference_spp);
+    std::fflush(stdout);
+    const Reference ref = converged_reference(s.world, s.scene, s.lights, reverse_options(EffectSet::all()),
+                                              s.camera, study_settings(o, 1), o.reference_spp, o.cache);
+    std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
+                ref.file.string().c_str(), std::sqrt(ref.noise_mse));
+    return ref;
+}
+
+void fractions(const Setup& s, const StudyOptions& o) {
+    std::printf("\n1. Light paths that ever reach the camera (%s, %dx%d, %llu light paths each)\n",
+                std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size,
+                static_cast<unsigned long long>(o.fraction_paths));
+    std::printf("%-28s %14s %12s %14s %10s\n", "variant", "contributing", "fraction", "camera rays/path",
+                "time (s)");
+    RenderSettings settings = study_settings(o, 1);
+    auto row = [&](const char* name, LightTracerOptions options) {
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, options);
+        const SplatResult r = render_light_tracing(tracer, settings, o.fraction_paths);
+        std::printf("%-28s %14llu %12.4e %14.3f %10.3f\n", name,
+                    static_cast<unsigned long long>(r.contributing_paths),
+                    double(r.contributing_paths) / double(r.render.samples),
+                    double(r.render.rays[RayKind::kCamera]) / double(r.render.samples), r.render.seconds);
+    };
+    for (Real radius : {Real(1), Real(4), Real(16), Real(64)}) {
+        LightTracerOptions options = forward_options(EffectSet::all());
+        options.variant = CameraVariant::kAperture;
+        options.aperture_radius = radius;
+        char name[64];
+        std::snprintf(name, sizeof name, "aperture, lens radius %g", double(radius));
+        row(name, options);
+    }
+    row("connect (pinhole)", forward_options(EffectSet::all()));
+}
+
+struct TimedRmse {
+    int spp;
+    double rmse;
+    double seconds;
+};
+
+void time_to_same_rmse(const Setup& s, const StudyOptions& o) {
+    std::printf("\n2. Time to the same RMSE as chapter 06's reverse path tracer (%s, %dx%d, %d threads)\n",
+                std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size, o.threads);
+    const Reference ref = reference_of(s, o);
+    std::vector<TimedRmse> forward;
+    std::vector<double> fs, fr;
+    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    for (int spp : {4, 16, 64, 256}) {
+        const RenderSettings settings = study_settings(o, spp);
+        const SplatResult r = render_light_tracing(light, settings, paths_for(settings));
+        forward.push_back({spp, compare(r.render.image, ref.image).rmse, r.render.seconds});
+        fs.push_back(forward.back().seconds);
+        fr.push_back(forward.back().rmse);
+    }
+    std::printf("%-22s %6s %12s %10s\n", "tracer", "spp", "RMSE", "time (s)");
+    for (const TimedRmse& f : forward)
+        std::printf("%-22s %6d %12.4e %10.4f\n", "forward (connect)", f.spp, f.rmse, f.seconds);
+    std::ofstream csv;
+    if (!o.csv.empty()) {
+        csv.open(o.csv);
+        if (!csv) throw InputError("--csv: " + o.csv + ": cannot be written");
+        csv << "reverse_strategy,spp,reverse_rmse,reverse_seconds,forward_seconds_to_same_rmse,ratio\n";
+        for (const TimedRmse& f : forward)
+            csv << "forward," << f.spp << ',' << f.rmse << ',' << f.seconds << ",,\n";
+    }
+    std::printf("\n%-22s %6s %12s %10s %18s %12s\n", "reverse (chapter 06)", "spp", "RMSE", "time (s)",
+                "forward to same", "forward/rev.");
+    for (SamplingStrategy strategy : {SamplingStrategy::kMis, SamplingStrategy::kBrdf}) {
+        PathOptions options = reverse_options(EffectSet::all());
+        options.strategy = strategy;
+        const PathTracer tracer(s.world, s.scene, s.lights, options);
+        for (int spp : {4, 16, 64}) {
+            const RenderResult r = render_paths(tracer, s.camera, study_settings(o, spp));
+            const double rmse = compare(r.image, ref.image).rmse;
+            const double t = time_to_rmse(fs, fr, rmse);
+            std::printf("%-22s %6d %12.4e %10.4f %18.4f %12.2f\n",
+                        (std::string("path tracer, ") + std::string(to_string(strategy))).c_str(), spp, rmse,
+                        r.seconds, t, t / r.seconds);
+            if (csv)
+                csv << to_string(strategy) << ',' << spp << ',' << rmse << ',' << r.seconds << ',' << t << ','
+                    << t / r.seconds << '\n';
+        }
+    }
+}
+
+void wins_and_losses(const Setup& s, const StudyOptions& o) {
+    std::printf("\n3. Where forward tracing wins and loses (%s, %dx%d): RMSE per region of the image\n",
+                std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size);
+    const Reference ref = reference_of(s, o);
+    // The regions: pixels whose centre sees a mirror first; pixels the caustic lights (the light tracer's
+    // caustic paths alone give at least 10% of the reference); the rest.
+    LightTracerOptions caustic_options = forward_options(EffectSet::all());
+    caustic_options.caustics_only = true;
+    const LightTracer caustic_tracer(s.world, s.scene, s.lights, s.camera, caustic_options);
+    const RenderSettings caustic_settings = study_settings(o, 64);
+    const Image caustic =
+        render_light_tracing(caustic_tracer, caustic_settings, paths_for(caustic_settings)).render.image;
+    const std::size_t n = ref.image.pixel_count();
+    std::vector<std::uint8_t> mirror(n, 0), lit(n, 0), rest(n, 0);
+    for (int y = 0; y < o.size; ++y) {
+        for (int x = 0; x < o.size; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(o.size) + std::size_t(x);
+            const auto hit =
+                s.world.intersect(camera_ray(s.camera, Real(x) + Real(0.5), Real(y) + Real(0.5)));
+            if (hit && s.scene.materials[std::size_t(hit->material)].type == MaterialType::kMirror)
+                mirror[i] = 1;
+            else if (luminance(caustic.pixels()[i]) >= Real(0.1) * luminance(ref.image.pixels()[i]) &&
+                     luminance(caustic.pixels()[i]) > 0)
+                lit[i] = 1;
+            else
+                rest[i] = 1;
+        }
+    }
+    auto count = [](const std::vector<std::uint8_t>& m) {
+        std::size_t c = 0;
+        for (auto v : m) c += v;
+        return c;
+    };
+    std::printf("  regions: caustic %zu pixels, mirror %zu pixels, the rest %zu pixels\n", count(lit),
+                count(mirror), count(rest));
+    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic", "RMSE mirror",
+                "RMSE rest");
+    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    const PathTracer path(s.world, s.scene, s.lights, reverse_options(EffectSet::all()));
+    for (int spp : {16, 64}) {
+        const RenderSettings settings = study_settings(o, spp);
+        const SplatResult f = render_light_tracing(light, settings, paths_for(settings));
+        const RenderResult r = render_paths(path, s.camera, settings);
+        for (const auto& [name, image, seconds] :
+             {std::tuple{"forward (connect)", &f.render.image, f.render.seconds},
+              std::tuple{"reverse (ch06, MIS)", &r.image, r.seconds}}) {
+            std::printf("%-22s %6d %10.4f %14.4e %14.4e %14.4e\n", name, spp, seconds,
+                        masked_rmse(*image, ref.image, lit), masked_rmse(*image, ref.image, mirror),
+                        masked_rmse(*image, ref.image, rest));
+        }
+    }
+}
+
+}  // namespace
+
+LightTracerOptions forward_options(const EffectSet& simulated) {
+    LightTracerOptions o;
+    o.camera = simulated.contains(Effect::kCameraRays);
+    o.direct = simulated.contains(Effect::kDirect);
+    o.indirect = simulated.contains(Effect::kIndirect);
+    o.glossy = simulated.contains(Effect::kGlossy);
+    return o;
+}
+
+PathOptions reverse_options(const EffectSet& simulated) {
+    PathOptions o;
+    o.direct = simulated.contains(Effect::kDirect);
+    o.shadows = simulated.contains(Effect::kShadows);
+    o.indirect = simulated.contains(Effect::kIndirect);
+    o.glossy = simulated.contains(Effect::kGlossy);
+    return o;
+}
+
+double masked_rmse(const Image& image, const Image& reference, const std::vector<std::uint8_t>& mask) {
+    double sum = 0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        if (!mask[i]) continue;
+        const Vec3d d = Vec3d(image.pixels()[i]) - Vec3d(reference.pixels()[i]);
+        sum += glm::dot(d, d);
+        count += 3;
+    }
+    return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+double time_to_rmse(const std::vector<double>& seconds, const std::vector<double>& rmse, double target) {
+    if (seconds.empty()) return 0;
+    if (target >= rmse.front()) return seconds.front() * std::pow(rmse.front() / target, 2.0);
+    for (std::size_t i = 1; i < seconds.size(); ++i) {
+        if (target >= rmse[i]) {
+            // log t linear in log RMSE between points i − 1 and i.
+            const double a = std::log(rmse[i - 1] / target) / std::log(rmse[i - 1] / rmse[i]);
+            return std::exp(std::log(seconds[i - 1]) + a * std::log(seconds[i] / seconds[i - 1]));
+        }
+    }
+    return seconds.back() * std::pow(rmse.back() / target, 2.0);
+}
+
+void run_forward_study(const StudyOptions& options) {
+    if (!std::filesystem::is_directory(options.cache))
+        throw InputError("--cache: " + options.cache + ": not a folder");
+    const Setup cornell("ch06_default.json", options.size);
+    fractions(cornell, options);
+    time_to_same_rmse(cornell, options);
+    const Setup mirror("ch08_default.json", options.size);
+    wins_and_losses(mirror, options);
+}
+
+}  // namespace rt

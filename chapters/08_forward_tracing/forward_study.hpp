@@ -1,0 +1,47 @@
+// What reverse tracing saves, measured (`--forward-study`):
+//  1. On chapter 06's Cornell box: the fraction of traced light paths that ever reach the camera, through a
+//     lens aperture of radius R (it falls like R²) and by connecting every vertex to the pinhole.
+//  2. Time to the same RMSE: chapter 06's path tracer (MIS, and BRDF sampling alone) at 4, 16, 64 spp
+//     against its converged reference (chapter 06's cached PFM), and the time the light tracer needs to
+//     reach each of those RMSEs (interpolated on its own log RMSE–log time curve).
+//  3. Where forward tracing wins and loses, on ch08_default.json (a mirror panel throws the lamp onto the
+//     wall): the RMSE of both tracers on the pixels of the caustic, of the mirror, and of everything else.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "light_tracer.hpp"
+#include "path_tracer.hpp"
+#include "rt/effect_set.hpp"
+#include "rt/image.hpp"
+
+namespace rt {
+
+// The light tracer's options for the effects a run simulates.
+LightTracerOptions forward_options(const EffectSet& simulated);
+// Chapter 06's path tracer (MIS) for the same effects.
+PathOptions reverse_options(const EffectSet& simulated);
+
+struct StudyOptions {
+    int size = 100;                           // the image is size × size
+    std::uint64_t fraction_paths = 1u << 20;  // light paths behind each fraction
+    int reference_spp = 8192;
+    std::string cache = ".";  // where converged references are read (chapter 06's files) or written
+    std::string csv;          // the time-to-RMSE table, when not empty
+    int threads = 0;
+    std::uint64_t seed = 1;
+};
+
+// RMSE over the pixels where mask is true (all channels).
+double masked_rmse(const Image& image, const Image& reference, const std::vector<std::uint8_t>& mask);
+
+// The time at which a curve of (seconds, RMSE) points, falling with time, reaches `rmse`: linear in
+// log–log between the two points around it; past its last point, extrapolated with RMSE ∝ t^(−1/2).
+double time_to_rmse(const std::vector<double>& seconds, const std::vector<double>& rmse, double target);
+
+// Runs the three measurements and prints them.
+void run_forward_study(const StudyOptions& options);
+
+}  // namespace rt

@@ -1,0 +1,52 @@
+// Where a light path starts: a light chosen with probability P ∝ its power Φ, a point on it and a direction
+// it emits into. An area light of radiance Le and area A emits Φ = π lum(Le) A (one-sided, Lambertian); a
+// point light of intensity I emits Φ = 4π lum(I).
+//   area light:  x uniform by area (pdf_A = 1 / A), ω cosine-weighted about its normal (pdf_ω = cos θ / π):
+//                β₀ = Le cos θ / (P pdf_A pdf_ω) = π Le A / P;
+//   point light: x is the point (a delta), ω uniform over the sphere (pdf_ω = 1 / 4π): β₀ = 4π I / P.
+// β₀ is the light path's starting throughput: E[β₀ g(x, ω)] = ∫∫ Le cos θ g dA dω for any g, the power the
+// path stands for.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "hit.hpp"
+#include "light_set.hpp"
+
+namespace rt {
+
+struct EmissionSample {
+    Hit origin;                // the point on the light (point, point_error, normal on the emitting side)
+    bool point_light = false;  // a point light: no surface, no normal, no offset
+    Color position_weight{0};  // Le / (P pdf_A) for an area light, I / P for a point light
+    Vec3 direction{0, 0, 1};   // unit, the emitted direction
+    Color beta{0};             // β₀ = Le cos θ / (P pdf_A pdf_ω)
+};
+
+class EmitterSampler {
+  public:
+    // Area lights (quads, triangles, spheres) and point lights of `lights`; the environment is not sampled.
+    explicit EmitterSampler(const LightSet& lights);
+
+    bool empty() const { return cdf_.empty(); }
+    std::size_t light_count() const { return cdf_.size(); }
+    // P(light i) = Φ_i / Σ Φ (lights in the order quads, triangles, spheres, points).
+    Real probability(std::size_t index) const;
+    Real total_power() const { return total_; }
+
+    // A light chosen by u_pick, a point on it from u_point, a direction from u_direction. Nothing when there
+    // is no light.
+    std::optional<EmissionSample> sample(Real u_pick, Vec2 u_point, Vec2 u_direction) const;
+
+  private:
+    std::vector<QuadLight> quads_;
+    std::vector<TriangleLight> triangles_;
+    std::vector<SphereLight> spheres_;
+    std::vector<PointLight> points_;
+    std::vector<Real> weights_;  // Φ_i
+    std::vector<Real> cdf_;
+    Real total_ = 0;
+};
+
+}  // namespace rt

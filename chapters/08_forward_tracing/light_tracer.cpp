@@ -1,0 +1,157 @@
+#include "light_tracer.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "rt/errors.hpp"
+#include "shadow_ray.hpp"
+
+namespace rt {
+namespace {
+
+bool black(const Color& c) {
+    return !(c.r > 0 || c.g > 0 || c.b > 0);
+}
+
+Brdf without_lobes(const Brdf& brdf) {
+    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
+    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
+    return brdf;
+}
+
+// Adds c to pixel (x, y) unless it is zero or not finite; returns whether it did.
+bool splat(Image& film, const FilmPoint& p, const Color& c) {
+    if (black(c) || !is_finite(c)) return false;
+    film.at(p.x, p.y) += c;
+    return true;
+}
+
+}  // namespace
+
+CameraVariant camera_variant_from_string(std::string_view name) {
+    if (name == "connect") return CameraVariant::kConnect;
+    if (name == "aperture") return CameraVariant::kAperture;
+    throw InputError("--variant: must be connect or aperture, got " + std::string(name));
+}
+
+LightTracer::LightTracer(const World& world, const Scene& scene, const LightSet& lights,
+                         const PinholeCamera& camera, LightTracerOptions options)
+    : world_(world), camera_(camera), emitters_(lights), options_(options) {
+    if (options_.variant == CameraVariant::kAperture && !(options_.aperture_radius > 0)) {
+        throw InputError("--aperture: the lens radius must be > 0, got " +
+                         std::to_string(options_.aperture_radius));
+    }
+    const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
+    for (const Material& m : scene.materials) {
+        const Brdf b = options_.glossy ? brdf_of(m, stand_in) : without_lobes(brdf_of(m, stand_in));
+        brdfs_.push_back(b);
+        black_.push_back(is_black(b) ? 1 : 0);
+        delta_.push_back(is_delta(b) ? 1 : 0);
+    }
+}
+
+bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Color& beta, Image& film,
+                          RayCounts& rays) const {
+    const Vec3 to_eye = camera_.eye - hit.point;
+    const Real r2 = glm::dot(to_eye, to_eye);
+    if (!(r2 > 0)) return false;
+    const Vec3 wc = to_eye / std::sqrt(r2);
+    const Real cos_x = glm::dot(wc, hit.normal);
+    if (!(cos_x > 0)) return false;
+    const auto p = project_direction(camera_, -to_eye);
+    if (!p) return false;
+    const Color f = eval(brdf, wo, wc, hit.normal);
+    if (black(f)) return false;
+    const ShadowRay s = spawn_shadow_ray(hit, camera_.eye, options_.offset);
+    rays.add(RayKind::kCamera);
+    if (world_.occluded(s.ray, s.t_max)) return false;
+    const Real G = cos_x * p->cos_theta / r2;
+    return splat(film, *p, beta * f * (G * pinhole_importance(camera_, p->cos_theta)));
+}
+
+bool LightTracer::connect_light(const EmissionSample& e, Image& film, RayCounts& rays) const {
+    if (e.point_light) return false;
+    const Vec3 to_eye = camera_.eye - e.origin.point;
+    const Real r2 = glm::dot(to_eye, to_eye);
+    if (!(r2 > 0)) return false;
+    const Vec3 wc = to_eye / std::sqrt(r2);
+    // One-sided: an area light emits on its normal's side only.
+    const Real cos_l = glm::dot(wc, e.origin.normal);
+    if (!(cos_l > 0)) return false;
+    const auto p = project_direction(camera_, -to_eye);
+    if (!p) return false;
+    rays.add(RayKind::kCamera);
+    const ShadowRay s = spawn_shadow_ray(e.origin, camera_.eye, options_.offset);
+    if (world_.occluded(s.ray, s.t_max)) return false;
+    const Real G = cos_l * p->cos_theta / r2;
+    return splat(film, *p, e.position_weight * (G * pinhole_importance(camera_, p->cos_theta)));
+}
+
+bool LightTracer::through_aperture(const Ray& ray, Real t_hit, const Color& beta, Image& film) const {
+    const Real facing = glm::dot(ray.direction, camera_.forward);
+    if (!(facing < 0)) return false;  // only light travelling toward the film enters the lens
+    const Real t = glm::dot(camera_.eye - ray.origin, camera_.forward) / facing;
+    if (!(t > 0 && t < t_hit)) return false;
+    const Vec3 offset = ray.at(t) - camera_.eye;
+    const Real R = options_.aperture_radius;
+    if (glm::dot(offset, offset) > R * R) return false;
+    const auto p = project_direction(camera_, -ray.direction);
+    if (!p) return false;
+    const Real lens_area = kPi * R * R;
+    return splat(film, *p, beta * (pinhole_importance(camera_, p->cos_theta) / lens_area));
+}
+
+bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
+    const Real u_pick = rng.next_real();
+    const Vec2 u_point = rng.next_vec2();
+    const Vec2 u_direction = rng.next_vec2();
+    const auto e = emitters_.sample(u_pick, u_point, u_direction);
+    if (!e) return false;
+    const bool connecting = options_.variant == CameraVariant::kConnect;
+    bool added = false;
+    if (connecting && options_.camera && !options_.caustics_only) added |= connect_light(*e, film, rays);
+    Ray ray = e->point_light ? Ray{e->origin.point, e->direction}
+                             : spawn_ray(e->origin, e->direction, options_.offset);
+    rays.add(RayKind::kShadow);
+    Color relative(1);         // Π f cos θ / pdf: β = β₀ relative
+    int diffuse_bounces = 0;   // non-specular bounces so far
+    bool from_mirror = false;  // the last bounce was specular
+    for (int depth = 0;; ++depth) {
+        const Color beta = e->beta * relative;
+        const auto hit = world_.intersect(ray);
+        if (!connecting) added |= through_aperture(ray, hit ? hit->t : kInfinity, beta, film);
+        if (!hit) break;
+        const std::size_t m = std::size_t(hit->material);
+        if (black_[m]) break;
+        const Brdf& brdf = brdfs_[m];
+        const bool delta = delta_[m] != 0;
+        const Vec3 wo = -ray.direction;
+        if (connecting && !delta) {
+            const bool wanted = diffuse_bounces == 0 ? options_.direct : options_.indirect;
+            if (wanted && (!options_.caustics_only || from_mirror))
+                added |= connect(*hit, wo, brdf, beta, film, rays);
+        }
+        // Without the indirect effect a path ends at its first diffuse vertex: maximum depth 1.
+        if (!delta && !options_.indirect) break;
+        const BrdfSample s = sample(brdf, wo, hit->normal, rng.next_vec2());
+        const Real cos_i = glm::dot(s.wi, hit->normal);
+        if (!(cos_i > 0) || !(s.pdf > 0) || black(s.f)) break;
+        relative *= s.f * (cos_i / s.pdf);
+        from_mirror = delta;
+        if (!delta) ++diffuse_bounces;
+        if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
+        ray = spawn_ray(*hit, s.wi, options_.offset);
+        rays.add(std::holds_alternative<LambertBrdf>(brdf) ? RayKind::kIndirect : RayKind::kReflection);
+    }
+    return added;
+}
+
+SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings& settings,
+                                 std::uint64_t path_count) {
+    return render_light_paths(settings, path_count,
+                              [&](std::uint64_t, Pcg32& rng, Image& film, RayCounts& rays) {
+                                  return tracer.trace(rng, film, rays);
+                              });
+}
+
+}  // namespace rt

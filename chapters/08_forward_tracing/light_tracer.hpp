@@ -1,0 +1,91 @@
+// Forward (light) tracing: paths start at the lights and bounce by the same BRDFs as chapter 06's paths
+// (a BRDF is reciprocal, f(wo, wi) = f(wi, wo), so sampling wi from wo = the direction the light came from
+// is the same sampler). With throughput β_k = β₀ Π f cos θ / pdf after k bounces, a path reaches the camera
+// two ways:
+//   aperture: the camera is a lens of radius R focused at infinity; a segment that happens to cross it adds
+//             β We / A_lens to the pixel its direction maps to (We = 1 / (A_pix cos⁴θ_c), A_lens = π R²).
+//             Almost no path crosses a small lens: the fraction is measured.
+//   connect:  at every non-specular vertex x (and at the light's own point), a visibility ray toward the
+//             pinhole, and the splat  β f(wo, x→eye) G We,  G = cos θ_x cos θ_c / r²,
+//             into the pixel x projects to. A mirror vertex cannot be connected (its f is a delta), so what a
+//             mirror shows is lost to this camera.
+// Rays: the ray leaving a light is counted as a shadow ray (it joins a light and a surface, as a shadow ray
+// does, traced from the light's end); the connection rays as camera rays (they are the rays that reach the
+// camera); bounces as indirect (Lambert) or reflection (mirror, glossy, retro-reflective), as in chapter 06.
+#pragma once
+
+#include <vector>
+
+#include "brdf.hpp"
+#include "camera.hpp"
+#include "camera_importance.hpp"
+#include "hit.hpp"
+#include "light_emission.hpp"
+#include "light_set.hpp"
+#include "ray_offset.hpp"
+#include "rt/random.hpp"
+#include "rt/ray_counts.hpp"
+#include "rt/scene.hpp"
+#include "splat_render.hpp"
+#include "termination.hpp"
+#include "world.hpp"
+
+namespace rt {
+
+enum class CameraVariant { kConnect, kAperture };
+
+// "connect" or "aperture"; the other name throws InputError.
+CameraVariant camera_variant_from_string(std::string_view name);
+
+struct LightTracerOptions {
+    CameraVariant variant = CameraVariant::kConnect;
+    Real aperture_radius = 1;  // kAperture: the lens radius R, in scene units
+    // Chapter 05's Russian roulette on the relative throughput Π f cos θ / pdf (β / β₀), under its cap.
+    TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
+    bool camera = true;    // effect "camera": the emitters themselves, seen by the camera
+    bool direct = true;    // effect "direct": vertices after no diffuse or glossy bounce
+    bool indirect = true;  // effect "indirect": bounces off diffuse and glossy surfaces
+    bool glossy = true;    // false: glossy and retro-reflective lobes shaded as Lambert (as chapter 06)
+    // Only vertices whose light arrived straight from a mirror (paths L…S D E): the caustics alone.
+    bool caustics_only = false;
+    RayOffset offset{};
+    Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo (as chapter 06)
+};
+
+class LightTracer {
+  public:
+    LightTracer(const World& world, const Scene& scene, const LightSet& lights, const PinholeCamera& camera,
+                LightTracerOptions options);
+
+    // Traces one light path, adding its contributions to `film` (pixel sums). Returns whether it added any.
+    bool trace(Pcg32& rng, Image& film, RayCounts& rays) const;
+
+    const LightTracerOptions& options() const { return options_; }
+    const EmitterSampler& emitters() const { return emitters_; }
+
+    // The splat of a connection at surface vertex `hit` reached with throughput β from direction wo:
+    // β f(wo, wc) cos θ_x cos θ_c We / r², wc the unit direction to the eye. Adds it to `film` when the eye
+    // is visible (one camera ray) and returns whether it did.
+    bool connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Color& beta, Image& film,
+                 RayCounts& rays) const;
+    // The light's own point seen by the camera: Le cos θ_l cos θ_c We / (P pdf_A r²). A point light is not
+    // seen (nothing, as in every chapter: no camera ray can hit a point; its pixel would read I We cos / r²).
+    bool connect_light(const EmissionSample& emission, Image& film, RayCounts& rays) const;
+    // The segment ray (0, t_hit) crossing the lens disc (centre eye, normal w, radius R) travelling toward
+    // the film: adds β We / (π R²) to the pixel of direction −d.
+    bool through_aperture(const Ray& ray, Real t_hit, const Color& beta, Image& film) const;
+
+  private:
+    const World& world_;
+    PinholeCamera camera_;
+    EmitterSampler emitters_;
+    LightTracerOptions options_;
+    std::vector<Brdf> brdfs_;
+    std::vector<std::uint8_t> black_, delta_;
+};
+
+// N light paths with `tracer` (deterministic for any thread count, see splat_render.hpp).
+SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings& settings,
+                                 std::uint64_t path_count);
+
+}  // namespace rt

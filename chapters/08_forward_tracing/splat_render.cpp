@@ -1,0 +1,101 @@
+#include "splat_render.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "rt/interrupt.hpp"
+
+namespace rt {
+namespace {
+
+// Chunks traced between two merges: a fixed number, so the memory for chunk films stays bounded.
+constexpr std::uint64_t kChunksPerWave = 8;
+
+}  // namespace
+
+std::uint64_t chunk_size(int width, int height) {
+    return std::max<std::uint64_t>(1u << 14, std::uint64_t(width) * std::uint64_t(height));
+}
+
+SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
+                               const LightPathFunction& trace) {
+    const auto start = std::chrono::steady_clock::now();
+    const int threads =
+        settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const std::uint64_t chunk = chunk_size(settings.width, settings.height);
+    const std::uint64_t chunk_count = (path_count + chunk - 1) / chunk;
+    const std::size_t pixels = std::size_t(settings.width) * std::size_t(settings.height);
+
+    std::vector<Vec3d> sums(pixels, Vec3d(0));
+    std::vector<Image> films;
+    for (std::uint64_t c = 0; c < std::min(kChunksPerWave, chunk_count); ++c)
+        films.emplace_back(settings.width, settings.height);
+    std::vector<std::uint64_t> contributing(films.size(), 0);
+    std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
+    std::uint64_t traced = 0, contributed = 0;
+    bool interrupted = false;
+
+    for (std::uint64_t wave = 0; wave < chunk_count; wave += kChunksPerWave) {
+        if (interrupt_requested()) {
+            interrupted = true;
+            break;
+        }
+        const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count - wave);
+        std::atomic<std::uint64_t> next{0};
+        std::exception_ptr failure;
+        std::mutex failure_mutex;
+        auto worker = [&](int thread_index) {
+            RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
+            try {
+                for (std::uint64_t c = next++; c < wave_chunks; c = next++) {
+                    Image& film = films[c];
+                    std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
+                    std::uint64_t count = 0;
+                    const std::uint64_t first = (wave + c) * chunk;
+                    const std::uint64_t end = std::min(path_count, first + chunk);
+                    for (std::uint64_t i = first; i < end; ++i) {
+                        Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
+                        if (trace(i, rng, film, rays)) ++count;
+                    }
+                    contributing[c] = count;
+                }
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(failure_mutex);
+                if (!failure) failure = std::current_exception();
+                next = wave_chunks;  // the others stop after their chunk
+            }
+        };
+        std::vector<std::thread> pool;
+        for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+        worker(0);
+        for (std::thread& t : pool) t.join();
+        if (failure) std::rethrow_exception(failure);
+        // The merge, in chunk order: the same sums whatever thread traced which chunk.
+        for (std::uint64_t c = 0; c < wave_chunks; ++c) {
+            const std::vector<Color>& film = films[c].pixels();
+            for (std::size_t p = 0; p < pixels; ++p) sums[p] += Vec3d(film[p]);
+            contributed += contributing[c];
+            traced += std::min(path_count, (wave + c + 1) * chunk) - (wave + c) * chunk;
+        }
+    }
+
+    SplatResult out;
+    out.contributing_paths = contributed;
+    RenderResult& r = out.render;
+    r.image = Image(settings.width, settings.height);
+    const double scale = traced > 0 ? 1.0 / double(traced) : 0.0;
+    for (std::size_t p = 0; p < pixels; ++p) r.image.pixels()[p] = Color(sums[p] * scale);
+    for (const RayCounts& c : rays_per_thread) r.rays += c;
+    r.samples = traced;
+    r.samples_per_pixel = int(traced / std::max<std::uint64_t>(1, pixels));
+    r.interrupted = interrupted;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+}  // namespace rt

@@ -1,0 +1,361 @@
+// Tests of chapter 08: light paths from the lights, the camera's importance, the connection to the pinhole
+// (it converges to chapter 06's image), the lens aperture, deterministic splatting, ray counts by kind.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "camera_importance.hpp"
+#include "forward_study.hpp"
+#include "light_emission.hpp"
+#include "light_tracer.hpp"
+#include "path_tracer.hpp"
+#include "rt/assets.hpp"
+#include "rt/effects.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+using namespace rt;
+
+namespace {
+
+RenderSettings settings_of(int width, int height, int spp, std::uint64_t seed, int threads = 2) {
+    RenderSettings s;
+    s.width = width;
+    s.height = height;
+    s.samples_per_pixel = spp;
+    s.seed = seed;
+    s.threads = threads;
+    s.progress = ProgressStyle::kNone;
+    return s;
+}
+
+std::uint64_t paths_of(const RenderSettings& s) {
+    return std::uint64_t(s.samples_per_pixel) * std::uint64_t(s.width) * std::uint64_t(s.height);
+}
+
+// A scene and everything both tracers need, at a given image size.
+struct Setup {
+    Scene scene;
+    World world;
+    LightSet lights;
+    PinholeCamera camera;
+    Setup(Scene s, int width, int height)
+        : scene(std::move(s)),
+          world(scene),
+          lights(collect_lights(scene)),
+          camera(make_pinhole_camera(scene.camera, width, height)) {}
+};
+
+Scene scene_from(const std::string& json) {
+    return parse_scene(json, "test.json");
+}
+
+// A closed room lit by a point light: floor, walls and ceiling of a 4×3×4 box, the camera inside it.
+const char* kPointLightRoom = R"({
+  "camera": {"from": [0, 1.5, 1.8], "at": [0, 1.2, -2], "up": [0, 1, 0], "vfov": 70},
+  "materials": {"white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
+                "red": {"type": "diffuse", "albedo": [0.7, 0.1, 0.1]}},
+  "shapes": [
+    {"type": "quad", "origin": [-2, 0, 2], "u": [4, 0, 0], "v": [0, 0, -4], "material": "white"},
+    {"type": "quad", "origin": [-2, 3, -2], "u": [4, 0, 0], "v": [0, 0, 4], "material": "white"},
+    {"type": "quad", "origin": [-2, 0, -2], "u": [4, 0, 0], "v": [0, 3, 0], "material": "red"},
+    {"type": "quad", "origin": [-2, 0, 2], "u": [0, 0, -4], "v": [0, 3, 0], "material": "white"},
+    {"type": "quad", "origin": [2, 0, -2], "u": [0, 0, 4], "v": [0, 3, 0], "material": "white"},
+    {"type": "quad", "origin": [2, 0, 2], "u": [-4, 0, 0], "v": [0, 3, 0], "material": "white"},
+    {"type": "sphere", "center": [0.5, 0.5, -1], "radius": 0.5, "material": "white"}
+  ],
+  "lights": [{"type": "point", "position": [-0.5, 2.5, -0.5], "intensity": [3, 3, 3]}]
+})";
+
+// Per pixel and channel: the mean of `batches` independent images and its standard error.
+struct MeanAndError {
+    std::vector<double> mean, error;
+};
+template <typename Render>
+MeanAndError batch_statistics(int batches, std::size_t values, Render&& render) {
+    std::vector<double> sum(values, 0), sum2(values, 0);
+    for (int b = 0; b < batches; ++b) {
+        const Image image = render(std::uint64_t(100 + b));
+        for (std::size_t i = 0; i < values; ++i) {
+            const double v = double(image.pixels()[i / 3][int(i % 3)]);
+            sum[i] += v;
+            sum2[i] += v * v;
+        }
+    }
+    MeanAndError out{std::vector<double>(values), std::vector<double>(values)};
+    for (std::size_t i = 0; i < values; ++i) {
+        const double m = sum[i] / batches;
+        const double variance = std::max(0.0, (sum2[i] - batches * m * m) / (batches - 1));
+        out.mean[i] = m;
+        out.error[i] = std::sqrt(variance / batches);
+    }
+    return out;
+}
+
+// Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
+void check_forward_matches_reverse(const Setup& s, int spp) {
+    constexpr int kBatches = 16;
+    const std::size_t values = s.camera.width * std::size_t(s.camera.height) * 3;
+    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    const PathTracer path(s.world, s.scene, s.lights, reverse_options(EffectSet::all()));
+    const auto forward = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
+        const RenderSettings settings = settings_of(s.camera.width, s.camera.height, spp / kBatches, seed);
+        return render_light_tracing(light, settings, paths_of(settings)).render.image;
+    });
+    const auto reverse = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
+        return render_paths(path, s.camera,
+                            settings_of(s.camera.width, s.camera.height, spp / kBatches, seed + 50))
+            .image;
+    });
+    int within3 = 0, beyond6 = 0;
+    double forward_sum = 0, reverse_sum = 0, variance_sum = 0;
+    for (std::size_t i = 0; i < values; ++i) {
+        const double d = forward.mean[i] - reverse.mean[i];
+        const double se = std::hypot(forward.error[i], reverse.error[i]);
+        const double z = se > 0 ? std::abs(d) / se : (d == 0 ? 0.0 : kInfinity);
+        within3 += z < 3;
+        beyond6 += z > 6;
+        forward_sum += forward.mean[i];
+        reverse_sum += reverse.mean[i];
+        variance_sum += se * se;
+    }
+    INFO("values " << values << ", within 3 sigma " << within3 << ", beyond 6 sigma " << beyond6);
+    CHECK(double(within3) / double(values) >= 0.97);
+    CHECK(beyond6 == 0);
+    // The image means: their difference against its standard error sqrt(Σ se²) / values.
+    INFO("mean forward " << forward_sum / double(values) << ", reverse " << reverse_sum / double(values));
+    CHECK(std::abs(forward_sum - reverse_sum) <= 4 * std::sqrt(variance_sum));
+    CHECK(forward_sum > 0);
+}
+
+}  // namespace
+
+TEST_CASE("A scene point projects back to the film point its camera ray came through", "[ch08]") {
+    const PinholeCamera camera =
+        make_pinhole_camera(CameraDesc{{1, 2, 3}, {-4, 5, 6}, {0, 1, 0}, 55}, 64, 48);
+    for (Real px : {0.5f, 10.25f, 32.3f, 63.5f}) {
+        for (Real py : {0.5f, 20.75f, 47.5f}) {
+            const Ray ray = camera_ray(camera, px, py);
+            const auto p = project_point(camera, ray.at(7.5f));
+            REQUIRE(p);
+            CHECK(p->px == Approx(px).margin(1e-3));
+            CHECK(p->py == Approx(py).margin(1e-3));
+            CHECK(p->x == int(px));
+            CHECK(p->y == int(py));
+            CHECK(p->cos_theta == Approx(glm::dot(ray.direction, camera.forward)).epsilon(1e-5));
+        }
+    }
+    CHECK_FALSE(project_point(camera, camera.eye - camera.forward));  // behind the eye
+    CHECK_FALSE(project_point(camera, camera.eye + camera.right * 100.0f + camera.forward));  // off the film
+}
+
+TEST_CASE("The pinhole importance integrates to 1 over a pixel: a pixel of radiance 1 reads 1",
+          "[ch08][statistical]") {
+    // ∫ We cos θ_c dω over pixel j = 1: uniform directions on the sphere (pdf 1 / 4π), each in the pixel it
+    // projects to; a 4×3 film with a 100° field of view, so corner pixels see large angles.
+    const PinholeCamera camera = make_pinhole_camera(CameraDesc{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 100}, 4, 3);
+    constexpr int kSamples = 2'000'000;
+    std::vector<double> sums(12, 0);
+    Pcg32 rng(7, 3);
+    for (int i = 0; i < kSamples; ++i) {
+        const Vec2 u = rng.next_vec2();
+        const Real z = 1 - 2 * u.x, r = std::sqrt(std::max(Real(0), 1 - z * z)), phi = 2 * kPi * u.y;
+        const Vec3 d(r * std::cos(phi), r * std::sin(phi), z);
+        if (const auto p = project_direction(camera, d)) {
+            sums[std::size_t(p->y * 4 + p->x)] +=
+                double(pinhole_importance(camera, p->cos_theta) * p->cos_theta) * 4 * std::numbers::pi;
+        }
+    }
+    for (double s : sums) CHECK(s / kSamples == Approx(1).epsilon(0.03));
+}
+
+TEST_CASE("Lights are picked by power, and the light paths' starting throughput sums to the emitted power",
+          "[ch08][statistical]") {
+    const Scene scene = scene_from(R"({
+      "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
+      "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2]}},
+      "shapes": [{"type": "quad", "origin": [0, 0, 0], "u": [3, 0, 0], "v": [0, 1, 0], "material": "lamp"}],
+      "lights": [{"type": "point", "position": [0, 4, 0], "intensity": [5, 5, 5]}]})");
+    const EmitterSampler emitters(collect_lights(scene));
+    const double quad_power = std::numbers::pi * 2 * 3, point_power = 4 * std::numbers::pi * 5;
+    REQUIRE(emitters.light_count() == 2);
+    CHECK(emitters.total_power() == Approx(quad_power + point_power).epsilon(1e-5));
+    CHECK(emitters.probability(0) == Approx(quad_power / (quad_power + point_power)).epsilon(1e-5));
+    Pcg32 rng(3, 1);
+    double sum = 0;
+    int from_point = 0;
+    constexpr int kSamples = 200'000;
+    for (int i = 0; i < kSamples; ++i) {
+        const Real u_pick = rng.next_real();
+        const Vec2 a = rng.next_vec2(), b = rng.next_vec2();
+        const auto e = emitters.sample(u_pick, a, b);
+        REQUIRE(e);
+        sum += double(luminance(e->beta));
+        from_point += e->point_light;
+        if (!e->point_light) {
+            CHECK(glm::dot(e->direction, e->origin.normal) >= 0);  // one-sided: into the front
+            CHECK(e->origin.point.y >= 0);
+            CHECK(e->origin.point.y <= 1);
+        }
+    }
+    // Every sample's β₀ is the total power (β₀ = Φ_i / P_i), so the mean is exact up to rounding.
+    CHECK(sum / kSamples == Approx(quad_power + point_power).epsilon(1e-4));
+    CHECK(double(from_point) / kSamples == Approx(point_power / (quad_power + point_power)).epsilon(0.02));
+}
+
+TEST_CASE("Connecting light paths to the pinhole converges to chapter 06's image of the Cornell box",
+          "[ch08][statistical]") {
+    const Setup s(load_scene(scene_path("ch06_default.json")), 16, 16);
+    check_forward_matches_reverse(s, 1024);
+}
+
+TEST_CASE(
+    "Connecting light paths to the pinhole converges to chapter 06's image of a room lit by a point light",
+    "[ch08][statistical]") {
+    const Setup s(scene_from(kPointLightRoom), 12, 12);
+    check_forward_matches_reverse(s, 1024);
+}
+
+TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through the pinhole connection",
+          "[ch08][statistical]") {
+    // A lamp of radiance 1, larger than the view (half-height 10 tan 20° = 3.6), 10 units in front of the
+    // camera: every pixel is 1.
+    const Setup s(scene_from(R"({
+      "camera": {"from": [0, 0, 10], "at": [0, 0, 0], "vfov": 40},
+      "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]}},
+      "shapes": [{"type": "quad", "origin": [-5, -5, 0], "u": [10, 0, 0], "v": [0, 10, 0],
+                  "material": "lamp"}]})"),
+                  4, 4);
+    LightTracerOptions options = forward_options(EffectSet::all());
+    const LightTracer pinhole(s.world, s.scene, s.lights, s.camera, options);
+    const SplatResult connect = render_light_tracing(pinhole, settings_of(4, 4, 16384, 1), 4 * 4 * 16384);
+    options.variant = CameraVariant::kAperture;
+    options.aperture_radius = 0.5f;
+    const LightTracer lens(s.world, s.scene, s.lights, s.camera, options);
+    const SplatResult aperture = render_light_tracing(lens, settings_of(4, 4, 1, 1), 4'000'000);
+    for (const Color& c : connect.render.image.pixels()) CHECK(c.g == Approx(1).epsilon(0.03));
+    CHECK(connect.render.image.mean() == Approx(1).epsilon(0.01));
+    CHECK(aperture.render.image.mean() == Approx(1).epsilon(0.03));
+    // Almost no path finds the lens: a fraction of about (π R² / d²) cos / π of the lamp's paths.
+    const double fraction = double(aperture.contributing_paths) / 4'000'000.0;
+    INFO("fraction through the lens " << fraction);
+    CHECK(fraction > 0);
+    CHECK(fraction < 0.01);
+    CHECK(aperture.render.rays[RayKind::kCamera] == 0);  // the lens is found by chance, not by a ray to it
+}
+
+TEST_CASE("A light path that never reaches the camera contributes nothing", "[ch08]") {
+    SECTION("the light faces away from everything") {
+        const Setup s(scene_from(R"({
+          "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
+          "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [4, 4, 4]},
+                        "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+          "shapes": [{"type": "quad", "origin": [-1, -1, 0], "u": [0, 2, 0], "v": [2, 0, 0], "material": "lamp"},
+                     {"type": "quad", "origin": [-3, -3, 1], "u": [6, 0, 0], "v": [0, 6, 0], "material": "white"}]})"),
+                      8, 8);
+        // The lamp emits toward −z (u × v = −z); the white quad lies on its dark side.
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 1024);
+        CHECK(r.contributing_paths == 0);
+        CHECK(r.render.image.mean() == 0);
+        CHECK(r.render.rays[RayKind::kShadow] == 1024);  // every path left its light...
+        CHECK(r.render.rays[RayKind::kCamera] == 0);     // ...and no vertex could be joined to the camera
+    }
+    SECTION("a wall hides every lit surface from the camera") {
+        const Setup s(scene_from(R"({
+          "camera": {"from": [0, 1, 5], "at": [0, 1, 0]},
+          "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [4, 4, 4]},
+                        "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
+          "shapes": [{"type": "quad", "origin": [-2, 3, -3], "u": [4, 0, 0], "v": [0, 0, 2], "material": "lamp"},
+                     {"type": "quad", "origin": [-5, 0, 0], "u": [0, 0, -5], "v": [10, 0, 0], "material": "white"},
+                     {"type": "quad", "origin": [-50, -50, 2], "u": [100, 0, 0], "v": [0, 100, 0], "material": "white"}]})"),
+                      8, 8);
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 4096);
+        CHECK(r.contributing_paths == 0);
+        CHECK(r.render.image.mean() == 0);
+        CHECK(r.render.rays[RayKind::kCamera] > 0);  // connections were tried: the wall stopped them all
+        CHECK(r.render.rays[RayKind::kIndirect] > 0);
+    }
+}
+
+TEST_CASE("Light tracing counts its rays by kind and traces only the effects the scene calls for", "[ch08]") {
+    const Scene cornell = load_scene(scene_path("ch06_default.json"));
+    SECTION("every path leaves its light once: one shadow-kind ray per path; no mirror, no reflection rays") {
+        const Setup s(cornell, 8, 8);
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 5000);
+        CHECK(r.render.samples == 5000);
+        CHECK(r.render.rays[RayKind::kShadow] == 5000);
+        CHECK(r.render.rays[RayKind::kReflection] == 0);
+        CHECK(r.render.rays[RayKind::kRefraction] == 0);
+        CHECK(r.render.rays[RayKind::kIndirect] > 0);
+        // At most one connection per vertex: the light's point, then one per bounce.
+        CHECK(r.render.rays[RayKind::kCamera] <= 5000 + 5000 + r.render.rays[RayKind::kIndirect]);
+    }
+    SECTION("a scene without lights traces nothing") {
+        Scene dark = cornell;
+        for (Material& m : dark.materials) m.emission = Color(0);
+        const Setup s(dark, 8, 8);
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 1000);
+        CHECK(r.render.rays.total() == 0);
+        CHECK(r.render.image.mean() == 0);
+    }
+    SECTION("a scene that calls only for direct light: depth 1, no indirect rays") {
+        Scene direct = cornell;
+        direct.effects = EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect};
+        const Setup s(direct, 8, 8);
+        const LightTracerOptions options = forward_options(needed(s.scene));
+        CHECK_FALSE(options.indirect);
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, options);
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 5000);
+        CHECK(r.render.rays[RayKind::kIndirect] == 0);
+        CHECK(r.render.rays[RayKind::kReflection] == 0);
+        CHECK(r.render.rays[RayKind::kShadow] == 5000);
+        CHECK(r.render.rays[RayKind::kCamera] <= 2 * 5000);  // the light's point and the first hit
+        CHECK(r.render.rays[RayKind::kCamera] > 5000);
+    }
+    SECTION("the mirror scene bounces off its mirror: reflection rays") {
+        const Setup s(load_scene(scene_path("ch08_default.json")), 8, 8);
+        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 20000);
+        CHECK(r.render.rays[RayKind::kReflection] > 0);
+    }
+}
+
+TEST_CASE("The default scene renders finite, plausible and identical for 1, 2 and 3 threads", "[ch08]") {
+    const Setup s(load_scene(scene_path("ch08_default.json")), 24, 24);
+    const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+    // 24 × 24 × 96 paths: several chunks, so threads really share the work.
+    const std::uint64_t paths = 24 * 24 * 96;
+    REQUIRE(paths > 2 * chunk_size(24, 24));
+    const SplatResult one = render_light_tracing(tracer, settings_of(24, 24, 96, 1, 1), paths);
+    const SplatResult two = render_light_tracing(tracer, settings_of(24, 24, 96, 1, 2), paths);
+    const SplatResult three = render_light_tracing(tracer, settings_of(24, 24, 96, 1, 3), paths);
+    CHECK(one.render.image.all_finite());
+    CHECK(one.render.image.mean() > 0.05);
+    CHECK(one.render.image.mean() < 0.5);
+    CHECK(one.render.image.pixels() == two.render.image.pixels());
+    CHECK(one.render.image.pixels() == three.render.image.pixels());
+    CHECK(one.render.rays.count == two.render.rays.count);
+    CHECK(one.contributing_paths == three.contributing_paths);
+    const SplatResult other_seed = render_light_tracing(tracer, settings_of(24, 24, 96, 2, 2), paths);
+    CHECK(other_seed.render.image.pixels() != one.render.image.pixels());
+}
+
+TEST_CASE("Time to an RMSE is read off a log-log curve, and extrapolated with RMSE proportional to t^-1/2",
+          "[ch08]") {
+    const std::vector<double> seconds{1, 4, 16}, rmse{0.4, 0.2, 0.1};
+    CHECK(time_to_rmse(seconds, rmse, 0.2) == Approx(4));
+    CHECK(time_to_rmse(seconds, rmse, 0.4 / std::sqrt(2.0)) == Approx(2));
+    CHECK(time_to_rmse(seconds, rmse, 0.05) == Approx(64));
+    CHECK(time_to_rmse(seconds, rmse, 0.8) == Approx(0.25));
+    const Image a(2, 1), b(2, 1);
+    Image c = a;
+    c.at(1, 0) = Color(3);
+    CHECK(masked_rmse(c, b, {1, 0}) == 0);
+    CHECK(masked_rmse(c, b, {0, 1}) == Approx(3));
+}
