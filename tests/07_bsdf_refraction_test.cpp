@@ -439,3 +439,17 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
     CHECK(a.b < b.b * 0.97f);
     CHECK(a.g < b.g);
 }
+
+TEST_CASE("With and without next-event estimation the glass box converges to the same image", "[render]") {
+    const Scene scene = glass_box("");
+    RenderSettings settings = small_settings(16, 512);
+    BsdfPathOptions nee, hits;
+    hits.next_event = false;
+    const RenderResult a = render_with(Renderer::kGlass, scene, needed(scene), settings, nee);
+    settings.seed = 8;
+    const RenderResult b = render_with(Renderer::kGlass, scene, needed(scene), settings, hits);
+    CHECK(a.rays[RayKind::kShadow] > 0);
+    CHECK(b.rays[RayKind::kShadow] == 0);
+    // The image means (256 pixels × 512 paths each): within 3 % (the light-hitting estimate is the noisier).
+    CHECK(b.image.mean() == Approx(a.image.mean()).epsilon(0.03));
+}

@@ -26,7 +26,11 @@ BsdfPathTracer::BsdfPathTracer(const World& world, const Scene& scene, const Lig
 Color BsdfPathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) const {
     Color L(0), beta(1);
     Ray ray = camera_ray;
-    bool delta = true;    // the camera ray, or a mirror or glass bounce: light it meets counts in full
+    const bool nee = options_.direct && options_.next_event;
+    const bool hits_count = options_.direct && !options_.next_event;
+    // Light the path meets counts in full after the camera ray, a mirror or glass bounce, or always without
+    // next-event estimation; after a diffuse or glossy bounce next-event estimation already counted it.
+    bool delta = true;
     Color absorption(0);  // σ_a of the medium the ray travels in (0: air, or clear glass)
     bool absorbing = false;
     for (int depth = 0;; ++depth) {
@@ -36,11 +40,11 @@ Color BsdfPathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& ray
             beta *= beer_lambert(absorption, hit->t);
         }
         if (!hit) {
-            if (environment_ && delta) L += beta * environment_->radiance;
+            if (environment_ && (delta || hits_count)) L += beta * environment_->radiance;
             break;
         }
         const Material& material = scene_.materials[std::size_t(hit->material)];
-        if (hit->front_face && material.emissive() && delta) L += beta * material.emission;
+        if (hit->front_face && material.emissive() && (delta || hits_count)) L += beta * material.emission;
         const Vec3 wo = -ray.direction;
         Vec3 wi;
         RayKind kind;
@@ -63,7 +67,7 @@ Color BsdfPathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& ray
             const Brdf& brdf = direct_.brdf(hit->material);
             if (is_black(brdf)) break;
             const bool mirror = is_delta(brdf);
-            if (options_.direct && !mirror) L += beta * direct_.direct(*hit, wo, rng, rays);
+            if (nee && !mirror) L += beta * direct_.direct(*hit, wo, rng, rays);
             // Without the indirect effect a path ends at its first diffuse or glossy vertex.
             if (!mirror && !options_.indirect) break;
             const BrdfSample s = sample(brdf, wo, hit->normal, rng.next_vec2());

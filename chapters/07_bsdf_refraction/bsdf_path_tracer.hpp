@@ -32,6 +32,9 @@ struct BsdfPathOptions {
     bool shadows = true;   // effect "shadows"
     bool indirect = true;  // effect "indirect": a path goes on after its first diffuse or glossy vertex
     bool glossy = true;    // effect "glossy"
+    // false: no light sampling; light a path meets counts at every vertex (chapter 06's "brdf" strategy, the
+    // strategy without MIS the benchmark compares against).
+    bool next_event = true;
     RayOffset offset{};
 };
 

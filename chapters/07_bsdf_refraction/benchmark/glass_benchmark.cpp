@@ -1,0 +1,172 @@
+// What chapter 07 costs, measured (not a test): `ch07_benchmark` prints the tables of the lesson.
+//  1. samples (paths) per second on the glass Cornell box (cornell.json, 600×600): the median of --repeats;
+//  2. only the effects a scene calls for: chapter 07 against chapter 04 on the box called for shadows and
+//     direct light only, and against chapter 06 on the box without glass (ch06_default.json); the renders
+//     alternate, so both see the same load, and the ratio of the medians is reported;
+//  3. the time to a relative MSE of --target against a converged reference (two halves A and B, cached as
+//     PFM; its own noise mean((A − B)² / (r² + 0.01)) / 4 is subtracted), for this chapter's path tracer
+//     (next-event estimation) and for the strategy without light sampling (chapter 06's "brdf"), each at
+//     growing spp until it is within 4× of the target, extrapolated with relMSE ∝ 1 / spp.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bsdf_render.hpp"
+#include "camera.hpp"
+#include "direct_render.hpp"
+#include "light_set.hpp"
+#include "path_tracer.hpp"
+#include "rt/assets.hpp"
+#include "rt/effects.hpp"
+#include "rt/image_io.hpp"
+#include "rt/scene_loader.hpp"
+#include "world.hpp"
+
+namespace {
+
+using namespace rt;
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+RenderResult chapter07(const Scene& scene, const RenderSettings& settings, BsdfPathOptions options = {}) {
+    const EffectSet simulated = needed(scene) & EffectSet::all();
+    return render_with(choose_renderer(simulated), scene, simulated, settings, options);
+}
+
+// The relative MSE of `image` against r = (A + B) / 2: mean((x − r)² / (r² + 0.01)).
+double relative_mse(const Image& image, const Image& a, const Image& b) {
+    double sum = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const Color r = (a.at(x, y) + b.at(x, y)) * Real(0.5);
+            const Color d = image.at(x, y) - r;
+            for (int c = 0; c < 3; ++c) sum += double(d[c] * d[c]) / (double(r[c] * r[c]) + 0.01);
+        }
+    }
+    return sum / (3.0 * double(image.width()) * double(image.height()));
+}
+
+Image cached_half(const Scene& scene, RenderSettings settings, int spp, std::uint64_t seed,
+                  const std::filesystem::path& file) {
+    if (std::filesystem::exists(file)) {
+        Image image = read_pfm(file);
+        if (image.width() == settings.width && image.height() == settings.height) return image;
+    }
+    settings.samples_per_pixel = spp;
+    settings.seed = seed;
+    Image image = chapter07(scene, settings).image;
+    write_pfm(image, file);
+    return image;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app("ch07_benchmark: glass path tracer speed, effects cost and time to a relative MSE",
+                 "ch07_benchmark");
+    int size = 600, spp = 8, repeats = 3, threads = 2, conv_size = 150, reference_spp = 4096;
+    double target = 1e-3;
+    std::string cache = ".";
+    app.add_option("--size", size, "Width and height of the timed renders")->check(CLI::Range(8, 4096));
+    app.add_option("--spp", spp, "Samples per pixel of each timed render")->check(CLI::Range(1, 1 << 16));
+    app.add_option("--repeats", repeats, "Timed renders per row (the median is reported)")
+        ->check(CLI::Range(1, 100));
+    app.add_option("--threads", threads, "Render threads")->check(CLI::Range(1, 1024));
+    app.add_option("--conv-size", conv_size, "Width and height for the time to --target")
+        ->check(CLI::Range(8, 4096));
+    app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference (two halves)")
+        ->check(CLI::Range(2, 1 << 20));
+    app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
+    app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
+    CLI11_PARSE(app, argc, argv);
+
+    const Scene cornell = load_scene(scene_path("cornell.json"));
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.samples_per_pixel = spp;
+    settings.seed = 1;
+    settings.threads = threads;
+    settings.progress = ProgressStyle::kNone;
+    std::printf("ch07_benchmark: %dx%d, %d spp, %d threads, median of %d\n", size, size, spp, threads,
+                repeats);
+
+    // 1. Samples per second on the glass Cornell box.
+    std::vector<double> rates;
+    for (int r = 0; r < repeats; ++r) {
+        const RenderResult result = chapter07(cornell, settings);
+        rates.push_back(double(result.samples) / result.seconds);
+    }
+    std::printf("glass Cornell box (cornell.json): %.3g samples/s (median; min %.3g, max %.3g)\n",
+                median(rates), *std::min_element(rates.begin(), rates.end()),
+                *std::max_element(rates.begin(), rates.end()));
+
+    // 2. Only the effects a scene calls for.
+    Scene direct_only = cornell;
+    direct_only.effects = EffectSet{Effect::kShadows, Effect::kDirect};
+    const Scene no_glass = load_scene(scene_path("ch06_default.json"));
+    struct Pair {
+        const char* name;
+        const Scene& scene;
+        bool against_04;
+    };
+    for (const Pair& p : {Pair{"box, effects shadows+direct: ch07 / ch04", direct_only, true},
+                          Pair{"box without glass (ch06_default): ch07 / ch06", no_glass, false}}) {
+        const World world(p.scene);
+        const LightSet lights = collect_lights(p.scene);
+        const PinholeCamera camera = make_pinhole_camera(p.scene.camera, size, size);
+        const EffectSet simulated = needed(p.scene) & EffectSet::all();
+        std::vector<double> ours, theirs;
+        for (int r = 0; r < repeats; ++r) {
+            ours.push_back(chapter07(p.scene, settings).seconds);
+            if (p.against_04) {
+                const DirectLighting shading(world, p.scene, lights,
+                                             direct_options(path_options_for(simulated)));
+                theirs.push_back(render_direct(shading, camera, settings, FilmPoints::kStratified).seconds);
+            } else {
+                const PathTracer tracer(world, p.scene, lights, PathOptions{});
+                theirs.push_back(render_paths(tracer, camera, settings).seconds);
+            }
+        }
+        std::printf("%-48s %8.3f s / %8.3f s = %.3f  (renderer: %s)\n", p.name, median(ours), median(theirs),
+                    median(ours) / median(theirs),
+                    std::string(to_string(choose_renderer(simulated))).c_str());
+    }
+
+    // 3. Time to the target relative MSE.
+    RenderSettings conv = settings;
+    conv.width = conv.height = conv_size;
+    const std::string stem =
+        "ch07_benchmark_reference_" + std::to_string(conv_size) + "_" + std::to_string(reference_spp) + "spp";
+    const Image a =
+        cached_half(cornell, conv, reference_spp / 2, 1001, std::filesystem::path(cache) / (stem + "_a.pfm"));
+    const Image b =
+        cached_half(cornell, conv, reference_spp / 2, 1002, std::filesystem::path(cache) / (stem + "_b.pfm"));
+    const double noise = relative_mse(a, a, b) / 4;  // (A − r) = (A − B) / 2; the mean's noise is a quarter
+    std::printf(
+        "\ntime to relative MSE %.0e, glass Cornell box %dx%d, reference %d spp (its own relative MSE "
+        "%.2e)\n",
+        target, conv_size, conv_size, reference_spp, noise);
+    std::printf("%-22s %6s %12s %10s %16s\n", "estimator", "spp", "rel. MSE", "time (s)", "time to target");
+    for (bool nee : {true, false}) {
+        BsdfPathOptions options;
+        options.next_event = nee;
+        double estimate = 0;
+        for (int n = 1; n <= 1 << 16; n *= 2) {
+            conv.samples_per_pixel = n;
+            conv.seed = 7;
+            const RenderResult r = chapter07(cornell, conv, options);
+            const double rel = std::max(0.0, relative_mse(r.image, a, b) - noise);
+            estimate = r.seconds * rel / target;
+            std::printf("%-22s %6d %12.4e %10.3f %14.3f s\n", nee ? "ch07 (NEE)" : "no light sampling (brdf)",
+                        n, rel, r.seconds, estimate);
+            if (rel < 4 * target) break;
+        }
+    }
+    return 0;
+}
