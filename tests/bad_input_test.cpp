@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -76,6 +77,13 @@ std::string contents(const fs::path& file) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// What a render of width × height needs: two buffers of RGB Reals ("103.1 GB" for float at 65536²).
+std::string gigabytes_of_buffers(double width, double height) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GB", 2 * width * height * double(sizeof(Color)) / 1e9);
+    return text;
+}
+
 const char* kCamera = R"("camera": {"from": [0, 0, 5], "at": [0, 0, 0]})";
 
 }  // namespace
@@ -126,7 +134,9 @@ TEST_CASE("A scene image too large for memory is refused before allocation, with
           "[bad_input]") {
     const std::string text = "{" + std::string(kCamera) + R"(, "image": {"width": 65536, "height": 65536}})";
     CHECK_THAT(error_of([&] { parse_scene(text, "huge.json"); }),
-               Catch::StartsWith("huge.json: image: image size 65536x65536 needs 103.1 GB of buffers"));
+               Catch::StartsWith("huge.json: image: image size 65536x65536 needs " +
+                                 gigabytes_of_buffers(65536, 65536) +
+                                 " of buffers, more than half of this machine's"));
 }
 
 TEST_CASE("Names with control characters are printed escaped, so a message stays one line", "[bad_input]") {
