@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "camera.hpp"
@@ -218,6 +219,57 @@ TEST_CASE(
     check_forward_matches_reverse(s, 1024);
 }
 
+TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind it from the light tracer",
+          "[ch08][statistical]") {
+    Scene with = load_scene(scene_path("ch08_default.json"));
+    for (Material& m : with.materials)
+        if (m.type == MaterialType::kDielectric) m.ior = 1;
+    Scene without = with;
+    without.shapes.pop_back();  // the sphere is the last shape
+    REQUIRE(std::holds_alternative<SphereShape>(with.shapes.back().geometry));
+    const Setup a(with, 8, 8), b(without, 8, 8);
+    const LightTracer ta(a.world, a.scene, a.lights, a.camera, forward_options(EffectSet::all()));
+    const LightTracer tb(b.world, b.scene, b.lights, b.camera, forward_options(EffectSet::all()));
+    // The pixels that see the sphere anywhere (a 6×6 grid of camera rays per pixel).
+    std::vector<std::uint8_t> sphere(64, 0);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int k = 0; k < 36; ++k) {
+                const auto hit = a.world.intersect(camera_ray(a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6,
+                                                              Real(y) + (Real(k / 6) + 0.5f) / 6));
+                if (hit && a.scene.materials[std::size_t(hit->material)].type == MaterialType::kDielectric)
+                    sphere[std::size_t(y * 8 + x)] = 1;
+            }
+    constexpr int kBatches = 8;
+    const std::size_t values = 8 * 8 * 3;
+    auto render = [](const LightTracer& t, std::uint64_t seed) {
+        const RenderSettings settings = settings_of(8, 8, 512, seed);
+        return render_light_tracing(t, settings, paths_of(settings)).render.image;
+    };
+    const auto ma = batch_statistics(kBatches, values, [&](std::uint64_t seed) { return render(ta, seed); });
+    const auto mb =
+        batch_statistics(kBatches, values, [&](std::uint64_t seed) { return render(tb, seed + 50); });
+    double sum_a = 0, sum_b = 0, variance = 0, hidden_a = 0, hidden_b = 0;
+    int seen = 0;
+    for (std::size_t i = 0; i < values; ++i) {
+        if (sphere[i / 3]) {
+            hidden_a += ma.mean[i];
+            hidden_b += mb.mean[i];
+            continue;
+        }
+        ++seen;
+        sum_a += ma.mean[i];
+        sum_b += mb.mean[i];
+        variance += ma.error[i] * ma.error[i] + mb.error[i] * mb.error[i];
+    }
+    REQUIRE(seen >= 100);
+    // Light passes through unchanged: the pixels that do not see the sphere agree within error bars...
+    CHECK(std::abs(sum_a - sum_b) <= 4 * std::sqrt(variance));
+    // ...while a connection to the pinhole cannot pass through glass (a delta): the sphere's pixels lose
+    // what lies behind it.
+    CHECK(hidden_a < 0.8 * hidden_b);
+}
+
 TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through the pinhole connection",
           "[ch08][statistical]") {
     // A lamp of radiance 1, larger than the view (half-height 10 tan 20° = 3.6), 10 units in front of the
@@ -318,11 +370,24 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
         CHECK(r.render.rays[RayKind::kCamera] <= 2 * 5000);  // the light's point and the first hit
         CHECK(r.render.rays[RayKind::kCamera] > 5000);
     }
-    SECTION("the mirror scene bounces off its mirror: reflection rays") {
-        const Setup s(load_scene(scene_path("ch08_default.json")), 8, 8);
+    SECTION("the mirror scene bounces off its mirror: reflection rays, no refraction rays") {
+        const Setup s(load_scene(scene_path("ch08_mirror.json")), 8, 8);
         const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 20000);
         CHECK(r.render.rays[RayKind::kReflection] > 0);
+        CHECK(r.render.rays[RayKind::kRefraction] == 0);
+    }
+    SECTION("the glass sphere refracts: refraction rays; without the refraction effect, none") {
+        const Setup s(load_scene(scene_path("ch08_default.json")), 8, 8);
+        const LightTracer glass(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const SplatResult r = render_light_tracing(glass, settings_of(8, 8, 16, 1), 20000);
+        CHECK(r.render.rays[RayKind::kRefraction] > 0);
+        CHECK(r.render.rays[RayKind::kReflection] > 0);  // Fresnel reflection off the glass
+        const LightTracer lambert(s.world, s.scene, s.lights, s.camera,
+                                  forward_options(needed(s.scene).without(EffectSet{Effect::kRefraction})));
+        const SplatResult l = render_light_tracing(lambert, settings_of(8, 8, 16, 1), 20000);
+        CHECK(l.render.rays[RayKind::kRefraction] == 0);
+        CHECK(l.render.rays[RayKind::kReflection] == 0);
     }
 }
 

@@ -5,10 +5,12 @@
 #include <filesystem>
 #include <fstream>
 
+#include "bsdf_path_tracer.hpp"
 #include "convergence.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
 #include "world.hpp"
 
@@ -77,6 +79,10 @@ void fractions(const Setup& s, const StudyOptions& o) {
         row(name, options);
     }
     row("connect (pinhole)", forward_options(EffectSet::all()));
+    // Without the lamp's own point (which the camera sees whole): the paths whose bounces reach the camera.
+    LightTracerOptions bounces_only = forward_options(EffectSet::all());
+    bounces_only.camera = false;
+    row("connect, bounces only", bounces_only);
 }
 
 struct TimedRmse {
@@ -130,10 +136,58 @@ void time_to_same_rmse(const Setup& s, const StudyOptions& o) {
     }
 }
 
+// The converged image of a scene with mirrors and glass: chapter 07's path tracer, renders A and B of
+// spp / 2 each (seeds 1001, 1002), cached as <cache>/ch08_reference_<stem>_<W>x<H>_<spp>spp.pfm (the mean)
+// and ..._half.pfm (A); its own MSE is estimated as mean((A − B)²) / 4.
+Reference glass_reference(const Setup& s, const StudyOptions& o) {
+    namespace fs = std::filesystem;
+    const std::string stem = "ch08_reference_" + fs::path(s.scene.file).stem().string() + "_" +
+                             std::to_string(o.size) + "x" + std::to_string(o.size) + "_" +
+                             std::to_string(o.glass_reference_spp) + "spp";
+    Reference ref;
+    ref.file = fs::path(o.cache) / (stem + ".pfm");
+    ref.spp = o.glass_reference_spp;
+    const fs::path half = fs::path(o.cache) / (stem + "_half.pfm");
+    std::printf("  converged reference (chapter 07's path tracer, %d spp) ...", o.glass_reference_spp);
+    std::fflush(stdout);
+    Image a;
+    if (fs::exists(ref.file) && fs::exists(half)) {
+        ref.image = read_pfm(ref.file);
+        a = read_pfm(half);
+        ref.cached = ref.image.width() == o.size && ref.image.height() == o.size && a.width() == o.size &&
+                     a.height() == o.size;
+    }
+    if (!ref.cached) {
+        const BsdfPathTracer tracer(s.world, s.scene, s.lights, BsdfPathOptions{});
+        RenderSettings settings = study_settings(o, o.glass_reference_spp / 2);
+        settings.seed = 1001;
+        const RenderResult ra = render_bsdf_paths(tracer, s.camera, settings);
+        settings.seed = 1002;
+        const RenderResult rb = render_bsdf_paths(tracer, s.camera, settings);
+        a = ra.image;
+        ref.image = Image(o.size, o.size);
+        for (std::size_t i = 0; i < a.pixel_count(); ++i)
+            ref.image.pixels()[i] = (ra.image.pixels()[i] + rb.image.pixels()[i]) * Real(0.5);
+        ref.seconds = ra.seconds + rb.seconds;
+        write_pfm(a, half);
+        write_pfm(ref.image, ref.file);
+    }
+    // B = 2 ref − A, so (A − B)² = 4 (A − ref)²: the noise MSE is mean((A − ref)²).
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixel_count(); ++i) {
+        const Vec3d d = Vec3d(a.pixels()[i]) - Vec3d(ref.image.pixels()[i]);
+        sum += glm::dot(d, d);
+    }
+    ref.noise_mse = sum / double(3 * a.pixel_count());
+    std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
+                ref.file.string().c_str(), std::sqrt(ref.noise_mse));
+    return ref;
+}
+
 void wins_and_losses(const Setup& s, const StudyOptions& o) {
     std::printf("\n3. Where forward tracing wins and loses (%s, %dx%d): RMSE per region of the image\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size);
-    const Reference ref = reference_of(s, o);
+    const Reference ref = glass_reference(s, o);
     // The regions: pixels whose centre sees a mirror first; pixels the caustic lights (the light tracer's
     // caustic paths alone give at least 10% of the reference); the rest.
     LightTracerOptions caustic_options = forward_options(EffectSet::all());
@@ -149,7 +203,9 @@ void wins_and_losses(const Setup& s, const StudyOptions& o) {
             const std::size_t i = std::size_t(y) * std::size_t(o.size) + std::size_t(x);
             const auto hit =
                 s.world.intersect(camera_ray(s.camera, Real(x) + Real(0.5), Real(y) + Real(0.5)));
-            if (hit && s.scene.materials[std::size_t(hit->material)].type == MaterialType::kMirror)
+            const MaterialType type =
+                hit ? s.scene.materials[std::size_t(hit->material)].type : MaterialType::kDiffuse;
+            if (type == MaterialType::kMirror || type == MaterialType::kDielectric)
                 mirror[i] = 1;
             else if (luminance(caustic.pixels()[i]) >= Real(0.1) * luminance(ref.image.pixels()[i]) &&
                      luminance(caustic.pixels()[i]) > 0)
@@ -163,19 +219,25 @@ void wins_and_losses(const Setup& s, const StudyOptions& o) {
         for (auto v : m) c += v;
         return c;
     };
-    std::printf("  regions: caustic %zu pixels, mirror %zu pixels, the rest %zu pixels\n", count(lit),
-                count(mirror), count(rest));
-    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic", "RMSE mirror",
+    std::printf("  regions: caustic %zu pixels, mirror or glass %zu pixels, the rest %zu pixels\n",
+                count(lit), count(mirror), count(rest));
+    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic", "RMSE specular",
                 "RMSE rest");
+    // Render A of the reference against the mean: the reference's own RMSE, region by region.
+    const Image a =
+        read_pfm(std::filesystem::path(ref.file).replace_filename(ref.file.stem().string() + "_half.pfm"));
+    std::printf("%-22s %6d %10s %14.4e %14.4e %14.4e\n", "reference's own noise", ref.spp, "",
+                masked_rmse(a, ref.image, lit), masked_rmse(a, ref.image, mirror),
+                masked_rmse(a, ref.image, rest));
     const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
-    const PathTracer path(s.world, s.scene, s.lights, reverse_options(EffectSet::all()));
+    const BsdfPathTracer path(s.world, s.scene, s.lights, BsdfPathOptions{});
     for (int spp : {16, 64}) {
         const RenderSettings settings = study_settings(o, spp);
         const SplatResult f = render_light_tracing(light, settings, paths_for(settings));
-        const RenderResult r = render_paths(path, s.camera, settings);
+        const RenderResult r = render_bsdf_paths(path, s.camera, settings);
         for (const auto& [name, image, seconds] :
              {std::tuple{"forward (connect)", &f.render.image, f.render.seconds},
-              std::tuple{"reverse (ch06, MIS)", &r.image, r.seconds}}) {
+              std::tuple{"reverse (chapter 07)", &r.image, r.seconds}}) {
             std::printf("%-22s %6d %10.4f %14.4e %14.4e %14.4e\n", name, spp, seconds,
                         masked_rmse(*image, ref.image, lit), masked_rmse(*image, ref.image, mirror),
                         masked_rmse(*image, ref.image, rest));
@@ -191,6 +253,7 @@ LightTracerOptions forward_options(const EffectSet& simulated) {
     o.direct = simulated.contains(Effect::kDirect);
     o.indirect = simulated.contains(Effect::kIndirect);
     o.glossy = simulated.contains(Effect::kGlossy);
+    o.refraction = simulated.contains(Effect::kRefraction);
     return o;
 }
 
@@ -234,8 +297,10 @@ void run_forward_study(const StudyOptions& options) {
     const Setup cornell("ch06_default.json", options.size);
     fractions(cornell, options);
     time_to_same_rmse(cornell, options);
-    const Setup mirror("ch08_default.json", options.size);
-    wins_and_losses(mirror, options);
+    for (const char* file : {"ch08_default.json", "ch08_mirror.json"}) {
+        const Setup scene(file, options.size);
+        wins_and_losses(scene, options);
+    }
 }
 
 }  // namespace rt

@@ -4,8 +4,10 @@
 //  2. Time to the same RMSE: chapter 06's path tracer (MIS, and BRDF sampling alone) at 4, 16, 64 spp
 //     against its converged reference (chapter 06's cached PFM), and the time the light tracer needs to
 //     reach each of those RMSEs (interpolated on its own log RMSE–log time curve).
-//  3. Where forward tracing wins and loses, on ch08_default.json (a mirror panel throws the lamp onto the
-//     wall): the RMSE of both tracers on the pixels of the caustic, of the mirror, and of everything else.
+//  3. Where forward tracing wins and loses, on ch08_default.json (the glass sphere focuses the lamp on the
+//     floor) and ch08_mirror.json (a mirror panel throws it onto the back wall): the RMSE of the light tracer
+//     and of chapter 07's path tracer on the pixels of the caustic, of the mirror or glass, and the rest,
+//     against chapter 07's converged image (cached as PFM).
 #pragma once
 
 #include <cstdint>
@@ -27,7 +29,8 @@ PathOptions reverse_options(const EffectSet& simulated);
 struct StudyOptions {
     int size = 100;                           // the image is size × size
     std::uint64_t fraction_paths = 1u << 20;  // light paths behind each fraction
-    int reference_spp = 8192;
+    int reference_spp = 8192;                 // chapter 06's Cornell box (chapter 06 caches it at this spp)
+    int glass_reference_spp = 4096;           // the mirror and glass scenes (chapter 07's tracer is slower)
     std::string cache = ".";  // where converged references are read (chapter 06's files) or written
     std::string csv;          // the time-to-RMSE table, when not empty
     int threads = 0;

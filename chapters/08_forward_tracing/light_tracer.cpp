@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "dielectric.hpp"
 #include "rt/errors.hpp"
 #include "shadow_ray.hpp"
 
@@ -45,8 +46,12 @@ LightTracer::LightTracer(const World& world, const Scene& scene, const LightSet&
     for (const Material& m : scene.materials) {
         const Brdf b = options_.glossy ? brdf_of(m, stand_in) : without_lobes(brdf_of(m, stand_in));
         brdfs_.push_back(b);
-        black_.push_back(is_black(b) ? 1 : 0);
-        delta_.push_back(is_delta(b) ? 1 : 0);
+        const bool glass = options_.refraction && m.type == MaterialType::kDielectric;
+        black_.push_back(!glass && is_black(b) ? 1 : 0);
+        delta_.push_back(glass || is_delta(b) ? 1 : 0);
+        glass_.push_back(glass ? 1 : 0);
+        ior_.push_back(m.ior);
+        absorption_.push_back(m.absorption);
     }
 }
 
@@ -123,9 +128,20 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         if (!hit) break;
         const std::size_t m = std::size_t(hit->material);
         if (black_[m]) break;
+        const Vec3 wo = -ray.direction;
+        if (glass_[m]) {
+            // A segment that ends on the inside of glass ran through it: Beer–Lambert over its length.
+            if (!hit->front_face) relative *= beer_lambert(absorption_[m], hit->t);
+            const Real eta = hit->front_face ? ior_[m] : 1 / ior_[m];
+            const DielectricSample d = sample_dielectric(wo, hit->normal, eta, rng.next_real());
+            from_mirror = true;
+            if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
+            ray = spawn_ray(*hit, d.wi, options_.offset);
+            rays.add(d.lobe == DielectricLobe::kReflection ? RayKind::kReflection : RayKind::kRefraction);
+            continue;
+        }
         const Brdf& brdf = brdfs_[m];
         const bool delta = delta_[m] != 0;
-        const Vec3 wo = -ray.direction;
         if (connecting && !delta) {
             const bool wanted = diffuse_bounces == 0 ? options_.direct : options_.indirect;
             if (wanted && (!options_.caustics_only || from_mirror))

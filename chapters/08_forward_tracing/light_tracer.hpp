@@ -9,6 +9,9 @@
 //             pinhole, and the splat  β f(wo, x→eye) G We,  G = cos θ_x cos θ_c / r²,
 //             into the pixel x projects to. A mirror vertex cannot be connected (its f is a delta), so what a
 //             mirror shows is lost to this camera.
+// Glass (chapter 07's smooth dielectric): reflection with probability R, transmission with T; a light path
+// carries power, which crosses an interface unscaled (T of it goes through), so its weight is 1 either way —
+// not the 1 / η² of a radiance path. Inside absorbing glass β is multiplied by exp(−σ_a d) per segment.
 // Rays: the ray leaving a light is counted as a shadow ray (it joins a light and a surface, as a shadow ray
 // does, traced from the light's end); the connection rays as camera rays (they are the rays that reach the
 // camera); bounces as indirect (Lambert) or reflection (mirror, glossy, retro-reflective), as in chapter 06.
@@ -42,14 +45,15 @@ struct LightTracerOptions {
     Real aperture_radius = 1;  // kAperture: the lens radius R, in scene units
     // Chapter 05's Russian roulette on the relative throughput Π f cos θ / pdf (β / β₀), under its cap.
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
-    bool camera = true;    // effect "camera": the emitters themselves, seen by the camera
-    bool direct = true;    // effect "direct": vertices after no diffuse or glossy bounce
-    bool indirect = true;  // effect "indirect": bounces off diffuse and glossy surfaces
-    bool glossy = true;    // false: glossy and retro-reflective lobes shaded as Lambert (as chapter 06)
+    bool camera = true;      // effect "camera": the emitters themselves, seen by the camera
+    bool direct = true;      // effect "direct": vertices after no diffuse or glossy bounce
+    bool indirect = true;    // effect "indirect": bounces off diffuse and glossy surfaces
+    bool glossy = true;      // false: glossy and retro-reflective lobes shaded as Lambert (as chapter 06)
+    bool refraction = true;  // effect "refraction": false shades dielectrics as Lambert (as chapter 06)
     // Only vertices whose light arrived straight from a mirror (paths L…S D E): the caustics alone.
     bool caustics_only = false;
     RayOffset offset{};
-    Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo (as chapter 06)
+    Color dielectric_albedo{0.73f};  // without refraction, dielectrics are Lambert of this albedo
 };
 
 class LightTracer {
@@ -81,7 +85,9 @@ class LightTracer {
     EmitterSampler emitters_;
     LightTracerOptions options_;
     std::vector<Brdf> brdfs_;
-    std::vector<std::uint8_t> black_, delta_;
+    std::vector<std::uint8_t> black_, delta_, glass_;  // per material; glass_: a simulated dielectric
+    std::vector<Real> ior_;
+    std::vector<Color> absorption_;
 };
 
 // N light paths with `tracer` (deterministic for any thread count, see splat_render.hpp).

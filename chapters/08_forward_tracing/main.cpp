@@ -1,14 +1,15 @@
 // Chapter 08: forward (light) tracing. Paths start at the lights and reach the camera through a lens
 // aperture (`--variant aperture --aperture R`) or by connecting every vertex to the pinhole (`--variant
-// connect`, the default); `--tracer reverse` renders the same scene with chapter 06's path tracer beside it.
+// connect`, the default); `--tracer reverse` renders the same scene with chapter 07's renderer beside it.
 // `--forward-study` measures what reverse tracing saves (see forward_study.hpp).
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
+#include "bsdf_render.hpp"
 #include "camera.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
-#include "path_tracer.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "world.hpp"
@@ -17,13 +18,20 @@ namespace {
 
 using namespace rt;
 
-std::vector<std::string> scene_notes(const Scene& scene, const LightSet& lights, bool forward) {
+std::vector<std::string> scene_notes(const Scene& scene, const LightSet& lights, bool forward,
+                                     bool refraction) {
     std::vector<std::string> notes;
     for (const Material& m : scene.materials) {
-        if (m.type == MaterialType::kDielectric) {
+        if (m.type == MaterialType::kDielectric && !refraction) {
             notes.push_back(
                 "dielectric material '" + m.name +
-                "': refraction is simulated from chapter 07 on; shaded as diffuse white (albedo 0.73)");
+                "': refraction is not simulated in this run; shaded as diffuse white (albedo 0.73)");
+        }
+        if (forward && m.type == MaterialType::kDielectric && refraction) {
+            notes.push_back(
+                "dielectric material '" + m.name +
+                "': a pinhole cannot be connected through glass, so the light tracer shows it black; "
+                "the caustics it casts are found");
         }
         if (forward && m.type == MaterialType::kMirror) {
             notes.push_back(
@@ -34,6 +42,9 @@ std::vector<std::string> scene_notes(const Scene& scene, const LightSet& lights,
     }
     if (forward && lights.environment) {
         notes.push_back("the environment light is not traced forward (no light paths start from it): black");
+    }
+    if (forward && !lights.points.empty()) {
+        notes.push_back("point lights light the scene but are not seen themselves (as in every chapter)");
     }
     for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
     return notes;
@@ -54,10 +65,10 @@ int main(int argc, char** argv) {
         "camera",
         "ch08_default.json",
         EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kReflection,
-                  Effect::kGlossy, Effect::kIndirect}};
+                  Effect::kGlossy, Effect::kIndirect, Effect::kRefraction}};
     auto flags = [&](CLI::App& app) {
         app.add_option("--tracer", tracer_name,
-                       "forward (light paths) or reverse (chapter 06's path tracer, MIS)")
+                       "forward (light paths) or reverse (chapter 07's renderer for the effects simulated)")
             ->check(CLI::IsMember({"forward", "reverse"}));
         app.add_option("--variant", variant,
                        "How forward paths reach the camera: connect (every vertex to the pinhole) or "
@@ -66,15 +77,23 @@ int main(int argc, char** argv) {
         app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
             ->check(CLI::PositiveNumber);
         app.add_flag("--caustics-only", caustics_only,
-                     "Forward: only light that arrived straight from a mirror (paths L...S D E)");
-        app.add_flag("--forward-study", run_study,
-                     "Measure on chapter 06's Cornell box: the fraction of light paths that contribute, time "
-                     "to chapter 06's RMSE; and where forward tracing wins and loses (ch08_default.json)");
+                     "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)");
+        app.add_flag(
+            "--forward-study", run_study,
+            "Measure on chapter 06's Cornell box the fraction of light paths that contribute and the "
+            "time to chapter 06's RMSE; and where forward tracing wins and loses (ch08_default.json, "
+            "ch08_mirror.json)");
         app.add_option("--study-size", study.size, "With --forward-study: image side in pixels")
             ->check(CLI::Range(8, 1024));
         app.add_option("--study-paths", study.fraction_paths,
-                       "With --forward-study: light paths for the fractions")
+                       "With --forward-study: light paths per fraction")
             ->check(CLI::Range(1000, 1 << 30));
+        app.add_option("--reference-spp", study.reference_spp,
+                       "With --forward-study: spp of chapter 06's converged reference")
+            ->check(CLI::Range(2, 1 << 20));
+        app.add_option("--glass-reference-spp", study.glass_reference_spp,
+                       "With --forward-study: spp of the mirror and glass scenes' references")
+            ->check(CLI::Range(2, 1 << 20));
         app.add_option("--cache", study.cache,
                        "With --forward-study: folder of the converged references (chapter 06's cache files)");
         app.add_option("--csv", study.csv, "With --forward-study: also write the time-to-RMSE table as CSV");
@@ -88,17 +107,21 @@ int main(int argc, char** argv) {
         }
         const Scene& scene = context.scene;
         const RenderSettings& settings = context.settings;
-        const World world(scene);
-        const LightSet lights = collect_lights(scene);
-        const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
         const bool forward = tracer_name == "forward";
-        ChapterRun run{{}, scene_notes(scene, lights, forward), std::nullopt};
+        const LightSet lights = collect_lights(scene);
+        ChapterRun run{{},
+                       scene_notes(scene, lights, forward, context.simulated.contains(Effect::kRefraction)),
+                       std::nullopt};
         if (!forward) {
-            const PathTracer tracer(world, scene, lights, reverse_options(context.simulated));
-            run.result = render_paths(tracer, camera, settings);
-            run.notes.push_back("tracer: reverse (chapter 06, MIS)");
+            const Renderer renderer = choose_renderer(context.simulated);
+            run.result = render_with(renderer, scene, context.simulated, settings,
+                                     path_options_for(context.simulated));
+            run.notes.push_back("tracer: reverse, chapter 07's renderer: " +
+                                std::string(to_string(renderer)));
             return run;
         }
+        const World world(scene);
+        const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
         LightTracerOptions options = forward_options(context.simulated);
         options.variant = camera_variant_from_string(variant);
         options.aperture_radius = aperture;
@@ -111,8 +134,8 @@ int main(int argc, char** argv) {
         char line[200];
         std::snprintf(
             line, sizeof line,
-            "tracer: forward, variant %s; %llu light paths (spp x pixels), %.4g%% of them reached "
-            "the camera",
+            "tracer: forward, variant %s; %llu light paths (spp x pixels), %.4g%% of them reached the "
+            "camera",
             variant.c_str(), static_cast<unsigned long long>(r.render.samples),
             100.0 * double(r.contributing_paths) / double(std::max<std::uint64_t>(1, r.render.samples)));
         run.notes.push_back(line);
