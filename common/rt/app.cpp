@@ -108,8 +108,8 @@ void check_finite(const Image& image) {
     }
     if (bad > 0) {
         throw std::runtime_error("the render has " + std::to_string(bad) +
-                                 " pixels that are NaN or infinite (the " + "first at x " +
-                                 std::to_string(first_x) + ", y " + std::to_string(first_y) +
+                                 " pixel(s) NaN or infinite (the first at x " + std::to_string(first_x) +
+                                 ", y " + std::to_string(first_y) +
                                  "): a bug in the chapter; nothing written");
     }
 }
