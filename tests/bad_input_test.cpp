@@ -343,3 +343,16 @@ TEST_CASE("Bad input found by the chapter itself is exit 2, and nothing is writt
     });
     fs::remove_all(folder);
 }
+
+TEST_CASE("An OBJ file cannot make the loader open another file through mtllib", "[bad_input]") {
+    // Were the material library read, /dev/zero would never end: the loader would hang.
+    const fs::path folder = temporary_folder();
+    std::ofstream(folder / "m.obj")
+        << "mtllib /dev/zero\nmtllib ../../../../../../dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+        << "usemtl nothing\nf 1 2 3\n";
+    const Scene scene = parse_scene("{" + std::string(kCamera) + R"(, "materials": {"w": {"type": "diffuse"}},
+        "shapes": [{"type": "mesh", "file": "m.obj", "material": "w"}]})",
+                                    folder / "m.json");
+    CHECK(std::get<MeshShape>(scene.shapes[0].geometry).triangles.size() == 1);
+    fs::remove_all(folder);
+}

@@ -306,11 +306,17 @@ MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
         file.fail("must name an OBJ file, got " + obj +
                   (fs::exists(path, ec) ? " (not a file)" : " (no such file)"));
     }
+    // The text is read here and parsed with no material library: an OBJ's "mtllib" line cannot make the
+    // loader open another file (which could be a device that never ends).
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) file.fail("must name a readable OBJ file, got " + obj + " (it cannot be read)");
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path.string(), config)) {
+    if (!reader.ParseFromString(text.str(), "", config)) {
         std::string error = reader.Error();
         if (const auto newline = error.find('\n'); newline != std::string::npos) error.resize(newline);
         file.fail(obj + ": malformed OBJ: " + printable(error));
