@@ -233,6 +233,36 @@ else
     echo "Chapter 04 is not built: left out." >> "$page"
 fi
 
+# ---------------------------------------------------------------------------------------------------------
+if have 05_recursive_gi ch05_recursive_gi; then
+    log "chapter 05: termination rules in the furnace"
+    spp=$([ "$quick" = 1 ] && echo 16 || echo 256)
+    (cd "$out" && "$(exe 05_recursive_gi ch05_recursive_gi)" --depth-study --quiet --spp "$spp" \
+        --csv ch05_termination.csv > ch05_termination.txt)
+    (cd "$out" && "$(exe 05_recursive_gi ch05_recursive_gi)" --quiet --width 200 --height 200 --out ch05.png > /dev/null)
+    plot ch05_termination "set logscale xy; set xlabel 'seconds'; set ylabel 'RMSE against Le / (1 - rho)';
+        set title 'Termination rules in the furnace box (indirect rays find the light)'; set key off;
+        plot 'ch05_termination.csv' using (strcol(5) eq 'hit' ? \$12 : NaN):11 with points pointtype 7,
+             '' using (strcol(5) eq 'hit' ? \$12 : NaN):11:(strcol(1) eq 'depth' ? sprintf('depth %d', \$2) : \
+                 strcol(1) eq 'throughput' ? sprintf('throughput %g', \$3) : 'roulette') with labels offset 0,1"
+    lesson_copy ch05_termination 05_recursive_gi
+    cat >> "$page" <<EOF
+## Chapter 05 — recursive global illumination
+
+<img src="ch05.png" width="320"> <img src="ch05_termination.png" width="480">
+
+$(csv_to_markdown "$out/ch05_termination.csv")
+
+Each termination rule in the closed furnace box, whose exact radiance is Le/(1−ρ): a maximum depth N is
+biased by exactly −ρ^(N+1)/(1−ρ) Le (the \`expected\` column) and costs more with N; the throughput rule is
+biased too; Russian roulette is unbiased within its standard error ($spp samples per pixel; \`hit\`: light
+found by indirect rays only, \`sampled\`: by light sampling too).
+
+EOF
+else
+    echo "Chapter 05 is not built: left out." >> "$page"
+fi
+
 rm -f "$out"/*.pfm
 echo "_The report took $(( $(date +%s) - start )) s._" >> "$page"
 log "wrote $page in $(( $(date +%s) - start )) s"
