@@ -15,6 +15,8 @@ namespace {
 
 // Chunks traced between two merges: a fixed number, so the memory for chunk films stays bounded.
 constexpr std::uint64_t kChunksPerWave = 8;
+// Paths between two looks at the interrupt flag.
+constexpr std::uint64_t kInterruptCheck = 1024;
 
 }  // namespace
 
@@ -36,6 +38,7 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
     for (std::uint64_t c = 0; c < std::min(kChunksPerWave, chunk_count); ++c)
         films.emplace_back(settings.width, settings.height);
     std::vector<std::uint64_t> contributing(films.size(), 0);
+    std::vector<std::uint8_t> complete(films.size(), 0);
     std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
     std::uint64_t traced = 0, contributed = 0;
     bool interrupted = false;
@@ -46,6 +49,7 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
             break;
         }
         const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count - wave);
+        std::fill(complete.begin(), complete.end(), std::uint8_t(0));
         std::atomic<std::uint64_t> next{0};
         std::exception_ptr failure;
         std::mutex failure_mutex;
@@ -58,11 +62,16 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
                     std::uint64_t count = 0;
                     const std::uint64_t first = (wave + c) * chunk;
                     const std::uint64_t end = std::min(path_count, first + chunk);
-                    for (std::uint64_t i = first; i < end; ++i) {
+                    bool stopped = false;
+                    for (std::uint64_t i = first; i < end && !stopped; ++i) {
                         Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
                         if (trace(i, rng, film, rays)) ++count;
+                        // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
+                        stopped =
+                            (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
                     }
                     contributing[c] = count;
+                    complete[c] = stopped ? 0 : 1;
                 }
             } catch (...) {
                 const std::lock_guard<std::mutex> lock(failure_mutex);
@@ -75,13 +84,19 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
         worker(0);
         for (std::thread& t : pool) t.join();
         if (failure) std::rethrow_exception(failure);
-        // The merge, in chunk order: the same sums whatever thread traced which chunk.
+        // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only
+        // the chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
         for (std::uint64_t c = 0; c < wave_chunks; ++c) {
+            if (!complete[c]) {
+                interrupted = true;
+                break;
+            }
             const std::vector<Color>& film = films[c].pixels();
             for (std::size_t p = 0; p < pixels; ++p) sums[p] += Vec3d(film[p]);
             contributed += contributing[c];
             traced += std::min(path_count, (wave + c + 1) * chunk) - (wave + c) * chunk;
         }
+        if (interrupted) break;
     }
 
     SplatResult out;

@@ -28,7 +28,8 @@ struct SplatResult {
 std::uint64_t chunk_size(int width, int height);
 
 // Traces `path_count` light paths on settings.threads threads (0: every core). Stops between chunks when
-// interrupted (then `interrupted` is set and the image averages the paths traced).
+// interrupted: every 1024 paths a chunk looks at the flag, and an interrupted chunk is not merged (then
+// `interrupted` is set and the image averages the paths of the chunks merged).
 SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
                                const LightPathFunction& trace);
 
