@@ -166,7 +166,8 @@ double adaptive_simpson(const DirectionPdf& pdf, double z0, double z1, double p0
     const double whole = rule(0, 0, 2, area);
     const double quarters =
         rule(0, 0, 1, area / 4) + rule(2, 0, 1, area / 4) + rule(0, 2, 1, area / 4) + rule(2, 2, 1, area / 4);
-    const double allowed = 15 * std::max(tol, 1e-5 * std::abs(quarters));  // absolute, or relative to the part
+    const double allowed =
+        15 * std::max(tol, 1e-5 * std::abs(quarters));  // absolute, or relative to the part
     if (depth == 0 || std::abs(quarters - whole) <= allowed) return quarters + (quarters - whole) / 15;
     const double zm = (z0 + z1) / 2, pm = (p0 + p1) / 2;
     return adaptive_simpson(pdf, z0, zm, p0, pm, tol / 4, depth - 1) +
@@ -832,6 +833,28 @@ TEST_CASE(
     const RenderResult black = render_scene(dark, SamplingStrategy::kMis, 8, 2, 5);
     CHECK(black.rays[RayKind::kShadow] == 0);
     CHECK(black.image.mean() == 0);
+}
+
+TEST_CASE("An emissive plane, which no light sample can reach, is seen by every strategy",
+          "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    // A diffuse sphere under an emissive plane (radiance 1, facing down): light, mis and cosine agree.
+    Scene scene = furnace_scene(0.5f);
+    scene.environment.reset();
+    Material lamp;
+    lamp.name = "sky";
+    lamp.albedo = Color(0);
+    lamp.emission = Color(1);
+    scene.materials.push_back(lamp);
+    scene.shapes.push_back(Shape{PlaneShape{{0, 3, 0}, {0, -1, 0}}, 1, "shapes[1]"});
+    scene.camera = CameraDesc{{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30};
+    REQUIRE(collect_lights(scene).unsampled.size() == 1);
+    const double cosine = render_scene(scene, SamplingStrategy::kCosine, 16, 64, 1).image.mean();
+    for (SamplingStrategy s : {SamplingStrategy::kLight, SamplingStrategy::kMis}) {
+        const RenderResult r = render_scene(scene, s, 16, 64, 1);
+        INFO(to_string(s) << ": " << r.image.mean() << ", cosine " << cosine);
+        CHECK(r.image.mean() == Approx(cosine).epsilon(0.03));
+        CHECK(r.image.mean() > 0.1);
+    }
 }
 
 TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {

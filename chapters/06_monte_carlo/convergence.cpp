@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <fstream>
 #include <map>
 
@@ -107,11 +108,13 @@ std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& s
     for (SamplingStrategy strategy : strategies) {
         for (int spp = 1; spp <= max_spp; spp *= 2) {
             settings.samples_per_pixel = spp;
+            const std::clock_t cpu_start = std::clock();
             const RenderResult r = render_with(world, scene, lights, options, strategy, camera, settings);
+            const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
             if (r.interrupted) return rows;
             const ErrorMetrics e = compare(r.image, reference.image);
-            rows.push_back(
-                {strategy, spp, e.rmse, e.rmse * e.rmse - reference.noise_mse, r.seconds, e.relative_mse});
+            rows.push_back({strategy, spp, e.rmse, e.rmse * e.rmse - reference.noise_mse, r.seconds, cpu,
+                            e.relative_mse - reference.noise_relative_mse});
         }
     }
     return rows;
@@ -134,8 +137,10 @@ std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& r
         const double denominator = n * sxx - sx * sx;
         const double slope = denominator > 0 ? (n * sxy - sx * sy) / denominator : 0.0;
         const ConvergenceRow& last = *mine.back();
-        const double mse = std::max(last.mse, 1e-30);
-        table.push_back({s, slope, last.mse, last.seconds, 1.0 / (mse * std::max(last.seconds, 1e-9))});
+        const double cpu = std::max(last.cpu_seconds, 1e-9);
+        table.push_back({s, slope, last.mse, last.relative_mse, last.cpu_seconds,
+                         1.0 / (std::max(last.mse, 1e-30) * cpu),
+                         1.0 / (std::max(last.relative_mse, 1e-30) * cpu)});
     }
     return table;
 }
@@ -143,10 +148,10 @@ std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& r
 void write_convergence_csv(const std::vector<ConvergenceRow>& rows, const fs::path& csv) {
     std::ofstream out(csv);
     if (!out) throw InputError("--csv: " + csv.string() + ": cannot be written");
-    out << "strategy,spp,rmse,mse,relative_mse,seconds\n";
+    out << "strategy,spp,rmse,mse,relative_mse,seconds,cpu_seconds\n";
     for (const ConvergenceRow& r : rows) {
         out << to_string(r.strategy) << ',' << r.spp << ',' << r.rmse << ',' << r.mse << ',' << r.relative_mse
-            << ',' << r.seconds << '\n';
+            << ',' << r.seconds << ',' << r.cpu_seconds << '\n';
     }
     if (!out) throw std::runtime_error(csv.string() + ": write failed");
 }
@@ -158,38 +163,48 @@ bool plot_convergence(const fs::path& csv, const std::vector<SamplingStrategy>& 
     std::ifstream in(csv);
     std::string line;
     std::getline(in, line);
-    double rmse1 = 0, rmse_last = 0, seconds_last = 0;
+    double rmse1 = 0, relative1 = 0, rmse_last = 0, seconds_last = 0;
     const std::string anchor(to_string(strategies.back()));
     while (std::getline(in, line)) {
         if (line.rfind(anchor + ",", 0) != 0) continue;
-        double values[5];
+        double values[6];
         std::size_t at = anchor.size() + 1;
         for (double& v : values) {
             std::size_t used = 0;
             v = std::stod(line.substr(at), &used);
             at += used + 1;
         }
-        if (rmse1 == 0) rmse1 = values[1];
+        if (rmse1 == 0) rmse1 = values[1], relative1 = values[3];
         rmse_last = values[1];
-        seconds_last = values[4];
+        seconds_last = values[5];
     }
     const fs::path script = png_stem.string() + ".gp";
     std::ofstream gp(script);
-    gp << "set terminal pngcairo size 640,440 font ',10'\nset datafile separator ','\nset logscale xy\n"
+    gp << "set terminal pngcairo size 640,440 font ',10'\nset termoption noenhanced\n"
+       << "set datafile separator ','\nset logscale xy\n"
        << "set grid\nset key outside right\nset title '" << title << "'\n";
-    auto plot = [&](const std::string& suffix, const std::string& x_label, int x_column, double a) {
+    auto plot = [&](const std::string& suffix, const std::string& x_label, int x_column, int y_column,
+                    const std::string& y_label, const std::string& guide) {
         gp << "set output '" << png_stem.string() << suffix << "'\nset xlabel '" << x_label
-           << "'\nset ylabel 'RMSE to the reference'\nplot ";
+           << "'\nset ylabel '" << y_label << "'\nplot ";
         for (SamplingStrategy s : strategies) {
             gp << "'" << csv.string() << "' using (strcol(1) eq '" << to_string(s) << "' ? $" << x_column
-               << " : 1/0):3 with linespoints title '" << to_string(s) << "', ";
+               << " : 1/0):" << y_column << " with linespoints title '" << to_string(s) << "', ";
         }
-        gp << a << "/sqrt(x) with lines dashtype 2 lc 'black' title 'slope -1/2'\n";
+        gp << guide << " with lines dashtype 2 lc 'black' title '"
+           << (y_column == 3 ? "slope -1/2" : "slope -1") << "'\n";
     };
-    plot("_spp.png", "samples per pixel", 2, rmse1 * 0.5);
-    plot("_time.png", "render time (s)", 6, rmse_last * std::sqrt(seconds_last) * 0.5);
+    plot("_spp.png", "samples per pixel", 2, 3, "RMSE to the reference",
+         std::to_string(rmse1 * 0.5) + "/sqrt(x)");
+    plot("_time.png", "processor time of the render (s)", 7, 3, "RMSE to the reference",
+         std::to_string(rmse_last * std::sqrt(seconds_last) * 0.5) + "/sqrt(x)");
+    plot("_relative.png", "samples per pixel", 2, 5, "relative MSE to the reference",
+         std::to_string(relative1 * 0.5) + "/x");
     gp.close();
-    return std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    const bool drawn = std::system(("gnuplot '" + script.string() + "'").c_str()) == 0;
+    std::error_code ec;
+    fs::remove(script, ec);
+    return drawn;
 }
 
 }  // namespace rt

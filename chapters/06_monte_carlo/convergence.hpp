@@ -42,10 +42,11 @@ Reference converged_reference(const World& world, const Scene& scene, const Ligh
 struct ConvergenceRow {
     SamplingStrategy strategy;
     int spp;
-    double rmse;     // against the reference
-    double mse;      // rmse², minus the reference's own noise_mse (its estimate of the true MSE)
-    double seconds;  // render time
-    double relative_mse;
+    double rmse;          // against the reference
+    double mse;           // rmse², minus the reference's own noise_mse (its estimate of the true MSE)
+    double seconds;       // render time (wall clock)
+    double cpu_seconds;   // processor time of every thread of the render: what it cost, whoever else ran
+    double relative_mse;  // mean((x − r)² / (r² + 0.01)), minus the reference's own noise
 };
 
 // Every strategy at spp = 1, 2, 4, …, max_spp with the settings' seed.
@@ -56,18 +57,21 @@ std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& s
 
 struct EfficiencyRow {
     SamplingStrategy strategy;
-    double slope;       // least-squares slope of log RMSE against log spp (−0.5 for a converging estimator)
-    double mse;         // at the largest spp
-    double seconds;     // at the largest spp
-    double efficiency;  // 1 / (mse × seconds)
+    double slope;  // least-squares slope of log RMSE against log spp (−0.5 for a converging estimator)
+    double mse;    // at the largest spp
+    double relative_mse;         // at the largest spp
+    double cpu_seconds;          // at the largest spp
+    double efficiency;           // 1 / (mse × cpu_seconds)
+    double relative_efficiency;  // 1 / (relative_mse × cpu_seconds)
 };
 std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& rows);
 
 // Writes the rows as CSV.
 void write_convergence_csv(const std::vector<ConvergenceRow>& rows, const std::filesystem::path& csv);
-// Draws the two log-log plots (RMSE against spp, RMSE against seconds) with gnuplot, the slope −1/2 beside
-// them, as PNG files `<stem>_spp.png` and `<stem>_time.png`. Returns false (and draws nothing) when gnuplot
-// is not installed.
+// Draws the log-log plots with gnuplot: RMSE against spp and against processor seconds (the slope −1/2 beside
+// them), and the relative MSE against spp (slope −1), as `<stem>_spp.png`, `<stem>_time.png` and
+// `<stem>_relative.png`. Returns false (and draws nothing) when
+// gnuplot is not installed.
 bool plot_convergence(const std::filesystem::path& csv, const std::vector<SamplingStrategy>& strategies,
                       const std::filesystem::path& png_stem, const std::string& title);
 

@@ -24,7 +24,7 @@ std::vector<IrradianceStudyRow> irradiance_study(const std::vector<int>& sample_
                     const double rmse = std::sqrt(sum2 / runs);
                     const double per_run = seconds / runs;
                     rows.push_back({c.name, c.exact, s, stratified, n, sum / runs, rmse,
-                                    std::sqrt(variance / runs),
+                                    std::sqrt(variance / runs), seconds / (double(runs) * n),
                                     rmse > 0 ? 1.0 / (rmse * rmse * std::max(per_run, 1e-12)) : INFINITY});
                 }
             }

@@ -14,11 +14,12 @@ struct IrradianceStudyRow {
     double exact;
     SamplingStrategy strategy;
     bool stratified;
-    int samples;        // N per estimate
-    double mean;        // of all runs' estimates
-    double rmse;        // of one run's estimate, against exact
-    double sigma;       // per-sample standard deviation (independent points: rmse ≈ σ / √N)
-    double efficiency;  // 1 / (rmse² × seconds per run)
+    int samples;                // N per estimate
+    double mean;                // of all runs' estimates
+    double rmse;                // of one run's estimate, against exact
+    double sigma;               // per-sample standard deviation (independent points: rmse ≈ σ / √N)
+    double seconds_per_sample;  // the runs' time over their samples
+    double efficiency;          // 1 / (rmse² × seconds per run)
 };
 
 std::vector<IrradianceStudyRow> irradiance_study(const std::vector<int>& sample_counts, int runs);

@@ -33,6 +33,11 @@ PathTracer::PathTracer(const World& world, const Scene& scene, const LightSet& l
       environment_(lights.environment),
       options_(options) {
     if (environment_ && black(environment_->radiance)) environment_.reset();
+    // The World numbers its planes after every bounded primitive.
+    std::size_t planes = 0;
+    for (const Shape& shape : scene.shapes)
+        planes += std::holds_alternative<PlaneShape>(shape.geometry) ? 1 : 0;
+    bounded_primitives_ = std::uint32_t(world.primitive_count() - planes);
     const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
     for (const Material& m : scene.materials) {
         const Brdf b = options_.glossy ? brdf_of(m, stand_in) : without_lobes(brdf_of(m, stand_in));
@@ -130,12 +135,13 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         const Material& material = scene_.materials[std::size_t(hit->material)];
         if (hit->front_face && material.emissive() && (specular || options_.direct)) {
             Real w = 1;
-            if (!specular && nee) {
-                Real pdf_light = 0;
-                if (mis && hit->primitive < world_.primitive_count()) {
-                    pdf_light = picker_.pdf(previous_point, ray.direction, *hit, material.emission);
-                }
-                w = mis ? power_heuristic(previous_pdf, pdf_light) : Real(0);
+            // An emissive plane is not among the lights next-event estimation samples (it has no finite
+            // area): only a path that hits it sees it, whatever the strategy.
+            const bool sampled = hit->primitive < bounded_primitives_;
+            if (!specular && nee && sampled) {
+                w = mis ? power_heuristic(previous_pdf,
+                                          picker_.pdf(previous_point, ray.direction, *hit, material.emission))
+                        : Real(0);
             }
             L += beta * material.emission * w;
         }

@@ -61,6 +61,7 @@ class PathTracer {
     PathOptions options_;
     std::vector<Brdf> brdfs_;                  // one per scene material
     std::vector<std::uint8_t> black_, delta_;  // per material: is_black, is_delta
+    std::uint32_t bounded_primitives_ = 0;     // Hit::primitive at or above it: a plane
 };
 
 // Renders with `tracer`: one path per sample, through a stratified point of the pixel.

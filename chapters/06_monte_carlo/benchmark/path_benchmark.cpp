@@ -7,7 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <fstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -27,6 +30,14 @@ using namespace rt;
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     return values[values.size() / 2];
+}
+
+// The first line of /proc/loadavg: "1.23 0.98 0.75 …" (what else the machine is running).
+std::string load_average() {
+    std::ifstream in("/proc/loadavg");
+    std::string one, five, fifteen;
+    in >> one >> five >> fifteen;
+    return in ? one + " " + five + " " + fifteen : std::string("unknown");
 }
 
 bool identical(const Image& a, const Image& b) {
@@ -69,19 +80,22 @@ int main(int argc, char** argv) {
         settings.seed = 1;
         settings.progress = ProgressStyle::kNone;
         const PathTracer tracer(world, scene, lights, options);
-        std::printf("ch06_benchmark: %s, %dx%d, %s, %u hardware threads\n", scene_file.c_str(), size, size,
-                    sampling.c_str(), std::thread::hardware_concurrency());
+        std::printf("ch06_benchmark: %s, %dx%d, %s, %u hardware threads, load average %s\n",
+                    scene_file.c_str(), size, size, sampling.c_str(), std::thread::hardware_concurrency(),
+                    load_average().c_str());
 
         // Samples per second: the median of `repeats` renders of `spp` samples per pixel.
         settings.samples_per_pixel = spp;
-        double rate[3] = {0, 0, 0};
+        double rate[3] = {0, 0, 0}, cpu_rate[3] = {0, 0, 0};
         Image images[3];
         std::uint64_t rays = 0;
         for (int threads : {1, 2}) {
             settings.threads = threads;
-            std::vector<double> seconds;
+            std::vector<double> seconds, cpu_seconds;
             for (int r = 0; r < repeats; ++r) {
+                const std::clock_t cpu_start = std::clock();
                 RenderResult result = render_paths(tracer, camera, settings);
+                cpu_seconds.push_back(double(std::clock() - cpu_start) / CLOCKS_PER_SEC);
                 seconds.push_back(result.seconds);
                 rays = result.rays.total();
                 images[threads] = std::move(result.image);
@@ -96,6 +110,11 @@ int main(int argc, char** argv) {
         const bool same = identical(images[1], images[2]);
         std::printf("  2 threads / 1 thread: %.2fx; image bit-identical on 1 and 2 threads: %s\n", speedup,
                     same ? "yes" : "NO");
+        // The processor time a sample costs, whoever else runs: when it is the same on 1 and 2 threads the
+        // render itself adds no parallel overhead, and a wall-clock speed-up short of 2x is the machine's
+        // other load.
+        std::printf("  processor time per sample, 2 threads / 1 thread: %.2f; load average now: %s\n",
+                    cpu_rate[1] / cpu_rate[2], load_average().c_str());
 
         // Time to a relative MSE of `target`: relative MSE falls like 1/spp, so the spp that reaches it is
         // predicted from the error at `spp` and then rendered to check.
