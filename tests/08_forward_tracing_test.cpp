@@ -424,3 +424,33 @@ TEST_CASE("Time to an RMSE is read off a log-log curve, and extrapolated with RM
     CHECK(masked_rmse(c, b, {1, 0}) == 0);
     CHECK(masked_rmse(c, b, {0, 1}) == Approx(3));
 }
+
+TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing and never NaN",
+          "[ch08][stability]") {
+    const Setup s(load_scene(scene_path("ch06_default.json")), 8, 8);
+    const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    Image film(8, 8);
+    RayCounts rays;
+    const Brdf lambert = LambertBrdf{Color(0.5f)};
+    Hit at_eye;
+    at_eye.point = s.camera.eye;  // r = 0: no direction to the eye
+    at_eye.normal = -s.camera.forward;
+    CHECK_FALSE(tracer.connect(at_eye, at_eye.normal, lambert, Color(1), film, rays));
+    Hit edge_on;  // the eye lies in the surface's plane: cos θ_x = 0
+    edge_on.point = s.camera.eye + 500.0f * s.camera.forward;
+    edge_on.normal = s.camera.right;
+    CHECK_FALSE(tracer.connect(edge_on, edge_on.normal, lambert, Color(1), film, rays));
+    CHECK(rays.total() == 0);  // neither needed a visibility ray
+    CHECK(film.mean() == 0);
+    CHECK(film.all_finite());
+    // The film's edges: a direction exactly on the right or bottom edge is outside (px = W), one just inside
+    // lands in the last pixel, and the zero direction nowhere.
+    const PinholeCamera& c = s.camera;
+    CHECK_FALSE(project_direction(c, c.forward + c.half_width * c.right));
+    CHECK_FALSE(project_direction(c, c.forward - c.half_height * c.up));
+    const auto inside = project_direction(c, c.forward + 0.99999f * c.half_width * c.right);
+    REQUIRE(inside);
+    CHECK(inside->x == 7);
+    CHECK_FALSE(project_direction(c, Vec3(0)));
+    CHECK(std::isfinite(pinhole_importance(c, 1e-3f)));
+}
