@@ -93,7 +93,7 @@ TEST_CASE("At Brewster's angle 56.3099 degrees only the perpendicular part refle
 }
 
 TEST_CASE(
-    "From inside: the critical angle is 41.8103 degrees; below it refraction succeeds, R(41) = 0.379751",
+    "From inside: the critical angle is 41.8103 degrees, below it refraction succeeds, R(41) = 0.379751",
     "[stability]") {
     const double critical = std::asin(1 / kEta);
     CHECK(critical * 180 / std::numbers::pi == Approx(41.8103).margin(1e-4));
@@ -229,7 +229,7 @@ TEST_CASE("Total internal reflection never yields NaN or a zero direction (glm::
 }
 
 TEST_CASE(
-    "Schlick's approximation stays within 0.04 of the exact R; leaving glass it cuts off at the same angle",
+    "Schlick's approximation stays within 0.04 of the exact R, and leaving glass it cuts off at the same angle",
     "[stability]") {
     double worst = 0;
     for (double theta = 0; theta <= deg(90); theta += deg(0.1)) {
@@ -270,7 +270,7 @@ TEST_CASE("The dielectric reflects with probability R and weighs transmission by
     }
 }
 
-TEST_CASE("Beer-Lambert: exp(-sigma d) per channel; clear glass passes everything, even at infinity",
+TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes everything, even at infinity",
           "[stability]") {
     const Color t = beer_lambert(Color(0, 1, 2), 0.5f);
     CHECK(t.r == 1);

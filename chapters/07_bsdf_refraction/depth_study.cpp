@@ -20,7 +20,7 @@ RenderResult render_glass(const Scene& scene, const RenderSettings& settings,
 
 }  // namespace
 
-Image depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
                       int spp, const std::filesystem::path& folder, bool& cached) {
     const std::filesystem::path file =
         folder / ("ch07_reference_" + std::filesystem::path(scene.file).stem().string() + "_" +
@@ -42,10 +42,10 @@ Image depth_reference(const Scene& scene, const RenderSettings& settings, const 
     return image;
 }
 
-std::vector<DepthStudyRow> depth_study(const Scene& scene, const RenderSettings& settings,
+std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
                                        const BsdfPathOptions& options, const Image& reference,
                                        const std::vector<int>& depths) {
-    std::vector<DepthStudyRow> rows;
+    std::vector<GlassDepthRow> rows;
     for (int depth : depths) {
         BsdfPathOptions o = options;
         o.termination = {Termination::kMaxDepth, depth};

@@ -14,7 +14,7 @@
 
 namespace rt {
 
-struct DepthStudyRow {
+struct GlassDepthRow {
     int max_depth;
     double rmse;
     double relative_mse;
@@ -25,10 +25,10 @@ struct DepthStudyRow {
 
 // The reference: `spp` samples with Russian roulette, read from `cache` when a file of that name and size is
 // there, else rendered and written: <folder>/ch07_reference_<scene stem>_<W>x<H>_<spp>spp.pfm.
-Image depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
                       int spp, const std::filesystem::path& folder, bool& cached);
 
-std::vector<DepthStudyRow> depth_study(const Scene& scene, const RenderSettings& settings,
+std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
                                        const BsdfPathOptions& options, const Image& reference,
                                        const std::vector<int>& depths);
 

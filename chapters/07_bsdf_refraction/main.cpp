@@ -107,12 +107,12 @@ int main(int argc, char** argv) {
                         context.settings.width, context.settings.height);
             std::fflush(stdout);
             const Image reference =
-                depth_reference(scene, context.settings, options, reference_spp, cache, cached);
+                glass_depth_reference(scene, context.settings, options, reference_spp, cache, cached);
             std::printf("  %s\n", cached ? "read from the cache" : "rendered and cached");
-            const auto rows = depth_study(scene, context.settings, options, reference, depths);
+            const auto rows = glass_depth_study(scene, context.settings, options, reference, depths);
             std::printf("%9s %5s %12s %12s %12s %10s %12s\n", "max depth", "spp", "RMSE", "rel. MSE",
                         "mean error", "time (s)", "rays");
-            for (const DepthStudyRow& r : rows) {
+            for (const GlassDepthRow& r : rows) {
                 std::printf("%9d %5d %12.4e %12.4e %+12.4e %10.3f %12llu\n", r.max_depth,
                             context.settings.samples_per_pixel, r.rmse, r.relative_mse, r.mean_error,
                             r.seconds, static_cast<unsigned long long>(r.rays));

@@ -65,12 +65,15 @@ Image cached_half(const Scene& scene, RenderSettings settings, int spp, std::uin
     return image;
 }
 
+void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
+         double target, const std::string& cache);
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app("ch07_benchmark: glass path tracer speed, effects cost and time to a relative MSE",
                  "ch07_benchmark");
-    int size = 600, spp = 8, repeats = 3, threads = 2, conv_size = 150, reference_spp = 4096;
+    int size = 600, spp = 8, repeats = 3, threads = 2, conv_size = 150, reference_spp = 4096, max_spp = 2048;
     double target = 1e-3;
     std::string cache = ".";
     app.add_option("--size", size, "Width and height of the timed renders")->check(CLI::Range(8, 4096));
@@ -82,10 +85,24 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(8, 4096));
     app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference (two halves)")
         ->check(CLI::Range(2, 1 << 20));
+    app.add_option("--max-spp", max_spp, "The largest spp tried for the time to --target")
+        ->check(CLI::Range(1, 1 << 20));
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     CLI11_PARSE(app, argc, argv);
+    try {
+        run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ch07_benchmark: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
 
+namespace {
+
+void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
+         double target, const std::string& cache) {
     const Scene cornell = load_scene(scene_path("cornell.json"));
     RenderSettings settings;
     settings.width = settings.height = size;
@@ -157,7 +174,7 @@ int main(int argc, char** argv) {
         BsdfPathOptions options;
         options.next_event = nee;
         double estimate = 0;
-        for (int n = 1; n <= 1 << 16; n *= 2) {
+        for (int n = 1; n <= max_spp; n *= 2) {
             conv.samples_per_pixel = n;
             conv.seed = 7;
             const RenderResult r = chapter07(cornell, conv, options);
@@ -168,5 +185,6 @@ int main(int argc, char** argv) {
             if (rel < 4 * target) break;
         }
     }
-    return 0;
 }
+
+}  // namespace
