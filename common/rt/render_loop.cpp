@@ -18,7 +18,11 @@ namespace rt::detail {
 namespace {
 
 constexpr int kTileSize = 16;
+// Samples are taken in passes: first one sample per pixel (so an interrupted image covers every pixel), then
+// an eighth of the rest per pass, but at most kMaxPassSamples, so Ctrl-C is answered within a pass of 256 ×
+// 16 samples per tile, whatever the sample count.
 constexpr int kPasses = 8;
+constexpr int kMaxPassSamples = 16;
 
 using Clock = std::chrono::steady_clock;
 
@@ -88,9 +92,9 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     std::exception_ptr failure;  // the first exception a sample threw, on any thread
     std::mutex failure_mutex;
     std::atomic<bool> failed{false};
-    const int per_pass = std::max(1, (spp + kPasses - 1) / kPasses);
-    for (int first = 0; first < spp && !interrupt_requested(); first += per_pass) {
-        const int end = std::min(spp, first + per_pass);
+    const int per_pass = std::clamp((spp + kPasses - 1) / kPasses, 1, kMaxPassSamples);
+    for (int first = 0, end = 1; first < spp && !interrupt_requested();
+         first = end, end = std::min(spp, end + per_pass)) {
         std::atomic<int> next_tile{0};
         std::atomic<int> workers_running{threads};
         auto worker = [&](int thread_index) {
