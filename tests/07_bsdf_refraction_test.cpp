@@ -229,7 +229,8 @@ TEST_CASE("Total internal reflection never yields NaN or a zero direction (glm::
 }
 
 TEST_CASE(
-    "Schlick's approximation stays within 0.04 of the exact R, and leaving glass it cuts off at the same angle",
+    "Schlick's approximation stays within 0.04 of the exact R, and leaving glass it cuts off at the same "
+    "angle",
     "[stability]") {
     double worst = 0;
     for (double theta = 0; theta <= deg(90); theta += deg(0.1)) {

@@ -20,8 +20,9 @@ RenderResult render_glass(const Scene& scene, const RenderSettings& settings,
 
 }  // namespace
 
-Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
-                      int spp, const std::filesystem::path& folder, bool& cached) {
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
+                            const BsdfPathOptions& options, int spp, const std::filesystem::path& folder,
+                            bool& cached) {
     const std::filesystem::path file =
         folder / ("ch07_reference_" + std::filesystem::path(scene.file).stem().string() + "_" +
                   std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_" +
@@ -43,8 +44,8 @@ Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, 
 }
 
 std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
-                                       const BsdfPathOptions& options, const Image& reference,
-                                       const std::vector<int>& depths) {
+                                             const BsdfPathOptions& options, const Image& reference,
+                                             const std::vector<int>& depths) {
     std::vector<GlassDepthRow> rows;
     for (int depth : depths) {
         BsdfPathOptions o = options;

@@ -25,11 +25,12 @@ struct GlassDepthRow {
 
 // The reference: `spp` samples with Russian roulette, read from `cache` when a file of that name and size is
 // there, else rendered and written: <folder>/ch07_reference_<scene stem>_<W>x<H>_<spp>spp.pfm.
-Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const BsdfPathOptions& options,
-                      int spp, const std::filesystem::path& folder, bool& cached);
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
+                            const BsdfPathOptions& options, int spp, const std::filesystem::path& folder,
+                            bool& cached);
 
 std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
-                                       const BsdfPathOptions& options, const Image& reference,
-                                       const std::vector<int>& depths);
+                                             const BsdfPathOptions& options, const Image& reference,
+                                             const std::vector<int>& depths);
 
 }  // namespace rt
