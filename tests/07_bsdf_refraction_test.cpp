@@ -454,3 +454,19 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
     // The image means (256 pixels × 512 paths each): within 3 % (the light-hitting estimate is the noisier).
     CHECK(b.image.mean() == Approx(a.image.mean()).epsilon(0.03));
 }
+
+TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera inside sees 2.25",
+          "[furnace]") {
+    // The camera at the centre of a glass sphere under a uniform environment of radiance 1. What is conserved
+    // across the interface is L / η², so the radiance inside is 1.5² = 2.25 in every direction; without the
+    // 1 / η² factor of the BTDF every pixel would be 1.
+    const Scene scene = scene_from(R"({
+      "camera": {"from": [0, 0, 0], "at": [0, 0, -1], "up": [0, 1, 0], "vfov": 90},
+      "materials": {"glass": {"type": "dielectric", "ior": 1.5}},
+      "shapes": [{"type": "sphere", "center": [0.1, -0.2, 0.05], "radius": 1, "material": "glass"}],
+      "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+    })");
+    const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(16, 16), {});
+    for (const Color& c : r.image.pixels()) CHECK(c.g == Approx(2.25).epsilon(1e-5));
+    CHECK(r.rays[RayKind::kRefraction] > 0);
+}
