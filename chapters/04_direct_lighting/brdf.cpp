@@ -92,10 +92,6 @@ struct Pdf {
     Real operator()(const RetroreflectiveBrdf& b) const { return lobe_pdf(b.exponent, wo, wi); }
 };
 
-bool black(const Color& c) {
-    return c.r <= 0 && c.g <= 0 && c.b <= 0;
-}
-
 }  // namespace
 
 Real phong_exponent(Real roughness) {
@@ -139,12 +135,18 @@ bool is_black(const Brdf& brdf) {
     return std::visit(
         [](const auto& b) {
             if constexpr (std::is_same_v<std::decay_t<decltype(b)>, MirrorBrdf>) {
-                return black(b.reflectance);
+                return is_black(b.reflectance);
             } else {
-                return black(b.albedo);
+                return is_black(b.albedo);
             }
         },
         brdf);
+}
+
+Brdf without_lobes(const Brdf& brdf) {
+    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
+    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
+    return brdf;
 }
 
 }  // namespace rt

@@ -74,5 +74,7 @@ Real pdf(const Brdf& brdf, const Vec3& wo, const Vec3& wi, const Vec3& n);
 bool is_delta(const Brdf& brdf);
 // Zero everywhere (black diffuse, zero reflectance): nothing to light, no shadow rays needed.
 bool is_black(const Brdf& brdf);
+// With the glossy effect off, a glossy or retro-reflective lobe is shaded as a Lambert surface of its albedo.
+Brdf without_lobes(const Brdf& brdf);
 
 }  // namespace rt

@@ -11,21 +11,6 @@
 #include "sphere_light_sampling.hpp"
 
 namespace rt {
-namespace {
-
-bool black(const Color& c) {
-    return !(c.r > 0 || c.g > 0 || c.b > 0);
-}
-
-// With the glossy effect off, a lobe is shaded as a Lambert surface of the same albedo.
-Brdf without_lobes(const Brdf& brdf) {
-    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
-    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
-    return brdf;
-}
-
-}  // namespace
-
 std::string_view to_string(LightSampler sampler) {
     return sampler == LightSampler::kIndependent ? "independent" : "stratified";
 }
@@ -49,9 +34,9 @@ DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet 
 Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& s,
                                    RayCounts& rays) const {
     const Real cos_i = glm::dot(s.wi, hit.normal);
-    if (!(cos_i > 0) || !(s.pdf > 0) || black(s.radiance)) return Color(0);
+    if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.radiance)) return Color(0);
     const Color f = eval(brdf, wo, s.wi, hit.normal);
-    if (black(f)) return Color(0);
+    if (is_black(f)) return Color(0);
     if (options_.shadows) {
         const bool lit = s.on_surface() ? visible(world_, hit, SurfacePoint{s.point, s.normal, s.point_error},
                                                   options_.offset, rays)
@@ -110,14 +95,14 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
                             rays);
     }
     // The environment: cosine-weighted directions (pdf = cos θ / π); the shadow ray goes to infinity.
-    if (lights_.environment && !black(lights_.environment->radiance)) {
+    if (lights_.environment && !is_black(lights_.environment->radiance)) {
         const Frame frame = make_frame(hit.normal);
         for (int j = 0; j < n; ++j) {
             const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(light_point(j, rng))));
             const Real cos_i = glm::dot(wi, hit.normal);
             if (!(cos_i > 0)) continue;
             const Color f = eval(b, wo, wi, hit.normal);
-            if (black(f)) continue;
+            if (is_black(f)) continue;
             if (options_.shadows) {
                 rays.add(RayKind::kShadow);
                 if (world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity)) continue;

@@ -4,17 +4,9 @@
 #include "sampling.hpp"
 
 namespace rt {
-namespace {
-
-bool black(const Color& c) {
-    return !(c.r > 0 || c.g > 0 || c.b > 0);
-}
-
-}  // namespace
-
 std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
     // EXERCISE(ch05.mirror_scatter)
-    if (black(mirror.reflectance)) return std::nullopt;
+    if (is_black(mirror.reflectance)) return std::nullopt;
     const Vec3 r = reflect(wo, n);
     const Real length = glm::length(r);
     if (!(length > 0)) return std::nullopt;
@@ -30,7 +22,7 @@ std::optional<Scatter> uniform_scatter(const Brdf& brdf, const Vec3& wo, const V
     const Real cos_i = glm::dot(wi, n);
     if (!(cos_i > 0)) return std::nullopt;
     const Color f = eval(brdf, wo, wi, n);
-    if (black(f)) return std::nullopt;
+    if (is_black(f)) return std::nullopt;
     return Scatter{wi, f * (cos_i / kUniformHemispherePdf)};
     // END EXERCISE
 }

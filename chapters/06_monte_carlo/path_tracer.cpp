@@ -10,21 +10,6 @@
 #include "warp_pdfs.hpp"
 
 namespace rt {
-namespace {
-
-bool black(const Color& c) {
-    return !(c.r > 0 || c.g > 0 || c.b > 0);
-}
-
-// With the glossy effect off, a lobe is shaded as a Lambert surface of the same albedo (as in chapter 04).
-Brdf without_lobes(const Brdf& brdf) {
-    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
-    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
-    return brdf;
-}
-
-}  // namespace
-
 PathTracer::PathTracer(const World& world, const Scene& scene, const LightSet& lights, PathOptions options)
     : world_(world),
       scene_(scene),
@@ -32,7 +17,7 @@ PathTracer::PathTracer(const World& world, const Scene& scene, const LightSet& l
       points_(lights.points),
       environment_(lights.environment),
       options_(options) {
-    if (environment_ && black(environment_->radiance)) environment_.reset();
+    if (environment_ && is_black(environment_->radiance)) environment_.reset();
     // The World numbers its planes after every bounded primitive.
     std::size_t planes = 0;
     for (const Shape& shape : scene.shapes)
@@ -63,7 +48,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Brdf& brdf, P
             const Real cos_i = glm::dot(s->wi, n);
             if (cos_i > 0 && s->pdf > 0) {
                 const Color f = eval(brdf, wo, s->wi, n);
-                if (!black(f) &&
+                if (!is_black(f) &&
                     (!options_.shadows || visible(world_, hit, s->point, options_.offset, rays))) {
                     const Real w = mis ? power_heuristic(s->pdf, brdf_pdf(brdf, wo, s->wi, n)) : Real(1);
                     sum += f * s->radiance * (cos_i * w / s->pdf);
@@ -76,7 +61,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Brdf& brdf, P
         const Vec3 wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(rng.next_vec2())));
         const Real cos_i = glm::dot(wi, n);
         const Color f = cos_i > 0 ? eval(brdf, wo, wi, n) : Color(0);
-        if (!black(f)) {
+        if (!is_black(f)) {
             bool seen = true;
             if (options_.shadows) {
                 rays.add(RayKind::kShadow);
@@ -98,7 +83,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Brdf& brdf, P
         const Real cos_i = glm::dot(wi, n);
         if (!(cos_i > 0)) continue;
         const Color f = eval(brdf, wo, wi, n);
-        if (black(f)) continue;
+        if (is_black(f)) continue;
         if (options_.shadows && !visible(world_, hit, light.position, options_.offset, rays)) continue;
         sum += f * light.intensity * (cos_i / d2);
     }
@@ -172,7 +157,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
             f = eval(brdf, wo, wi, n);
         }
         const Real cos_i = glm::dot(wi, n);
-        if (!(cos_i > 0) || !(pdf > 0) || black(f)) break;
+        if (!(cos_i > 0) || !(pdf > 0) || is_black(f)) break;
         beta *= f * (cos_i / pdf);
         if (!delta) ++bounces;
         specular = delta;

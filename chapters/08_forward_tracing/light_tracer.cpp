@@ -10,19 +10,9 @@
 namespace rt {
 namespace {
 
-bool black(const Color& c) {
-    return !(c.r > 0 || c.g > 0 || c.b > 0);
-}
-
-Brdf without_lobes(const Brdf& brdf) {
-    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
-    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
-    return brdf;
-}
-
 // Adds c to pixel (x, y) unless it is zero or not finite; returns whether it did.
 bool splat(Image& film, const FilmPoint& p, const Color& c) {
-    if (black(c) || !is_finite(c)) return false;
+    if (is_black(c) || !is_finite(c)) return false;
     film.at(p.x, p.y) += c;
     return true;
 }
@@ -66,7 +56,7 @@ bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, cons
     const auto p = project_direction(camera_, -to_eye);
     if (!p) return false;
     const Color f = eval(brdf, wo, wc, hit.normal);
-    if (black(f)) return false;
+    if (is_black(f)) return false;
     const ShadowRay s = spawn_shadow_ray(hit, camera_.eye, options_.offset);
     rays.add(RayKind::kCamera);
     if (world_.occluded(s.ray, s.t_max)) return false;
@@ -151,7 +141,7 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         if (!delta && !options_.indirect) break;
         const BrdfSample s = sample(brdf, wo, hit->normal, rng.next_vec2());
         const Real cos_i = glm::dot(s.wi, hit->normal);
-        if (!(cos_i > 0) || !(s.pdf > 0) || black(s.f)) break;
+        if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
         relative *= s.f * (cos_i / s.pdf);
         from_mirror = delta;
         if (!delta) ++diffuse_bounces;

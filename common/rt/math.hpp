@@ -1,10 +1,10 @@
 // Numbers and vectors of the course: one alias for the precision of every renderer.
 #pragma once
 
+#include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <cmath>
 #include <limits>
 #include <numbers>
 
@@ -29,9 +29,19 @@ inline constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 // The largest Real below 1: what a uniform random number in [0, 1) can be at most.
 inline constexpr Real kOneMinusEpsilon = Real(1) - std::numeric_limits<Real>::epsilon() / 2;
 
-inline Real radians(Real degrees) { return degrees * (kPi / Real(180)); }
-inline Real luminance(const Color& c) { return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b; }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline Real radians(Real degrees) {
+    return degrees * (kPi / Real(180));
+}
+inline Real luminance(const Color& c) {
+    return Real(0.2126) * c.r + Real(0.7152) * c.g + Real(0.0722) * c.b;
+}
+// A colour with no positive channel reflects or emits nothing: no ray needs to be traced for it.
+inline bool is_black(const Color& c) {
+    return !(c.r > 0 || c.g > 0 || c.b > 0);
+}
+inline bool is_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 }  // namespace rt
 
