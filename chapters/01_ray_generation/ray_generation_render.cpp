@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "camera_render.hpp"
 #include "direction_shading.hpp"
 
 namespace rt {
@@ -10,13 +11,8 @@ namespace {
 template <typename Shade>
 RenderResult render_with(const PinholeCamera& camera, PixelSampler sampler, const RenderSettings& settings,
                          Shade shade) {
-    const int count = settings.samples_per_pixel;
-    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
-        const Ray ray = camera_ray(camera, film.x, film.y);
-        rays.add(RayKind::kCamera);
-        return shade(ray.direction);
-    });
+    return render_camera_rays(camera, sampler, settings,
+                              [&](const Ray& ray, Pcg32&, RayCounts&) { return shade(ray.direction); });
 }
 
 }  // namespace

@@ -1,23 +1,16 @@
 #include "direct_render.hpp"
 
-#include "pixel_sampling.hpp"
+#include "camera_render.hpp"
 #include "rt/error_metrics.hpp"
 
 namespace rt {
 
 RenderResult render_direct(const DirectLighting& shading, const PinholeCamera& camera,
                            const RenderSettings& settings, FilmPoints film_points) {
-    const int count = settings.samples_per_pixel;
     const PixelSampler sampler =
         film_points == FilmPoints::kCentre ? PixelSampler::kCenter : PixelSampler::kStratified;
-    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
-        const Ray ray = camera_ray(camera, film.x, film.y);
-        rays.add(RayKind::kCamera);
-        const Color L = shading.radiance(ray, rng, rays);
-        // A last guard, so no NaN or Inf can reach an image; the tests check that none occurs on the course's
-        // scenes.
-        return is_finite(L) ? L : Color(0);
+    return render_camera_rays(camera, sampler, settings, [&](const Ray& ray, Pcg32& rng, RayCounts& rays) {
+        return shading.radiance(ray, rng, rays);
     });
 }
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "pixel_sampling.hpp"
+#include "camera_render.hpp"
 #include "rt/error_metrics.hpp"
 
 namespace rt {
@@ -17,16 +17,9 @@ constexpr int kRepeats = 3;
 
 RenderResult render_gi(const RecursiveTracer& tracer, const PinholeCamera& camera,
                        const RenderSettings& settings) {
-    const int count = settings.samples_per_pixel;
-    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film =
-            pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
-        const Ray ray = camera_ray(camera, film.x, film.y);
-        rays.add(RayKind::kCamera);
-        const Color L = tracer.radiance(ray, rng, rays);
-        // A last guard, so no NaN or Inf can reach an image; the tests check that none occurs.
-        return is_finite(L) ? L : Color(0);
-    });
+    return render_camera_rays(
+        camera, PixelSampler::kStratified, settings,
+        [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return tracer.radiance(ray, rng, rays); });
 }
 
 std::string describe(const TerminationSettings& t) {

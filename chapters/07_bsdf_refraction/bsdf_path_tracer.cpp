@@ -1,8 +1,8 @@
 #include "bsdf_path_tracer.hpp"
 
 #include "brdf.hpp"
+#include "camera_render.hpp"
 #include "dielectric.hpp"
-#include "pixel_sampling.hpp"
 #include "snell.hpp"
 
 namespace rt {
@@ -88,14 +88,9 @@ Color BsdfPathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& ray
 
 RenderResult render_bsdf_paths(const BsdfPathTracer& tracer, const PinholeCamera& camera,
                                const RenderSettings& settings) {
-    const int count = settings.samples_per_pixel;
-    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film =
-            pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
-        rays.add(RayKind::kCamera);
-        const Color L = tracer.radiance(camera_ray(camera, film.x, film.y), rng, rays);
-        return is_finite(L) ? L : Color(0);
-    });
+    return render_camera_rays(
+        camera, PixelSampler::kStratified, settings,
+        [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return tracer.radiance(ray, rng, rays); });
 }
 
 }  // namespace rt

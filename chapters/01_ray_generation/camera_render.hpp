@@ -1,0 +1,26 @@
+// Rendering through the pinhole camera, the loop every chapter's picture goes through: sample s of pixel
+// (x, y) becomes the camera ray through a point of that pixel (chosen by a pixel sampler), counted as a
+// camera ray, and `radiance(ray, rng, rays)` says what that ray sees.
+#pragma once
+
+#include "camera.hpp"
+#include "pixel_sampling.hpp"
+#include "rt/render_loop.hpp"
+
+namespace rt {
+
+template <typename Radiance>
+RenderResult render_camera_rays(const PinholeCamera& camera, PixelSampler sampler,
+                                const RenderSettings& settings, Radiance&& radiance) {
+    const int count = settings.samples_per_pixel;
+    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
+        rays.add(RayKind::kCamera);
+        const Color L = radiance(camera_ray(camera, film.x, film.y), rng, rays);
+        // A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here
+        // rather than spread over the pixel; the tests check that none occurs on the course's scenes.
+        return is_finite(L) ? L : Color(0);
+    });
+}
+
+}  // namespace rt
