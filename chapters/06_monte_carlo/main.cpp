@@ -13,6 +13,7 @@
 #include "path_tracer.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 #include "world.hpp"
 
 namespace {

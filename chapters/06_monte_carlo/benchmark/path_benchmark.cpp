@@ -101,10 +101,12 @@ int main(int argc, char** argv) {
                 images[threads] = std::move(result.image);
             }
             rate[threads] = double(size) * size * spp / median(seconds);
+            cpu_rate[threads] = double(size) * size * spp / median(cpu_seconds);
             std::printf(
-                "  %d thread%s: %.3g samples/s, %.3g rays/s (median of %d renders of %d spp: %.3f s)\n",
+                "  %d thread%s: %.3g samples/s, %.3g rays/s (median of %d renders of %d spp: %.3f s); %.3g "
+                "samples per processor second\n",
                 threads, threads == 1 ? " " : "s", rate[threads], double(rays) / median(seconds), repeats,
-                spp, median(seconds));
+                spp, median(seconds), cpu_rate[threads]);
         }
         const double speedup = rate[2] / rate[1];
         const bool same = identical(images[1], images[2]);
