@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "camera_render.hpp"
 #include "frame.hpp"
 #include "mis.hpp"
-#include "pixel_sampling.hpp"
 #include "sampling.hpp"
 #include "shadow_ray.hpp"
 #include "warp_pdfs.hpp"
@@ -174,16 +174,9 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
 
 RenderResult render_paths(const PathTracer& tracer, const PinholeCamera& camera,
                           const RenderSettings& settings) {
-    const int count = settings.samples_per_pixel;
-    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film =
-            pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
-        rays.add(RayKind::kCamera);
-        const Color L = tracer.radiance(camera_ray(camera, film.x, film.y), rng, rays);
-        // A last guard, so no NaN or Inf can reach an image; the tests check that none occurs on the course's
-        // scenes.
-        return is_finite(L) ? L : Color(0);
-    });
+    return render_camera_rays(
+        camera, PixelSampler::kStratified, settings,
+        [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return tracer.radiance(ray, rng, rays); });
 }
 
 }  // namespace rt
