@@ -138,9 +138,10 @@ std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& r
         const double slope = denominator > 0 ? (n * sxy - sx * sy) / denominator : 0.0;
         const ConvergenceRow& last = *mine.back();
         const double cpu = std::max(last.cpu_seconds, 1e-9);
+        // An MSE at or below the reference's own noise says nothing: its efficiency is left at 0.
         table.push_back({s, slope, last.mse, last.relative_mse, last.cpu_seconds,
-                         1.0 / (std::max(last.mse, 1e-30) * cpu),
-                         1.0 / (std::max(last.relative_mse, 1e-30) * cpu)});
+                         last.mse > 0 ? 1.0 / (last.mse * cpu) : 0.0,
+                         last.relative_mse > 0 ? 1.0 / (last.relative_mse * cpu) : 0.0});
     }
     return table;
 }

@@ -61,7 +61,7 @@ struct EfficiencyRow {
     double mse;    // at the largest spp
     double relative_mse;         // at the largest spp
     double cpu_seconds;          // at the largest spp
-    double efficiency;           // 1 / (mse × cpu_seconds)
+    double efficiency;           // 1 / (mse × cpu_seconds); 0 when mse <= 0 (below the reference's noise)
     double relative_efficiency;  // 1 / (relative_mse × cpu_seconds)
 };
 std::vector<EfficiencyRow> efficiency_table(const std::vector<ConvergenceRow>& rows);

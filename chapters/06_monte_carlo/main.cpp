@@ -172,6 +172,15 @@ int main(int argc, char** argv) {
                             e.efficiency, uniform > 0 ? e.efficiency / uniform : 0.0, e.relative_efficiency,
                             uniform_relative > 0 ? e.relative_efficiency / uniform_relative : 0.0);
             }
+            for (const EfficiencyRow& e : table) {
+                if (!(e.mse > 0) || !(e.relative_mse > 0)) {
+                    std::printf(
+                        "note: an MSE at or below the reference's own noise (efficiency shown as 0): render "
+                        "the "
+                        "reference with more samples (--reference-spp)\n");
+                    break;
+                }
+            }
             write_convergence_csv(rows, csv);
             std::filesystem::path stem = csv;
             stem.replace_extension();
