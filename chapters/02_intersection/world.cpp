@@ -184,7 +184,8 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
             if (any_hit) return true;
         }
     }
-    const WatertightRay sheared = make_watertight_ray(ray);
+    // The watertight test's per-ray shear, computed only when there are triangles to test.
+    const WatertightRay sheared = triangles_.empty() ? WatertightRay{} : make_watertight_ray(ray);
     auto test_one = [&](std::uint32_t slot, Real& limit) {
         if (!test(ray, sheared, slot, limit, found)) return false;
         limit = found.t;
