@@ -3,29 +3,16 @@
 #include <type_traits>
 #include <variant>
 
+#include "box.hpp"
+
 namespace rt {
 namespace {
 
-// The 6 faces of a transformed box, each as (origin, u, v) turned so u × v points out of the box.
+// The 6 faces of a transformed box (chapter 02's box_faces) as one-sided quad lights, emitting outward.
 void add_box_faces(const BoxShape& box, const Color& radiance, LightSet& lights) {
-    auto corner = [&](int x, int y, int z) {
-        return box.transform.apply_to_point(
-            {x ? box.max.x : box.min.x, y ? box.max.y : box.min.y, z ? box.max.z : box.min.z});
-    };
-    const Vec3 center = box.transform.apply_to_point((box.min + box.max) * Real(0.5));
-    for (int axis = 0; axis < 3; ++axis) {
-        for (int side = 0; side < 2; ++side) {
-            int o[3] = {0, 0, 0}, a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
-            o[axis] = a[axis] = b[axis] = side;
-            a[(axis + 1) % 3] = 1;
-            b[(axis + 2) % 3] = 1;
-            const Vec3 origin = corner(o[0], o[1], o[2]);
-            Vec3 u = corner(a[0], a[1], a[2]) - origin;
-            Vec3 v = corner(b[0], b[1], b[2]) - origin;
-            if (glm::dot(glm::cross(u, v), origin + (u + v) * Real(0.5) - center) < 0) std::swap(u, v);
-            const QuadLight q = make_quad_light(origin, u, v, radiance);
-            if (q.area > 0) lights.quads.push_back(q);
-        }
+    for (const Quad& face : box_faces(box)) {
+        const QuadLight q = make_quad_light(face.origin, face.u, face.v, radiance);
+        if (q.area > 0) lights.quads.push_back(q);
     }
 }
 
