@@ -143,7 +143,8 @@ int main(int argc, char** argv) {
             return 2;
         }
         csv << "triangles,build_ms,bvh_bytes_per_triangle,camera_mrays_1,camera_mrays_all,random_mrays_1,"
-               "random_mrays_all,random_anyhit_mrays_1,brute_mrays_1,boxes_per_ray,primitives_per_ray\n";
+               "random_mrays_all,random_anyhit_mrays_1,brute_mrays_1,boxes_per_ray,primitives_per_ray,"
+               "random_anyhit_mrays_all,brute_mrays_all,brute_anyhit_mrays_1\n";
     }
     const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
     const std::vector<Ray> camera_rays = make_camera_rays(512);
@@ -156,10 +157,11 @@ int main(int argc, char** argv) {
     std::printf(
         "| triangles | build (ms) | build (s per 10^6) | BVH bytes/tri | camera, 1 thread | camera, %d "
         "threads | "
-        "random, 1 thread | random, %d threads | random any-hit, 1 thread | brute force, random, 1 thread | "
+        "random, 1 thread | random, %d threads | random any-hit, 1 thread | random any-hit, %d threads | "
+        "brute force, random, 1 thread | brute force, %d threads | brute force any-hit, 1 thread | "
         "BVH speed-up | boxes + primitives per random ray |\n",
-        cores, cores);
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        cores, cores, cores, cores);
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     double camera_smallest = 0, camera_largest = 0, random_smallest = 0, random_largest = 0;
     double worst_build_per_million = 0, worst_bytes = 0;
     for (int exponent = 3; exponent <= max_exponent; ++exponent) {
@@ -175,6 +177,7 @@ int main(int argc, char** argv) {
         const double random_1 = mrays_per_second(world, random_rays, false, 1, repeats);
         const double random_n = mrays_per_second(world, random_rays, false, cores, repeats);
         const double any_1 = mrays_per_second(world, random_rays, true, 1, repeats);
+        const double any_n = mrays_per_second(world, random_rays, true, cores, repeats);
         // Brute force tests every triangle: about 2·10^7 triangle tests per measurement.
         const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
         const std::size_t brute_rays = std::max<std::size_t>(16, std::size_t(2e7 / triangles));
@@ -182,16 +185,20 @@ int main(int argc, char** argv) {
             random_rays.begin(),
             random_rays.begin() + std::ptrdiff_t(std::min(brute_rays, random_rays.size())));
         const double brute_1 = mrays_per_second(brute, few, false, 1, repeats);
+        const double brute_n = mrays_per_second(brute, few, false, cores, repeats);
+        const double brute_any_1 = mrays_per_second(brute, few, true, 1, repeats);
         const MeanTests tests = mean_tests(world, random_rays);
         std::printf(
-            "| %.0f | %.1f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.0f× | %.1f + %.1f |\n",
+            "| %.0f | %.1f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | "
+            "%.0f× | "
+            "%.1f + %.1f |\n",
             triangles, build * 1e3, build / triangles * 1e6, bytes, camera_1, camera_n, random_1, random_n,
-            any_1, brute_1, random_1 / brute_1, tests.boxes, tests.primitives);
+            any_1, any_n, brute_1, brute_n, brute_any_1, random_1 / brute_1, tests.boxes, tests.primitives);
         std::fflush(stdout);
         if (csv) {
             csv << triangles << ',' << build * 1e3 << ',' << bytes << ',' << camera_1 << ',' << camera_n
                 << ',' << random_1 << ',' << random_n << ',' << any_1 << ',' << brute_1 << ',' << tests.boxes
-                << ',' << tests.primitives << '\n';
+                << ',' << tests.primitives << ',' << any_n << ',' << brute_n << ',' << brute_any_1 << '\n';
         }
         if (exponent == 3) {
             camera_smallest = 1 / camera_1;
