@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tests of tools/exercises.py on a fixture chapter (tests/exercises/fixture): the marks it finds, the lesson
+"""Tests of tests/tools/exercises.py on a fixture chapter (tests/exercises/fixture): the marks it finds, the lesson
 sections it names, the marks it refuses, and that the stubbed sources compile with the course's warnings as
 errors. Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
 
@@ -16,9 +16,9 @@ FIXTURE = HERE / "fixture"
 COMPILER = "g++"
 WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion", "-Wno-sign-conversion", "-Werror"]
 
-sys.path.insert(0, str(ROOT / "tools"))
+sys.path.insert(0, str(ROOT / "tests" / "tools"))
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
-from exercise_tool import edition, marks, test_runs  # noqa: E402  (tools/ is not a package on the path)
+from exercise_tool import edition, marks, test_runs  # noqa: E402  (tests/tools/ is not a package on the path)
 
 
 def copy_of_fixture(folder: Path) -> Path:

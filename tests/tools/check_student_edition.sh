@@ -4,20 +4,20 @@
 # as depending on an exercise, each failure naming its exercise. (The end-to-end tests of the executables,
 # tests/cli, are not built here: they need the executables, and a student edition's renders throw.) The full edition passing every test is the
 # ordinary `cmake --workflow --preset release` run.
-#   tools/check_student_edition.sh [FOLDER]      (default: build/student-edition-ci; needs python3)
+#   tests/tools/check_student_edition.sh [FOLDER]      (default: build/student-edition-ci; needs python3)
 # Only the test programs are built, in Release, two jobs at a time.
 set -euo pipefail
-root="$(cd "$(dirname "$0")/.." && pwd)"
+root="$(cd "$(dirname "$0")/../.." && pwd)"
 out="${1:-$root/build/student-edition-ci}"
 command -v python3 > /dev/null || { echo "check_student_edition.sh: python3 not found: sudo apt-get install python3" >&2; exit 2; }
 
 start=$(date +%s)
-python3 "$root/tools/exercises.py" generate "$out" --force
+python3 "$root/tests/tools/exercises.py" generate "$out" --force
 cmake -S "$out" -B "$out/build" -DCMAKE_BUILD_TYPE=Release > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
 mapfile -t targets < <(cmake --build "$out/build" --target help | sed -n 's/^\.\.\. \([A-Za-z0-9_]*_test\)$/\1/p')
 [ ${#targets[@]} -gt 0 ] || { echo "check_student_edition.sh: no test programs in $out/build" >&2; exit 1; }
 echo "building the student edition's test programs: ${targets[*]}"
 cmake --build "$out/build" -j2 --target "${targets[@]}"
 # Runs every unit test as CTest would (each test alone) and compares the failures with the tags.
-python3 "$root/tools/exercises.py" check --build "$out/build"
+python3 "$root/tests/tools/exercises.py" check --build "$out/build"
 echo "student edition checked in $(( $(date +%s) - start )) s"

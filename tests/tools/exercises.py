@@ -42,7 +42,7 @@ from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected 
 from exercise_tool.test_runs import (exercise_tags, next_exercise, run_tests, source_of_build,  # noqa: E402
                                      summarise, unit_tests)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parent.parent.parent
 
 
 def command_list(args: argparse.Namespace) -> int:
@@ -60,7 +60,7 @@ def command_generate(args: argparse.Namespace) -> int:
     print(f"student edition in {Path(args.out).resolve()}: {len(chosen)} exercises stubbed "
           f"({', '.join(chapters) if chapters else 'none'})")
     print(f"build it:  cd {args.out} && cmake --preset release && cmake --build --preset release")
-    print("then:      python3 tools/exercises.py status      (there: the exercises done and left)")
+    print("then:      python3 tests/tools/exercises.py status      (there: the exercises done and left)")
     return 0
 
 

@@ -2,7 +2,7 @@
 # The accuracy/time report: runs every chapter's sweeps (the study modes of the chapter executables and the
 # benchmark programs), keeps their CSV, draws the plots with gnuplot and writes one page, report/index.md.
 #
-#   tools/report.sh BUILD_DIR OUT_DIR [--quick] [--update-lessons]
+#   tests/tools/report.sh BUILD_DIR OUT_DIR [--quick] [--update-lessons]
 #
 # --quick          smaller images, fewer sizes and repeats: for class (a few minutes on two cores)
 # --update-lessons copy the plots into chapters/NN_name/images/report_*.png, where the lessons show them
@@ -12,7 +12,7 @@
 # (chapter 02 only) unless it exists already.
 set -euo pipefail
 
-usage() { echo "usage: tools/report.sh BUILD_DIR OUT_DIR [--quick] [--update-lessons]" >&2; exit 2; }
+usage() { echo "usage: tests/tools/report.sh BUILD_DIR OUT_DIR [--quick] [--update-lessons]" >&2; exit 2; }
 [ $# -ge 2 ] || usage
 build=$(cd "$1" && pwd) || usage
 out=$2
@@ -26,7 +26,7 @@ for flag in "$@"; do
         *) usage ;;
     esac
 done
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 command -v gnuplot > /dev/null || { echo "report: gnuplot not found: install it with \`sudo apt-get install gnuplot-nox\`" >&2; exit 2; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
@@ -63,7 +63,7 @@ if [ "$quick" = 1 ]; then size=(--width 320 --height 180); repeats=1; else size=
 cat > "$page" <<EOF
 # What accuracy costs in time
 
-Made by \`tools/report.sh\`$( [ "$quick" = 1 ] && echo " --quick") on $(date -u +%Y-%m-%d), $(nproc) cores. Each table
+Made by \`tests/tools/report.sh\`$( [ "$quick" = 1 ] && echo " --quick") on $(date -u +%Y-%m-%d), $(nproc) cores. Each table
 is the CSV beside this page; each plot is drawn from it by gnuplot. Times are wall-clock on a shared machine: read
 the ratios within one table, not the absolute numbers.
 

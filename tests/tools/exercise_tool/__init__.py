@@ -1,1 +1,1 @@
-"""The library behind tools/exercises.py (see its help)."""
+"""The library behind tests/tools/exercises.py (see its help)."""

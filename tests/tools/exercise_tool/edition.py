@@ -80,7 +80,7 @@ def edition_note(chosen: list[Exercise]) -> str:
     chapters = ", ".join(sorted({e.chapter for e in chosen}))
     return (f"> **Student edition.** {len(chosen)} functions of this copy ({chapters}) throw \"not implemented\" "
             "until you write them: build with `cmake --preset release && cmake --build --preset release`, then "
-            "`python3 tools/exercises.py status` lists the exercises done and left, and each lesson's "
+            "`python3 tests/tools/exercises.py status` lists the exercises done and left, and each lesson's "
             "\"Exercises\" section says what to write.\n\n")
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 from .cpp_reader import Token, enclosing_function, locals_before, matching, tokenize
 
 SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"}
-SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ and tools/ hold none
+SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ holds none
 MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)")
 END_RE = re.compile(r"^\s*//\s*END EXERCISE\b")
 NAME_RE = re.compile(r"^ch(\d\d)\.[a-z][a-z0-9_]*$")
