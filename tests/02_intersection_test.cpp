@@ -9,6 +9,7 @@
 #include "intersection_render.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"
+#include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
@@ -23,13 +24,6 @@ Scene scene_of(std::vector<Shape> shapes) {
     scene.materials.push_back(Material{});
     scene.shapes = std::move(shapes);
     return scene;
-}
-
-Vec3 random_unit(Pcg32& rng) {
-    const Real z = 1 - 2 * rng.next_real();
-    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
-    const Real phi = 2 * kPi * rng.next_real();
-    return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 bool finite_hit(const Hit& h) {

@@ -16,6 +16,7 @@
 #include "float_error.hpp"
 #include "offset_study.hpp"
 #include "point_light.hpp"
+#include "random_unit.hpp"
 #include "ray_offset.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
@@ -45,13 +46,6 @@ Scene scene_of(std::vector<Shape> shapes) {
     scene.materials.push_back(material("white"));
     scene.shapes = std::move(shapes);
     return scene;
-}
-
-Vec3 random_unit(Pcg32& rng) {
-    const Real z = 1 - 2 * rng.next_real();
-    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
-    const Real phi = 2 * kPi * rng.next_real();
-    return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 // A random unit direction on the side of n that `side` (+1 or −1) says.

@@ -16,6 +16,7 @@
 #include "frame.hpp"
 #include "irradiance.hpp"
 #include "quad.hpp"
+#include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/random.hpp"
@@ -51,13 +52,6 @@ Estimate estimate(int n, const std::function<double()>& sample) {
 Vec3 polar(double theta, double phi = 0) {
     return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
                 Real(std::cos(theta)));
-}
-
-Vec3 random_unit(Pcg32& rng) {
-    const Real z = 1 - 2 * rng.next_real();
-    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
-    const Real phi = 2 * kPi * rng.next_real();
-    return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 // The BRDFs under test, each with a name, albedo 1 (the hardest case for energy conservation).

@@ -12,6 +12,7 @@
 #include "camera.hpp"
 #include "furnace.hpp"
 #include "gi_render.hpp"
+#include "random_unit.hpp"
 #include "recursive_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
@@ -80,14 +81,6 @@ Material mirror(Color reflectance) {
 
 Shape quad(Vec3 origin, Vec3 u, Vec3 v, int material) {
     return Shape{QuadShape{origin, u, v}, material, "test"};
-}
-
-// A unit direction uniform over the sphere.
-Vec3 random_unit(Pcg32& rng) {
-    const Real z = 1 - 2 * rng.next_real();
-    const Real r = std::sqrt(std::max(Real(0), 1 - z * z));
-    const Real phi = 2 * kPi * rng.next_real();
-    return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
 // The green channel of the radiance along rays from the camera in uniformly random directions.
