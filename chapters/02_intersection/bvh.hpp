@@ -41,7 +41,6 @@ class Bvh {
     const std::vector<BvhNode>& nodes() const { return nodes_; }
     // The memory the hierarchy adds to the primitives: its nodes.
     std::size_t bytes() const { return nodes_.size() * sizeof(BvhNode); }
-    bool empty() const { return nodes_.empty(); }
 
     // Visits, nearest box first, every leaf whose box the ray meets before t_max, calling `test(slot, t_max)`
     // for each primitive slot there: it returns true on a hit and then lowers t_max to it.

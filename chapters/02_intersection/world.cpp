@@ -253,8 +253,4 @@ std::size_t World::primitive_count() const {
     return primitives_.size() + planes_.size();
 }
 
-const WorldOptions& World::options() const {
-    return options_;
-}
-
 }  // namespace rt

@@ -37,7 +37,6 @@ class World {
     bool occluded(const Ray& ray, Real t_max) const;
 
     std::size_t primitive_count() const;
-    const WorldOptions& options() const;
     // The hierarchy (empty with Acceleration::kNone).
     const Bvh& bvh() const { return bvh_; }
     std::size_t triangle_count() const { return triangles_.size(); }
