@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Tests of tests/tools/exercises.py on a fixture chapter (tests/exercises/fixture): the marks it finds, the lesson
-sections it names, the marks it refuses, and that the stubbed sources compile with the course's warnings as
-errors. Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
+sections it names, the marks it refuses, that the stubbed sources compile with the course's warnings as
+errors, and that the switchable edition of `deps` stubs an exercise only when told to at run time.
+Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
 
+import os
 import shutil
 import subprocess
 import sys
@@ -14,6 +16,18 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 FIXTURE = HERE / "fixture"
 COMPILER = "g++"
+# A program that prints hypotenuse(3, 4), or the message of the logic_error it throws.
+MAIN_CALLING_HYPOTENUSE = r"""#include <cstdio>
+#include <stdexcept>
+#include "fixture.hpp"
+int main() {
+    try {
+        std::printf("%g\n", fx::hypotenuse(3, 4));
+    } catch (const std::logic_error& e) {
+        std::printf("%s\n", e.what());
+    }
+}
+"""
 WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion", "-Wno-sign-conversion", "-Werror"]
 
 sys.path.insert(0, str(ROOT / "tests" / "tools"))
@@ -97,6 +111,36 @@ class Marks(unittest.TestCase):
             edition.generate(self.root, other, [], force=True)
         with self.assertRaisesRegex(marks.ToolError, "over the repository"):
             edition.generate(self.root, self.root, [], force=True)
+
+    def test_the_switchable_edition_runs_as_written_or_stubs_the_exercise_named_at_run_time(self):
+        out = self.folder / "switchable"
+        chosen = edition.generate(self.root, out, [], force=False, switchable=True)
+        self.assertEqual(len(chosen), 5)
+        source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
+        self.assertIn('#include "rt/exercise_switch.hpp"', source)
+        self.assertIn("std::sqrt(square(p)", source)  # every body kept, after its switch
+        self.assertNotIn("[[maybe_unused]]", source)
+        self.assertTrue((out / "common/rt/exercise_switch.hpp").is_file())
+        self.assertEqual([e.name for e in marks.find_exercises(out) if e.stubbed], [])  # written, not stubbed
+        main = self.folder / "main.cpp"
+        main.write_text(MAIN_CALLING_HYPOTENUSE, encoding="utf-8")
+        program = self.folder / "fixture_program"
+        chapter = out / "chapters/07_fixture"
+        compiled = subprocess.run([COMPILER, "-std=c++20", *WARNINGS, f"-I{out / 'common'}", f"-I{chapter}",
+                                   str(chapter / "fixture.cpp"), str(main), "-o", str(program)],
+                                  capture_output=True, text=True)
+        self.assertEqual(compiled.returncode, 0, compiled.stderr)
+        log = self.folder / "reached.log"
+
+        def run(**environment):
+            env = {k: v for k, v in os.environ.items() if k not in ("RT_STUB_EXERCISE", "RT_EXERCISE_LOG")}
+            return subprocess.run([str(program)], capture_output=True, text=True, check=True,
+                                  env={**env, **environment}).stdout.strip()
+
+        self.assertEqual(run(RT_EXERCISE_LOG=str(log)), "5")  # as written
+        self.assertEqual(log.read_text().split(), ["ch07.hypotenuse"])  # the one exercise it reached, once
+        self.assertEqual(run(RT_STUB_EXERCISE="ch07.counter"), "5")  # another exercise stubbed: no change
+        self.assertTrue(run(RT_STUB_EXERCISE="ch07.hypotenuse").startswith("not implemented: ch07.hypotenuse — see"))
 
     def rewrite(self, old, new):
         path = self.root / "chapters/07_fixture/fixture.cpp"

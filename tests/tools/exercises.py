@@ -19,8 +19,9 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
   exercises.py lint --build DIR         any build: every [ex:...] tag names a marked exercise, every
                                         exercise has a tagged test (no test is run)
-  exercises.py deps SCRATCH [--only ch03] which tests depend on which exercise: one exercise stubbed at a
-                                        time, rebuilt and tested; prints the tags each test needs
+  exercises.py deps SCRATCH [--only ch03] which tests depend on which exercise: one build in which any one
+                                        exercise is stubbed at run time, each stubbed in turn for the
+                                        tests that reach it; prints the tags each test needs
   exercises.py check --build DIR        CI: in a student edition's build, the failing tests are exactly
                                         the tests tagged with an exercise stubbed, each naming it (in the
                                         full edition's build: every unit test passes)
@@ -32,6 +33,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -39,8 +41,8 @@ from pathlib import Path
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
 from exercise_tool.edition import generate  # noqa: E402
 from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
-from exercise_tool.test_runs import (exercise_tags, next_exercise, run_tests, source_of_build,  # noqa: E402
-                                     summarise, unit_tests)
+from exercise_tool.test_runs import (exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
+                                     source_of_build, summarise, unit_tests)
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 
@@ -169,55 +171,68 @@ def command_check(args: argparse.Namespace) -> int:
 
 
 def command_deps(args: argparse.Namespace) -> int:
-    """For instructors and chapter authors: which tests depend on which exercise, found by building an
-    edition with one exercise stubbed at a time (one build folder, rebuilt incrementally) and running the
-    unit tests. Prints, per test program, the tags each test needs and how they differ from its tags now."""
+    """For instructors and chapter authors: which tests depend on which exercise. One build of the switchable
+    edition, in which each exercise is stubbed at run time when RT_STUB_EXERCISE names it (see
+    exercise_tool/exercise_switch.hpp); a first run of every unit test records the exercises it reaches; then
+    each exercise is stubbed in turn for the tests that reach it, and those that fail depend on it (a test
+    that never reaches an exercise runs the same with it stubbed). Prints, per test program, the tags each
+    test needs and how they differ from its tags now."""
     out = Path(args.out).resolve()
-    build = out / "build"
     only = [o for o in (args.only or "").split(",") if o]
-    exercises = [e for e in find_exercises(args.root) if selected(e, only)]
-
-    def run(stub_only: list[str] | None) -> dict[tuple[str, str], bool]:
-        generate(args.root, out, stub_only or [], force=True, stub=stub_only is not None)
-        if not (build / "CMakeCache.txt").is_file():
-            subprocess.run(["cmake", "-S", str(out), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"], check=True,
-                           stdout=subprocess.DEVNULL)
-        targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
-            ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
-        built = subprocess.run(["cmake", "--build", str(build), "-j", str(args.jobs), "--target", *targets],
-                               capture_output=True, text=True)
-        if built.returncode != 0:
-            raise ToolError(f"deps: the edition with {stub_only or 'nothing'} stubbed does not build:\n"
-                            + built.stdout[-3000:] + built.stderr[-3000:])
-        return {(r.program, r.name): r.passed for r in run_tests(build, None, args.jobs)}
-
-    baseline = run(None)
-    broken = sorted(k for k, passed in baseline.items() if not passed)
-    needs: dict[tuple[str, str], list[str]] = {k: [] for k in baseline}
-    for e in exercises:
-        print(f"stubbing {e.name} alone ...", flush=True)
-        for key, passed in run([e.name]).items():
-            if not passed and baseline.get(key, False):
-                needs.setdefault(key, []).append(e.name)
+    exercises = generate(args.root, out, only, force=True, switchable=True)
+    build = build_test_programs(out, args.jobs)
     tests = unit_tests(build)
+    logs = out / "reached"
+    shutil.rmtree(logs, ignore_errors=True)
+    logs.mkdir()
+    print(f"running {len(tests)} unit tests in {build}, recording the exercises each reaches ...", flush=True)
+    baseline = run_each(tests, args.jobs, environment_of=lambda i: {"RT_EXERCISE_LOG": str(logs / f"{i}.log")})
+    reached = [set((logs / f"{i}.log").read_text().split()) if (logs / f"{i}.log").is_file() else set()
+               for i in range(len(tests))]
+    needs: dict[int, list[str]] = {i: [] for i in range(len(tests))}
+    for e in exercises:
+        reaching = [i for i in range(len(tests)) if e.name in reached[i] and baseline[i][0]]
+        outcomes = run_each([tests[i] for i in reaching], args.jobs,
+                            environment_of=lambda _: {"RT_STUB_EXERCISE": e.name})
+        failing = [i for i, (passed, _) in zip(reaching, outcomes) if not passed]
+        print(f"{e.name}: reached by {len(reaching)} tests, {len(failing)} fail without it", flush=True)
+        for i in failing:
+            needs[i].append(e.name)
     tags = exercise_tags({t.command[0] for t in tests})
     chosen = {e.name for e in exercises}
     changes = 0
-    for program in sorted({p for p, _ in needs}):
+    for program in sorted({t.program for t in tests}):
         print(f"{program}:")
-        for (p, name), found in needs.items():
-            if p != program:
+        for i, t in enumerate(tests):
+            if t.program != program:
                 continue
-            now = sorted(t for t in tags.get((p, name), []) if t in chosen)
-            found = sorted(found)
-            mark = "" if found == now else "   <- now " + ("".join(f"[{TAG_PREFIX}{t}]" for t in now) or "untagged")
+            now = sorted(tag for tag in tags.get((t.program, t.name), []) if tag in chosen)
+            found = sorted(needs[i])
+            mark = "" if found == now else "   <- now " + ("".join(f"[{TAG_PREFIX}{x}]" for x in now) or "untagged")
             changes += found != now
             if found or now:
-                print(f"  \"{name}\": {''.join(f'[{TAG_PREFIX}{t}]' for t in found) or 'no exercise'}{mark}")
-    for program, name in broken:
-        print(f"  (fails even with nothing stubbed: {program}: \"{name}\")")
+                print(f"  \"{t.name}\": {''.join(f'[{TAG_PREFIX}{x}]' for x in found) or 'no exercise'}{mark}")
+    for i, t in enumerate(tests):
+        if not baseline[i][0]:
+            print(f"  (fails even with nothing stubbed: {t.program}: \"{t.name}\")")
     print(f"{changes} tests whose tags differ from what they depend on")
     return 1 if changes else 0
+
+
+def build_test_programs(source: Path, jobs: int) -> Path:
+    """Configures (once) and builds the test programs of the edition in `source`, in source/build."""
+    build = source / "build"
+    if not (build / "CMakeCache.txt").is_file():
+        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"], check=True,
+                       stdout=subprocess.DEVNULL)
+    targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
+        ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
+    built = subprocess.run(["cmake", "--build", str(build), "-j", str(jobs), "--target", *targets],
+                           capture_output=True, text=True)
+    if built.returncode != 0:
+        raise ToolError(f"deps: the switchable edition in {source} does not build:\n"
+                        + built.stdout[-3000:] + built.stderr[-3000:])
+    return build
 
 
 def command_lint(args: argparse.Namespace) -> int:
@@ -273,7 +288,7 @@ def main(argv: list[str]) -> int:
             c.add_argument("-v", "--verbose", action="store_true", help="name the failing tests")
     lint = commands.add_parser("lint", help="marks well formed, tags naming marked exercises, every exercise tested")
     lint.add_argument("--build", required=True, help="a build folder with the test programs built")
-    deps = commands.add_parser("deps", help="which tests depend on which exercise (one build per exercise)")
+    deps = commands.add_parser("deps", help="which tests depend on which exercise (one build, one run per exercise)")
     deps.add_argument("out", help="a scratch folder for the editions and their build (outside the repository)")
     deps.add_argument("--only", help="these chapters or exercises only: ch03 or ch03.shadow_ray,ch02.quad")
     deps.add_argument("-j", "--jobs", type=int, default=2, help="build jobs and tests run in parallel")

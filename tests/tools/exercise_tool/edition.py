@@ -1,5 +1,6 @@
 """The student edition: a copy of the repository in which every marked exercise body throws
-"not implemented: chNN.name — see <lesson> § <section>", and still builds with warnings as errors."""
+"not implemented: chNN.name — see <lesson> § <section>", and still builds with warnings as errors. Also the
+switchable edition of `exercises.py deps`, built once, in which any one exercise is stubbed at run time."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from .cpp_reader import internal_helpers, tokenize
 from .marks import Exercise, ToolError, find_exercises, selected
 
 EDITION_MARKER = ".student-edition.json"
+SWITCH_HEADER = Path(__file__).resolve().parent / "exercise_switch.hpp"  # copied to common/rt/ of a switchable edition
 
 
 def cpp_string(text: str) -> str:
@@ -52,17 +54,33 @@ def stub_file(text: str, exercises: list[Exercise]) -> str:
         if unused:
             casts = " ".join(f"((void){n[3:]}, ...);" if n.startswith("...") else f"(void){n};" for n in unused)
             out.append(f"{indent}{casts}")
-        message = f"not implemented: {exercise.name} — see {exercise.reference()}"
-        out.append(f"{indent}throw std::logic_error({cpp_string(message)});")
+        out.append(f"{indent}throw std::logic_error({cpp_string(not_implemented(exercise))});")
         out.append(lines[exercise.end])
         number = exercise.end + 1
-    result = "\n".join(out)
-    if not re.search(r"^\s*#\s*include\s*<stdexcept>", result, re.MULTILINE):
-        result = add_include(result, "#include <stdexcept>")
-    return result
+    return add_include("\n".join(out), "<stdexcept>")
 
 
-def add_include(text: str, include: str) -> str:
+def switch_file(text: str, exercises: list[Exercise]) -> str:
+    """For `deps`: each exercise keeps its body, which first throws as the student edition's does when the
+    environment variable RT_STUB_EXERCISE names it (see exercise_switch.hpp)."""
+    lines = text.split("\n")
+    for exercise in sorted(exercises, key=lambda e: e.begin, reverse=True):
+        indent = re.match(r"\s*", lines[exercise.begin + 1]).group(0)
+        lines[exercise.begin + 1 : exercise.begin + 1] = [
+            f"{indent}static const bool stubbed_here = rt::exercise_switch::stubbed({cpp_string(exercise.name)});",
+            f"{indent}if (stubbed_here) throw std::logic_error({cpp_string(not_implemented(exercise))});",
+        ]
+    return add_include(add_include("\n".join(lines), "<stdexcept>"), '"rt/exercise_switch.hpp"')
+
+
+def not_implemented(exercise: Exercise) -> str:
+    return f"not implemented: {exercise.name} — see {exercise.reference()}"
+
+
+def add_include(text: str, header: str) -> str:
+    """The text with `#include <header>` after its last include, unless it has it already."""
+    if re.search(r"^\s*#\s*include\s*" + re.escape(header), text, re.MULTILINE):
+        return text
     lines = text.split("\n")
     last = None
     for i, line in enumerate(lines):
@@ -72,7 +90,7 @@ def add_include(text: str, include: str) -> str:
             break
     if last is None:
         last = next((i for i, line in enumerate(lines) if re.match(r"^\s*#\s*pragma\s+once", line)), -1)
-    lines.insert(last + 1, include)
+    lines.insert(last + 1, f"#include {header}")
     return "\n".join(lines)
 
 
@@ -110,8 +128,10 @@ def write_if_changed(path: Path, data: bytes) -> None:
     path.write_bytes(data)
 
 
-def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = True) -> list[Exercise]:
-    """Writes the edition; with stub=False, a plain copy (the baseline of `deps`)."""
+def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bool = False) -> list[Exercise]:
+    """Writes the student edition, with the chosen exercises (all when `only` is empty) stubbed; with
+    `switchable`, the edition of `deps` instead: the chosen exercises written, each stubbed at run time when
+    RT_STUB_EXERCISE names it."""
     out = out.resolve()
     root = root.resolve()
     if out == root or root.is_relative_to(out):
@@ -129,7 +149,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = T
             raise ToolError(f"generate: {out}: a student edition is already there (a student's work?); add --force "
                             "to overwrite it")
     all_exercises = find_exercises(root)
-    chosen = [e for e in all_exercises if selected(e, only)] if stub else []
+    chosen = [e for e in all_exercises if selected(e, only)]
     unknown = [o for o in only if not any(e.name == o or e.chapter == o for e in all_exercises)]
     if unknown:
         raise ToolError(f"generate: --only {','.join(unknown)}: no such exercise or chapter (see `exercises.py list`)")
@@ -137,7 +157,8 @@ def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = T
     for e in chosen:
         by_file.setdefault(e.file, []).append(e)
     files = repository_files(root)
-    wanted = {out / f for f in files} | {out / EDITION_MARKER}
+    switch_header = Path("common/rt") / SWITCH_HEADER.name
+    wanted = {out / f for f in files} | {out / EDITION_MARKER} | ({out / switch_header} if switchable else set())
     if out.exists():
         for path in sorted(out.rglob("*"), reverse=True):
             if path.is_file() and path not in wanted and not path.is_relative_to(out / "build"):
@@ -146,11 +167,14 @@ def generate(root: Path, out: Path, only: list[str], force: bool, stub: bool = T
         source = root / relative
         data = source.read_bytes()
         if relative in by_file:
-            data = stub_file(data.decode("utf-8"), by_file[relative]).encode("utf-8")
-        elif relative == Path("README.md") and chosen:
+            rewrite = switch_file if switchable else stub_file
+            data = rewrite(data.decode("utf-8"), by_file[relative]).encode("utf-8")
+        elif relative == Path("README.md") and chosen and not switchable:
             data = edition_note(chosen).encode("utf-8") + data
         write_if_changed(out / relative, data)
         shutil.copymode(source, out / relative)
-    marker = {"source": str(root), "stubbed": [e.name for e in chosen]}
+    if switchable:
+        write_if_changed(out / switch_header, SWITCH_HEADER.read_bytes())
+    marker = {"source": str(root), "switchable" if switchable else "stubbed": [e.name for e in chosen]}
     write_if_changed(out / EDITION_MARKER, (json.dumps(marker, indent=2) + "\n").encode("utf-8"))
     return chosen

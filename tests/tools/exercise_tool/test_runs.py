@@ -4,11 +4,13 @@ results say about each exercise."""
 from __future__ import annotations
 
 import json
+import os
 import re
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Callable
 
 from .marks import NOT_IMPLEMENTED_RE, TAG_PREFIX, Exercise, ToolError
 
@@ -83,9 +85,11 @@ def exercise_tags(programs: set[str]) -> dict[tuple[str, str], list[str]]:
     return tagged
 
 
-def run_one(test: UnitTest, timeout: int) -> tuple[bool, str]:
+def run_one(test: UnitTest, timeout: int, environment: dict[str, str] | None = None) -> tuple[bool, str]:
+    """Runs one test as CTest would, with `environment` added to this process's; (passed, its output)."""
     try:
-        done = subprocess.run(test.command, cwd=test.directory, capture_output=True, timeout=timeout)
+        done = subprocess.run(test.command, cwd=test.directory, capture_output=True, timeout=timeout,
+                              env={**os.environ, **environment} if environment else None)
     except subprocess.TimeoutExpired as expired:
         output = (expired.stdout or b"") + (expired.stderr or b"")
         return False, output.decode("utf-8", "replace") + f"\ntimed out after {timeout} s"
@@ -93,13 +97,20 @@ def run_one(test: UnitTest, timeout: int) -> tuple[bool, str]:
     return done.returncode == 0, output
 
 
+def run_each(tests: list[UnitTest], jobs: int, timeout: int = 300,
+             environment_of: Callable[[int], dict[str, str]] | None = None) -> list[tuple[bool, str]]:
+    """Runs the tests, `jobs` at a time, test i with environment_of(i) added: (passed, output) of each."""
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        return list(pool.map(lambda i: run_one(tests[i], timeout, environment_of(i) if environment_of else None),
+                             range(len(tests))))
+
+
 def run_tests(build: Path, label: str | None, jobs: int, timeout: int = 300) -> list[TestResult]:
     """Runs the build's unit tests (one chapter's with `label`), each alone as CTest would run it."""
     tests = [t for t in unit_tests(build) if not label or t.label == label]
     tags = exercise_tags({t.command[0] for t in tests})
     print(f"running {len(tests)} unit tests{' labelled ' + label if label else ''} in {build} ...", flush=True)
-    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-        outcomes = list(pool.map(lambda t: run_one(t, timeout), tests))
+    outcomes = run_each(tests, jobs, timeout)
     return [TestResult(t.name, t.program, t.label, passed, output, tags.get((t.program, t.name), []))
             for t, (passed, output) in zip(tests, outcomes)]
 

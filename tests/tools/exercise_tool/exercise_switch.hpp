@@ -1,0 +1,29 @@
+// Only in the scratch editions of `exercises.py deps` (copied there as common/rt/exercise_switch.hpp): every
+// marked exercise keeps its body and starts with
+//     static const bool stubbed_here = rt::exercise_switch::stubbed("chNN.name");
+//     if (stubbed_here) throw std::logic_error("not implemented: chNN.name ...");
+// so one build can stand for the edition with any one exercise stubbed, chosen when a test runs:
+//   RT_STUB_EXERCISE=chNN.name  that exercise throws as in the student edition, the others run as written;
+//   RT_EXERCISE_LOG=FILE        each exercise the process reaches appends its name to FILE.
+// The static is initialised on the first call only, so each exercise is looked up (and logged) once per
+// process, and a test that never reaches an exercise cannot depend on it.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace rt::exercise_switch {
+
+inline bool stubbed(const char* exercise) {
+    if (const char* log = std::getenv("RT_EXERCISE_LOG")) {
+        if (std::FILE* file = std::fopen(log, "a")) {
+            std::fprintf(file, "%s\n", exercise);
+            std::fclose(file);
+        }
+    }
+    const char* chosen = std::getenv("RT_STUB_EXERCISE");
+    return chosen != nullptr && std::strcmp(chosen, exercise) == 0;
+}
+
+}  // namespace rt::exercise_switch
