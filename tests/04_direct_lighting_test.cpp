@@ -90,7 +90,7 @@ Shape shape(decltype(Shape::geometry) geometry, int material) {
 // ---------------------------------------------------------------------------------------------------------
 // BRDFs
 
-TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[brdf]") {
+TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[brdf][ex:ch04.lambert]") {
     const Brdf lambert = LambertBrdf{Color(0.2f, 0.5f, 0.8f)};
     Pcg32 rng(1, 1);
     for (int i = 0; i < 1000; ++i) {
@@ -106,7 +106,8 @@ TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[
     }
 }
 
-TEST_CASE("Every BRDF is reciprocal: f(a, b) = f(b, a)", "[brdf]") {
+TEST_CASE("Every BRDF is reciprocal: f(a, b) = f(b, a)",
+          "[brdf][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective]") {
     Pcg32 rng(2, 1);
     for (const auto& [name, brdf] : white_brdfs()) {
         INFO(name);
@@ -122,7 +123,9 @@ TEST_CASE("Every BRDF is reciprocal: f(a, b) = f(b, a)", "[brdf]") {
     }
 }
 
-TEST_CASE("Every BRDF conserves energy for ten outgoing directions", "[brdf][statistical]") {
+TEST_CASE("Every BRDF conserves energy for ten outgoing directions",
+          "[brdf][statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert]"
+          "[ex:ch04.power_cosine][ex:ch04.retroreflective][ex:ch04.uniform_hemisphere]") {
     // ∫ f cos θ_i dω_i estimated two ways with 2·10⁴ samples each: uniformly over the hemisphere (independent
     // of the BRDF's own sampling) and with the BRDF's sample(); both <= 1 within 4 standard errors, and they
     // agree with each other, which checks sample() and pdf().
@@ -149,7 +152,8 @@ TEST_CASE("Every BRDF conserves energy for ten outgoing directions", "[brdf][sta
 }
 
 TEST_CASE("Lambert reflects all of albedo 1 and the lobes are normalized at normal incidence",
-          "[brdf][statistical]") {
+          "[brdf][statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert]"
+          "[ex:ch04.power_cosine]") {
     // Not only <= 1: the (e + 2) / (2π) factor makes a lobe reflect exactly ρ when it lies wholly above the
     // surface. Estimated with the BRDF's own sampling (f cos / pdf = ρ (e + 2)/(e + 1) cos θ_i).
     for (const auto& [name, brdf] : white_brdfs()) {
@@ -168,7 +172,9 @@ TEST_CASE("Lambert reflects all of albedo 1 and the lobes are normalized at norm
     }
 }
 
-TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled direction", "[brdf]") {
+TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled direction",
+          "[brdf][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]"
+          "[ex:ch04.retroreflective]") {
     Pcg32 rng(13, 0);
     for (const auto& [name, brdf] : white_brdfs()) {
         INFO(name);
@@ -184,7 +190,8 @@ TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled d
     }
 }
 
-TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflects R", "[brdf]") {
+TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflects R",
+          "[brdf][ex:ch04.mirror]") {
     const Brdf mirror = MirrorBrdf{Color(0.9f)};
     CHECK(is_delta(mirror));
     const Vec3 wo = glm::normalize(Vec3{1, 0, 1});
@@ -201,7 +208,7 @@ TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflect
 }
 
 TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and finite near 0",
-          "[brdf][stability]") {
+          "[brdf][stability][ex:ch04.glossy][ex:ch04.power_cosine]") {
     CHECK(phong_exponent(1) == 0);
     CHECK(phong_exponent(Real(0.2)) == Approx(48));
     const Real sharp = phong_exponent(Real(1e-9));
@@ -251,7 +258,8 @@ Estimate brute_irradiance(const Vec3& p, double radiance, const std::function<bo
 }  // namespace
 
 TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by the horizon",
-          "[irradiance][statistical][ex:ch02.quad][ex:ch02.triangle_watertight][ex:ch04.lambert_polygon]") {
+          "[irradiance][statistical][ex:ch02.quad][ex:ch02.triangle_watertight][ex:ch04.lambert_polygon]"
+          "[ex:ch04.uniform_hemisphere]") {
     const Vec3 p{0.1f, -0.2f, 0};
     struct Case {
         const char* name;
@@ -288,7 +296,7 @@ TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by 
 }
 
 TEST_CASE("A sphere light fully above the horizon gives pi L (r/d)^2 cos theta",
-          "[irradiance][statistical][ex:ch02.sphere_stable]") {
+          "[irradiance][statistical][ex:ch02.sphere_stable][ex:ch04.uniform_hemisphere]") {
     const Vec3 p{0, 0, 0};
     for (const double theta : {0.0, 0.6}) {
         INFO("centre at θ = " << theta);
@@ -301,7 +309,7 @@ TEST_CASE("A sphere light fully above the horizon gives pi L (r/d)^2 cos theta",
 }
 
 TEST_CASE("A coaxial disc gives pi L R^2 / (R^2 + h^2)",
-          "[irradiance][statistical][ex:ch04.lambert_polygon]") {
+          "[irradiance][statistical][ex:ch04.lambert_polygon][ex:ch04.uniform_hemisphere]") {
     const double radius = 0.7, height = 0.5;
     auto hits_disc = [&](const Ray& r) {
         if (!(r.direction.z > 0)) return false;
@@ -321,7 +329,7 @@ TEST_CASE("A coaxial disc gives pi L R^2 / (R^2 + h^2)",
           Approx(coaxial_disc_irradiance(1.5, radius, height)).epsilon(1e-4));
 }
 
-TEST_CASE("A uniform sky gives pi L", "[irradiance][statistical]") {
+TEST_CASE("A uniform sky gives pi L", "[irradiance][statistical][ex:ch04.uniform_hemisphere]") {
     const Estimate brute = brute_irradiance(
         Vec3(0), 0.8, [](const Ray&) { return true; }, 50);
     CHECK(brute.error > 0);
@@ -356,9 +364,9 @@ TEST_CASE("Quad light samples lie on the light, with the pdf of their direction"
     CHECK(quad_light_pdf(light, Vec3{0, 5, 0}, Vec3{0, -1, 0}) == 0);
 }
 
-TEST_CASE(
-    "Light sampling estimates the exact irradiance of a quad, a triangle and a sphere",
-    "[lights][statistical][ex:ch04.cone_solid_angle][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+TEST_CASE("Light sampling estimates the exact irradiance of a quad, a triangle and a sphere",
+          "[lights][statistical][ex:ch04.cone_solid_angle][ex:ch04.lambert_polygon]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone][ex:ch04.uniform_triangle]") {
     const Vec3 p{0.2f, 0, 0.1f};
     const Vec3 n{0, 1, 0};
     auto light_estimate = [&](auto sample_one, std::uint64_t seed) {
@@ -388,7 +396,7 @@ TEST_CASE(
 }
 
 TEST_CASE("Sphere light samples lie on the sphere's near side, inside the cone",
-          "[lights][ex:ch04.cone_solid_angle]") {
+          "[lights][ex:ch04.cone_solid_angle][ex:ch04.uniform_cone]") {
     const SphereLight light{{2, 1, -3}, 0.5f, Color(1)};
     const Vec3 p{0, 0, 0};
     const Real d = glm::length(light.center - p);
@@ -408,7 +416,7 @@ TEST_CASE("Sphere light samples lie on the sphere's near side, inside the cone",
 }
 
 TEST_CASE("The cone pdf of a sphere of radius 1 at distance 1e4 is finite where the naive 1 - cos gives 0",
-          "[lights][stability][ex:ch04.cone_solid_angle]") {
+          "[lights][stability][ex:ch04.cone_solid_angle][ex:ch04.uniform_cone]") {
     for (const double distance : {1e4, 1e5, 1e6}) {
         INFO("distance " << distance);
         const Real ratio = Real(1 / distance);
@@ -437,7 +445,9 @@ TEST_CASE("The cone pdf of a sphere of radius 1 at distance 1e4 is finite where 
 }
 
 TEST_CASE("Edge-on, touching and grazing cases give no sample or a finite one, never NaN",
-          "[lights][stability][ex:ch04.cone_solid_angle][ex:ch04.sample_quad_light]") {
+          "[lights][stability][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere][ex:ch04.glossy]"
+          "[ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.retroreflective][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_cone]") {
     const QuadLight quad = make_quad_light({0, 1, 0}, {0, 0, 1}, {1, 0, 0}, Color(1));  // faces −y
     Pcg32 rng(66, 0);
     // In the light's own plane (edge-on) and at its corner: nothing to sample.
@@ -512,8 +522,8 @@ TEST_CASE("No light in the scene: zero shadow rays, and a black image",
 }
 
 TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
-          "[direct][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch03."
-          "robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light]") {
+          "[direct][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light][ex:ch04.lambert]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0, 2, 0}, Color(10)});
     Material chrome;
@@ -530,8 +540,9 @@ TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
 }
 
 TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L, with shadows",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_"
-          "test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
     const World world(f.scene);
@@ -562,9 +573,9 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
 }
 
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_"
-          "test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light][ex:ch04.lambert_polygon]["
-          "ex:ch04.sample_quad_light]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     FloorScene f;
     const int lamp = f.add_material(diffuse(Color(0), Color(10)));
     f.scene.shapes.push_back(shape(QuadShape{{-0.5f, 2, -0.5f}, {1, 0, 0}, {0, 0, 1}}, lamp));  // u × v = −y
@@ -592,9 +603,9 @@ TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra
 }
 
 TEST_CASE("The analytic scene converges to its exact image without bias",
-          "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02."
-          "plane][ex:ch02.quad][ex:ch02.slab_test][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_"
-          "light][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+          "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal]"
+          "[ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_test][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     Scene scene = load_scene(scene_path("ch04_analytic.json"));
     const auto analytic = find_plane_under_quad(scene);
     REQUIRE(analytic);
@@ -627,9 +638,10 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02."
-          "slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_"
-          "angle][ex:ch04.direct_light][ex:ch04.sample_quad_light]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cone_solid_angle]"
+          "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
     const Scene scene = load_scene(scene_path("ch04_default.json"));
     const LightSet lights = collect_lights(scene);
     CHECK(lights.quads.size() == 1);

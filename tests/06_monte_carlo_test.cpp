@@ -303,14 +303,23 @@ Drawn drawn(const std::optional<LightSample>& s) {
     return s ? Drawn{s->wi, double(s->pdf)} : Drawn{Vec3(0), 0.0};
 }
 
-std::vector<Warp> warps() {
+Warp uniform_hemisphere_warp() {
+    return bare("uniform hemisphere", sample_uniform_hemisphere,
+                [](const Vec3& d) { return double(uniform_hemisphere_pdf(d)); });
+}
+
+Warp cosine_hemisphere_warp() {
+    return bare("cosine hemisphere", sample_cosine_hemisphere,
+                [](const Vec3& d) { return double(cosine_hemisphere_pdf(d)); });
+}
+
+Warp uniform_sphere_warp() {
+    return bare("uniform sphere", sample_uniform_sphere,
+                [](const Vec3&) { return double(kUniformSpherePdf); });
+}
+
+std::vector<Warp> cone_warps() {
     std::vector<Warp> w;
-    w.push_back(bare("uniform hemisphere", sample_uniform_hemisphere,
-                     [](const Vec3& d) { return double(uniform_hemisphere_pdf(d)); }));
-    w.push_back(bare("cosine hemisphere", sample_cosine_hemisphere,
-                     [](const Vec3& d) { return double(cosine_hemisphere_pdf(d)); }));
-    w.push_back(
-        bare("uniform sphere", sample_uniform_sphere, [](const Vec3&) { return double(kUniformSpherePdf); }));
     for (double degrees : {20.0, 60.0, 150.0}) {
         const Real one_minus_cos = Real(1 - std::cos(degrees * std::numbers::pi / 180));
         w.push_back(bare(
@@ -318,13 +327,23 @@ std::vector<Warp> warps() {
             [=](Vec2 u) { return sample_uniform_cone(u, one_minus_cos); },
             [=](const Vec3& d) { return double(uniform_cone_pdf(d, one_minus_cos)); }));
     }
+    return w;
+}
+
+std::vector<Warp> power_cosine_warps() {
+    std::vector<Warp> w;
     for (Real e : {0.0f, 6.0f, 48.0f}) {
         w.push_back(bare(
             "power cosine e = " + std::to_string(int(e)), [=](Vec2 u) { return sample_power_cosine(u, e); },
             [=](const Vec3& d) { return double(power_cosine_pdf(d, e)); }));
     }
-    // Points on a quad and a triangle light, seen as directions from a point close under them (so they fill
-    // a large solid angle), and a sphere light by its cone.
+    return w;
+}
+
+// Points on a quad and a triangle light, seen as directions from a point close under them (so they fill a
+// large solid angle), and a sphere light by its cone.
+std::vector<Warp> light_warps() {
+    std::vector<Warp> w;
     const QuadLight quad = make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1));
     w.push_back({"quad light directions", [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u)); },
                  [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d)); }});
@@ -346,6 +365,25 @@ std::vector<Warp> warps() {
                                 : 0.0;
                  }});
     return w;
+}
+
+// Every warp under test, in the order of its seed (101, 102, …; see require_warps_fit).
+std::vector<Warp> warps() {
+    std::vector<Warp> w{uniform_hemisphere_warp(), cosine_hemisphere_warp(), uniform_sphere_warp()};
+    for (const auto& group : {cone_warps(), power_cosine_warps(), light_warps()}) {
+        w.insert(w.end(), group.begin(), group.end());
+    }
+    return w;
+}
+
+// The chi-square test of each warp against its pdf, which must integrate to 1, with seeds first_seed, … (each
+// warp its own, as numbered in warps()).
+void require_warps_fit(const std::vector<Warp>& group, std::uint64_t first_seed) {
+    std::uint64_t seed = first_seed;
+    for (const Warp& w : group) {
+        INFO(w.name);
+        require_fit(test_directions(w.sample, w.pdf, seed++));
+    }
 }
 
 Vec3 random_unit(Pcg32& rng) {
@@ -383,7 +421,8 @@ RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int siz
 // The chi-square test itself
 
 TEST_CASE("The chi-square p-value matches known quantiles, and the test rejects a wrong pdf",
-          "[statistical]") {
+          "[statistical][ex:ch04.uniform_hemisphere][ex:ch06.cosine_hemisphere_pdf]"
+          "[ex:ch06.uniform_sphere]") {
     // χ² quantiles: P(χ²₁ >= 6.635) = 0.01, P(χ²₁₀ >= 23.209) = 0.01, P(χ²₁₀₀ >= 124.342) = 0.05.
     CHECK(chi_square_p_value(6.635, 1) == Approx(0.01).epsilon(1e-3));
     CHECK(chi_square_p_value(23.209, 10) == Approx(0.01).epsilon(1e-3));
@@ -408,19 +447,40 @@ TEST_CASE("The chi-square p-value matches known quantiles, and the test rejects 
 // ---------------------------------------------------------------------------------------------------------
 // Sampling routines against their pdfs
 
-TEST_CASE("Every warp passes the chi-square test against its pdf, which integrates to 1",
-          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
-    std::uint64_t seed = 100;
-    for (const Warp& w : warps()) {
-        INFO(w.name);
-        require_fit(test_directions(w.sample, w.pdf, ++seed));
-    }
+TEST_CASE("Uniform hemisphere directions fit uniform_hemisphere_pdf, which integrates to 1",
+          "[statistical][ex:ch04.uniform_hemisphere][ex:ch06.uniform_hemisphere_pdf]") {
+    require_warps_fit({uniform_hemisphere_warp()}, 101);
+}
+
+TEST_CASE("Cosine-weighted directions fit cosine_hemisphere_pdf, which integrates to 1",
+          "[statistical][ex:ch04.cosine_hemisphere][ex:ch06.cosine_hemisphere_pdf]") {
+    require_warps_fit({cosine_hemisphere_warp()}, 102);
+}
+
+TEST_CASE("Uniform sphere directions fit the pdf 1 / (4 pi)", "[statistical][ex:ch06.uniform_sphere]") {
+    require_warps_fit({uniform_sphere_warp()}, 103);
+}
+
+TEST_CASE("Directions in cones of 20, 60 and 150 degrees fit uniform_cone_pdf, which integrates to 1",
+          "[statistical][ex:ch04.uniform_cone][ex:ch06.uniform_cone_pdf]") {
+    require_warps_fit(cone_warps(), 104);
+}
+
+TEST_CASE("Power-cosine lobes of exponent 0, 6 and 48 fit power_cosine_pdf, which integrates to 1",
+          "[statistical][ex:ch04.power_cosine][ex:ch06.power_cosine_pdf]") {
+    require_warps_fit(power_cosine_warps(), 107);
+}
+
+TEST_CASE("Directions to a quad, a triangle and a sphere light fit their pdfs, which integrate to 1",
+          "[statistical][ex:ch04.cone_solid_angle][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+          "[ex:ch04.uniform_triangle][ex:ch06.uniform_cone_pdf]") {
+    require_warps_fit(light_warps(), 110);
 }
 
 TEST_CASE(
     "Every BRDF sampler passes the chi-square test for 5 outgoing directions up to 89 degrees, its pdf "
     "integrates to 1, to at most 1 above the surface",
-    "[statistical]") {
+    "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]") {
     std::uint64_t seed = 200;
     for (const auto& [name, brdf] : sampled_brdfs()) {
         for (const Vec3& wo : five_outgoing()) {
@@ -440,7 +500,8 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square test", "[statistical]") {
+TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square test",
+          "[statistical][ex:ch04.uniform_triangle]") {
     // Cells of a 40×40 grid over the unit square of (b1, b2); the density is 2 on the triangle b1 + b2 <= 1.
     constexpr int kSide = 40;
     std::vector<double> observed(kSide * kSide, 0), expected(kSide * kSide, 0);
@@ -478,8 +539,11 @@ TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square te
     CHECK(q == Vec3(2, 1.75f, 1));
 }
 
-TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direction",
-          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+TEST_CASE(
+    "The pdf returned with a sample equals the pdf evaluated for its direction",
+    "[statistical][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+    "[ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert]"
+    "[ex:ch04.power_cosine][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
     Pcg32 rng(400, 1);
     for (const auto& [name, brdf] : sampled_brdfs()) {
         for (const Vec3& wo : five_outgoing()) {
@@ -521,7 +585,8 @@ TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direc
     CHECK(checked > 1000);
 }
 
-TEST_CASE("Lambert: f cos / pdf equals the albedo for every sample", "[statistical]") {
+TEST_CASE("Lambert: f cos / pdf equals the albedo for every sample",
+          "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch06.uniform_sphere]") {
     const Color albedo{0.2f, 0.5f, 0.9f};
     const Brdf lambert = LambertBrdf{albedo};
     Pcg32 rng(500, 1);
@@ -541,7 +606,11 @@ TEST_CASE("Lambert: f cos / pdf equals the albedo for every sample", "[statistic
 
 TEST_CASE(
     "Random numbers 0, 0.5 and the largest float below 1 give finite unit directions and a positive pdf",
-    "[stability][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle]") {
+    "[stability][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere][ex:ch04.glossy]"
+    "[ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+    "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_triangle][ex:ch06.cosine_hemisphere_pdf]"
+    "[ex:ch06.power_cosine_pdf][ex:ch06.uniform_cone_pdf][ex:ch06.uniform_hemisphere_pdf]"
+    "[ex:ch06.uniform_sphere]") {
     const Real ends[] = {0, 0.5f, kOneMinusEpsilon};
     for (const Warp& w : warps()) {
         for (Real a : ends) {
@@ -593,7 +662,7 @@ Vec3 normal_at(double z, double phi) {
 }  // namespace
 
 TEST_CASE("The orthonormal basis is orthonormal to 1e-6 for the axes, random normals and z near -1",
-          "[stability]") {
+          "[stability][ex:ch06.uniform_sphere]") {
     for (const Vec3& n :
          {Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, -1, 0}, Vec3{0, 0, 1}, Vec3{0, 0, -1}}) {
         INFO(n.x << " " << n.y << " " << n.z);
@@ -626,7 +695,8 @@ TEST_CASE("The orthonormal basis is orthonormal to 1e-6 for the axes, random nor
 // ---------------------------------------------------------------------------------------------------------
 // MIS weights
 
-TEST_CASE("MIS weights sum to 1 and stay finite when a pdf is 0, tiny, huge or infinite", "[stability]") {
+TEST_CASE("MIS weights sum to 1 and stay finite when a pdf is 0, tiny, huge or infinite",
+          "[stability][ex:ch06.mis_weight]") {
     const Real inf = kInfinity;
     const std::vector<Real> pdfs{
         0, 1e-30f, 1e-20f, 0.5f, 1, 3, 1e20f, 1e30f, std::numeric_limits<Real>::max(), inf};
@@ -655,7 +725,10 @@ TEST_CASE("MIS weights sum to 1 and stay finite when a pdf is 0, tiny, huge or i
 // The irradiance integral each way
 
 TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the sky without bias",
-          "[statistical][ex:ch04.sample_quad_light][ex:ch04.cone_solid_angle][ex:ch04.lambert_polygon]") {
+          "[statistical][ex:ch01.pixel_sample][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+          "[ex:ch04.uniform_hemisphere][ex:ch06.cosine_hemisphere_pdf][ex:ch06.mis_weight]"
+          "[ex:ch06.uniform_cone_pdf]") {
     for (const IrradianceCase& c : irradiance_cases()) {
         for (SamplingStrategy s : kAllStrategies) {
             for (bool stratified : {false, true}) {
@@ -681,7 +754,8 @@ TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the s
 }
 
 TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
-          "[statistical][ex:ch04.sample_quad_light]") {
+          "[statistical][ex:ch01.pixel_sample][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]"
+          "[ex:ch06.cosine_hemisphere_pdf]") {
     const IrradianceCase quad = irradiance_cases()[0];
     auto rmse = [&](int n, bool stratified) {
         double sum2 = 0;
@@ -708,7 +782,9 @@ TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
 TEST_CASE(
     "White furnace: a diffuse sphere under uniform light 1 is exactly its albedo times 1 with cosine "
     "sampling",
-    "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch05.termination][ex:ch06.cosine_hemisphere_pdf][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     for (Real albedo : {1.0f, 0.5f}) {
         const Scene scene = furnace_scene(albedo);
         const RenderResult cosine = render_scene(scene, SamplingStrategy::kCosine, 32, 4, 1);
@@ -745,7 +821,11 @@ TEST_CASE(
 }
 
 TEST_CASE("Every strategy converges to the same image on the chapter's scene",
-          "[render][statistical][ex:ch06.path_tracer][ex:ch05.termination][ex:ch04.sample_quad_light]") {
+          "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal]"
+          "[ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.termination][ex:ch06.cosine_hemisphere_pdf]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_hemisphere_pdf]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     // The image cut into 2×2 blocks; each block's mean over kRuns independent renders, with its standard
     // error.
@@ -792,7 +872,11 @@ TEST_CASE("Every strategy converges to the same image on the chapter's scene",
 }
 
 TEST_CASE("MIS has far less error than uniform or cosine sampling for the same samples",
-          "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.termination][ex:ch06.cosine_hemisphere_pdf]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_hemisphere_pdf]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     const RenderResult reference = render_scene(scene, SamplingStrategy::kMis, 24, 256, 99, 2);
     // The relative MSE of error_metrics.hpp: the lamp's own edge, seen directly, does not swamp the rest.
@@ -811,7 +895,11 @@ TEST_CASE("MIS has far less error than uniform or cosine sampling for the same s
 TEST_CASE(
     "Ray counts: shadow rays only with light sampling, none without lights, the same image on 1 and 2 "
     "threads",
-    "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+    "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch04.uniform_hemisphere][ex:ch05.termination][ex:ch06.cosine_hemisphere_pdf]"
+    "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_hemisphere_pdf]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     const RenderResult one = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 1);
     const RenderResult two = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 2);
@@ -835,7 +923,9 @@ TEST_CASE(
 }
 
 TEST_CASE("An emissive plane, which no light sample can reach, is seen by every strategy",
-          "[render][ex:ch06.path_tracer][ex:ch05.termination]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.cosine_hemisphere_pdf][ex:ch06.path_tracer]") {
     // A diffuse sphere under an emissive plane (radiance 1, facing down): light, mis and cosine agree.
     Scene scene = furnace_scene(0.5f);
     scene.environment.reset();

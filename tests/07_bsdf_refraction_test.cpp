@@ -76,7 +76,8 @@ RenderResult render_scene(const Scene& scene, const RenderSettings& settings, Re
 // ---------------------------------------------------------------------------------------------------------
 // Fresnel and Snell at the hard cases
 
-TEST_CASE("Normal incidence reflects R = ((eta - 1) / (eta + 1))^2 = 0.04 from either side", "[stability]") {
+TEST_CASE("Normal incidence reflects R = ((eta - 1) / (eta + 1))^2 = 0.04 from either side",
+          "[stability][ex:ch07.fresnel_exact][ex:ch07.fresnel_schlick][ex:ch07.refract]") {
     CHECK(fresnel_dielectric(1, Real(kEta)) == Approx(0.04).margin(1e-7));
     CHECK(fresnel_dielectric(1, Real(1 / kEta)) == Approx(0.04).margin(1e-7));
     CHECK(fresnel_schlick(1, Real(kEta)) == Approx(0.04).margin(1e-7));
@@ -86,7 +87,7 @@ TEST_CASE("Normal incidence reflects R = ((eta - 1) / (eta + 1))^2 = 0.04 from e
 }
 
 TEST_CASE("At Brewster's angle 56.3099 degrees only the perpendicular part reflects: R = 0.0739645",
-          "[stability]") {
+          "[stability][ex:ch07.fresnel_exact]") {
     const double brewster = std::atan(kEta);
     CHECK(brewster * 180 / std::numbers::pi == Approx(56.3099).margin(1e-4));
     CHECK(fresnel_dielectric(Real(std::cos(brewster)), Real(kEta)) == Approx(0.0739645).margin(2e-7));
@@ -94,7 +95,7 @@ TEST_CASE("At Brewster's angle 56.3099 degrees only the perpendicular part refle
 
 TEST_CASE(
     "From inside: the critical angle is 41.8103 degrees, below it refraction succeeds, R(41) = 0.379751",
-    "[stability]") {
+    "[stability][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const double critical = std::asin(1 / kEta);
     CHECK(critical * 180 / std::numbers::pi == Approx(41.8103).margin(1e-4));
     const Real eta = Real(1 / kEta);
@@ -107,7 +108,7 @@ TEST_CASE(
 
 TEST_CASE(
     "At 42 degrees and exactly at the critical angle from inside: total internal reflection, R = 1, no NaN",
-    "[stability]") {
+    "[stability][ex:ch07.fresnel_exact][ex:ch07.fresnel_schlick][ex:ch07.refract]") {
     const Real eta = Real(1 / kEta);
     for (double theta : {deg(42), std::asin(1 / kEta), deg(60), deg(89.9)}) {
         INFO("theta " << theta * 180 / std::numbers::pi);
@@ -122,7 +123,8 @@ TEST_CASE(
     CHECK(refract(direction_at(std::asin(1 / kEta) - 1e-3), kUp, eta).has_value());
 }
 
-TEST_CASE("Grazing incidence reflects everything, from either side", "[stability]") {
+TEST_CASE("Grazing incidence reflects everything, from either side",
+          "[stability][ex:ch07.fresnel_exact][ex:ch07.fresnel_schlick]") {
     for (Real eta : {Real(kEta), Real(1 / kEta)}) {
         CHECK(fresnel_dielectric(0, eta) == 1);
         CHECK(fresnel_schlick(0, eta) == 1);
@@ -131,7 +133,7 @@ TEST_CASE("Grazing incidence reflects everything, from either side", "[stability
     }
 }
 
-TEST_CASE("Reciprocity: R(30 degrees, 1.5) = R(theta_t, 1 / 1.5)", "[stability]") {
+TEST_CASE("Reciprocity: R(30 degrees, 1.5) = R(theta_t, 1 / 1.5)", "[stability][ex:ch07.fresnel_exact]") {
     const double theta_t = std::asin(std::sin(deg(30)) / kEta);
     const Real outside = fresnel_dielectric(Real(std::cos(deg(30))), Real(kEta));
     const Real inside = fresnel_dielectric(Real(std::cos(theta_t)), Real(1 / kEta));
@@ -139,7 +141,8 @@ TEST_CASE("Reciprocity: R(30 degrees, 1.5) = R(theta_t, 1 / 1.5)", "[stability]"
     CHECK(inside == Approx(double(outside)).margin(1e-6));
 }
 
-TEST_CASE("eta = 1 passes straight through and reflects nothing", "[stability]") {
+TEST_CASE("eta = 1 passes straight through and reflects nothing",
+          "[stability][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     for (double theta = 0; theta < deg(89); theta += deg(1)) {
         const Vec3 wo = direction_at(theta);
         CHECK(fresnel_dielectric(wo.z, 1) == Approx(0).margin(1e-6));
@@ -150,7 +153,7 @@ TEST_CASE("eta = 1 passes straight through and reflects nothing", "[stability]")
 }
 
 TEST_CASE("The refracted direction is unit, in the plane of incidence, obeys Snell and reverses",
-          "[stability]") {
+          "[stability][ex:ch07.refract]") {
     Pcg32 rng(11, 3);
     int refracted = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -185,7 +188,8 @@ TEST_CASE("The refracted direction is unit, in the plane of incidence, obeys Sne
     CHECK(refracted > 10000);
 }
 
-TEST_CASE("Flipping the normal (and with it eta) gives the same refraction and reflectance", "[stability]") {
+TEST_CASE("Flipping the normal (and with it eta) gives the same refraction and reflectance",
+          "[stability][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     for (double theta = 0; theta < deg(90); theta += deg(2.5)) {
         for (Real eta : {Real(kEta), Real(1 / kEta)}) {
             const Vec3 wo = direction_at(theta);
@@ -198,7 +202,7 @@ TEST_CASE("Flipping the normal (and with it eta) gives the same refraction and r
     }
 }
 
-TEST_CASE("R + T = 1, T from the transmission amplitudes", "[stability]") {
+TEST_CASE("R + T = 1, T from the transmission amplitudes", "[stability][ex:ch07.fresnel_exact]") {
     for (double eta : {kEta, 1 / kEta, 1.0, 2.4}) {
         for (double theta = 0; theta < deg(89.5); theta += deg(0.5)) {
             const double R = double(fresnel_dielectric(Real(std::cos(theta)), Real(eta)));
@@ -209,7 +213,7 @@ TEST_CASE("R + T = 1, T from the transmission amplitudes", "[stability]") {
 }
 
 TEST_CASE("Total internal reflection never yields NaN or a zero direction (glm::refract does, unguarded)",
-          "[stability]") {
+          "[stability][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // From inside glass at 60 degrees, beyond the critical angle.
     const Vec3 wo = direction_at(deg(60));
     // The naive vector-library call (its ratio is η_i / η_t): a silent zero vector, whose normalisation is
@@ -231,7 +235,7 @@ TEST_CASE("Total internal reflection never yields NaN or a zero direction (glm::
 TEST_CASE(
     "Schlick's approximation stays within 0.04 of the exact R, and leaving glass it cuts off at the same "
     "angle",
-    "[stability]") {
+    "[stability][ex:ch07.fresnel_exact][ex:ch07.fresnel_schlick]") {
     double worst = 0;
     for (double theta = 0; theta <= deg(90); theta += deg(0.1)) {
         const Real c = Real(std::cos(theta));
@@ -247,7 +251,7 @@ TEST_CASE(
 // The sampled dielectric and Beer–Lambert
 
 TEST_CASE("The dielectric reflects with probability R and weighs transmission by 1 / eta^2",
-          "[statistical]") {
+          "[statistical][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Vec3 wo = direction_at(deg(35));  // below the critical angle from either side
     for (Real eta : {Real(kEta), Real(1 / kEta)}) {
         const Real R = fresnel_dielectric(wo.z, eta);
@@ -272,7 +276,7 @@ TEST_CASE("The dielectric reflects with probability R and weighs transmission by
 }
 
 TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes everything, even at infinity",
-          "[stability]") {
+          "[stability][ex:ch07.beer_lambert]") {
     const Color t = beer_lambert(Color(0, 1, 2), 0.5f);
     CHECK(t.r == 1);
     CHECK(t.g == Approx(std::exp(-0.5)).epsilon(1e-6));
@@ -327,11 +331,16 @@ void check_furnace(const char* file) {
 }
 
 TEST_CASE("Furnace: a glass sphere under a uniform environment of radiance 1 renders as 1 everywhere",
-          "[furnace]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     check_furnace("ch07_furnace_glass.json");
 }
 
-TEST_CASE("Furnace: an eta = 1 sphere renders as exactly 1 everywhere", "[furnace]") {
+TEST_CASE("Furnace: an eta = 1 sphere renders as exactly 1 everywhere",
+          "[furnace][ex:ch01.camera_ray][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     check_furnace("ch07_furnace_eta1.json");
 }
 
@@ -357,7 +366,11 @@ Scene glass_box(const std::string& effects) {
     return scene_from(json);
 }
 
-TEST_CASE("A scene without a dielectric traces no refraction rays", "[effects]") {
+TEST_CASE("A scene without a dielectric traces no refraction rays",
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -370,7 +383,9 @@ TEST_CASE("A scene without a dielectric traces no refraction rays", "[effects]")
 }
 
 TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 1: no indirect rays",
-          "[effects]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -382,7 +397,11 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
     CHECK(r.rays.total() == r.rays[RayKind::kCamera] + r.rays[RayKind::kShadow]);
 }
 
-TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays", "[effects]") {
+TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays",
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -391,7 +410,10 @@ TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays"
     CHECK(r.rays[RayKind::kIndirect] == 0);
 }
 
-TEST_CASE("A glass scene without lights traces no shadow rays", "[effects]") {
+TEST_CASE("A glass scene without lights traces no shadow rays",
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
     const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(24, 4), {});
@@ -403,7 +425,11 @@ TEST_CASE("A glass scene without lights traces no shadow rays", "[effects]") {
 // ---------------------------------------------------------------------------------------------------------
 // The default scene
 
-TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads", "[render]") {
+TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads",
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
     RenderSettings settings = small_settings(40, 8);
     Renderer used{};
@@ -420,7 +446,10 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",
-          "[render]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
+          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     const RenderSettings settings = small_settings(32, 16);
     const RenderResult before = render_scene(scene, settings);
@@ -441,7 +470,11 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
     CHECK(a.g < b.g);
 }
 
-TEST_CASE("With and without next-event estimation the glass box converges to the same image", "[render]") {
+TEST_CASE("With and without next-event estimation the glass box converges to the same image",
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");
     RenderSettings settings = small_settings(16, 512);
     BsdfPathOptions nee, hits;
@@ -456,7 +489,9 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
 }
 
 TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera inside sees 2.25",
-          "[furnace]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // The camera at the centre of a glass sphere under a uniform environment of radiance 1. What is conserved
     // across the interface is L / η², so the radiance inside is 1.5² = 2.25 in every direction; without the
     // 1 / η² factor of the BTDF every pixel would be 1.

@@ -19,11 +19,42 @@ Real lobe_power(const Vec3& wi, const Vec3& axis, Real exponent) {
     return c > 0 ? std::pow(c, exponent) : Real(0);
 }
 
-// The normalized lobe f = ρ (e + 2) / (2π) cos^e α around `axis`.
+// Lambert: f = ρ / π when wo and wi are both above the surface, else 0.
+Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, const Vec3& n) {
+    // EXERCISE(ch04.lambert)
+    return above(wo, wi, n) ? lambert.albedo * kInvPi : Color(0);
+    // END EXERCISE
+}
+
+// The mirror's one direction wi = r(wo), with f = R / cos θ_i and pdf 1 (a delta), so that f cos θ_i / pdf =
+// R; nothing (f = 0) when r(wo) is not above the surface.
+BrdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
+    // EXERCISE(ch04.mirror)
+    BrdfSample s;
+    s.wi = reflect(wo, n);
+    const Real cos_i = glm::dot(s.wi, n);
+    s.f = cos_i > 0 ? mirror.reflectance / cos_i : Color(0);
+    s.pdf = 1;
+    s.delta = true;
+    return s;
+    // END EXERCISE
+}
+
+// The glossy BRDF's normalized lobe f = ρ (e + 2) / (2π) cos^e α around `axis` (r(wo) for glossy), 0 unless
+// wo and wi are both above the surface.
 Color lobe_eval(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& wi,
                 const Vec3& n) {
+    // EXERCISE(ch04.glossy)
     if (!above(wo, wi, n)) return Color(0);
     return albedo * ((exponent + 2) * Real(0.5) * kInvPi * lobe_power(wi, axis, exponent));
+    // END EXERCISE
+}
+
+// Retro-reflective: the same normalized lobe, around wo itself.
+Color retroreflective_eval(const RetroreflectiveBrdf& retro, const Vec3& wo, const Vec3& wi, const Vec3& n) {
+    // EXERCISE(ch04.retroreflective)
+    return lobe_eval(retro.albedo, retro.exponent, wo, wo, wi, n);
+    // END EXERCISE
 }
 
 // pdf = (e + 1) / (2π) cos^e α: the density of sample_power_cosine about `axis`.
@@ -44,14 +75,12 @@ struct Eval {
     const Vec3& wo;
     const Vec3& wi;
     const Vec3& n;
-    Color operator()(const LambertBrdf& b) const { return above(wo, wi, n) ? b.albedo * kInvPi : Color(0); }
+    Color operator()(const LambertBrdf& b) const { return lambert_eval(b, wo, wi, n); }
     Color operator()(const MirrorBrdf&) const { return Color(0); }
     Color operator()(const GlossyBrdf& b) const {
         return lobe_eval(b.albedo, b.exponent, reflect(wo, n), wo, wi, n);
     }
-    Color operator()(const RetroreflectiveBrdf& b) const {
-        return lobe_eval(b.albedo, b.exponent, wo, wo, wi, n);
-    }
+    Color operator()(const RetroreflectiveBrdf& b) const { return retroreflective_eval(b, wo, wi, n); }
 };
 
 struct Sample {
@@ -61,19 +90,11 @@ struct Sample {
     BrdfSample operator()(const LambertBrdf& b) const {
         BrdfSample s;
         s.wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(u)));
-        s.f = Eval{wo, s.wi, n}(b);
+        s.f = lambert_eval(b, wo, s.wi, n);
         s.pdf = std::max(Real(0), glm::dot(s.wi, n)) * kInvPi;
         return s;
     }
-    BrdfSample operator()(const MirrorBrdf& b) const {
-        BrdfSample s;
-        s.wi = reflect(wo, n);
-        const Real cos_i = glm::dot(s.wi, n);
-        s.f = cos_i > 0 ? b.reflectance / cos_i : Color(0);
-        s.pdf = 1;
-        s.delta = true;
-        return s;
-    }
+    BrdfSample operator()(const MirrorBrdf& b) const { return mirror_sample(b, wo, n); }
     BrdfSample operator()(const GlossyBrdf& b) const {
         return lobe_sample(b.albedo, b.exponent, reflect(wo, n), wo, n, u);
     }

@@ -15,34 +15,44 @@ Vec3 spherical(Real cos_theta, Real sin_theta, Real u) {
 }  // namespace
 
 Vec3 sample_uniform_hemisphere(Vec2 u) {
+    // EXERCISE(ch04.uniform_hemisphere)
     const Real z = u.x;
     return spherical(z, std::sqrt(std::max(Real(0), 1 - z * z)), u.y);
+    // END EXERCISE
 }
 
 Vec3 sample_cosine_hemisphere(Vec2 u) {
+    // EXERCISE(ch04.cosine_hemisphere)
     const Real r = std::sqrt(u.x);
     return spherical(std::sqrt(std::max(Real(0), 1 - u.x)), r, u.y);
+    // END EXERCISE
 }
 
 Vec3 sample_uniform_cone(Vec2 u, Real one_minus_cos_max) {
+    // EXERCISE(ch04.uniform_cone)
     const Real one_minus_cos = u.x * one_minus_cos_max;
     const Real cos_theta = 1 - one_minus_cos;
     // sin²θ = (1 − cos θ)(1 + cos θ): exact where 1 − cos² θ would cancel.
     const Real sin_theta = std::sqrt(std::max(Real(0), one_minus_cos * (2 - one_minus_cos)));
     return spherical(cos_theta, sin_theta, u.y);
+    // END EXERCISE
 }
 
 Vec3 sample_power_cosine(Vec2 u, Real exponent) {
+    // EXERCISE(ch04.power_cosine)
     // 1 − cos α = 1 − exp(ln(1 − u₁) / (e + 1)) through expm1 and log1p, so a sharp lobe (large e, cos α
     // within an ulp of 1) keeps sin α instead of rounding it to 0.
     const Real one_minus_cos = -std::expm1(std::log1p(-u.x) / (exponent + 1));
     const Real sin_alpha = std::sqrt(std::max(Real(0), one_minus_cos * (2 - one_minus_cos)));
     return spherical(1 - one_minus_cos, sin_alpha, u.y);
+    // END EXERCISE
 }
 
 Vec2 sample_uniform_triangle(Vec2 u) {
+    // EXERCISE(ch04.uniform_triangle)
     const Real s = std::sqrt(u.x);
     return {1 - s, u.y * s};
+    // END EXERCISE
 }
 
 }  // namespace rt

@@ -20,6 +20,7 @@ void face_incident_side(Real& cos_i, Real& eta) {
 }
 
 Real fresnel_dielectric(Real cos_i, Real eta) {
+    // EXERCISE(ch07.fresnel_exact)
     face_incident_side(cos_i, eta);
     const Real cos2_t = cos2_transmitted(cos_i, eta);
     if (cos2_t <= kTirCos2) return 1;
@@ -28,9 +29,11 @@ Real fresnel_dielectric(Real cos_i, Real eta) {
     const Real r_par = (eta * ci - ct) / (eta * ci + ct);
     const Real r_perp = (ci - eta * ct) / (ci + eta * ct);
     return std::min(Real(1), (r_par * r_par + r_perp * r_perp) / 2);
+    // END EXERCISE
 }
 
 Real fresnel_schlick(Real cos_i, Real eta) {
+    // EXERCISE(ch07.fresnel_schlick)
     face_incident_side(cos_i, eta);
     const Real cos2_t = cos2_transmitted(cos_i, eta);
     if (cos2_t <= kTirCos2) return 1;
@@ -40,6 +43,7 @@ Real fresnel_schlick(Real cos_i, Real eta) {
     const Real m = 1 - c;
     const Real m2 = m * m;
     return r0 + (1 - r0) * m2 * m2 * m;
+    // END EXERCISE
 }
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 namespace rt {
 
 std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Vec3& d) {
+    // EXERCISE(ch08.project_direction)
     const Real z = glm::dot(d, camera.forward);
     const Real length = glm::length(d);
     if (!(z > 0) || !(length > 0)) return std::nullopt;
@@ -22,6 +23,7 @@ std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Ve
     p.x = std::min(int(px), camera.width - 1);
     p.y = std::min(int(py), camera.height - 1);
     return p;
+    // END EXERCISE
 }
 
 std::optional<FilmPoint> project_point(const PinholeCamera& camera, const Vec3& x) {
@@ -33,8 +35,10 @@ Real pixel_area(const PinholeCamera& camera) {
 }
 
 Real pinhole_importance(const PinholeCamera& camera, Real cos_theta) {
+    // EXERCISE(ch08.pinhole_importance)
     const Real c2 = cos_theta * cos_theta;
     return 1 / (pixel_area(camera) * c2 * c2);
+    // END EXERCISE
 }
 
 }  // namespace rt

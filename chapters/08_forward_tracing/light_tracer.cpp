@@ -47,6 +47,7 @@ LightTracer::LightTracer(const World& world, const Scene& scene, const LightSet&
 
 bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Color& beta, Image& film,
                           RayCounts& rays) const {
+    // EXERCISE(ch08.connect)
     const Vec3 to_eye = camera_.eye - hit.point;
     const Real r2 = glm::dot(to_eye, to_eye);
     if (!(r2 > 0)) return false;
@@ -62,6 +63,7 @@ bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, cons
     if (world_.occluded(s.ray, s.t_max)) return false;
     const Real G = cos_x * p->cos_theta / r2;
     return splat(film, *p, beta * f * (G * pinhole_importance(camera_, p->cos_theta)));
+    // END EXERCISE
 }
 
 bool LightTracer::connect_light(const EmissionSample& e, Image& film, RayCounts& rays) const {
