@@ -66,7 +66,7 @@ class Marks(unittest.TestCase):
         found = {e.name: e for e in marks.find_exercises(self.root)}
         lesson = "chapters/07_fixture/README.md"
         self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")  # heading
-        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # text names integrate
+        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # code names integrate
         self.assertEqual(found["ch07.counter"].reference(), lesson + " § Exercises")  # neither: the exercises
 
     def test_the_stubbed_sources_compile_with_warnings_as_errors(self):

@@ -78,17 +78,20 @@ def lesson_section(root: Path, exercise: Exercise) -> tuple[str, str]:
     def names(text: str, words: list[str]) -> bool:
         return any(re.search(r"(?<![\w.])" + re.escape(w) + r"(?![\w])", text) for w in words if w)
 
+    def code(text: str) -> str:  # the code blocks and `code spans` of a section
+        return "\n".join(re.findall(r"```.*?```|`[^`\n]+`", text, re.DOTALL))
+
     function = exercise.function if exercise.function != "lambda" else ""
     file_names = [exercise.file.name, exercise.file.stem + ".hpp", exercise.file.stem + ".cpp"]
     ordinary = [(h, "\n".join(b)) for h, b in sections if not h.lower().startswith("exercises")]
-    # The heading that names the exercise or its function; the section whose text names the function (or the
-    # exercise); the section that names its file; the lesson's exercises.
+    # The heading that names the exercise or its function; the section whose code, then whose text, names the
+    # function (or the exercise); the section that names its file; the lesson's exercises.
     for heading, _ in sections:
         if names(heading, [exercise.short, exercise.name, function]):
             return lesson, heading.replace("`", "")
-    for words in ([function, exercise.name], file_names):
+    for words, part in (([function, exercise.name], code), ([function, exercise.name], str), (file_names, str)):
         for heading, body in ordinary:
-            if names(body, words):
+            if names(part(body), words):
                 return lesson, heading.replace("`", "")
     for heading, _ in sections:
         if heading.lower().startswith("exercises"):
