@@ -9,6 +9,7 @@
 #include "intersection_render.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"
+#include "quad_packet.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/random.hpp"
@@ -573,4 +574,70 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
     CHECK(hits > 10000);
     CHECK(mismatches == 0);
     CHECK(occlusion_mismatches == 0);
+}
+
+TEST_CASE("A quad packet picks the nearest of the quads intersect_quad hits, on hard cases too",
+          "[stability][quad][ex:ch02.quad]") {
+    Pcg32 rng(5, 11);
+    auto random_vector = [&](Real size) {
+        return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * (2 * size) - size;
+    };
+    // Ordinary, degenerate (u ∥ v or u = 0), huge and tiny quads; and axis-aligned quads, hit on their edges.
+    auto random_quad = [&](int kind) {
+        const Vec3 origin = random_vector(2);
+        switch (kind) {
+            case 0:
+                return make_quad(origin, Vec3{0}, random_vector(1));
+            case 1: {
+                const Vec3 u = random_vector(1);
+                return make_quad(origin, u, Real(2) * u);
+            }
+            case 2:
+                return make_quad(origin * Real(1e4), random_vector(Real(1e5)), random_vector(Real(1e5)));
+            case 3:
+                return make_quad(origin, random_vector(Real(1e-4)), random_vector(Real(1e-4)));
+            case 4:
+                return make_quad(Vec3{-1, -1, origin.z}, {2, 0, 0}, {0, 2, 0});
+            default:
+                return make_quad(origin, random_vector(1), random_vector(1));
+        }
+    };
+    const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    int compared = 0, hit_packets = 0, mismatches = 0;
+    for (int trial = 0; trial < 200000; ++trial) {
+        std::vector<Quad> quads;
+        const int count = 1 + int(rng.next_uint() % kQuadLanes);  // partly filled packets too
+        for (int i = 0; i < count; ++i) quads.push_back(random_quad(int(rng.next_uint() % 8)));
+        std::vector<std::uint32_t> indices(quads.size());
+        for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+        const QuadPacket packet = make_quad_packet(quads, indices);
+        // Rays from anywhere, along an axis (zero components: parallel to axis-aligned quads, or lying in
+        // their plane), or aimed at an edge or a corner of the first quad (a or b exactly 0 or 1).
+        Ray ray{random_vector(4), glm::normalize(random_vector(1))};
+        const int aim = int(rng.next_uint() % 4);
+        if (aim == 1) ray.direction = axes[rng.next_uint() % 3] * (rng.next_uint() % 2 ? Real(1) : Real(-1));
+        if (aim >= 2) {
+            const Quad& q = quads[0];
+            const Real a = aim == 2 ? rng.next_real() : Real(rng.next_uint() % 2);
+            const Vec3 target = q.origin + a * q.u + Real(rng.next_uint() % 2) * q.v;
+            if (!(glm::length(target - ray.origin) > 0)) continue;
+            ray.direction = glm::normalize(target - ray.origin);
+        }
+        const Real t_max = rng.next_real() < Real(0.5) ? kInfinity : Real(8) * rng.next_real();
+        int expected = -1;
+        Real nearest = t_max;
+        for (int lane = 0; lane < count; ++lane) {
+            if (const auto h = intersect_quad(ray, quads[std::size_t(lane)], t_max); h && h->t < nearest) {
+                nearest = h->t;
+                expected = lane;
+            }
+        }
+        const int lane = nearest_quad_lane(ray, packet, t_max);
+        ++compared;
+        hit_packets += expected >= 0 ? 1 : 0;
+        if (lane != expected) ++mismatches;
+    }
+    INFO(compared << " packets, " << hit_packets << " hit");
+    CHECK(hit_packets > compared / 10);
+    CHECK(mismatches == 0);
 }

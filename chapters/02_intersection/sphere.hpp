@@ -34,16 +34,17 @@ inline std::optional<SphereRoots> sphere_roots_stable(const Ray& ray, const Sphe
     const Vec3 f = ray.origin - sphere.center;
     const Vec3& d = ray.direction;
     const Real b = glm::dot(f, d);
-    // f − b d, the centre's offset from the line, with one rounding per component (fma): it is small when
-    // the sphere is small, and computing it directly avoids subtracting b² from |f|².
-    const Vec3 perpendicular{std::fma(-b, d.x, f.x), std::fma(-b, d.y, f.y), std::fma(-b, d.z, f.z)};
+    // f − b d, the centre's offset from the line, in double: a product of two floats is exact in double, so
+    // each component is rounded once. It is small when the sphere is small, and computing it directly avoids
+    // subtracting b² from |f|².
+    const Vec3d fd{f};
+    const Vec3 perpendicular{fd - double(b) * Vec3d{d}};
     const Real r = sphere.radius;
     const Real distance = glm::length(perpendicular);
     const Real discriminant = (r - distance) * (r + distance);
     if (discriminant < 0) return std::nullopt;
-    // c₀ = |f|² − r² in double: products of floats are exact in double, so only the final rounding remains
-    // (in float it cancels when the origin is near a large sphere's surface).
-    const Vec3d fd{f};
+    // c₀ = |f|² − r² in double, for the same reason: only the final rounding remains (in float it cancels when
+    // the origin is near a large sphere's surface).
     const Real c = Real(glm::dot(fd, fd) - double(r) * double(r));
     const Real q = -(b + std::copysign(std::sqrt(discriminant), b));
     if (q == 0) return SphereRoots{0, 0};  // the origin is on the surface and the ray is tangent to it

@@ -10,30 +10,64 @@ namespace rt {
 
 World::World(const Scene& scene, WorldOptions options) : options_(options) {
     for (const Shape& shape : scene.shapes) add(shape);
+    bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration == Acceleration::kBvh) {
-        std::vector<Aabb> boxes;
-        boxes.reserve(primitives_.size());
-        for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
+        if (!quads_.empty()) pack_quads();
         std::vector<std::uint32_t> order;
-        bvh_ = Bvh(boxes, order);
+        bvh_ = Bvh(all_bounds(), order);
         lay_out_in(order);
     }
+}
+
+std::vector<Aabb> World::all_bounds() const {
+    std::vector<Aabb> boxes;
+    boxes.reserve(primitives_.size());
+    for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
+    return boxes;
+}
+
+// Replaces the quads by packets of four neighbours. A first BVH over every primitive lists them leaf by leaf,
+// so neighbours come one after another; its quads, taken four at a time in that order, become the packets.
+void World::pack_quads() {
+    std::vector<std::uint32_t> order;
+    const Bvh neighbours(all_bounds(), order);
+    quad_primitives_.resize(quads_.size());
+    std::vector<Primitive> items;
+    std::vector<std::uint32_t> quads_in_order;
+    for (std::uint32_t slot : order) {
+        const Primitive& p = primitives_[slot];
+        if (p.kind == Kind::kQuad) {
+            quad_primitives_[p.index] = p;
+            quads_in_order.push_back(p.index);
+        } else {
+            items.push_back(p);
+        }
+    }
+    for (std::size_t first = 0; first < quads_in_order.size(); first += kQuadLanes) {
+        const std::size_t count = std::min<std::size_t>(kQuadLanes, quads_in_order.size() - first);
+        items.push_back({Kind::kQuadPacket, std::uint32_t(packets_.size()), -1, 0});
+        packets_.push_back(make_quad_packet(quads_, std::span(quads_in_order).subspan(first, count)));
+    }
+    primitives_ = std::move(items);
 }
 
 void World::add_primitive(Kind kind, std::uint32_t index, int material) {
     primitives_.push_back({kind, index, material, std::uint32_t(primitives_.size())});
 }
 
-// Stores the primitives, and the spheres, quads and triangles they point to, in the BVH's leaf order.
+// Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
+// (a packet's quads stay where they are: only the packet is tested).
 void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     std::vector<Primitive> primitives;
     std::vector<Sphere> spheres;
     std::vector<Quad> quads;
     std::vector<Triangle> triangles;
+    std::vector<QuadPacket> packets;
     primitives.reserve(order.size());
     spheres.reserve(spheres_.size());
     quads.reserve(quads_.size());
     triangles.reserve(triangles_.size());
+    packets.reserve(packets_.size());
     auto move_to = [](auto& to, const auto& from, std::uint32_t index) {
         to.push_back(from[index]);
         return std::uint32_t(to.size() - 1);
@@ -50,13 +84,17 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
             case Kind::kTriangle:
                 p.index = move_to(triangles, triangles_, p.index);
                 break;
+            case Kind::kQuadPacket:
+                p.index = move_to(packets, packets_, p.index);
+                break;
         }
         primitives.push_back(p);
     }
     primitives_ = std::move(primitives);
     spheres_ = std::move(spheres);
-    quads_ = std::move(quads);
+    if (packets_.empty()) quads_ = std::move(quads);
     triangles_ = std::move(triangles);
+    packets_ = std::move(packets);
 }
 
 void World::add(const Shape& shape) {
@@ -92,6 +130,16 @@ void World::add(const Shape& shape) {
         shape.geometry);
 }
 
+namespace {
+
+Aabb quad_bounds(const Quad& q) {
+    Aabb box;
+    for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v}) box.extend(c);
+    return box;
+}
+
+}  // namespace
+
 Aabb World::bounds(const Primitive& p) const {
     Aabb box;
     switch (p.kind) {
@@ -101,10 +149,13 @@ Aabb World::bounds(const Primitive& p) const {
             box.extend(s.center + Vec3{s.radius});
             break;
         }
-        case Kind::kQuad: {
-            const Quad& q = quads_[p.index];
-            for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v})
-                box.extend(c);
+        case Kind::kQuad:
+            box = quad_bounds(quads_[p.index]);
+            break;
+        case Kind::kQuadPacket: {
+            const QuadPacket& packet = packets_[p.index];
+            for (int lane = 0; lane < packet.lanes; ++lane)
+                box.extend(quad_bounds(quads_[packet.quad[std::size_t(lane)]]));
             break;
         }
         case Kind::kTriangle: {
@@ -132,6 +183,17 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
                 return true;
             }
             return false;
+        case Kind::kQuadPacket: {
+            // The packet says which quad is nearest; intersect_quad makes the hit (the same arithmetic).
+            const QuadPacket& packet = packets_[p.index];
+            const int lane = nearest_quad_lane(ray, packet, t_max);
+            if (lane < 0) return false;
+            if (const auto h = intersect_quad(ray, quads_[packet.quad[std::size_t(lane)]], t_max)) {
+                found = {h->t, slot, h->ab, lane};
+                return true;
+            }
+            return false;
+        }
         case Kind::kTriangle: {
             const Triangle& tri = triangles_[p.index];
             const auto h = options_.triangle_test == TriangleTest::kWatertight
@@ -149,10 +211,10 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
 
 bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const {
     bool hit = false;
-    const std::uint32_t bounded = std::uint32_t(primitives_.size());
+    const std::uint32_t slots = std::uint32_t(primitives_.size());
     for (std::uint32_t i = 0; i < planes_.size(); ++i) {
         if (const auto t = intersect_plane(ray, planes_[i].plane, t_max)) {
-            found = {*t, bounded + i, Vec2{0}};
+            found = {*t, slots + i, Vec2{0}};
             t_max = *t;
             hit = true;
             if (any_hit) return true;
@@ -168,7 +230,7 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
     if (options_.acceleration == Acceleration::kBvh) {
         return bvh_.traverse(ray, inverse_direction(ray.direction), t_max, any_hit, test_one, stats) || hit;
     }
-    for (std::uint32_t i = 0; i < bounded; ++i) {
+    for (std::uint32_t i = 0; i < slots; ++i) {
         if (stats) ++stats->primitives;
         if (test_one(i, t_max)) {
             hit = true;
@@ -181,10 +243,10 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
 Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     Hit hit;
     hit.t = found.t;
-    const std::uint32_t bounded = std::uint32_t(primitives_.size());
-    if (found.slot >= bounded) {
-        hit.primitive = found.slot;
-        const MaterialPlane& p = planes_[found.slot - bounded];
+    const std::uint32_t slots = std::uint32_t(primitives_.size());
+    if (found.slot >= slots) {
+        hit.primitive = bounded_count_ + (found.slot - slots);
+        const MaterialPlane& p = planes_[found.slot - slots];
         // Rebuilt from the plane's own coordinates, p = p0 + a T + b B: in the plane up to rounding.
         hit.uv = plane_uv(p.plane, ray.at(found.t));
         const Vec3 along_t = hit.uv.x * p.plane.tangent, along_b = hit.uv.y * p.plane.bitangent;
@@ -194,7 +256,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
     }
-    const Primitive& p = primitives_[found.slot];
+    Primitive p = primitives_[found.slot];
+    if (p.kind == Kind::kQuadPacket) p = quad_primitives_[packets_[p.index].quad[std::size_t(found.lane)]];
     hit.primitive = p.id;
     hit.material = p.material;
     switch (p.kind) {
@@ -228,6 +291,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             set_face_normal(hit, ray.direction, triangle_normal(t));
             break;
         }
+        case Kind::kQuadPacket:
+            break;  // resolved to its quad above
     }
     return hit;
 }
@@ -250,7 +315,7 @@ bool World::occluded(const Ray& ray, Real t_max) const {
 }
 
 std::size_t World::primitive_count() const {
-    return primitives_.size() + planes_.size();
+    return bounded_count_ + planes_.size();
 }
 
 }  // namespace rt

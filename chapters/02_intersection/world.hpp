@@ -1,6 +1,7 @@
 // The world: every shape of a Scene as intersectable primitives — spheres, quads (a box becomes 6 quads,
 // transformed), triangles (a mesh becomes its triangles) — in a BVH, and unbounded planes tested outside it.
-// The nearest intersection is the smallest t in (0, t_max) over all primitives.
+// The nearest intersection is the smallest t in (0, t_max) over all primitives. With the BVH, neighbouring
+// quads are grouped four by four into packets (quad_packet.hpp), each one leaf entry tested at once.
 #pragma once
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include "hit.hpp"
 #include "plane.hpp"
 #include "quad.hpp"
+#include "quad_packet.hpp"
 #include "rt/ray.hpp"
 #include "rt/scene.hpp"
 #include "sphere.hpp"
@@ -36,15 +38,17 @@ class World {
     // Whether anything is hit with 0 < t < t_max (any-hit: stops at the first hit found).
     bool occluded(const Ray& ray, Real t_max) const;
 
+    // Spheres, quads, triangles and planes (a packet counts as the quads it holds).
     std::size_t primitive_count() const;
     // The hierarchy (empty with Acceleration::kNone).
     const Bvh& bvh() const { return bvh_; }
     std::size_t triangle_count() const { return triangles_.size(); }
 
   private:
-    enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle };
+    enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle, kQuadPacket };
     // A bounded primitive: which array holds it, where, its material, and its number in scene order
-    // (what Hit::primitive reports, whatever order the BVH lays the primitives out in).
+    // (what Hit::primitive reports, whatever order the BVH lays the primitives out in). A packet's material
+    // and number are its quads' own, in quad_primitives_.
     struct Primitive {
         Kind kind;
         std::uint32_t index;
@@ -56,16 +60,19 @@ class World {
         int material;
     };
     // The nearest hit found so far, before its hit record is made: `slot` is the primitive's place in
-    // primitives_, or primitives_.size() + i for plane i.
+    // primitives_, or primitives_.size() + i for plane i; `lane` is the quad's lane when the slot is a packet.
     struct Candidate {
         Real t;
         std::uint32_t slot;
         Vec2 uv;
+        int lane = 0;
     };
 
     void add(const Shape& shape);
     void add_primitive(Kind kind, std::uint32_t index, int material);
+    void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
+    std::vector<Aabb> all_bounds() const;
     Aabb bounds(const Primitive& p) const;
     bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
               Candidate& found) const;
@@ -76,7 +83,10 @@ class World {
     std::vector<Sphere> spheres_;
     std::vector<Quad> quads_;
     std::vector<Triangle> triangles_;
-    std::vector<Primitive> primitives_;  // the bounded ones; planes are numbered after them
+    std::vector<QuadPacket> packets_;
+    std::vector<Primitive> quad_primitives_;  // with packets: quad i's own record (material, number)
+    std::vector<Primitive> primitives_;       // the bounded ones; planes are numbered after them
+    std::uint32_t bounded_count_ = 0;          // spheres, quads and triangles
     std::vector<MaterialPlane> planes_;
     Bvh bvh_;
 };
