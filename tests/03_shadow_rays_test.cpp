@@ -131,7 +131,8 @@ TEST_CASE("A shadow ray has a unit direction toward the target and stops short o
 }
 
 TEST_CASE("The exact visibility leaves out the shape the point lies on, and only that one",
-          "[ch03][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_test]") {
+          "[ch03][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable]") {
     Shape floor{PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0, "shapes[0]"};
     Shape box{BoxShape{{-1, 0, -1}, {1, 1, 1}, {}}, 0, "shapes[1]"};
     Shape ball{SphereShape{{5, 1, 0}, 1}, 0, "shapes[2]"};
