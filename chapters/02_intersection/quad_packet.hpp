@@ -2,14 +2,14 @@
 // there the BVH has little to cull, and the quad test itself is the cost. A QuadPacket holds four quads
 // coordinate by coordinate, so that each step of intersect_quad's equations (quad.hpp) runs on all four in one
 // SIMD instruction (std::experimental::simd, part of GCC's and Clang's standard library), and one branch asks
-// whether any of them is hit. The packet only finds which quad is nearest: the hit itself is intersect_quad's,
-// so the two cannot disagree, and the lane arithmetic (the same operations, in the same order) is checked
-// against intersect_quad lane by lane in the tests.
+// whether any of them is hit. Each lane does intersect_quad's operations in intersect_quad's order, so it
+// rounds the same way: the tests check that a packet and intersect_quad give the same hit, bit for bit.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <experimental/simd>
+#include <optional>
 #include <span>
 
 #include "quad.hpp"
@@ -30,9 +30,14 @@ struct QuadPacket {
 // Packs quads[indices[0..]] (one to four of them) into a packet.
 QuadPacket make_quad_packet(std::span<const Quad> quads, std::span<const std::uint32_t> indices);
 
-// The lane of the nearest quad that the ray hits with t in (0, t_max), or −1. Inline for the reason
-// intersect_quad is.
-inline int nearest_quad_lane(const Ray& ray, const QuadPacket& packet, Real t_max) {
+// The nearest of the packet's quads that the ray hits with t in (0, t_max): its lane, t and (a, b).
+struct PacketHit {
+    int lane;
+    QuadHit hit;
+};
+
+// Inline for the reason intersect_quad is.
+inline std::optional<PacketHit> intersect_quad_packet(const Ray& ray, const QuadPacket& packet, Real t_max) {
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     const auto& origin = packet.origin;
@@ -48,10 +53,11 @@ inline int nearest_quad_lane(const Ray& ray, const QuadPacket& packet, Real t_ma
     const QuadLanes a = q_x * a_axis[0] + q_y * a_axis[1] + q_z * a_axis[2];
     const QuadLanes b = q_x * b_axis[0] + q_y * b_axis[1] + q_z * b_axis[2];
     const auto hit = t > 0 && t < t_max && a >= 0 && a <= 1 && b >= 0 && b <= 1;
-    if (std::experimental::none_of(hit)) return -1;
+    if (std::experimental::none_of(hit)) return std::nullopt;
     QuadLanes nearest = kInfinity;
     std::experimental::where(hit, nearest) = t;
-    return std::experimental::find_first_set(nearest == std::experimental::hmin(nearest));
+    const int lane = std::experimental::find_first_set(nearest == std::experimental::hmin(nearest));
+    return PacketHit{lane, {t[lane], {a[lane], b[lane]}}};
 }
 
 }  // namespace rt

@@ -183,17 +183,12 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
                 return true;
             }
             return false;
-        case Kind::kQuadPacket: {
-            // The packet says which quad is nearest; intersect_quad makes the hit (the same arithmetic).
-            const QuadPacket& packet = packets_[p.index];
-            const int lane = nearest_quad_lane(ray, packet, t_max);
-            if (lane < 0) return false;
-            if (const auto h = intersect_quad(ray, quads_[packet.quad[std::size_t(lane)]], t_max)) {
-                found = {h->t, slot, h->ab, lane};
+        case Kind::kQuadPacket:
+            if (const auto h = intersect_quad_packet(ray, packets_[p.index], t_max)) {
+                found = {h->hit.t, slot, h->hit.ab, h->lane};
                 return true;
             }
             return false;
-        }
         case Kind::kTriangle: {
             const Triangle& tri = triangles_[p.index];
             const auto h = options_.triangle_test == TriangleTest::kWatertight
