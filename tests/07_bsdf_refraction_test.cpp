@@ -367,10 +367,10 @@ Scene glass_box(const std::string& effects) {
 }
 
 TEST_CASE("A scene without a dielectric traces no refraction rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -383,9 +383,9 @@ TEST_CASE("A scene without a dielectric traces no refraction rays",
 }
 
 TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 1: no indirect rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -398,9 +398,9 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
 }
 
 TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
@@ -411,9 +411,9 @@ TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays"
 }
 
 TEST_CASE("A glass scene without lights traces no shadow rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
     const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(24, 4), {});
@@ -426,10 +426,10 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
 // The default scene
 
 TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
     RenderSettings settings = small_settings(40, 8);
     Renderer used{};
@@ -446,10 +446,10 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
-          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.beer_lambert]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     const RenderSettings settings = small_settings(32, 16);
     const RenderResult before = render_scene(scene, settings);
@@ -471,10 +471,10 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
 }
 
 TEST_CASE("With and without next-event estimation the glass box converges to the same image",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.quad]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");
     RenderSettings settings = small_settings(16, 512);
     BsdfPathOptions nee, hits;
