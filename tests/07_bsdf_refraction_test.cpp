@@ -331,16 +331,14 @@ void check_furnace(const char* file) {
 }
 
 TEST_CASE("Furnace: a glass sphere under a uniform environment of radiance 1 renders as 1 everywhere",
-          "[furnace][ex:ch01.camera_ray][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_furnace("ch07_furnace_glass.json");
 }
 
 TEST_CASE("Furnace: an eta = 1 sphere renders as exactly 1 everywhere",
-          "[furnace][ex:ch01.camera_ray][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_furnace("ch07_furnace_eta1.json");
 }
 
@@ -367,10 +365,10 @@ Scene glass_box(const std::string& effects) {
 }
 
 TEST_CASE("A scene without a dielectric traces no refraction rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -383,9 +381,8 @@ TEST_CASE("A scene without a dielectric traces no refraction rays",
 }
 
 TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 1: no indirect rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -398,10 +395,9 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
 }
 
 TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -411,9 +407,9 @@ TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays"
 }
 
 TEST_CASE("A glass scene without lights traces no shadow rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
     const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(24, 4), {});
@@ -426,9 +422,9 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
 // The default scene
 
 TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
     RenderSettings settings = small_settings(40, 8);
@@ -446,9 +442,9 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.beer_lambert]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     const RenderSettings settings = small_settings(32, 16);
@@ -471,9 +467,9 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
 }
 
 TEST_CASE("With and without next-event estimation the glass box converges to the same image",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");
     RenderSettings settings = small_settings(16, 512);
@@ -489,9 +485,9 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
 }
 
 TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera inside sees 2.25",
-          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     // The camera at the centre of a glass sphere under a uniform environment of radiance 1. What is conserved
     // across the interface is L / η², so the radiance inside is 1.5² = 2.25 in every direction; without the
     // 1 / η² factor of the BTDF every pixel would be 1.
