@@ -48,7 +48,8 @@ Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& b
 
 Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
     const Vec2 u = rng.next_vec2();
-    if (options_.light_sampler == LightSampler::kIndependent) return u;
+    // One sample has one stratum, the whole square: u itself (chapters 07 and 08 take one per vertex).
+    if (options_.light_sampler == LightSampler::kIndependent || options_.shadow_samples == 1) return u;
     // Stratum (j mod m, ⌊j / m⌋) of the m × m grid, m = ⌊√N⌋: chapter 01's stratified pixel sample in pixel
     // (0, 0).
     return pixel_sample_point(PixelSampler::kStratified, 0, 0, j, options_.shadow_samples, u);
