@@ -10,7 +10,7 @@ namespace rt {
 
 WatertightRay make_watertight_ray(const Ray& ray) {
     const Vec3& d = ray.direction;
-    const Vec3 a = glm::abs(d);
+    const Vec3 a = abs(d);
     const int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
     int kx = (kz + 1) % 3;
     int ky = (kx + 1) % 3;

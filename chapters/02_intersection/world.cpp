@@ -248,7 +248,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         hit.uv = plane_uv(p.plane, ray.at(found.t));
         const Vec3 along_t = hit.uv.x * p.plane.tangent, along_b = hit.uv.y * p.plane.bitangent;
         hit.point = p.plane.point + along_t + along_b;
-        hit.point_error = gamma_bound(5) * (glm::abs(p.plane.point) + glm::abs(along_t) + glm::abs(along_b));
+        hit.point_error = gamma_bound(5) * (abs(p.plane.point) + abs(along_t) + abs(along_b));
         hit.material = p.material;
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
@@ -264,7 +264,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 n = sphere_normal(s, ray.at(found.t));
             const Vec3 radial = s.radius * n;
             hit.point = s.center + radial;
-            hit.point_error = gamma_bound(5) * (glm::abs(s.center) + glm::abs(radial));
+            hit.point_error = gamma_bound(5) * (abs(s.center) + abs(radial));
             hit.uv = sphere_uv(n);
             set_face_normal(hit, ray.direction, n);
             break;
@@ -274,7 +274,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             hit.uv = found.uv;
             const Vec3 along_u = found.uv.x * q.u, along_v = found.uv.y * q.v;
             hit.point = q.origin + along_u + along_v;
-            hit.point_error = gamma_bound(3) * (glm::abs(q.origin) + glm::abs(along_u) + glm::abs(along_v));
+            hit.point_error = gamma_bound(3) * (abs(q.origin) + abs(along_u) + abs(along_v));
             set_face_normal(hit, ray.direction, q.normal);
             break;
         }
@@ -284,7 +284,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             hit.uv = found.uv;
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;
-            hit.point_error = gamma_bound(7) * (glm::abs(w0) + glm::abs(w1) + glm::abs(w2));
+            hit.point_error = gamma_bound(7) * (abs(w0) + abs(w1) + abs(w2));
             set_face_normal(hit, ray.direction, triangle_normal(t));
             break;
         }

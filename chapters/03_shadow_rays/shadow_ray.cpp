@@ -16,7 +16,7 @@ ShadowRay segment(const Vec3& origin, const Vec3& target, const Vec3& fallback_d
     const Vec3 direction = to_target / distance;
     // The light's surface is met at t ≈ D, computed from coordinates as large as |target| and |o|: leave out
     // their rounding as well as the relative margin.
-    const Real rounding = gamma_bound(8) * glm::dot(glm::abs(direction), glm::abs(target) + glm::abs(origin));
+    const Real rounding = gamma_bound(8) * glm::dot(abs(direction), abs(target) + abs(origin));
     return {Ray{origin, direction}, std::max(Real(0), (1 - kShadowEpsilon) * distance - rounding)};
 }
 

@@ -29,7 +29,7 @@ std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3&
     // EXERCISE(ch04.sample_quad_light)
     const Vec3 along_u = u.x * light.u, along_v = u.y * light.v;
     const Vec3 x = light.origin + along_u + along_v;
-    const Vec3 error = gamma_bound(3) * (glm::abs(light.origin) + glm::abs(along_u) + glm::abs(along_v));
+    const Vec3 error = gamma_bound(3) * (abs(light.origin) + abs(along_u) + abs(along_v));
     return toward(x, error, light.normal, light.area, light.radiance, p);
     // END EXERCISE
 }
@@ -50,7 +50,7 @@ Real quad_light_pdf(const QuadLight& light, const Vec3& p, const Vec3& wi) {
 std::optional<LightSample> sample_triangle_light(const TriangleLight& light, const Vec3& p, Vec2 u) {
     const Vec2 b = sample_uniform_triangle(u);
     const Vec3 w0 = (1 - b.x - b.y) * light.p0, w1 = b.x * light.p1, w2 = b.y * light.p2;
-    const Vec3 error = gamma_bound(7) * (glm::abs(w0) + glm::abs(w1) + glm::abs(w2));
+    const Vec3 error = gamma_bound(7) * (abs(w0) + abs(w1) + abs(w2));
     return toward(w0 + w1 + w2, error, light.normal, light.area, light.radiance, p);
 }
 

@@ -60,7 +60,7 @@ std::optional<LightSample> sample_sphere_light(const SphereLight& light, const V
     // bound.
     const Vec3 w = glm::normalize(p + t * wi - light.center);
     const Vec3 radial = light.radius * w;
-    const Vec3 error = gamma_bound(5) * (glm::abs(light.center) + glm::abs(radial));
+    const Vec3 error = gamma_bound(5) * (abs(light.center) + abs(radial));
     return LightSample{light.center + radial, wi, t, light.radiance, pdf, w, error};
 }
 

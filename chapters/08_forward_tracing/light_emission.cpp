@@ -11,10 +11,6 @@
 namespace rt {
 namespace {
 
-Vec3 abs3(const Vec3& v) {
-    return glm::abs(v);
-}
-
 // The cosine-weighted direction about n and the throughput β₀ = π Le / (P pdf_A) it gives.
 void emit_lambertian(EmissionSample& s, Vec2 u_direction) {
     const Vec3 local = sample_cosine_hemisphere(u_direction);
@@ -62,7 +58,7 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         const Vec3 a = u_point.x * q.u, b = u_point.y * q.v;
         s.origin.point = q.origin + a + b;
         // x = Q + a u + b v: three rounded operations per component.
-        s.origin.point_error = gamma_bound(3) * (abs3(q.origin) + abs3(a) + abs3(b));
+        s.origin.point_error = gamma_bound(3) * (abs(q.origin) + abs(a) + abs(b));
         s.origin.normal = q.normal;
         s.position_weight = q.radiance * (q.area / P);
         emit_lambertian(s, u_direction);
@@ -74,7 +70,7 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         const Vec2 bary = sample_uniform_triangle(u_point);
         const Vec3 a = (1 - bary.x - bary.y) * t.p0, b = bary.x * t.p1, c = bary.y * t.p2;
         s.origin.point = a + b + c;
-        s.origin.point_error = gamma_bound(7) * (abs3(a) + abs3(b) + abs3(c));
+        s.origin.point_error = gamma_bound(7) * (abs(a) + abs(b) + abs(c));
         s.origin.normal = t.normal;
         s.position_weight = t.radiance * (t.area / P);
         emit_lambertian(s, u_direction);
@@ -85,7 +81,7 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         const SphereLight& sp = spheres_[i];
         const Vec3 w = sample_uniform_sphere(u_point);
         s.origin.point = sp.center + sp.radius * w;
-        s.origin.point_error = gamma_bound(5) * (abs3(sp.center) + abs3(sp.radius * w));
+        s.origin.point_error = gamma_bound(5) * (abs(sp.center) + abs(sp.radius * w));
         s.origin.normal = w;
         s.position_weight = sp.radiance * (4 * kPi * sp.radius * sp.radius / P);
         emit_lambertian(s, u_direction);
