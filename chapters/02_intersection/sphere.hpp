@@ -66,8 +66,4 @@ inline std::optional<Real> intersect_sphere(const Ray& ray, const Sphere& sphere
 // Outward unit normal at a point p of the surface: (p − c) / r, renormalised.
 Vec3 sphere_normal(const Sphere& sphere, const Vec3& p);
 
-// Surface coordinates of the outward normal n: (phi / 2π, theta / π), phi = atan2(−n_z, n_x) + π,
-// theta = acos(−n_y); finite at the poles.
-Vec2 sphere_uv(const Vec3& n);
-
 }  // namespace rt

@@ -245,8 +245,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         hit.primitive = bounded_count_ + (found.slot - slots);
         const MaterialPlane& p = planes_[found.slot - slots];
         // Rebuilt from the plane's own coordinates, p = p0 + a T + b B: in the plane up to rounding.
-        hit.uv = plane_uv(p.plane, ray.at(found.t));
-        const Vec3 along_t = hit.uv.x * p.plane.tangent, along_b = hit.uv.y * p.plane.bitangent;
+        const Vec2 uv = plane_uv(p.plane, ray.at(found.t));
+        const Vec3 along_t = uv.x * p.plane.tangent, along_b = uv.y * p.plane.bitangent;
         hit.point = p.plane.point + along_t + along_b;
         hit.point_error = gamma_bound(5) * (abs(p.plane.point) + abs(along_t) + abs(along_b));
         hit.material = p.material;
@@ -265,13 +265,11 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 radial = s.radius * n;
             hit.point = s.center + radial;
             hit.point_error = gamma_bound(5) * (abs(s.center) + abs(radial));
-            hit.uv = sphere_uv(n);
             set_face_normal(hit, ray.direction, n);
             break;
         }
         case Kind::kQuad: {
             const Quad& q = quads_[p.index];
-            hit.uv = found.uv;
             const Vec3 along_u = found.uv.x * q.u, along_v = found.uv.y * q.v;
             hit.point = q.origin + along_u + along_v;
             hit.point_error = gamma_bound(3) * (abs(q.origin) + abs(along_u) + abs(along_v));
@@ -281,7 +279,6 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         case Kind::kTriangle: {
             const Triangle& t = triangles_[p.index];
             const Real b1 = found.uv.x, b2 = found.uv.y;
-            hit.uv = found.uv;
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;
             hit.point_error = gamma_bound(7) * (abs(w0) + abs(w1) + abs(w2));
