@@ -14,7 +14,7 @@ struct Hit {
     Vec3 normal{0, 0, 1};  // unit geometric normal, facing the side the ray came from: dot(normal, d) <= 0
     bool front_face = true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
     // No surface coordinates: no chapter has a texture to look up, and a sphere's (atan2 and acos per hit)
-    // cost the glass Cornell box 3 % of its time.
+    // cost the glass Cornell box about 2 % of its time.
     int material = -1;  // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
 };
