@@ -69,8 +69,7 @@ std::vector<std::string> shading_notes(const Scene& scene) {
             "the environment is seen as the background but lights nothing: it is a light source from " +
             lights_from + " on");
     }
-    std::vector<bool> used(scene.materials.size(), false);
-    for (const Shape& shape : scene.shapes) used[std::size_t(shape.material)] = true;
+    const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];

@@ -31,8 +31,7 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
 std::vector<std::string> material_notes(const rt::Scene& scene, const rt::EffectSet& simulated) {
     using namespace rt;
     std::vector<std::string> notes;
-    std::vector<bool> used(scene.materials.size(), false);
-    for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
+    const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];

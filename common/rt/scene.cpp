@@ -21,4 +21,10 @@ bool Scene::has_area_lights() const {
     return false;
 }
 
+std::vector<bool> Scene::used_materials() const {
+    std::vector<bool> used(materials.size(), false);
+    for (const Shape& s : shapes) used[std::size_t(s.material)] = true;
+    return used;
+}
+
 }  // namespace rt

@@ -107,6 +107,8 @@ struct Scene {
 
     const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }
     bool has_area_lights() const;
+    // used[i]: whether some shape is made of material i.
+    std::vector<bool> used_materials() const;
 };
 
 }  // namespace rt

@@ -507,8 +507,7 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
             scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
         }
     }
-    std::vector<bool> used(scene.materials.size(), false);
-    for (const Shape& s : scene.shapes) used[std::size_t(s.material)] = true;
+    const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (!used[i]) {
             Node(root, "materials." + printable(scene.materials[i].name), name)
