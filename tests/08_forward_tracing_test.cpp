@@ -32,23 +32,6 @@ RenderSettings settings_of(int width, int height, int spp, std::uint64_t seed, i
     return s;
 }
 
-std::uint64_t paths_of(const RenderSettings& s) {
-    return std::uint64_t(s.samples_per_pixel) * std::uint64_t(s.width) * std::uint64_t(s.height);
-}
-
-// A scene and everything both tracers need, at a given image size.
-struct Setup {
-    Scene scene;
-    World world;
-    LightSet lights;
-    PinholeCamera camera;
-    Setup(Scene s, int width, int height)
-        : scene(std::move(s)),
-          world(scene),
-          lights(collect_lights(scene)),
-          camera(make_pinhole_camera(scene.camera, width, height)) {}
-};
-
 Scene scene_from(const std::string& json) {
     return parse_scene(json, "test.json");
 }
@@ -96,14 +79,14 @@ MeanAndError batch_statistics(int batches, std::size_t values, Render&& render) 
 }
 
 // Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
-void check_forward_matches_reverse(const Setup& s, int spp) {
+void check_forward_matches_reverse(const StudyScene& s, int spp) {
     constexpr int kBatches = 16;
     const std::size_t values = s.camera.width * std::size_t(s.camera.height) * 3;
     const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
     const PathTracer path(s.world, s.scene, s.lights, reverse_options(EffectSet::all()));
     const auto forward = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
         const RenderSettings settings = settings_of(s.camera.width, s.camera.height, spp / kBatches, seed);
-        return render_light_tracing(light, settings, paths_of(settings)).render.image;
+        return render_light_tracing(light, settings, paths_per_image(settings)).render.image;
     });
     const auto reverse = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
         return render_paths(path, s.camera,
@@ -212,7 +195,7 @@ TEST_CASE("Connecting light paths to the pinhole converges to chapter 06's image
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
           "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    const Setup s(load_scene(scene_path("ch06_default.json")), 16, 16);
+    const StudyScene s(load_scene(scene_path("ch06_default.json")), 16, 16);
     check_forward_matches_reverse(s, 1024);
 }
 
@@ -222,7 +205,7 @@ TEST_CASE(
     "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
     "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch08.connect]"
     "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    const Setup s(scene_from(kPointLightRoom), 12, 12);
+    const StudyScene s(scene_from(kPointLightRoom), 12, 12);
     check_forward_matches_reverse(s, 1024);
 }
 
@@ -237,7 +220,7 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     Scene without = with;
     without.shapes.pop_back();  // the sphere is the last shape
     REQUIRE(std::holds_alternative<SphereShape>(with.shapes.back().geometry));
-    const Setup a(with, 8, 8), b(without, 8, 8);
+    const StudyScene a(with, 8, 8), b(without, 8, 8);
     const LightTracer ta(a.world, a.scene, a.lights, a.camera, forward_options(EffectSet::all()));
     const LightTracer tb(b.world, b.scene, b.lights, b.camera, forward_options(EffectSet::all()));
     // The pixels that see the sphere anywhere (a 6×6 grid of camera rays per pixel).
@@ -254,7 +237,7 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     const std::size_t values = 8 * 8 * 3;
     auto render = [](const LightTracer& t, std::uint64_t seed) {
         const RenderSettings settings = settings_of(8, 8, 512, seed);
-        return render_light_tracing(t, settings, paths_of(settings)).render.image;
+        return render_light_tracing(t, settings, paths_per_image(settings)).render.image;
     };
     const auto ma = batch_statistics(kBatches, values, [&](std::uint64_t seed) { return render(ta, seed); });
     const auto mb =
@@ -285,7 +268,7 @@ TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through th
           "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     // A lamp of radiance 1, larger than the view (half-height 10 tan 20° = 3.6), 10 units in front of the
     // camera: every pixel is 1.
-    const Setup s(scene_from(R"({
+    const StudyScene s(scene_from(R"({
       "camera": {"from": [0, 0, 10], "at": [0, 0, 0], "vfov": 40},
       "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]}},
       "shapes": [{"type": "quad", "origin": [-5, -5, 0], "u": [10, 0, 0], "v": [0, 10, 0],
@@ -313,7 +296,7 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
           "[ch08][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch05.termination][ex:ch08.connect][ex:ch08.project_direction]") {
     SECTION("the light faces away from everything") {
-        const Setup s(scene_from(R"({
+        const StudyScene s(scene_from(R"({
           "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
           "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [4, 4, 4]},
                         "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
@@ -329,7 +312,7 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
         CHECK(r.render.rays[RayKind::kCamera] == 0);     // ...and no vertex could be joined to the camera
     }
     SECTION("a wall hides every lit surface from the camera") {
-        const Setup s(scene_from(R"({
+        const StudyScene s(scene_from(R"({
           "camera": {"from": [0, 1, 5], "at": [0, 1, 0]},
           "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [4, 4, 4]},
                         "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
@@ -353,7 +336,7 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
           "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const Scene cornell = load_scene(scene_path("ch06_default.json"));
     SECTION("every path leaves its light once: one shadow-kind ray per path; no mirror, no reflection rays") {
-        const Setup s(cornell, 8, 8);
+        const StudyScene s(cornell, 8, 8);
         const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 5000);
         CHECK(r.render.samples == 5000);
@@ -367,7 +350,7 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
     SECTION("a scene without lights traces nothing") {
         Scene dark = cornell;
         for (Material& m : dark.materials) m.emission = Color(0);
-        const Setup s(dark, 8, 8);
+        const StudyScene s(dark, 8, 8);
         const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 1000);
         CHECK(r.render.rays.total() == 0);
@@ -376,7 +359,7 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
     SECTION("a scene that calls only for direct light: depth 1, no indirect rays") {
         Scene direct = cornell;
         direct.effects = EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect};
-        const Setup s(direct, 8, 8);
+        const StudyScene s(direct, 8, 8);
         const LightTracerOptions options = forward_options(needed(s.scene));
         CHECK_FALSE(options.indirect);
         const LightTracer tracer(s.world, s.scene, s.lights, s.camera, options);
@@ -388,14 +371,14 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
         CHECK(r.render.rays[RayKind::kCamera] > 5000);
     }
     SECTION("the mirror scene bounces off its mirror: reflection rays, no refraction rays") {
-        const Setup s(load_scene(scene_path("ch08_mirror.json")), 8, 8);
+        const StudyScene s(load_scene(scene_path("ch08_mirror.json")), 8, 8);
         const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 20000);
         CHECK(r.render.rays[RayKind::kReflection] > 0);
         CHECK(r.render.rays[RayKind::kRefraction] == 0);
     }
     SECTION("the glass sphere refracts: refraction rays; without the refraction effect, none") {
-        const Setup s(load_scene(scene_path("ch08_default.json")), 8, 8);
+        const StudyScene s(load_scene(scene_path("ch08_default.json")), 8, 8);
         const LightTracer glass(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
         const SplatResult r = render_light_tracing(glass, settings_of(8, 8, 16, 1), 20000);
         CHECK(r.render.rays[RayKind::kRefraction] > 0);
@@ -413,7 +396,7 @@ TEST_CASE("The default scene renders finite, plausible and identical for 1, 2 an
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
           "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    const Setup s(load_scene(scene_path("ch08_default.json")), 24, 24);
+    const StudyScene s(load_scene(scene_path("ch08_default.json")), 24, 24);
     const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
     // 24 × 24 × 96 paths: several chunks, so threads really share the work.
     const std::uint64_t paths = 24 * 24 * 96;
@@ -448,7 +431,7 @@ TEST_CASE("Time to an RMSE is read off a log-log curve, and extrapolated with RM
 
 TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing and never NaN",
           "[ch08][stability][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    const Setup s(load_scene(scene_path("ch06_default.json")), 8, 8);
+    const StudyScene s(load_scene(scene_path("ch06_default.json")), 8, 8);
     const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
     Image film(8, 8);
     RayCounts rays;

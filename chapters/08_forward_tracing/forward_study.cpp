@@ -28,24 +28,7 @@ RenderSettings study_settings(const StudyOptions& o, int spp) {
     return s;
 }
 
-std::uint64_t paths_for(const RenderSettings& s) {
-    return std::uint64_t(s.samples_per_pixel) * std::uint64_t(s.width) * std::uint64_t(s.height);
-}
-
-// Everything one scene needs for both tracers.
-struct Setup {
-    Scene scene;
-    World world;
-    LightSet lights;
-    PinholeCamera camera;
-    explicit Setup(const char* file, int size)
-        : scene(load_scene(scene_path(file))),
-          world(scene),
-          lights(collect_lights(scene)),
-          camera(make_pinhole_camera(scene.camera, size, size)) {}
-};
-
-Reference reference_of(const Setup& s, const StudyOptions& o) {
+Reference reference_of(const StudyScene& s, const StudyOptions& o) {
     std::printf("  converged reference (chapter 06, MIS, %d spp) ...", o.reference_spp);
     std::fflush(stdout);
     const Reference ref = converged_reference(s.world, s.scene, s.lights, reverse_options(EffectSet::all()),
@@ -55,7 +38,7 @@ Reference reference_of(const Setup& s, const StudyOptions& o) {
     return ref;
 }
 
-void fractions(const Setup& s, const StudyOptions& o) {
+void fractions(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n1. Light paths that ever reach the camera (%s, %dx%d, %llu light paths each)\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size,
                 static_cast<unsigned long long>(o.fraction_paths));
@@ -91,7 +74,7 @@ struct TimedRmse {
     double seconds;
 };
 
-void time_to_same_rmse(const Setup& s, const StudyOptions& o) {
+void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n2. Time to the same RMSE as chapter 06's reverse path tracer (%s, %dx%d, %d threads)\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size, o.threads);
     const Reference ref = reference_of(s, o);
@@ -100,7 +83,7 @@ void time_to_same_rmse(const Setup& s, const StudyOptions& o) {
     const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
     for (int spp : {4, 16, 64, 256}) {
         const RenderSettings settings = study_settings(o, spp);
-        const SplatResult r = render_light_tracing(light, settings, paths_for(settings));
+        const SplatResult r = render_light_tracing(light, settings, paths_per_image(settings));
         forward.push_back({spp, compare(r.render.image, ref.image).rmse, r.render.seconds});
         fs.push_back(forward.back().seconds);
         fr.push_back(forward.back().rmse);
@@ -139,7 +122,7 @@ void time_to_same_rmse(const Setup& s, const StudyOptions& o) {
 // The converged image of a scene with mirrors and glass: chapter 07's path tracer, renders A and B of
 // spp / 2 each (seeds 1001, 1002), cached as <cache>/ch08_reference_<stem>_<W>x<H>_<spp>spp.pfm (the mean)
 // and ..._half.pfm (A); its own MSE is estimated as mean((A − B)²) / 4.
-Reference glass_reference(const Setup& s, const StudyOptions& o) {
+Reference glass_reference(const StudyScene& s, const StudyOptions& o) {
     namespace fs = std::filesystem;
     const std::string stem = "ch08_reference_" + fs::path(s.scene.file).stem().string() + "_" +
                              std::to_string(o.size) + "x" + std::to_string(o.size) + "_" +
@@ -184,7 +167,7 @@ Reference glass_reference(const Setup& s, const StudyOptions& o) {
     return ref;
 }
 
-void wins_and_losses(const Setup& s, const StudyOptions& o) {
+void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n3. Where forward tracing wins and loses (%s, %dx%d): RMSE per region of the image\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size);
     const Reference ref = glass_reference(s, o);
@@ -195,7 +178,7 @@ void wins_and_losses(const Setup& s, const StudyOptions& o) {
     const LightTracer caustic_tracer(s.world, s.scene, s.lights, s.camera, caustic_options);
     const RenderSettings caustic_settings = study_settings(o, 64);
     const Image caustic =
-        render_light_tracing(caustic_tracer, caustic_settings, paths_for(caustic_settings)).render.image;
+        render_light_tracing(caustic_tracer, caustic_settings, paths_per_image(caustic_settings)).render.image;
     const std::size_t n = ref.image.pixel_count();
     std::vector<std::uint8_t> mirror(n, 0), lit(n, 0), rest(n, 0);
     for (int y = 0; y < o.size; ++y) {
@@ -233,7 +216,7 @@ void wins_and_losses(const Setup& s, const StudyOptions& o) {
     const BsdfPathTracer path(s.world, s.scene, s.lights, BsdfPathOptions{});
     for (int spp : {16, 64}) {
         const RenderSettings settings = study_settings(o, spp);
-        const SplatResult f = render_light_tracing(light, settings, paths_for(settings));
+        const SplatResult f = render_light_tracing(light, settings, paths_per_image(settings));
         const RenderResult r = render_bsdf_paths(path, s.camera, settings);
         for (const auto& [name, image, seconds] :
              {std::tuple{"forward (connect)", &f.render.image, f.render.seconds},
@@ -294,13 +277,20 @@ double time_to_rmse(const std::vector<double>& seconds, const std::vector<double
 void run_forward_study(const StudyOptions& options) {
     if (!std::filesystem::is_directory(options.cache))
         throw InputError("--cache: " + options.cache + ": not a folder");
-    const Setup cornell("ch06_default.json", options.size);
+    const StudyScene cornell(load_scene(scene_path("ch06_default.json")), options.size, options.size);
     fractions(cornell, options);
     time_to_same_rmse(cornell, options);
     for (const char* file : {"ch08_default.json", "ch08_mirror.json"}) {
-        const Setup scene(file, options.size);
+        const StudyScene scene(load_scene(scene_path(file)), options.size, options.size);
         wins_and_losses(scene, options);
     }
 }
+
+
+StudyScene::StudyScene(Scene s, int width, int height)
+    : scene(std::move(s)),
+      world(scene),
+      lights(collect_lights(scene)),
+      camera(make_pinhole_camera(scene.camera, width, height)) {}
 
 }  // namespace rt

@@ -16,6 +16,7 @@
 
 #include "light_tracer.hpp"
 #include "path_tracer.hpp"
+#include "world.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/image.hpp"
 
@@ -35,6 +36,15 @@ struct StudyOptions {
     std::string csv;          // the time-to-RMSE table, when not empty
     int threads = 0;
     std::uint64_t seed = 1;
+};
+
+// A scene and what both tracers need to render it: its World, its lights and a width × height pinhole camera.
+struct StudyScene {
+    Scene scene;
+    World world;
+    LightSet lights;
+    PinholeCamera camera;
+    StudyScene(Scene s, int width, int height);
 };
 
 // RMSE over the pixels where mask is true (all channels).

@@ -162,4 +162,9 @@ SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings
                               });
 }
 
+std::uint64_t paths_per_image(const RenderSettings& settings) {
+    return std::uint64_t(settings.samples_per_pixel) * std::uint64_t(settings.width) *
+           std::uint64_t(settings.height);
+}
+
 }  // namespace rt

@@ -93,5 +93,7 @@ class LightTracer {
 // N light paths with `tracer` (deterministic for any thread count, see splat_render.hpp).
 SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings& settings,
                                  std::uint64_t path_count);
+// The light paths that match settings' camera samples one for one: spp × width × height.
+std::uint64_t paths_per_image(const RenderSettings& settings);
 
 }  // namespace rt

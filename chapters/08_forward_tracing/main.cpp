@@ -127,8 +127,7 @@ int main(int argc, char** argv) {
         options.aperture_radius = aperture;
         options.caustics_only = caustics_only;
         const LightTracer tracer(world, scene, lights, camera, options);
-        const std::uint64_t paths = std::uint64_t(settings.samples_per_pixel) *
-                                    std::uint64_t(settings.width) * std::uint64_t(settings.height);
+        const std::uint64_t paths = paths_per_image(settings);
         const SplatResult r = render_light_tracing(tracer, settings, paths);
         run.result = r.render;
         char line[200];
