@@ -1,7 +1,7 @@
 // Four quads tested at once. A ray inside a room of big quads (the Cornell box) must test most of its walls:
 // there the BVH has little to cull, and the quad test itself is the cost. A QuadPacket holds four quads
 // coordinate by coordinate, so that each step of intersect_quad's equations (quad.hpp) runs on all four in one
-// SIMD instruction (std::experimental::simd, part of GCC's and Clang's standard library), and one branch asks
+// SIMD instruction (std::experimental::simd, from GCC's standard library, libstdc++), and one branch asks
 // whether any of them is hit. Each lane does intersect_quad's operations in intersect_quad's order, so it
 // rounds the same way: the tests check that a packet and intersect_quad give the same hit, bit for bit.
 #pragma once
