@@ -21,6 +21,7 @@
 #include "light_picker.hpp"
 #include "mis.hpp"
 #include "path_tracer.hpp"
+#include "render_scene.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
@@ -255,12 +256,12 @@ std::vector<Vec3> five_outgoing() {
 }
 
 // The BRDFs whose samplers are tested: Lambert, and the two lobes at roughness 0.2 and 0.5 (e = 48 and 6).
-std::vector<std::pair<std::string, Brdf>> sampled_brdfs() {
-    return {{"lambert", LambertBrdf{Color(0.7f)}},
-            {"glossy 0.2", GlossyBrdf{Color(0.7f), phong_exponent(0.2f)}},
-            {"glossy 0.5", GlossyBrdf{Color(0.7f), phong_exponent(0.5f)}},
-            {"retro 0.2", RetroreflectiveBrdf{Color(0.7f), phong_exponent(0.2f)}},
-            {"retro 0.5", RetroreflectiveBrdf{Color(0.7f), phong_exponent(0.5f)}}};
+std::vector<std::pair<std::string, std::shared_ptr<const Bsdf>>> sampled_brdfs() {
+    return {{"lambert", std::make_shared<LambertBrdf>(Color(0.7f))},
+            {"glossy 0.2", std::make_shared<GlossyBrdf>(Color(0.7f), phong_exponent(0.2f))},
+            {"glossy 0.5", std::make_shared<GlossyBrdf>(Color(0.7f), phong_exponent(0.5f))},
+            {"retro 0.2", std::make_shared<RetroreflectiveBrdf>(Color(0.7f), phong_exponent(0.2f))},
+            {"retro 0.5", std::make_shared<RetroreflectiveBrdf>(Color(0.7f), phong_exponent(0.5f))}};
 }
 
 // The solid-angle density with which sample_triangle_light picks wi from p: d² / (cos θ_l A) where the ray
@@ -406,10 +407,10 @@ Scene furnace_scene(Real albedo) {
 
 RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int size, int spp,
                           std::uint64_t seed, int threads = 1) {
-    const World world(scene);
+    const RenderScene prepared(scene, EffectSet::all());
     PathOptions options;
     options.strategy = strategy;
-    const PathTracer tracer(world, scene, collect_lights(scene), options);
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const RenderSettings settings{size, size, spp, seed, threads, ProgressStyle::kNone};
     return render_paths(tracer, camera, settings);
@@ -482,15 +483,16 @@ TEST_CASE(
     "integrates to 1, to at most 1 above the surface",
     "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]") {
     std::uint64_t seed = 200;
-    for (const auto& [name, brdf] : sampled_brdfs()) {
+    for (const auto& [name, owner] : sampled_brdfs()) {
+        const Bsdf& brdf = *owner;
         for (const Vec3& wo : five_outgoing()) {
             INFO(name << ", wo.z = " << wo.z);
-            const Brdf& b = brdf;
+            const Bsdf& b = brdf;
             // The lobes are sampled whole: a direction below the surface carries f = 0 (the light the lobe
             // loses), so over the sphere the pdf integrates to 1 and over the upper hemisphere to at most 1.
             const ChiSquare r = test_directions(
                 [&](Vec2 u) {
-                    const BrdfSample s = sample(b, wo, kUp, u);
+                    const BsdfSample s = sample(b, wo, kUp, u);
                     return Drawn{s.wi, double(s.pdf)};
                 },
                 [&](const Vec3& wi) { return double(pdf(b, wo, wi, kUp)); }, ++seed);
@@ -544,11 +546,12 @@ TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direc
           "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.retroreflective]"
           "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
     Pcg32 rng(400, 1);
-    for (const auto& [name, brdf] : sampled_brdfs()) {
+    for (const auto& [name, owner] : sampled_brdfs()) {
+        const Bsdf& brdf = *owner;
         for (const Vec3& wo : five_outgoing()) {
             INFO(name << ", wo.z = " << wo.z);
             for (int s = 0; s < 2000; ++s) {
-                const BrdfSample bs = sample(brdf, wo, kUp, rng.next_vec2());
+                const BsdfSample bs = sample(brdf, wo, kUp, rng.next_vec2());
                 REQUIRE(bs.pdf == Approx(pdf(brdf, wo, bs.wi, kUp)).epsilon(1e-5));
                 REQUIRE(bs.f == eval(brdf, wo, bs.wi, kUp));
             }
@@ -576,9 +579,8 @@ TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direc
         REQUIRE(ls);
         const auto hit = world.intersect(Ray{p, ls->wi});
         REQUIRE(hit);
-        const Material& m = cornell.materials[std::size_t(hit->material)];
-        if (!m.emissive()) continue;  // blocked by the box
-        CHECK(picker.pdf(p, ls->wi, *hit, m.emission) == Approx(ls->pdf).epsilon(1e-3));
+        if (hit->light < 0) continue;  // blocked by the box
+        CHECK(picker.pdf(p, ls->wi, *hit) == Approx(ls->pdf).epsilon(1e-3));
         ++checked;
     }
     CHECK(checked > 1000);
@@ -587,13 +589,13 @@ TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direc
 TEST_CASE("Lambert: f cos / pdf equals the albedo for every sample",
           "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch06.uniform_sphere]") {
     const Color albedo{0.2f, 0.5f, 0.9f};
-    const Brdf lambert = LambertBrdf{albedo};
+    const LambertBrdf lambert{albedo};
     Pcg32 rng(500, 1);
     for (int s = 0; s < 100000; ++s) {
         const Vec3 n = random_unit(rng);
         Vec3 wo = random_unit(rng);
         if (glm::dot(wo, n) < 0) wo = -wo;
-        const BrdfSample bs = sample(lambert, wo, n, rng.next_vec2());
+        const BsdfSample bs = sample(lambert, wo, n, rng.next_vec2());
         const Real cos_i = glm::dot(bs.wi, n);
         if (!(cos_i > 0)) continue;  // a direction rounded onto the horizon carries nothing
         const Color weight = bs.f * cos_i / bs.pdf;
@@ -624,12 +626,13 @@ TEST_CASE(
             }
         }
     }
-    for (const auto& [name, brdf] : sampled_brdfs()) {
+    for (const auto& [name, owner] : sampled_brdfs()) {
+        const Bsdf& brdf = *owner;
         for (const Vec3& wo : five_outgoing()) {
             for (Real a : ends) {
                 for (Real b : ends) {
                     INFO(name << ", wo.z = " << wo.z << " at u = (" << a << ", " << b << ")");
-                    const BrdfSample s = sample(brdf, wo, kUp, Vec2(a, b));
+                    const BsdfSample s = sample(brdf, wo, kUp, Vec2(a, b));
                     CHECK(is_finite(s.wi));
                     CHECK(glm::length(s.wi) == Approx(1).epsilon(1e-5));
                     CHECK(s.pdf > 0);

@@ -10,7 +10,9 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "bsdf_path_tracer.hpp"
+#include "path_tracer.hpp"
+#include "refraction_materials.hpp"
+#include "render_scene.hpp"
 #include "bsdf_render.hpp"
 #include "camera.hpp"
 #include "dielectric.hpp"
@@ -295,9 +297,10 @@ TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes every
 // where every sample is).
 void check_furnace(const char* file) {
     const Scene scene = load_scene(scene_path(file));
-    const World world(scene);
-    const LightSet lights = collect_lights(scene);
-    const BsdfPathTracer tracer(world, scene, lights, path_options_for(needed(scene)));
+    const RenderScene prepared(scene, needed(scene), refraction_materials());
+    PathOptions options;
+    options.simulated = needed(scene);
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     const int size = 32, spp = 256;
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     RayCounts rays;
@@ -375,7 +378,7 @@ TEST_CASE("A scene without a dielectric traces no refraction rays",
     CHECK(used == Renderer::kPaths);
     CHECK(r.rays[RayKind::kRefraction] == 0);
     // The glass tracer itself, given that scene, traces none either.
-    const RenderResult g = render_with(Renderer::kGlass, scene, needed(scene), small_settings(24, 4), {});
+    const RenderResult g = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
     CHECK(g.rays[RayKind::kRefraction] == 0);
     CHECK(g.rays[RayKind::kIndirect] > 0);
 }
@@ -394,16 +397,24 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
     CHECK(r.rays.total() == r.rays[RayKind::kCamera] + r.rays[RayKind::kShadow]);
 }
 
-TEST_CASE("Glass without the indirect effect: refraction rays, no indirect rays",
+TEST_CASE("Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
           "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
-    CHECK(used == Renderer::kGlass);
+    CHECK(used == Renderer::kPaths);
     CHECK(r.rays[RayKind::kRefraction] > 0);
-    CHECK(r.rays[RayKind::kIndirect] == 0);
+    // The one ray that leaves a path's first diffuse vertex is MIS's BSDF sample of the direct light (it
+    // counts the lamp it meets, weighted): at most one per camera ray, and the path ends where it lands.
+    CHECK(r.rays[RayKind::kIndirect] > 0);
+    CHECK(r.rays[RayKind::kIndirect] <= r.rays[RayKind::kCamera]);
+    // The same scene with the light strategy (next-event estimation alone) needs no such ray.
+    PathOptions light;
+    light.strategy = SamplingStrategy::kLight;
+    const RenderResult l = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), light);
+    CHECK(l.rays[RayKind::kIndirect] == 0);
 }
 
 TEST_CASE("A glass scene without lights traces no shadow rays",
@@ -412,7 +423,7 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
           "[ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
-    const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(24, 4), {});
+    const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
     CHECK(r.rays[RayKind::kShadow] == 0);
     CHECK(r.rays[RayKind::kRefraction] > 0);
     CHECK(r.image.mean() == 0);
@@ -432,7 +443,7 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
     const RenderResult a = render_scene(scene, settings, &used);
     settings.threads = 1;
     const RenderResult b = render_scene(scene, settings);
-    CHECK(used == Renderer::kGlass);
+    CHECK(used == Renderer::kPaths);
     CHECK(a.image.all_finite());
     CHECK(a.image.mean() > 0.1);
     CHECK(a.image.mean() < 2);
@@ -473,11 +484,11 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");
     RenderSettings settings = small_settings(16, 512);
-    BsdfPathOptions nee, hits;
-    hits.next_event = false;
-    const RenderResult a = render_with(Renderer::kGlass, scene, needed(scene), settings, nee);
+    PathOptions nee, hits;
+    hits.strategy = SamplingStrategy::kBrdf;
+    const RenderResult a = render_with(Renderer::kPaths, scene, needed(scene), settings, nee);
     settings.seed = 8;
-    const RenderResult b = render_with(Renderer::kGlass, scene, needed(scene), settings, hits);
+    const RenderResult b = render_with(Renderer::kPaths, scene, needed(scene), settings, hits);
     CHECK(a.rays[RayKind::kShadow] > 0);
     CHECK(b.rays[RayKind::kShadow] == 0);
     // The image means (256 pixels × 512 paths each): within 3 % (the light-hitting estimate is the noisier).
@@ -497,7 +508,7 @@ TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera i
       "shapes": [{"type": "sphere", "center": [0.1, -0.2, 0.05], "radius": 1, "material": "glass"}],
       "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
     })");
-    const RenderResult r = render_with(Renderer::kGlass, scene, needed(scene), small_settings(16, 16), {});
+    const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(16, 16), {});
     for (const Color& c : r.image.pixels()) CHECK(c.g == Approx(2.25).epsilon(1e-5));
     CHECK(r.rays[RayKind::kRefraction] > 0);
 }

@@ -17,6 +17,11 @@ struct Hit {
     // cost the glass Cornell box about 2 % of its time.
     int material = -1;  // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
+    // The light this surface is: k for the k-th primitive, in scene order, whose material emits (a box
+    // counts its 6 faces, a mesh its triangles); −1 for a surface that emits nothing and for an emissive
+    // plane, which has infinite area and is no light a sampler can draw from. Chapter 04's LightSet numbers
+    // its lights the same way, so a path that hits a light knows which one without searching.
+    std::int32_t light = -1;
 };
 
 // Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.

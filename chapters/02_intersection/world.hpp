@@ -68,8 +68,9 @@ class World {
         int lane = 0;
     };
 
-    void add(const Shape& shape);
-    void add_primitive(Kind kind, std::uint32_t index, int material);
+    // Adds the primitives of `shape`; `emissive`: its material emits, so each bounded primitive is a light.
+    void add(const Shape& shape, bool emissive);
+    void add_primitive(Kind kind, std::uint32_t index, int material, bool emissive);
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
     std::vector<Aabb> all_bounds() const;
@@ -86,6 +87,8 @@ class World {
     std::vector<QuadPacket> packets_;
     std::vector<Primitive> quad_primitives_;  // with packets: quad i's own record (material, number)
     std::vector<Primitive> primitives_;       // the bounded ones; planes are numbered after them
+    std::vector<std::int32_t> light_of_primitive_;  // by Primitive::id: Hit::light
+    std::int32_t light_count_ = 0;                  // emissive bounded primitives so far
     std::uint32_t bounded_count_ = 0;          // spheres, quads and triangles
     std::vector<MaterialPlane> planes_;
     Bvh bvh_;

@@ -7,17 +7,6 @@
 
 namespace rt {
 
-Color shading_albedo(const Material& material) {
-    switch (material.type) {
-        case MaterialType::kMirror:
-            return material.reflectance;
-        case MaterialType::kDielectric:
-            return Color(Real(0.73));
-        default:
-            return material.albedo;
-    }
-}
-
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng) {
     const Vec2 film = pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, spp, rng.next_vec2());
     return camera_ray(camera, film.x, film.y);
@@ -26,7 +15,7 @@ Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg3
 Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
                       RayCounts& rays) {
     if (!options.direct) return Color(0);
-    const Color albedo = shading_albedo(scene.materials[std::size_t(hit.material)]);
+    const Color albedo = scene.materials[std::size_t(hit.material)].stand_in_albedo();
     if (albedo == Color(0)) return Color(0);
     Color irradiance(0);
     for (const PointLight& light : scene.point_lights) {

@@ -23,10 +23,6 @@ struct ShadowOptions {
     bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
 };
 
-// The albedo a surface is shaded with here: diffuse, glossy and retro-reflective materials by their albedo,
-// mirrors by their reflectance, dielectrics as a grey 0.73 (each is shaded as Lambertian before its chapter).
-Color shading_albedo(const Material& material);
-
 // The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);
 

@@ -21,23 +21,19 @@ LightSampler light_sampler_from_string(std::string_view name) {
     throw InputError("--light-sampler: expected independent or stratified, got '" + std::string(name) + "'");
 }
 
-DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options)
-    : world_(world), scene_(scene), lights_(std::move(lights)), options_(options) {
+DirectLighting::DirectLighting(const World& world, const MaterialTable& materials, LightSet lights,
+                               DirectOptions options)
+    : world_(world), materials_(materials), lights_(std::move(lights)), options_(options) {
     options_.shadow_samples = std::max(1, options_.shadow_samples);
-    const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
-    for (const Material& m : scene.materials) {
-        const Brdf b = brdf_of(m, stand_in);
-        brdfs_.push_back(options_.glossy ? b : without_lobes(b));
-    }
 }
 
-Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& s,
+Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Bsdf& brdf, const LightSample& s,
                                    RayCounts& rays) const {
     const Real cos_i = glm::dot(s.wi, hit.normal);
     if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.radiance)) return Color(0);
     const Color f = eval(brdf, wo, s.wi, hit.normal);
     if (is_black(f)) return Color(0);
-    if (options_.shadows) {
+    if (options_.simulates(Effect::kShadows)) {
         const bool lit = s.on_surface() ? visible(world_, hit, SurfacePoint{s.point, s.normal, s.point_error},
                                                   options_.offset, rays)
                                         : visible(world_, hit, s.point, options_.offset, rays);
@@ -57,10 +53,10 @@ Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
 
 Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
     // EXERCISE(ch04.direct_light)
-    const Brdf& b = brdf(hit.material);
+    const Bsdf& b = materials_.bsdf(hit.material, hit.front_face);
     // A light sample never falls on a delta BRDF's one direction, and a black BRDF reflects nothing: neither
     // needs a single shadow ray.
-    if (!options_.direct || is_delta(b) || is_black(b)) return Color(0);
+    if (!options_.simulates(Effect::kDirect) || is_delta(b) || is_black(b)) return Color(0);
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
     Color sum(0);
@@ -104,7 +100,7 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
             if (!(cos_i > 0)) continue;
             const Color f = eval(b, wo, wi, hit.normal);
             if (is_black(f)) continue;
-            if (options_.shadows) {
+            if (options_.simulates(Effect::kShadows)) {
                 rays.add(RayKind::kShadow);
                 if (world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity)) continue;
             }
@@ -118,10 +114,8 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
 Color DirectLighting::radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const {
     const auto hit = world_.intersect(ray);
     if (!hit) return lights_.environment ? lights_.environment->radiance : Color(0);
-    const Material& m = scene_.materials[std::size_t(hit->material)];
     // Emission is one-sided: the front of a quad (u × v), the outside of a sphere.
-    const Color emitted = hit->front_face ? m.emission : Color(0);
-    return emitted + direct(*hit, -ray.direction, rng, rays);
+    return materials_.emission(hit->material, hit->front_face) + direct(*hit, -ray.direction, rng, rays);
 }
 
 }  // namespace rt

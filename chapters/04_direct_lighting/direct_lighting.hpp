@@ -8,16 +8,15 @@
 #pragma once
 
 #include <string_view>
-#include <vector>
 
-#include "brdf.hpp"
+#include "bsdf.hpp"
 #include "hit.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
-#include "ray_offset.hpp"
+#include "material_table.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
-#include "rt/scene.hpp"
+#include "trace_options.hpp"
 #include "world.hpp"
 
 namespace rt {
@@ -30,20 +29,18 @@ std::string_view to_string(LightSampler sampler);
 // "independent" or "stratified"; throws InputError for any other name.
 LightSampler light_sampler_from_string(std::string_view name);
 
-struct DirectOptions {
+// Effects read: "direct" (sample the lights at all), "shadows" (trace shadow rays; without it every light
+// counts as visible). The material table holds what "glossy" changes.
+struct DirectOptions : TraceOptions {
     int shadow_samples = 1;  // N: shadow rays per area light (and environment) per hit
     LightSampler light_sampler = LightSampler::kStratified;
-    bool direct = true;   // effect "direct": sample the lights at all
-    bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
-    bool glossy = true;   // effect "glossy": false shades glossy and retro-reflective lobes as Lambert
-    RayOffset offset{};
-    Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo until chapter 07
 };
 
 // What shading needs, built once per render.
 class DirectLighting {
   public:
-    DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options);
+    // `world` and `materials` must outlive it.
+    DirectLighting(const World& world, const MaterialTable& materials, LightSet lights, DirectOptions options);
 
     // The direct term at `hit` toward wo (unit, pointing away from the surface, on the side of hit.normal).
     Color direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const;
@@ -51,7 +48,7 @@ class DirectLighting {
     // environment when the ray leaves the scene.
     Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;
 
-    const Brdf& brdf(int material) const { return brdfs_[std::size_t(material)]; }
+    const MaterialTable& materials() const { return materials_; }
     const LightSet& lights() const { return lights_; }
     const DirectOptions& options() const { return options_; }
     const World& world() const { return world_; }
@@ -60,14 +57,13 @@ class DirectLighting {
     // The point of [0, 1)² that light sample j of N is warped from.
     Vec2 light_point(int j, Pcg32& rng) const;
     // One light sample's contribution f L cos / pdf, with its shadow ray; 0 without tracing when it is 0.
-    Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& sample,
+    Color contribution(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const LightSample& sample,
                        RayCounts& rays) const;
 
     const World& world_;
-    const Scene& scene_;
+    const MaterialTable& materials_;
     LightSet lights_;
     DirectOptions options_;
-    std::vector<Brdf> brdfs_;  // one per scene material
 };
 
 }  // namespace rt

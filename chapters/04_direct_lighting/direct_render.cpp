@@ -14,7 +14,7 @@ RenderResult render_direct(const DirectLighting& shading, const PinholeCamera& c
     });
 }
 
-std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
+std::vector<ShadowStudyRow> shadow_study(const World& world, const MaterialTable& materials, const LightSet& lights,
                                          DirectOptions options, const PinholeCamera& camera,
                                          RenderSettings settings, const Image& exact,
                                          const std::vector<LightSampler>& samplers,
@@ -25,7 +25,7 @@ std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene,
         for (int n : shadow_samples) {
             options.light_sampler = sampler;
             options.shadow_samples = n;
-            const DirectLighting shading(world, scene, lights, options);
+            const DirectLighting shading(world, materials, lights, options);
             const RenderResult r = render_direct(shading, camera, settings, FilmPoints::kCentre);
             const ErrorMetrics e = compare(r.image, exact);
             rows.push_back(

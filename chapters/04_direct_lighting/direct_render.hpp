@@ -29,7 +29,7 @@ struct ShadowStudyRow {
 };
 
 // The analytic scene at 1 sample per pixel (pixel centres) with N shadow samples, for each sampler and N.
-std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
+std::vector<ShadowStudyRow> shadow_study(const World& world, const MaterialTable& materials, const LightSet& lights,
                                          DirectOptions options, const PinholeCamera& camera,
                                          RenderSettings settings, const Image& exact,
                                          const std::vector<LightSampler>& samplers,

@@ -42,14 +42,17 @@ std::string describe(const TerminationSettings& t) {
 std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
                                        const PinholeCamera& camera, const RenderSettings& settings,
                                        const std::vector<TerminationSettings>& rules,
-                                       const DirectOptions& direct) {
-    const DirectLighting shading(world, scene, collect_lights(scene), direct);
+                                       DirectOptions direct) {
+    // The furnace's light reaches the camera after any number of bounces: indirect light always.
+    direct.simulated.insert(Effect::kIndirect);
+    const MaterialTable materials(scene, direct.simulated);
+    const DirectLighting shading(world, materials, collect_lights(scene), direct);
     const Vec3d exact3 = furnace_radiance(furnace);
     const double exact = (exact3.x + exact3.y + exact3.z) / 3;
     const Image exact_image = furnace_image(furnace, settings.width, settings.height);
     std::vector<DepthStudyRow> rows;
     for (const TerminationSettings& termination : rules) {
-        const RecursiveTracer tracer(shading, scene, GiOptions{termination, true, true});
+        const RecursiveTracer tracer(shading, GiOptions{termination});
         // The same render kRepeats times (the same image each time): the median time resists the machine's
         // noise.
         RenderResult r;
@@ -62,7 +65,7 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
         std::sort(seconds.begin(), seconds.end());
         DepthStudyRow row;
         row.termination = termination;
-        row.light_sampling = direct.direct;
+        row.light_sampling = direct.simulates(Effect::kDirect);
         double sum = 0, sum2 = 0;
         for (const Color& c : r.image.pixels()) {
             const double m = (double(c.r) + double(c.g) + double(c.b)) / 3;

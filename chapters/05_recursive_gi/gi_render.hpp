@@ -30,11 +30,11 @@ struct DepthStudyRow {
 };
 
 // The furnace rendered once per rule (same size, samples and seed), each row timed and compared; with
-// `direct.direct` false the walls' light is found by indirect rays alone (no light sampling).
+// the effect "direct" not simulated the walls' light is found by indirect rays alone (no light sampling).
 std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
                                        const PinholeCamera& camera, const RenderSettings& settings,
                                        const std::vector<TerminationSettings>& rules,
-                                       const DirectOptions& direct);
+                                       DirectOptions direct);
 
 // "depth 4", "throughput 0.01 (cap 64)", "roulette from 3 (cap 64)".
 std::string describe(const TerminationSettings& termination);

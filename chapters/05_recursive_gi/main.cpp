@@ -12,6 +12,7 @@
 
 #include "camera.hpp"
 #include "furnace.hpp"
+#include "brdf.hpp"
 #include "gi_render.hpp"
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
@@ -27,23 +28,18 @@ std::string format(const char* pattern, double a, double b = 0, double c = 0) {
     return text;
 }
 
-// What this chapter shades differently from the scene's materials, or leaves to a later chapter.
-std::vector<std::string> material_notes(const rt::Scene& scene, const rt::EffectSet& simulated) {
+// What the material table shades by a stand-in, and the lobes this chapter samples only uniformly.
+std::vector<std::string> material_notes(const rt::Scene& scene, const rt::MaterialTable& materials,
+                                        const rt::EffectSet& simulated) {
     using namespace rt;
-    std::vector<std::string> notes;
+    std::vector<std::string> notes = materials.notes();
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
-        const Material& m = scene.materials[i];
-        const std::string name = "material '" + m.name + "'";
-        if (m.type == MaterialType::kMirror && !simulated.contains(Effect::kReflection)) {
-            notes.push_back(name + ": the effect reflection is off, so the mirror shows only its emission");
-        } else if (m.type == MaterialType::kDielectric) {
-            notes.push_back(name +
-                            ": refraction is simulated from chapter 07 on; shaded as diffuse white "
-                            "(albedo 0.73), with direct and indirect light");
-        } else if ((m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective) &&
-                   simulated.contains(Effect::kGlossy) && simulated.contains(Effect::kIndirect)) {
+        const Bsdf& bsdf = materials.bsdf(int(i));
+        const std::string name = "material '" + scene.materials[i].name + "'";
+        const bool lobe = !is_delta(bsdf) && !is_black(bsdf) && !dynamic_cast<const LambertBrdf*>(&bsdf);
+        if (lobe && simulated.contains(Effect::kIndirect)) {
             notes.push_back(name +
                             ": its lobe reflects direct light (chapter 04) and indirect light from uniform "
                             "hemisphere directions, unbiased but noisy for a sharp lobe; chapter 06 samples "
@@ -143,9 +139,7 @@ int main(int argc, char** argv) {
         termination.min_throughput = min_throughput;
         termination.roulette_start_depth = roulette_start;
         DirectOptions direct;
-        direct.direct = context.simulated.contains(Effect::kDirect);
-        direct.shadows = context.simulated.contains(Effect::kShadows);
-        direct.glossy = context.simulated.contains(Effect::kGlossy);
+        direct.simulated = context.simulated;
 
         if (study) {
             std::optional<Scene> loaded;
@@ -178,7 +172,7 @@ int main(int argc, char** argv) {
             std::vector<DepthStudyRow> rows =
                 depth_study(world, scene, *furnace, camera, settings, rules, direct);
             DirectOptions no_light_sampling = direct;
-            no_light_sampling.direct = false;
+            no_light_sampling.simulated = direct.simulated.without({Effect::kDirect});
             for (const DepthStudyRow& r :
                  depth_study(world, scene, *furnace, camera, settings, rules, no_light_sampling)) {
                 rows.push_back(r);
@@ -191,11 +185,10 @@ int main(int argc, char** argv) {
         const RenderSettings& settings = context.settings;
         const World world(scene);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-        const DirectLighting shading(world, scene, collect_lights(scene), direct);
-        const GiOptions options{termination, context.simulated.contains(Effect::kReflection),
-                                context.simulated.contains(Effect::kIndirect)};
-        const RecursiveTracer tracer(shading, scene, options);
-        ChapterRun run{render_gi(tracer, camera, settings), material_notes(scene, context.simulated),
+        const MaterialTable materials(scene, context.simulated);
+        const DirectLighting shading(world, materials, collect_lights(scene), direct);
+        const RecursiveTracer tracer(shading, GiOptions{termination});
+        ChapterRun run{render_gi(tracer, camera, settings), material_notes(scene, materials, context.simulated),
                        std::nullopt};
         std::string rule = "termination: " + describe(termination);
         if (termination.rule == Termination::kMinThroughput ||
@@ -212,7 +205,7 @@ int main(int argc, char** argv) {
             run.notes.push_back("emitter not sampled as a light: " + u +
                                 "; indirect rays count its emission");
         }
-        if (!direct.direct) {
+        if (!direct.simulates(Effect::kDirect)) {
             run.notes.push_back(
                 "the effect direct is off: no light sampling; indirect rays count every emitter");
         }
@@ -228,7 +221,7 @@ int main(int argc, char** argv) {
             run.exact = furnace_image(*furnace, settings.width, settings.height);
             const Vec3d exact = furnace_radiance(*furnace);
             std::string note = format("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
-            if (termination.rule != Termination::kMinThroughput && options.indirect) {
+            if (termination.rule != Termination::kMinThroughput && direct.simulates(Effect::kIndirect)) {
                 note +=
                     format("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
                            furnace_radiance_truncated(*furnace, termination.max_depth).y,

@@ -14,6 +14,7 @@
 
 #include "camera.hpp"
 #include "path_tracer.hpp"
+#include "render_scene.hpp"
 #include "rt/image.hpp"
 
 namespace rt {
@@ -35,7 +36,7 @@ std::filesystem::path reference_path(const std::filesystem::path& folder, const 
 
 // Reads the cached reference if both files are there and of the right size, else renders A and B with MIS
 // (spp / 2 each, seeds 1001 and 1002) and writes them. Throws InputError if the folder is not writable.
-Reference converged_reference(const World& world, const Scene& scene, const LightSet& lights,
+Reference converged_reference(const RenderScene& prepared,
                               const PathOptions& options, const PinholeCamera& camera,
                               RenderSettings settings, int spp, const std::filesystem::path& folder);
 
@@ -50,7 +51,7 @@ struct ConvergenceRow {
 };
 
 // Every strategy at spp = 1, 2, 4, …, max_spp with the settings' seed.
-std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& scene, const LightSet& lights,
+std::vector<ConvergenceRow> convergence_study(const RenderScene& prepared,
                                               PathOptions options, const PinholeCamera& camera,
                                               RenderSettings settings, const Reference& reference,
                                               const std::vector<SamplingStrategy>& strategies, int max_spp);

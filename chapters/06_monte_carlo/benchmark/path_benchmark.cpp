@@ -70,8 +70,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     try {
         const Scene scene = load_scene(scene_file);
-        const World world(scene);
-        const LightSet lights = collect_lights(scene);
+        const RenderScene prepared(scene, EffectSet::all());
         PathOptions options;
         options.strategy = sampling_strategy_from_string(sampling);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
@@ -79,7 +78,7 @@ int main(int argc, char** argv) {
         settings.width = settings.height = size;
         settings.seed = 1;
         settings.progress = ProgressStyle::kNone;
-        const PathTracer tracer(world, scene, lights, options);
+        const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
         std::printf("ch06_benchmark: %s, %dx%d, %s, %u hardware threads, load average %s\n",
                     scene_file.c_str(), size, size, sampling.c_str(), std::thread::hardware_concurrency(),
                     load_average().c_str());
@@ -121,7 +120,7 @@ int main(int argc, char** argv) {
         // Time to a relative MSE of `target`: relative MSE falls like 1/spp, so the spp that reaches it is
         // predicted from the error at `spp` and then rendered to check.
         const Reference ref =
-            converged_reference(world, scene, lights, options, camera, settings, reference_spp, cache);
+            converged_reference(prepared, options, camera, settings, reference_spp, cache);
         std::printf("  reference: %s %s (relative MSE of its own noise %.2e)\n",
                     ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(),
                     ref.noise_relative_mse);

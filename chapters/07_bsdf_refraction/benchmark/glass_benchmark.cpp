@@ -18,7 +18,7 @@
 #include "bsdf_render.hpp"
 #include "camera.hpp"
 #include "direct_render.hpp"
-#include "light_set.hpp"
+#include "render_scene.hpp"
 #include "path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
@@ -35,7 +35,7 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-RenderResult chapter07(const Scene& scene, const RenderSettings& settings, BsdfPathOptions options = {}) {
+RenderResult chapter07(const Scene& scene, const RenderSettings& settings, PathOptions options = {}) {
     const EffectSet simulated = needed(scene) & EffectSet::all();
     return render_with(choose_renderer(simulated), scene, simulated, settings, options);
 }
@@ -147,19 +147,21 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
     };
     for (const Pair& p : {Pair{"box, effects shadows+direct: ch07 / ch04", direct_only, true},
                           Pair{"box without glass (ch06_default): ch07 / ch06", no_glass, false}}) {
-        const World world(p.scene);
-        const LightSet lights = collect_lights(p.scene);
-        const PinholeCamera camera = make_pinhole_camera(p.scene.camera, size, size);
         const EffectSet simulated = needed(p.scene) & EffectSet::all();
+        const RenderScene prepared(p.scene, simulated);
+        const PinholeCamera camera = make_pinhole_camera(p.scene.camera, size, size);
         std::vector<double> ours, theirs;
         for (int r = 0; r < repeats; ++r) {
             ours.push_back(chapter07(p.scene, settings).seconds);
             if (p.against_04) {
-                const DirectLighting shading(world, p.scene, lights,
-                                             direct_options(path_options_for(simulated)));
+                DirectOptions direct;
+                direct.simulated = simulated;
+                const DirectLighting shading(prepared.world, prepared.materials, prepared.lights, direct);
                 theirs.push_back(render_direct(shading, camera, settings, FilmPoints::kStratified).seconds);
             } else {
-                const PathTracer tracer(world, p.scene, lights, PathOptions{});
+                PathOptions paths;
+                paths.simulated = simulated;
+                const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, paths);
                 theirs.push_back(render_paths(tracer, camera, settings).seconds);
             }
         }
@@ -183,9 +185,9 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
         "%.2e)\n",
         target, conv_size, conv_size, reference_spp, noise);
     std::printf("%-22s %6s %12s %10s %16s\n", "estimator", "spp", "rel. MSE", "time (s)", "time to target");
-    for (bool nee : {true, false}) {
-        BsdfPathOptions options;
-        options.next_event = nee;
+    for (SamplingStrategy strategy : {SamplingStrategy::kMis, SamplingStrategy::kLight, SamplingStrategy::kBrdf}) {
+        PathOptions options;
+        options.strategy = strategy;
         double estimate = 0;
         for (int n = 1; n <= max_spp; n *= 2) {
             conv.samples_per_pixel = n;
@@ -193,8 +195,8 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
             const RenderResult r = chapter07(cornell, conv, options);
             const double rel = std::max(0.0, relative_mse(r.image, a, b) - noise);
             estimate = r.seconds * rel / target;
-            std::printf("%-22s %6d %12.4e %10.3f %14.3f s\n", nee ? "ch07 (NEE)" : "no light sampling (brdf)",
-                        n, rel, r.seconds, estimate);
+            std::printf("%-22s %6d %12.4e %10.3f %14.3f s\n", to_string(strategy).data(), n, rel, r.seconds,
+                        estimate);
             if (rel < 4 * target) break;
         }
     }
