@@ -62,27 +62,11 @@ std::vector<std::string> shading_notes(const Scene& scene) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];
-        auto note = [&](const char* kind, Effect effect) {
-            notes.push_back(std::string(kind) + " material '" + m.name + "': shaded as Lambertian here; " +
-                            kEffectNames[std::size_t(effect)].data() + " is simulated from " +
-                            chapter_that_adds(effect) + " on");
-        };
-        switch (m.type) {
-            case MaterialType::kMirror:
-                note("mirror", Effect::kReflection);
-                break;
-            case MaterialType::kGlossy:
-                note("glossy", Effect::kGlossy);
-                break;
-            case MaterialType::kRetroreflective:
-                note("retroreflective", Effect::kGlossy);
-                break;
-            case MaterialType::kDielectric:
-                note("dielectric", Effect::kRefraction);
-                break;
-            case MaterialType::kDiffuse:
-                break;
-        }
+        const auto effect = effect_of(m);
+        if (!effect) continue;
+        notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+                        "': shaded as Lambertian here; " + kEffectNames[std::size_t(*effect)].data() +
+                        " is simulated from " + chapter_that_adds(*effect) + " on");
     }
     return notes;
 }

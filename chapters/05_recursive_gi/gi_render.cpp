@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 
 #include "camera_render.hpp"
@@ -91,6 +92,41 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
         rows.push_back(row);
     }
     return rows;
+}
+
+void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene,
+                 const Furnace& furnace, const RenderSettings& settings, const std::string& csv) {
+    std::printf(
+        "termination rules in the furnace: %s, albedo %.3g, emission %.3g, exact L = Le / (1 - rho) = %.6g\n"
+        "%dx%d, %d spp, seed %llu, %d threads; bias = mean - exact (+- its standard error), RMSE over "
+        "pixels\n",
+        scene.file.c_str(), double(furnace.albedo.g), double(furnace.emission.g),
+        rows.empty() ? 0 : rows[0].exact, settings.width, settings.height, settings.samples_per_pixel,
+        static_cast<unsigned long long>(settings.seed), settings.threads);
+    std::printf("%-28s %-8s %10s %10s %10s %10s %10s %10s %9s\n", "rule", "lights", "mean", "expected",
+                "bias", "std.error", "RMSE", "time (s)", "rays/path");
+    std::ofstream out;
+    if (!csv.empty()) {
+        out.open(csv);
+        out << "rule,max_depth,min_throughput,roulette_start,light_sampling,mean,expected,exact,bias,"
+               "standard_error,rmse,seconds,"
+               "rays_per_path\n";
+    }
+    for (const DepthStudyRow& r : rows) {
+        char expected[32] = "-";
+        if (!std::isnan(r.expected)) std::snprintf(expected, sizeof expected, "%.5f", r.expected);
+        std::printf("%-28s %-8s %10.5f %10s %+10.5f %10.5f %10.5f %10.4f %9.2f\n",
+                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean,
+                    expected, r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
+        if (out) {
+            out << to_string(r.termination.rule) << ',' << r.termination.max_depth << ','
+                << r.termination.min_throughput << ',' << r.termination.roulette_start_depth << ','
+                << (r.light_sampling ? "sampled" : "hit") << ',' << r.mean << ','
+                << (std::isnan(r.expected) ? std::string() : std::to_string(r.expected)) << ',' << r.exact
+                << ',' << r.bias << ',' << r.standard_error << ',' << r.rmse << ',' << r.seconds << ','
+                << r.rays_per_path << '\n';
+        }
+    }
 }
 
 }  // namespace rt

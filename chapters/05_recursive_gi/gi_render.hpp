@@ -39,4 +39,8 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
 // "depth 4", "throughput 0.01 (cap 64)", "roulette from 3 (cap 64)".
 std::string describe(const TerminationSettings& termination);
 
+// The study's table on stdout, and as CSV in `csv` when it is not empty.
+void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene, const Furnace& furnace,
+                       const RenderSettings& settings, const std::string& csv);
+
 }  // namespace rt
