@@ -8,23 +8,23 @@
 #include <string>
 #include <vector>
 
-#include "analytic_scene.hpp"
-#include "area_light_sampling.hpp"
-#include "brdf.hpp"
-#include "camera.hpp"
-#include "direct_render.hpp"
-#include "frame.hpp"
-#include "irradiance.hpp"
-#include "quad.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/quad.hpp"
+#include "02_intersection/sphere.hpp"
+#include "02_intersection/triangle.hpp"
+#include "04_direct_lighting/analytic_scene.hpp"
+#include "04_direct_lighting/area_light_sampling.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "sampling.hpp"
-#include "sphere.hpp"
-#include "sphere_light_sampling.hpp"
-#include "triangle.hpp"
 
 using namespace rt;
 

@@ -9,17 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
-#include "furnace.hpp"
-#include "gi_render.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "05_recursive_gi/furnace.hpp"
+#include "05_recursive_gi/gi_render.hpp"
+#include "05_recursive_gi/recursive_tracer.hpp"
+#include "05_recursive_gi/scatter.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
-#include "recursive_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "scatter.hpp"
-#include "termination.hpp"
 
 using namespace rt;
 

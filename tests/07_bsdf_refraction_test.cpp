@@ -10,20 +10,20 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "path_tracer.hpp"
-#include "refraction_materials.hpp"
-#include "render_scene.hpp"
-#include "bsdf_render.hpp"
-#include "camera.hpp"
-#include "dielectric.hpp"
-#include "fresnel.hpp"
-#include "light_set.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/dielectric.hpp"
+#include "07_bsdf_refraction/fresnel.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "07_bsdf_refraction/snell.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "snell.hpp"
-#include "world.hpp"
 
 using namespace rt;
 
@@ -397,10 +397,11 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
     CHECK(r.rays.total() == r.rays[RayKind::kCamera] + r.rays[RayKind::kShadow]);
 }
 
-TEST_CASE("Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
+    "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -428,7 +429,8 @@ Scene sky_scene(const std::string& glass) {
         "sky": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]},
         "floor": {"type": "diffuse", "albedo": [0.6, 0.6, 0.6]},
         "ball": {"type": "diffuse", "albedo": [0.7, 0.5, 0.3]},
-        "glass": )" + glass + R"(},
+        "glass": )" + glass +
+                      R"(},
       "shapes": [
         {"type": "plane", "point": [0, 20, 0], "normal": [0, -1, 0], "material": "sky"},
         {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
@@ -438,11 +440,12 @@ Scene sky_scene(const std::string& glass) {
     })");
 }
 
-TEST_CASE("An emissive plane lights a glass scene as it lights the same scene with the glass made diffuse",
-          "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+TEST_CASE(
+    "An emissive plane lights a glass scene as it lights the same scene with the glass made diffuse",
+    "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
+    "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract]") {
     const RenderSettings settings = small_settings(32, 64);
     const Scene glass = sky_scene(R"({"type": "dielectric", "ior": 1.5})");
     const Scene diffuse = sky_scene(R"({"type": "diffuse", "albedo": [0.73, 0.73, 0.73]})");

@@ -6,18 +6,18 @@
 #include <variant>
 #include <vector>
 
-#include "brdf.hpp"
-#include "camera.hpp"
-#include "camera_importance.hpp"
-#include "forward_study.hpp"
-#include "light_emission.hpp"
-#include "light_tracer.hpp"
-#include "path_tracer.hpp"
-#include "refraction_materials.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "08_forward_tracing/camera_importance.hpp"
+#include "08_forward_tracing/forward_study.hpp"
+#include "08_forward_tracing/light_emission.hpp"
+#include "08_forward_tracing/light_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 using namespace rt;
 
@@ -246,8 +246,8 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             for (int k = 0; k < 36; ++k) {
-                const auto hit = a.prepared.world.intersect(camera_ray(a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6,
-                                                              Real(y) + (Real(k / 6) + 0.5f) / 6));
+                const auto hit = a.prepared.world.intersect(camera_ray(
+                    a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6, Real(y) + (Real(k / 6) + 0.5f) / 6));
                 if (hit && a.scene.materials[std::size_t(hit->material)].type == MaterialType::kDielectric)
                     sphere[std::size_t(y * 8 + x)] = 1;
             }
@@ -291,7 +291,7 @@ TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through th
       "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]}},
       "shapes": [{"type": "quad", "origin": [-5, -5, 0], "u": [10, 0, 0], "v": [0, 10, 0],
                   "material": "lamp"}]})"),
-                  4, 4);
+                       4, 4);
     LightTracerOptions options = ForwardTracer::simulating({}, EffectSet::all());
     const ForwardTracer pinhole_f(s, options.simulated, options);
     const LightTracer& pinhole = pinhole_f.tracer;
@@ -322,7 +322,7 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
                         "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
           "shapes": [{"type": "quad", "origin": [-1, -1, 0], "u": [0, 2, 0], "v": [2, 0, 0], "material": "lamp"},
                      {"type": "quad", "origin": [-3, -3, 1], "u": [6, 0, 0], "v": [0, 6, 0], "material": "white"}]})"),
-                      8, 8);
+                           8, 8);
         // The lamp emits toward −z (u × v = −z); the white quad lies on its dark side.
         const ForwardTracer tracer_f(s, EffectSet::all());
         const LightTracer& tracer = tracer_f.tracer;
@@ -340,7 +340,7 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
           "shapes": [{"type": "quad", "origin": [-2, 3, -3], "u": [4, 0, 0], "v": [0, 0, 2], "material": "lamp"},
                      {"type": "quad", "origin": [-5, 0, 0], "u": [0, 0, -5], "v": [10, 0, 0], "material": "white"},
                      {"type": "quad", "origin": [-50, -50, 2], "u": [100, 0, 0], "v": [0, 100, 0], "material": "white"}]})"),
-                      8, 8);
+                           8, 8);
         const ForwardTracer tracer_f(s, EffectSet::all());
         const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 4096);

@@ -223,8 +223,9 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
         limit = found.t;
         return true;
     };
-    // A BVH of one leaf (a small scene, like the Cornell box once its quads are packed) is a list: its box would
-    // only turn away the rays that miss the whole scene, at the price of three divisions and a slab test each.
+    // A BVH of one leaf (a small scene, like the Cornell box once its quads are packed) is a list: its box
+    // would only turn away the rays that miss the whole scene, at the price of three divisions and a slab
+    // test each.
     if (options_.acceleration == Acceleration::kBvh && bvh_.nodes().size() > 1) {
         return bvh_.traverse(ray, inverse_direction(ray.direction), t_max, any_hit, test_one, stats) || hit;
     }

@@ -1,6 +1,6 @@
 #include "shadow_render.hpp"
 
-#include "pixel_sampling.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
 #include "point_light.hpp"
 #include "rt/effects.hpp"
 #include "shadow_ray.hpp"

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
-#include "world.hpp"
 
 namespace rt {
 

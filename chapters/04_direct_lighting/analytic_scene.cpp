@@ -1,11 +1,10 @@
 #include "analytic_scene.hpp"
 
-#include "brdf.hpp"
-
 #include <array>
 #include <numbers>
 #include <variant>
 
+#include "brdf.hpp"
 #include "irradiance.hpp"
 
 namespace rt {

@@ -73,7 +73,6 @@ BsdfSample lobe_sample(const Color& albedo, Real exponent, const Vec3& axis, con
 
 }  // namespace
 
-
 LambertBrdf::LambertBrdf(const Color& albedo_)
     : Bsdf({.diffuse = true, .black = is_black(albedo_)}), albedo(albedo_) {}
 

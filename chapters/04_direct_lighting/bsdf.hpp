@@ -20,7 +20,7 @@
 namespace rt {
 
 struct BsdfFlags {
-    bool delta = false;         // every value a Dirac delta (mirror, smooth glass): light samples never meet it
+    bool delta = false;  // every value a Dirac delta (mirror, smooth glass): light samples never meet it
     bool transmission = false;  // light passes through too: sample() reads u_lobe to choose reflection or
                                 // transmission, and may return a wi on the far side of n
     bool diffuse = false;       // scatters diffusely (Lambert): its bounces are counted as indirect rays
@@ -29,8 +29,9 @@ struct BsdfFlags {
 
 struct BsdfSample {
     Vec3 wi{0, 0, 1};  // unit
-    Color f{0};  // f(wo, wi); for a delta lobe, the factor that makes f |cos θ_i| / pdf the fraction scattered
-    Real pdf = 0;       // solid-angle density; for a delta lobe, 1 by convention
+    Color f{
+        0};  // f(wo, wi); for a delta lobe, the factor that makes f |cos θ_i| / pdf the fraction scattered
+    Real pdf = 0;  // solid-angle density; for a delta lobe, 1 by convention
     bool delta = false;
     bool transmitted = false;  // wi is on the far side of the surface: the path crosses it
 };

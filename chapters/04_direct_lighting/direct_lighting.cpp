@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
+#include "01_ray_generation/pixel_sampling.hpp"
+#include "03_shadow_rays/shadow_ray.hpp"
 #include "area_light_sampling.hpp"
 #include "frame.hpp"
-#include "pixel_sampling.hpp"
 #include "rt/errors.hpp"
 #include "sampling.hpp"
-#include "shadow_ray.hpp"
 #include "sphere_light_sampling.hpp"
 
 namespace rt {

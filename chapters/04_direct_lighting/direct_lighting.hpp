@@ -9,15 +9,15 @@
 
 #include <string_view>
 
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
 #include "bsdf.hpp"
-#include "hit.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "trace_options.hpp"
-#include "world.hpp"
 
 namespace rt {
 
@@ -40,7 +40,8 @@ struct DirectOptions : TraceOptions {
 class DirectLighting {
   public:
     // `world` and `materials` must outlive it.
-    DirectLighting(const World& world, const MaterialTable& materials, LightSet lights, DirectOptions options);
+    DirectLighting(const World& world, const MaterialTable& materials, LightSet lights,
+                   DirectOptions options);
 
     // The direct term at `hit` toward wo (unit, pointing away from the surface, on the side of hit.normal).
     Color direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const;

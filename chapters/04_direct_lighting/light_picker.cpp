@@ -81,7 +81,7 @@ Real LightPicker::pdf(const Vec3& p, const Vec3& wi, const Hit& hit) const {
         case LightRef::List::kTriangles: {
             // A planar light: lum(L) d² / (cos θ_l W).
             const Color& L = ref.list == LightRef::List::kQuads ? quads_[ref.index].radiance
-                                                                 : triangles_[ref.index].radiance;
+                                                                : triangles_[ref.index].radiance;
             const Real cos_light = -glm::dot(hit.normal, wi);
             if (!(cos_light > 0)) return 0;
             return luminance(L) * hit.t * hit.t / (cos_light * total_);

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "hit.hpp"
+#include "02_intersection/hit.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
 

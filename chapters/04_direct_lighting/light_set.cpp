@@ -3,7 +3,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "box.hpp"
+#include "02_intersection/box.hpp"
 
 namespace rt {
 namespace {
@@ -22,8 +22,8 @@ void add_light(const Light& light, LightRef::List which, std::vector<Light>& lis
 // The 6 faces of a transformed box (chapter 02's box_faces) as one-sided quad lights, emitting outward.
 void add_box_faces(const BoxShape& box, const Color& radiance, LightSet& lights) {
     for (const Quad& face : box_faces(box)) {
-        add_light(make_quad_light(face.origin, face.u, face.v, radiance), LightRef::List::kQuads, lights.quads,
-                  lights);
+        add_light(make_quad_light(face.origin, face.u, face.v, radiance), LightRef::List::kQuads,
+                  lights.quads, lights);
     }
 }
 

@@ -41,9 +41,15 @@ struct SphereLight {
 };
 
 // The emitting area of a light: |u × v| for a quad, half that for a triangle, 4π r² for a sphere.
-inline Real area_of(const QuadLight& q) { return q.area; }
-inline Real area_of(const TriangleLight& t) { return t.area; }
-inline Real area_of(const SphereLight& s) { return 4 * kPi * s.radius * s.radius; }
+inline Real area_of(const QuadLight& q) {
+    return q.area;
+}
+inline Real area_of(const TriangleLight& t) {
+    return t.area;
+}
+inline Real area_of(const SphereLight& s) {
+    return 4 * kPi * s.radius * s.radius;
+}
 
 // Where light number k of Hit::light is in a LightSet: its list and its place there (kNone for a degenerate
 // emitter of zero area, which is left out).

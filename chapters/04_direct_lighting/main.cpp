@@ -6,14 +6,14 @@
 #include <fstream>
 #include <string>
 
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "analytic_scene.hpp"
-#include "camera.hpp"
 #include "direct_render.hpp"
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -56,9 +56,10 @@ int main(int argc, char** argv) {
         if (study) {
             // The study needs an exact image: the given scene if it is a plane under a quad light, else the
             // course's analytic scene (at the image size of the run).
-            const Scene scene = find_plane_under_quad(context.scene, MaterialTable(context.scene, context.simulated))
-                                    ? context.scene
-                                    : load_scene(scene_path("ch04_analytic.json"));
+            const Scene scene =
+                find_plane_under_quad(context.scene, MaterialTable(context.scene, context.simulated))
+                    ? context.scene
+                    : load_scene(scene_path("ch04_analytic.json"));
             const MaterialTable materials(scene, context.simulated);
             const auto analytic = find_plane_under_quad(scene, materials);
             if (!analytic)

@@ -3,11 +3,11 @@
 // so it outlives them.
 #pragma once
 
+#include "02_intersection/world.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/scene.hpp"
-#include "world.hpp"
 
 namespace rt {
 

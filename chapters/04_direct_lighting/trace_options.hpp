@@ -4,7 +4,7 @@
 // extend it with that chapter's own knobs (samples per light, sampling strategy, termination, ...).
 #pragma once
 
-#include "ray_offset.hpp"
+#include "03_shadow_rays/ray_offset.hpp"
 #include "rt/effect_set.hpp"
 
 namespace rt {

@@ -1,9 +1,9 @@
 #include "furnace.hpp"
 
-#include "brdf.hpp"
-#include "material_table.hpp"
-
 #include <cmath>
+
+#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/material_table.hpp"
 
 namespace rt {
 namespace {

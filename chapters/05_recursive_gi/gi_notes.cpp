@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "brdf.hpp"
+#include "04_direct_lighting/brdf.hpp"
 #include "gi_render.hpp"
 
 namespace rt {
@@ -38,34 +38,29 @@ std::vector<std::string> material_notes(const Scene& scene, const MaterialTable&
 
 std::vector<std::string> gi_notes(const Scene& scene, const DirectLighting& shading,
                                   const TerminationSettings& termination, const RenderResult& result) {
-    std::vector<std::string> notes =
-        material_notes(scene, shading.materials(), shading.options().simulated);
+    std::vector<std::string> notes = material_notes(scene, shading.materials(), shading.options().simulated);
     std::string rule = "termination: " + describe(termination);
     if (termination.rule == Termination::kMinThroughput ||
         termination.rule == Termination::kRussianRoulette) {
         rule += termination.rule == Termination::kMinThroughput ? ", biased" : ", unbiased below the cap";
     } else {
-        rule += format(", light after more than %.0f bounces is lost (biased)",
-                       double(termination.max_depth));
+        rule +=
+            format(", light after more than %.0f bounces is lost (biased)", double(termination.max_depth));
     }
     notes.push_back(rule);
-    if (shading.lights().empty())
-        notes.push_back("the scene has no light: no direct light, no shadow rays");
+    if (shading.lights().empty()) notes.push_back("the scene has no light: no direct light, no shadow rays");
     for (const std::string& u : shading.lights().unsampled) {
-        notes.push_back("emitter not sampled as a light: " + u +
-                            "; indirect rays count its emission");
+        notes.push_back("emitter not sampled as a light: " + u + "; indirect rays count its emission");
     }
     if (!shading.options().simulates(Effect::kDirect)) {
-        notes.push_back(
-            "the effect direct is off: no light sampling; indirect rays count every emitter");
+        notes.push_back("the effect direct is off: no light sampling; indirect rays count every emitter");
     }
     const double camera_rays = double(result.rays[RayKind::kCamera]);
     if (camera_rays > 0) {
-        notes.push_back(
-            format("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
-                   double(result.rays[RayKind::kReflection]) / camera_rays,
-                   double(result.rays[RayKind::kIndirect]) / camera_rays,
-                   double(result.rays[RayKind::kShadow]) / camera_rays));
+        notes.push_back(format("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
+                               double(result.rays[RayKind::kReflection]) / camera_rays,
+                               double(result.rays[RayKind::kIndirect]) / camera_rays,
+                               double(result.rays[RayKind::kShadow]) / camera_rays));
     }
     return notes;
 }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "direct_lighting.hpp"
+#include "04_direct_lighting/direct_lighting.hpp"
 #include "furnace.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <limits>
 
-#include "camera_render.hpp"
+#include "01_ray_generation/camera_render.hpp"
 #include "rt/error_metrics.hpp"
 
 namespace rt {
@@ -42,8 +42,7 @@ std::string describe(const TerminationSettings& t) {
 
 std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
                                        const PinholeCamera& camera, const RenderSettings& settings,
-                                       const std::vector<TerminationSettings>& rules,
-                                       DirectOptions direct) {
+                                       const std::vector<TerminationSettings>& rules, DirectOptions direct) {
     // The furnace's light reaches the camera after any number of bounces: indirect light always.
     direct.simulated.insert(Effect::kIndirect);
     const MaterialTable materials(scene, direct.simulated);
@@ -94,8 +93,8 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
     return rows;
 }
 
-void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene,
-                 const Furnace& furnace, const RenderSettings& settings, const std::string& csv) {
+void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene, const Furnace& furnace,
+                       const RenderSettings& settings, const std::string& csv) {
     std::printf(
         "termination rules in the furnace: %s, albedo %.3g, emission %.3g, exact L = Le / (1 - rho) = %.6g\n"
         "%dx%d, %d spp, seed %llu, %d threads; bias = mean - exact (+- its standard error), RMSE over "
@@ -116,8 +115,8 @@ void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scen
         char expected[32] = "-";
         if (!std::isnan(r.expected)) std::snprintf(expected, sizeof expected, "%.5f", r.expected);
         std::printf("%-28s %-8s %10.5f %10s %+10.5f %10.5f %10.5f %10.4f %9.2f\n",
-                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean,
-                    expected, r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
+                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean, expected,
+                    r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
         if (out) {
             out << to_string(r.termination.rule) << ',' << r.termination.max_depth << ','
                 << r.termination.min_throughput << ',' << r.termination.roulette_start_depth << ','

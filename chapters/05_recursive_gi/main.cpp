@@ -10,7 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "furnace.hpp"
 #include "gi_notes.hpp"
 #include "gi_render.hpp"
@@ -18,7 +19,6 @@
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

@@ -1,6 +1,6 @@
 #include "recursive_tracer.hpp"
 
-#include "ray_offset.hpp"
+#include "03_shadow_rays/ray_offset.hpp"
 #include "scatter.hpp"
 
 namespace rt {
@@ -29,13 +29,15 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     if (!hit) {
         // The environment is light-sampled too (chapter 04 draws cosine-weighted directions toward it).
         const auto& environment = shading_.lights().environment;
-        if (!environment || (!counts_emission && shading_.options().simulates(Effect::kDirect))) return Color(0);
+        if (!environment || (!counts_emission && shading_.options().simulates(Effect::kDirect)))
+            return Color(0);
         return throughput * environment->radiance;
     }
     const MaterialTable& materials = shading_.materials();
     const Color emitted = materials.emission(hit->material, hit->front_face);
     Color L(0);
-    if (!is_black(emitted) && (counts_emission || !emission_sampled_by_direct(*hit))) L += throughput * emitted;
+    if (!is_black(emitted) && (counts_emission || !emission_sampled_by_direct(*hit)))
+        L += throughput * emitted;
     // Does the path bounce at this vertex at all? (Russian roulette divides β by q when it does.)
     if (!continue_path(options_.termination, depth, throughput, rng.next_real())) return L;
 

@@ -16,7 +16,7 @@
 
 #include <vector>
 
-#include "direct_lighting.hpp"
+#include "04_direct_lighting/direct_lighting.hpp"
 #include "rt/random.hpp"
 #include "rt/ray.hpp"
 #include "rt/ray_counts.hpp"

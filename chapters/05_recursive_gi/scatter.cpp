@@ -1,7 +1,7 @@
 #include "scatter.hpp"
 
-#include "frame.hpp"
-#include "sampling.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
 
 namespace rt {
 std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {

@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "brdf.hpp"
-#include "bsdf.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/bsdf.hpp"
 #include "rt/math.hpp"
 
 namespace rt {

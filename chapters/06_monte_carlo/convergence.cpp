@@ -41,9 +41,8 @@ double relative_squared_difference(const Image& a, const Image& ref) {
     return sum / (3.0 * double(a.pixels().size()));
 }
 
-RenderResult render_with(const RenderScene& prepared, PathOptions options,
-                         SamplingStrategy strategy, const PinholeCamera& camera,
-                         const RenderSettings& settings) {
+RenderResult render_with(const RenderScene& prepared, PathOptions options, SamplingStrategy strategy,
+                         const PinholeCamera& camera, const RenderSettings& settings) {
     options.strategy = strategy;
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     return render_paths(tracer, camera, settings);
@@ -57,9 +56,9 @@ fs::path reference_path(const fs::path& folder, const Scene& scene, int width, i
                      "_" + std::to_string(spp) + "spp.pfm");
 }
 
-Reference converged_reference(const RenderScene& prepared,
-                              const PathOptions& options, const PinholeCamera& camera,
-                              RenderSettings settings, int spp, const fs::path& folder) {
+Reference converged_reference(const RenderScene& prepared, const PathOptions& options,
+                              const PinholeCamera& camera, RenderSettings settings, int spp,
+                              const fs::path& folder) {
     Reference ref;
     ref.spp = spp;
     ref.file = reference_path(folder, prepared.scene, settings.width, settings.height, spp);
@@ -81,11 +80,9 @@ Reference converged_reference(const RenderScene& prepared,
     check_writable(ref.file);
     settings.samples_per_pixel = std::max(1, spp / 2);
     settings.seed = kReferenceSeedA;
-    const RenderResult a =
-        render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
+    const RenderResult a = render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
     settings.seed = kReferenceSeedB;
-    const RenderResult b =
-        render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
+    const RenderResult b = render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
     if (a.interrupted || b.interrupted) throw std::runtime_error("the reference render was interrupted");
     Image mean(settings.width, settings.height);
     for (std::size_t i = 0; i < mean.pixels().size(); ++i) {
@@ -100,9 +97,9 @@ Reference converged_reference(const RenderScene& prepared,
     return ref;
 }
 
-std::vector<ConvergenceRow> convergence_study(const RenderScene& prepared,
-                                              PathOptions options, const PinholeCamera& camera,
-                                              RenderSettings settings, const Reference& reference,
+std::vector<ConvergenceRow> convergence_study(const RenderScene& prepared, PathOptions options,
+                                              const PinholeCamera& camera, RenderSettings settings,
+                                              const Reference& reference,
                                               const std::vector<SamplingStrategy>& strategies, int max_spp) {
     std::vector<ConvergenceRow> rows;
     for (SamplingStrategy strategy : strategies) {

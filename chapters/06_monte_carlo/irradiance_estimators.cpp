@@ -3,14 +3,14 @@
 #include <chrono>
 #include <cmath>
 
-#include "area_light_sampling.hpp"
-#include "frame.hpp"
-#include "irradiance.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
+#include "04_direct_lighting/area_light_sampling.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "mis.hpp"
-#include "pixel_sampling.hpp"
 #include "rt/random.hpp"
-#include "sampling.hpp"
-#include "sphere_light_sampling.hpp"
 #include "warp_pdfs.hpp"
 
 namespace rt {

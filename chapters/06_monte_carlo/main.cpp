@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <string>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "convergence.hpp"
 #include "irradiance_study.hpp"
 #include "path_tracer.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
-#include "world.hpp"
 
 namespace {
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "camera_render.hpp"
-#include "frame.hpp"
+#include "01_ray_generation/camera_render.hpp"
+#include "03_shadow_rays/shadow_ray.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
 #include "mis.hpp"
-#include "sampling.hpp"
-#include "shadow_ray.hpp"
 #include "warp_pdfs.hpp"
 
 namespace rt {
@@ -40,8 +40,8 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, P
                 const Color f = bsdf.eval(wo, s->wi, n);
                 if (!is_black(f) && (!shadows || visible(world_, hit, s->point, options_.offset, rays))) {
                     // A point light is a delta: no BSDF sample can hit it, so its light sample has weight 1.
-                    const Real w = mis && s->on_surface() ? power_heuristic(s->pdf, bsdf.pdf(wo, s->wi, n))
-                                                          : Real(1);
+                    const Real w =
+                        mis && s->on_surface() ? power_heuristic(s->pdf, bsdf.pdf(wo, s->wi, n)) : Real(1);
                     sum += f * s->radiance * (cos_i * w / s->pdf);
                 }
             }
@@ -99,7 +99,8 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         }
         // A segment that ends on the inside of a shape ran through what fills it.
         if (!hit->front_face) {
-            if (const Medium* medium = materials_.interior(hit->material)) beta *= medium->transmittance(hit->t);
+            if (const Medium* medium = materials_.interior(hit->material))
+                beta *= medium->transmittance(hit->t);
         }
         const Color emitted = materials_.emission(hit->material, hit->front_face);
         if (!is_black(emitted) && (specular || direct)) {
@@ -127,7 +128,8 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         BsdfSample s;
         const Vec2 u = rng.next_vec2();
         if (flags.delta || strategy == SamplingStrategy::kBrdf || nee) {
-            // A BSDF with two lobes (reflection and transmission) takes one more number to choose between them.
+            // A BSDF with two lobes (reflection and transmission) takes one more number to choose between
+            // them.
             s = bsdf.sample(wo, n, u, flags.transmission ? rng.next_real() : Real(0));
         } else {
             const bool uniform = strategy == SamplingStrategy::kUniform;

@@ -11,20 +11,19 @@
 // of a shape whose material has a Medium is attenuated by its transmittance (chapter 07's Beer–Lambert).
 #pragma once
 
-
-#include "bsdf.hpp"
-#include "camera.hpp"
-#include "hit.hpp"
-#include "light_picker.hpp"
-#include "light_set.hpp"
-#include "material_table.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/bsdf.hpp"
+#include "04_direct_lighting/light_picker.hpp"
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/material_table.hpp"
+#include "04_direct_lighting/trace_options.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "rt/render_loop.hpp"
 #include "sampling_strategy.hpp"
-#include "termination.hpp"
-#include "trace_options.hpp"
-#include "world.hpp"
 
 namespace rt {
 
@@ -40,7 +39,8 @@ struct PathOptions : TraceOptions {
 class PathTracer {
   public:
     // `world` and `materials` must outlive it.
-    PathTracer(const World& world, const MaterialTable& materials, const LightSet& lights, PathOptions options);
+    PathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
+               PathOptions options);
 
     // The radiance arriving along `ray` (a camera ray): one path, its estimate of L.
     Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sampling.hpp"
+#include "04_direct_lighting/sampling.hpp"
 
 namespace rt {
 

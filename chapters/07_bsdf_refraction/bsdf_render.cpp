@@ -1,14 +1,15 @@
 #include "bsdf_render.hpp"
 
-#include "camera.hpp"
-#include "direct_render.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/render_scene.hpp"
 #include "refraction_materials.hpp"
-#include "render_scene.hpp"
 
 namespace rt {
 
 std::string_view to_string(Renderer renderer) {
-    return renderer == Renderer::kDirect ? "direct (chapter 04)" : "paths (chapter 06's loop, chapter 07's BSDFs)";
+    return renderer == Renderer::kDirect ? "direct (chapter 04)"
+                                         : "paths (chapter 06's loop, chapter 07's BSDFs)";
 }
 
 Renderer choose_renderer(const EffectSet& simulated) {

@@ -10,7 +10,7 @@
 
 #include <string_view>
 
-#include "path_tracer.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"

@@ -13,9 +13,8 @@ RenderResult render_glass(const Scene& scene, const RenderSettings& settings, co
 
 }  // namespace
 
-Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
-                            const PathOptions& options, int spp, const std::filesystem::path& folder,
-                            bool& cached) {
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                            int spp, const std::filesystem::path& folder, bool& cached) {
     const std::filesystem::path file =
         folder / ("ch07_reference_" + std::filesystem::path(scene.file).stem().string() + "_" +
                   std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_" +

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "brdf.hpp"
+#include "04_direct_lighting/brdf.hpp"
 #include "fresnel.hpp"
 #include "snell.hpp"
 

@@ -8,8 +8,8 @@
 // Light paths (chapter 08) carry importance, which does not scale: the BTDF is not symmetric.
 #pragma once
 
-#include "bsdf.hpp"
-#include "material_table.hpp"
+#include "04_direct_lighting/bsdf.hpp"
+#include "04_direct_lighting/material_table.hpp"
 #include "rt/math.hpp"
 
 namespace rt {

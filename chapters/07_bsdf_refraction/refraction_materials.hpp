@@ -3,7 +3,7 @@
 // rough_dielectric.hpp — and absorbing glass is filled with Beer–Lambert's medium.
 #pragma once
 
-#include "material_table.hpp"
+#include "04_direct_lighting/material_table.hpp"
 
 namespace rt {
 

@@ -1,20 +1,19 @@
 #include "forward_study.hpp"
 
-#include "refraction_materials.hpp"
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
-#include "bsdf_render.hpp"
-#include "convergence.hpp"
+#include "02_intersection/world.hpp"
+#include "06_monte_carlo/convergence.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace rt {
 namespace {
@@ -33,8 +32,8 @@ RenderSettings study_settings(const StudyOptions& o, int spp) {
 Reference reference_of(const StudyScene& s, const StudyOptions& o) {
     std::printf("  converged reference (chapter 06, MIS, %d spp) ...", o.reference_spp);
     std::fflush(stdout);
-    const Reference ref = converged_reference(s.prepared, PathOptions{},
-                                              s.camera, study_settings(o, 1), o.reference_spp, o.cache);
+    const Reference ref = converged_reference(s.prepared, PathOptions{}, s.camera, study_settings(o, 1),
+                                              o.reference_spp, o.cache);
     std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
                 ref.file.string().c_str(), std::sqrt(ref.noise_mse));
     return ref;
@@ -82,7 +81,8 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     const Reference ref = reference_of(s, o);
     std::vector<TimedRmse> forward;
     std::vector<double> fs, fr;
-    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera, LightTracerOptions{});
+    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                            LightTracerOptions{});
     for (int spp : {4, 16, 64, 256}) {
         const RenderSettings settings = study_settings(o, spp);
         const SplatResult r = render_light_tracing(light, settings, paths_per_image(settings));
@@ -177,10 +177,12 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     // caustic paths alone give at least 10% of the reference); the rest.
     LightTracerOptions caustic_options = LightTracerOptions{};
     caustic_options.caustics_only = true;
-    const LightTracer caustic_tracer(s.prepared.world, s.importance, s.prepared.lights, s.camera, caustic_options);
+    const LightTracer caustic_tracer(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                                     caustic_options);
     const RenderSettings caustic_settings = study_settings(o, 64);
     const Image caustic =
-        render_light_tracing(caustic_tracer, caustic_settings, paths_per_image(caustic_settings)).render.image;
+        render_light_tracing(caustic_tracer, caustic_settings, paths_per_image(caustic_settings))
+            .render.image;
     const std::size_t n = ref.image.pixel_count();
     std::vector<std::uint8_t> mirror(n, 0), lit(n, 0), rest(n, 0);
     for (int y = 0; y < o.size; ++y) {
@@ -205,15 +207,16 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     };
     std::printf("  regions: caustic %zu pixels, mirror or glass %zu pixels, the rest %zu pixels\n",
                 count(lit), count(mirror), count(rest));
-    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic", "RMSE specular",
-                "RMSE rest");
+    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic",
+                "RMSE specular", "RMSE rest");
     // Render A of the reference against the mean: the reference's own RMSE, region by region.
     const Image a =
         read_pfm(std::filesystem::path(ref.file).replace_filename(ref.file.stem().string() + "_half.pfm"));
     std::printf("%-22s %6d %10s %14.4e %14.4e %14.4e\n", "reference's own noise", ref.spp, "",
                 masked_rmse(a, ref.image, lit), masked_rmse(a, ref.image, mirror),
                 masked_rmse(a, ref.image, rest));
-    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera, LightTracerOptions{});
+    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                            LightTracerOptions{});
     const PathTracer path(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
     for (int spp : {16, 64}) {
         const RenderSettings settings = study_settings(o, spp);
@@ -267,7 +270,6 @@ void run_forward_study(const StudyOptions& options) {
         wins_and_losses(scene, options);
     }
 }
-
 
 StudyScene::StudyScene(Scene s, int width, int height)
     : scene(std::move(s)),

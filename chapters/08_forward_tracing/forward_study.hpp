@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "light_tracer.hpp"
-#include "path_tracer.hpp"
-#include "render_scene.hpp"
-#include "world.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/image.hpp"
 

@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "float_error.hpp"
-#include "frame.hpp"
-#include "sampling.hpp"
-#include "warp_pdfs.hpp"
+#include "02_intersection/float_error.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "06_monte_carlo/warp_pdfs.hpp"
 
 namespace rt {
 namespace {

@@ -11,9 +11,9 @@
 
 #include <optional>
 
-#include "hit.hpp"
-#include "light_picker.hpp"
-#include "light_set.hpp"
+#include "02_intersection/hit.hpp"
+#include "04_direct_lighting/light_picker.hpp"
+#include "04_direct_lighting/light_set.hpp"
 
 namespace rt {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "03_shadow_rays/shadow_ray.hpp"
 #include "rt/errors.hpp"
-#include "shadow_ray.hpp"
 
 namespace rt {
 namespace {

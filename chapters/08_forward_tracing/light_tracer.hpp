@@ -17,20 +17,19 @@
 // camera); bounces as indirect (Lambert) or reflection (mirror, glossy, retro-reflective), as in chapter 06.
 #pragma once
 
-
-#include "bsdf.hpp"
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/bsdf.hpp"
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/material_table.hpp"
+#include "04_direct_lighting/trace_options.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "camera_importance.hpp"
-#include "hit.hpp"
 #include "light_emission.hpp"
-#include "light_set.hpp"
-#include "material_table.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "splat_render.hpp"
-#include "termination.hpp"
-#include "trace_options.hpp"
-#include "world.hpp"
 
 namespace rt {
 

@@ -6,22 +6,22 @@
 #include <cstdio>
 #include <string>
 
-#include "bsdf_render.hpp"
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
-#include "refraction_materials.hpp"
-#include "render_scene.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
-#include "world.hpp"
 
 namespace {
 
 using namespace rt;
 
-std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& materials, const LightSet& lights,
-                                     bool forward) {
+std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& materials,
+                                     const LightSet& lights, bool forward) {
     std::vector<std::string> notes = materials.notes();
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < materials.size() && forward; ++i) {

@@ -36,13 +36,13 @@ inline constexpr std::array<std::string_view, 5> kMaterialTypeNames = {"diffuse"
 struct Material {
     std::string name;
     MaterialType type = MaterialType::kDiffuse;
-    Color albedo{0.8f};        // diffuse, glossy, retroreflective: reflectance in [0, 1]
-    Color reflectance{1.0f};   // mirror: the fraction reflected
-    Color emission{0.0f};      // radiance emitted (any type): makes its shapes area lights
-    Real roughness = 0.2f;     // glossy, retroreflective: width of the lobe in (0, 1]; dielectric: 0 is
-                               // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
-    Real ior = 1.5f;           // dielectric: index of refraction
-    Color absorption{0.0f};    // dielectric: Beer–Lambert absorption coefficient per unit length
+    Color albedo{0.8f};       // diffuse, glossy, retroreflective: reflectance in [0, 1]
+    Color reflectance{1.0f};  // mirror: the fraction reflected
+    Color emission{0.0f};     // radiance emitted (any type): makes its shapes area lights
+    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric: 0 is
+                              // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
+    Real ior = 1.5f;          // dielectric: index of refraction
+    Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:

@@ -14,14 +14,14 @@
 #include <thread>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "convergence.hpp"
 #include "path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -119,8 +119,7 @@ int main(int argc, char** argv) {
 
         // Time to a relative MSE of `target`: relative MSE falls like 1/spp, so the spp that reaches it is
         // predicted from the error at `spp` and then rendered to check.
-        const Reference ref =
-            converged_reference(prepared, options, camera, settings, reference_spp, cache);
+        const Reference ref = converged_reference(prepared, options, camera, settings, reference_spp, cache);
         std::printf("  reference: %s %s (relative MSE of its own noise %.2e)\n",
                     ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(),
                     ref.noise_relative_mse);

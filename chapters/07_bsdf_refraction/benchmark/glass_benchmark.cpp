@@ -15,16 +15,16 @@
 #include <string>
 #include <vector>
 
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
-#include "camera.hpp"
-#include "direct_render.hpp"
-#include "render_scene.hpp"
-#include "path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -185,7 +185,8 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
         "%.2e)\n",
         target, conv_size, conv_size, reference_spp, noise);
     std::printf("%-22s %6s %12s %10s %16s\n", "estimator", "spp", "rel. MSE", "time (s)", "time to target");
-    for (SamplingStrategy strategy : {SamplingStrategy::kMis, SamplingStrategy::kLight, SamplingStrategy::kBrdf}) {
+    for (SamplingStrategy strategy :
+         {SamplingStrategy::kMis, SamplingStrategy::kLight, SamplingStrategy::kBrdf}) {
         PathOptions options;
         options.strategy = strategy;
         double estimate = 0;
