@@ -582,6 +582,38 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
     CHECK(blocked_shading.radiance(Ray{{0, 0.25f, 0}, {0, -1, 0}}, rng, sky_rays) == Color(0));
 }
 
+TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and agrees with every light",
+          "[direct][statistical][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
+    // 40 small emissive spheres of different brightness above the floor, and one point light.
+    FloorScene f;
+    f.scene.camera = CameraDesc{{0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50};
+    for (int i = 0; i < 40; ++i) {
+        const int lamp = f.add_material(diffuse(Color(0), Color(Real(1 + i % 5))));
+        f.scene.shapes.push_back(
+            shape(SphereShape{{Real(i % 8) - 3.5f, 1.5f + Real(i / 8) * 0.3f, Real(i / 8) - 2}, 0.1f}, lamp));
+    }
+    f.scene.point_lights.push_back({{0, 3, 0}, Color(2)});
+    DirectOptions every, power, automatic;
+    every.light_selection = LightSelection::kEvery;
+    power.light_selection = LightSelection::kPower;
+    every.shadow_samples = power.shadow_samples = automatic.shadow_samples = 2;
+    const RenderResult e = render_scene(f.scene, every, 24, 64, 2);
+    const RenderResult p = render_scene(f.scene, power, 24, 64, 2);
+    // Every light: 2 shadow rays for each of 40 spheres and one for the point light, per floor hit. Picked:
+    // at most 2 per hit, whatever the number of lights.
+    const double hits = double(e.rays[RayKind::kCamera]);
+    CHECK(double(e.rays[RayKind::kShadow]) > 20 * hits);
+    CHECK(double(p.rays[RayKind::kShadow]) <= 2 * hits);
+    // The same expected image: the means agree within 2 % (64 samples of 576 pixels each).
+    CHECK(p.image.mean() == Approx(e.image.mean()).epsilon(0.02));
+    // Beyond 16 lights the automatic choice picks.
+    const RenderResult a = render_scene(f.scene, automatic, 24, 64, 2);
+    CHECK(a.rays[RayKind::kShadow] == p.rays[RayKind::kShadow]);
+    CHECK(a.image.pixels() == p.image.pixels());
+}
+
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
           "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch04.direct_light]"
           "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {

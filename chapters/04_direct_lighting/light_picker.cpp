@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "area_light_sampling.hpp"
+#include "point_light_sampling.hpp"
 #include "sphere_light_sampling.hpp"
 
 namespace rt {
@@ -57,13 +58,7 @@ std::optional<LightSample> LightPicker::sample(const Vec3& p, Real u_pick, Vec2 
     } else if (i < area_count()) {
         s = sample_sphere_light(spheres_[i - quads_.size() - triangles_.size()], p, u);
     } else {
-        // A point light is a delta: its one direction carries L_e / pdf = I / d² (E = I cos θ / d²).
-        const PointLight& light = points_[i - area_count()];
-        const Vec3 to_light = light.position - p;
-        const Real d2 = glm::dot(to_light, to_light);
-        if (!(d2 > 0)) return std::nullopt;
-        const Real d = std::sqrt(d2);
-        s = LightSample{light.position, to_light / d, d, light.intensity / d2, 1};
+        s = sample_point_light(points_[i - area_count()], p);
     }
     if (s) s->pdf *= P;
     return s;

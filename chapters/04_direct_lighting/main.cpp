@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
     using namespace rt;
     int shadow_samples = 1;
     std::string light_sampler = "stratified";
+    std::string light_selection = "auto";
     bool study = false;
     std::string csv;
     const ChapterInfo chapter{
@@ -41,6 +42,10 @@ int main(int argc, char** argv) {
         app.add_option("--light-sampler", light_sampler,
                        "How a light's N samples are spread: independent|stratified (one per cell of a grid)")
             ->check(CLI::IsMember({"independent", "stratified"}));
+        app.add_option("--light-selection", light_selection,
+                       "Which lights a hit samples: every (N samples each), power (N lights picked with "
+                       "probability proportional to power) or auto (every light up to 16 lights, else power)")
+            ->check(CLI::IsMember({"auto", "every", "power"}));
         app.add_flag(
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
@@ -53,6 +58,7 @@ int main(int argc, char** argv) {
         options.simulated = context.simulated;
         options.shadow_samples = shadow_samples;
         options.light_sampler = light_sampler_from_string(light_sampler);
+        options.light_selection = light_selection_from_string(light_selection);
         if (study) {
             // The study needs an exact image: the given scene if it is a plane under a quad light, else the
             // course's analytic scene (at the image size of the run).
@@ -105,19 +111,22 @@ int main(int argc, char** argv) {
         const auto analytic =
             options.simulates(Effect::kDirect) ? find_plane_under_quad(scene, materials) : std::nullopt;
         std::vector<std::string> notes = materials.notes();
-        if (lights.empty()) {
-            notes.push_back("the scene has no light to sample: no direct light, no shadow rays");
-        } else {
-            notes.push_back("lights: " + count_text(lights.quads.size(), "quad") + ", " +
-                            count_text(lights.triangles.size(), "triangle") + ", " +
-                            count_text(lights.spheres.size(), "sphere") + ", " +
-                            count_text(lights.points.size(), "point") +
-                            (lights.environment ? ", an environment" : "") + "; " +
-                            count_text(std::size_t(shadow_samples), "shadow sample") +
-                            " per light per hit, " + light_sampler);
-        }
         for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
         const DirectLighting shading(world, materials, std::move(lights), options);
+        const LightSet& sampled = shading.lights();
+        if (sampled.empty()) {
+            notes.push_back("the scene has no light to sample: no direct light, no shadow rays");
+        } else {
+            notes.push_back("lights: " + count_text(sampled.quads.size(), "quad") + ", " +
+                            count_text(sampled.triangles.size(), "triangle") + ", " +
+                            count_text(sampled.spheres.size(), "sphere") + ", " +
+                            count_text(sampled.points.size(), "point") +
+                            (sampled.environment ? ", an environment" : "") + "; " +
+                            count_text(std::size_t(shadow_samples), "shadow sample") +
+                            (shading.picks_lights() ? " per hit, each from a light picked by power, "
+                                                    : " per light per hit, ") +
+                            light_sampler);
+        }
         ChapterRun run{render_direct(shading, camera, settings,
                                      analytic ? FilmPoints::kCentre : FilmPoints::kStratified),
                        std::move(notes), std::nullopt};
