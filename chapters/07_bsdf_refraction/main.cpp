@@ -58,6 +58,7 @@ std::vector<std::string> notes_for(const Scene& scene, Renderer renderer, const 
 
 int main(int argc, char** argv) {
     std::optional<int> max_depth;
+    std::string sampling = "mis";
     bool fresnel = false;
     std::string csv;
     bool depth = false;
@@ -74,6 +75,9 @@ int main(int argc, char** argv) {
                        "End every path after this many bounces (chapter 05's depth rule) instead of Russian "
                        "roulette")
             ->check(CLI::Range(1, 1000));
+        app.add_option("--sampling", sampling,
+                       "How chapter 06's loop draws directions: uniform|cosine|brdf|light|mis")
+            ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
         app.add_flag("--fresnel-study", fresnel,
                      "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
         app.add_option("--csv", csv, "With --fresnel-study: write R(theta) both ways to this CSV file");
@@ -94,6 +98,7 @@ int main(int argc, char** argv) {
         if (!csv.empty()) throw InputError("--csv: only with --fresnel-study");
         PathOptions options;
         options.simulated = context.simulated;
+        options.strategy = sampling_strategy_from_string(sampling);
         if (max_depth) options.termination = {Termination::kMaxDepth, *max_depth};
         if (depth) {
             if (!std::filesystem::is_directory(cache))
@@ -118,8 +123,9 @@ int main(int argc, char** argv) {
         const Renderer renderer = choose_renderer(context.simulated);
         ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options),
                        notes_for(scene, renderer, context.simulated), std::nullopt};
-        run.notes.push_back(max_depth ? "termination: max depth " + std::to_string(*max_depth)
-                                      : std::string("termination: Russian roulette"));
+        run.notes.push_back("sampling: " + sampling + (max_depth ? ", termination: max depth " +
+                                                                         std::to_string(*max_depth)
+                                                              : std::string(", termination: Russian roulette")));
         return run;
     };
     return run_chapter(argc, argv, chapter, flags, render);
