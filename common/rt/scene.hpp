@@ -1,4 +1,4 @@
-// The scene description: plain data, as read from a scene file (see DESIGN.md "Scene files"). Each chapter
+// The scene description: plain data, as read from a scene file (see assets/scenes/README.md). Each chapter
 // turns it into what it can simulate.
 #pragma once
 

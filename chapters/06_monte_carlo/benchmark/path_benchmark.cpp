@@ -1,4 +1,4 @@
-// What the path tracer costs, measured on the course's benchmark scene (the Cornell box of DESIGN.md with a
+// What the path tracer costs, measured on the course's benchmark scene (cornell.json's Cornell box with a
 // diffuse sphere, 600×600, MIS): samples (paths) per second on 1 and 2 threads (the median of `--repeats`
 // renders), whether the image is bit-identical for both, and the time to a relative MSE of 1e-3 against a
 // converged reference (cached as PFM in `--cache`). Targets: >= 3e6 samples/s on 2 threads, 2 threads >= 1.8×
