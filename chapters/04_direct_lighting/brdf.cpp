@@ -59,7 +59,7 @@ Color retroreflective_eval(const RetroreflectiveBrdf& retro, const Vec3& wo, con
 
 // pdf = (e + 1) / (2π) cos^e α: the density of sample_power_cosine about `axis`.
 Real lobe_pdf(Real exponent, const Vec3& axis, const Vec3& wi) {
-    return (exponent + 1) * Real(0.5) * kInvPi * lobe_power(wi, axis, exponent);
+    return power_cosine_pdf(glm::dot(wi, axis), exponent);
 }
 
 BsdfSample lobe_sample(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& n,
@@ -84,12 +84,12 @@ BsdfSample LambertBrdf::sample(const Vec3& wo, const Vec3& n, Vec2 u, Real) cons
     BsdfSample s;
     s.wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(u)));
     s.f = lambert_eval(*this, wo, s.wi, n);
-    s.pdf = std::max(Real(0), glm::dot(s.wi, n)) * kInvPi;
+    s.pdf = cosine_hemisphere_pdf(glm::dot(s.wi, n));
     return s;
 }
 
 Real LambertBrdf::pdf(const Vec3&, const Vec3& wi, const Vec3& n) const {
-    return std::max(Real(0), glm::dot(wi, n)) * kInvPi;
+    return cosine_hemisphere_pdf(glm::dot(wi, n));
 }
 
 MirrorBrdf::MirrorBrdf(const Color& reflectance_)

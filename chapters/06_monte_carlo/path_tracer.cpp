@@ -59,7 +59,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, P
                 seen = !world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity);
             }
             if (seen) {
-                const Real pdf_env = cos_i * kInvPi;
+                const Real pdf_env = cosine_hemisphere_pdf(cos_i);
                 const Real w = mis ? power_heuristic(pdf_env, bsdf.pdf(wo, wi, n)) : Real(1);
                 sum += f * environment_->radiance * (cos_i * w / pdf_env);
             }
@@ -89,8 +89,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
             if (environment_ && (specular || direct)) {
                 Real w = 1;
                 if (!specular && nee) {
-                    const Real pdf_light =
-                        std::max(Real(0), glm::dot(ray.direction, previous_normal)) * kInvPi;
+                    const Real pdf_light = cosine_hemisphere_pdf(glm::dot(ray.direction, previous_normal));
                     w = mis ? power_heuristic(previous_pdf, pdf_light) : Real(0);
                 }
                 L += beta * environment_->radiance * w;
@@ -135,7 +134,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
             const bool uniform = strategy == SamplingStrategy::kUniform;
             const Vec3 local = uniform ? sample_uniform_hemisphere(u) : sample_cosine_hemisphere(u);
             s.wi = glm::normalize(make_frame(n).to_world(local));
-            s.pdf = uniform ? uniform_hemisphere_pdf(local) : cosine_hemisphere_pdf(local);
+            s.pdf = uniform ? uniform_hemisphere_pdf(local) : cosine_hemisphere_pdf(local.z);
             s.f = bsdf.eval(wo, s.wi, n);
         }
         const Real cos_i = scattering_cosine(s.wi, n, s.transmitted);
