@@ -34,7 +34,7 @@ Vec3 sample_uniform_cone(Vec2 u, Real one_minus_cos_max);
 // Its density at w: 1 / (2π (1 − cos θmax)) for 1 − z <= 1 − cos θmax, else 0.
 Real uniform_cone_pdf(const Vec3& w, Real one_minus_cos_max);
 
-// The power-cosine lobe around z: cos α = u₁^(1 / (e + 1)), φ = 2π u₂; pdf = (e + 1) / (2π) cos^e α.
+// The power-cosine lobe around z: cos α = (1 − u₁)^(1 / (e + 1)), φ = 2π u₂; pdf = (e + 1) / (2π) cos^e α.
 Vec3 sample_power_cosine(Vec2 u, Real exponent);
 // Its density at a direction whose cosine to the lobe's axis is cos α: (e + 1) / (2π) cos^e α for cos α > 0,
 // else 0 (the glossy and retro-reflective BRDFs' pdf).
