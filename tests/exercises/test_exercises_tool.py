@@ -177,6 +177,23 @@ class Results(unittest.TestCase):
         states = {k: v["state"] for k, v in test_runs.summarise(found, results, None).items()}
         self.assertEqual(states, {"ch07.a": "left", "ch07.b": "failing", "ch07.c": "done", "ch07.d": "untested"})
 
+    def test_the_next_exercise_is_one_whose_tests_need_no_other_exercise_left(self):
+        # ch07.path needs ch04.lambert (left, in another chapter); ch07.weight needs nothing else.
+        found = [marks.Exercise(n, Path("x.cpp"), 0, 1, stubbed=True) for n in ("ch07.path", "ch07.weight")]
+        results = [self.result("path", False, "not implemented: ch04.lambert — see", ["ch04.lambert", "ch07.path"]),
+                   self.result("weight", False, "not implemented: ch07.weight — see", ["ch07.weight"])]
+        entries = list(test_runs.summarise(found, results, None).values())
+        left = {"ch04.lambert", "ch07.path", "ch07.weight"}
+        upcoming, blocking = test_runs.next_exercise(entries, left)
+        self.assertEqual(upcoming.name, "ch07.weight")
+        # With ch07.weight done, ch07.path is not ready until chapter 04's exercise is written.
+        upcoming, blocking = test_runs.next_exercise([x for x in entries if x["exercise"].name == "ch07.path"],
+                                                     left - {"ch07.weight"})
+        self.assertIsNone(upcoming)
+        self.assertEqual(blocking, {"ch04.lambert"})
+        upcoming, _ = test_runs.next_exercise(entries, {"ch07.path"})
+        self.assertEqual(upcoming.name, "ch07.path")
+
 
 if __name__ == "__main__":
     if "--compiler" in sys.argv:
