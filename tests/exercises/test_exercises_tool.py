@@ -103,6 +103,18 @@ class Marks(unittest.TestCase):
         with self.assertRaisesRegex(marks.ToolError, "no such exercise"):
             edition.generate(self.root, out, ["ch07.nothing"], force=True)
 
+    def test_the_student_edition_keeps_warnings_as_warnings(self):
+        option = 'option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" ON)\n'
+        (self.root / "CMakeLists.txt").write_text("project(x)\n" + option, encoding="utf-8")
+        out = self.folder / "edition"
+        edition.generate(self.root, out, [], force=False)
+        written = (out / "CMakeLists.txt").read_text(encoding="utf-8")
+        self.assertIn('option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" OFF)', written)
+        self.assertEqual((self.root / "CMakeLists.txt").read_text(encoding="utf-8"), "project(x)\n" + option)
+        (self.root / "CMakeLists.txt").write_text("project(x)\n", encoding="utf-8")
+        with self.assertRaisesRegex(marks.ToolError, "RT_WARNINGS_AS_ERRORS"):
+            edition.generate(self.root, out, [], force=True)
+
     def test_refuses_to_write_over_a_folder_that_is_not_an_edition(self):
         other = self.folder / "other"
         other.mkdir()
