@@ -1,5 +1,6 @@
 // Tests of chapter 08: light paths from the lights, the camera's importance, the connection to the pinhole
 // (it converges to chapter 06's image), the lens aperture, deterministic splatting, ray counts by kind.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -95,6 +96,15 @@ struct ForwardTracer {
         return options;
     }
 };
+
+// Chapter 08's default scene (its Cornell box and glass sphere) with the glass changed by `change`.
+template <typename Change>
+Scene default_scene_with_glass(Change&& change) {
+    Scene scene = load_scene(scene_path("ch08_default.json"));
+    for (Material& m : scene.materials)
+        if (m.type == MaterialType::kDielectric) change(m);
+    return scene;
+}
 
 // Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
 void check_forward_matches_reverse(const StudyScene& s, int spp) {
@@ -233,9 +243,7 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
           "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
           "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
           "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    Scene with = load_scene(scene_path("ch08_default.json"));
-    for (Material& m : with.materials)
-        if (m.type == MaterialType::kDielectric) m.ior = 1;
+    Scene with = default_scene_with_glass([](Material& m) { m.ior = 1; });
     Scene without = with;
     without.shapes.pop_back();  // the sphere is the last shape
     REQUIRE(std::holds_alternative<SphereShape>(with.shapes.back().geometry));
@@ -607,14 +615,12 @@ TEST_CASE("Light paths through rough glass converge to chapter 06's image: forwa
           "[ex:ch08.project_direction]") {
     // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect to
     // the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
-    Scene scene = load_scene(scene_path("ch08_default.json"));
-    for (Material& m : scene.materials)
-        if (m.type == MaterialType::kDielectric) m.roughness = 0.3f;
-    const StudyScene s(scene, 10, 10);
-    int glass = -1;
-    for (std::size_t i = 0; i < scene.materials.size(); ++i)
-        if (scene.materials[i].type == MaterialType::kDielectric) glass = int(i);
-    REQUIRE(glass >= 0);
+    const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);
+    const auto& materials = s.scene.materials;
+    const int glass = int(std::find_if(materials.begin(), materials.end(),
+                                       [](const Material& m) { return m.type == MaterialType::kDielectric; }) -
+                          materials.begin());
+    REQUIRE(glass < int(materials.size()));
     CHECK(s.importance.bsdf(glass).flags().transmission);
     CHECK_FALSE(s.importance.bsdf(glass).flags().delta);
     check_forward_matches_reverse(s, 1024);
