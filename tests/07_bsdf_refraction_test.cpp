@@ -794,8 +794,8 @@ TEST_CASE("Rough glass stays finite at grazing angles, the critical angle, wo al
     CHECK(glass.pdf(below, kUp, kUp) == 0);
 }
 
-TEST_CASE("The smooth dielectric chooses reflection with probability fresnel_dielectric: chi-square over "
-          "angles and both lobes, from outside and inside, none transmitted beyond the critical angle",
+TEST_CASE("The smooth dielectric reflects with probability fresnel_dielectric by chi-square over angles and "
+          "both lobes, from outside and inside, and transmits nothing beyond the critical angle",
           "[statistical][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // Each sample picks one of 2 × 30 angles (θ in 3° steps from 1.5°, η = 1.5 and 1 / 1.5) at random, then
     // the smooth dielectric's lobe: the counts per (angle, lobe) are multinomial, expecting N / 60 R and

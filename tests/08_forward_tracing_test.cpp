@@ -570,8 +570,8 @@ TEST_CASE("Emitted directions fit their pdfs by chi-square: cosine about the nor
     }
 }
 
-TEST_CASE("Light paths start on each light with probability proportional to its power: chi-square over the "
-          "lights",
+TEST_CASE("Light paths start on each light with probability proportional to its power, by chi-square over "
+          "the lights",
           "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch06.uniform_sphere]") {
     // Powers Φ = π lum(Le) A (one-sided area lights) and 4π lum(I) (a point light), computed here from the
     // scene: a dim large quad, a bright small quad, a sphere and a point light, told apart by where they start.
