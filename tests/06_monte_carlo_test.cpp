@@ -48,7 +48,6 @@ constexpr double kAlpha = 0.01;
 const double kAlphaPerTest = sidak_level(kChiSquareTests, kAlpha);
 constexpr int kSamples = kDirectionSamples;
 
-
 // A unit direction at polar angle θ from +z, turned by φ about z.
 Vec3 polar(double theta, double phi = 0) {
     return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),

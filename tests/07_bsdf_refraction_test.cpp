@@ -615,16 +615,18 @@ Furnace render_furnace(double roughness, int size, int spp, std::uint64_t seed) 
         }
     }
     f.sphere_mean = sum / f.sphere_pixels;
-    f.sphere_error =
-        std::sqrt(std::max(0.0, sum2 / f.sphere_pixels - f.sphere_mean * f.sphere_mean) / (f.sphere_pixels - 1));
+    f.sphere_error = std::sqrt(std::max(0.0, sum2 / f.sphere_pixels - f.sphere_mean * f.sphere_mean) /
+                               (f.sphere_pixels - 1));
     return f;
 }
 
 }  // namespace
 
-TEST_CASE("Rough glass: sample() fits pdf() by chi-square over the whole sphere, for roughness 0.1, 0.3 and "
-          "0.7, eta 1.5 and 1 / 1.5, wo at 0, 45, 70 and 88 degrees; the pdf integrates to what is not lost",
-          "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Rough glass: sample() fits pdf() by chi-square over the whole sphere, for roughness 0.1, 0.3 and "
+    "0.7, eta 1.5 and 1 / 1.5, wo at 0, 45, 70 and 88 degrees, and the pdf integrates to what is not "
+    "lost",
+    "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     std::uint64_t seed = 700;
     for (double roughness : {0.1, 0.3, 0.7}) {
         for (double eta : {kEta, 1 / kEta}) {
@@ -642,14 +644,15 @@ TEST_CASE("Rough glass: sample() fits pdf() by chi-square over the whole sphere,
     }
 }
 
-TEST_CASE("Rough glass: with wo along the normal and roughness 0.1 nothing is lost and the pdf integrates to 1",
-          "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Rough glass: with wo along the normal and roughness 0.1 nothing is lost and the pdf integrates to 1",
+    "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // Entering (η = 1.5) from along n no refraction leaves above the surface, and a reflection goes below
     // only off a facet tilted past 45°: probability α² / (1 + α²) = 1e-4 of the facets, times F ≈ 0.04.
     const RoughDielectric glass(Real(0.1), Real(kEta), Transport::kRadiance);
     const ChiSquare r = test_directions(
-        rough_sampler(glass, kSide, kSide, 760), [&](const Vec3& wi) { return double(glass.pdf(kSide, wi, kSide)); },
-        760);
+        rough_sampler(glass, kSide, kSide, 760),
+        [&](const Vec3& wi) { return double(glass.pdf(kSide, wi, kSide)); }, 760);
     INFO("integral " << r.expected_total / r.samples << ", lost " << r.lost);
     CHECK(r.expected_total / r.samples == Approx(1).margin(1e-3));
     CHECK(r.lost <= 20);
@@ -681,9 +684,10 @@ TEST_CASE("Rough glass: the pdf and f a sample returns are what pdf() and eval()
     CHECK(RoughDielectric(Real(0.3), Real(kEta), Transport::kRadiance).flags().transmission);
 }
 
-TEST_CASE("Rough glass: reflection is symmetric, transmission obeys f_t(wo, wi) / eta_o^2 = f_t(wi, wo) / "
-          "eta_i^2 for radiance, and the importance BTDF is the radiance one with its arguments swapped",
-          "[stability][ex:ch07.fresnel_exact]") {
+TEST_CASE(
+    "Rough glass: reflection is symmetric, transmission obeys f_t(wo, wi) / eta_o^2 = f_t(wi, wo) / "
+    "eta_i^2 for radiance, and the importance BTDF is the radiance one with its arguments swapped",
+    "[stability][ex:ch07.fresnel_exact]") {
     Pcg32 rng(780, 1);
     int transmitted = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -707,9 +711,10 @@ TEST_CASE("Rough glass: reflection is symmetric, transmission obeys f_t(wo, wi) 
     CHECK(transmitted > 1000);
 }
 
-TEST_CASE("Rough glass conserves energy: the integral of f |cos| is at most 1 for every wo, and single "
-          "scattering loses a little, more at grazing angles and high roughness",
-          "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Rough glass conserves energy: the integral of f |cos| is at most 1 for every wo, and single "
+    "scattering loses a little, more at grazing angles and high roughness",
+    "[statistical][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // Importance is what is conserved when wo is the direction light comes from (chapter 08), so ∫ f |cos|
     // over wi must be at most 1 whichever side wo is on. Each sample weighs G1(wi) <= 1 (reflection and
     // transmission alike), so no single weight may pass 1. For radiance the transmitted part is that divided
@@ -721,12 +726,14 @@ TEST_CASE("Rough glass conserves energy: the integral of f |cos| is at most 1 fo
             const RoughDielectric radiance(Real(roughness), Real(eta), Transport::kRadiance);
             for (double degrees = 0; degrees < 90; degrees += 5) {
                 const double theta = deg(std::min(degrees, 89.0));
-                INFO("roughness " << roughness << ", eta " << eta << ", wo at " << theta * 180 / std::numbers::pi);
+                INFO("roughness " << roughness << ", eta " << eta << ", wo at "
+                                  << theta * 180 / std::numbers::pi);
                 const Albedo a = albedo_of(glass, direction_at(theta), kUp, 20000, ++seed);
                 CHECK(a.largest <= 1 + 1e-5);
                 CHECK(a.mean <= 1);
-                // Not everything lost: the least is 0.34 (roughness 1, from inside at 80°, where facets tilted
-                // past 45° send most light back into the glass below the surface, lost to single scattering).
+                // Not everything lost: the least is 0.34 (roughness 1, from inside at 80°, where facets
+                // tilted past 45° send most light back into the glass below the surface, lost to single
+                // scattering).
                 CHECK(a.mean > 0.3);
                 const Albedo r = albedo_of(radiance, direction_at(theta), kUp, 20000, seed);
                 if (eta > 1) CHECK(r.largest <= 1 + 1e-5);
@@ -734,18 +741,20 @@ TEST_CASE("Rough glass conserves energy: the integral of f |cos| is at most 1 fo
         }
     }
     // What is lost: nearly nothing at normal incidence for roughness 0.3, a real part at 89° for roughness 1.
-    const Albedo normal = albedo_of(RoughDielectric(Real(0.3), Real(kEta), Transport::kImportance), kUp, kUp,
-                                    100000, 890);
+    const Albedo normal =
+        albedo_of(RoughDielectric(Real(0.3), Real(kEta), Transport::kImportance), kUp, kUp, 100000, 890);
     const Albedo grazing = albedo_of(RoughDielectric(Real(1.0), Real(kEta), Transport::kImportance),
                                      direction_at(deg(89)), kUp, 100000, 891);
-    INFO("albedo at 0 degrees, roughness 0.3: " << normal.mean << "; at 89 degrees, roughness 1: " << grazing.mean);
+    INFO("albedo at 0 degrees, roughness 0.3: " << normal.mean
+                                                << "; at 89 degrees, roughness 1: " << grazing.mean);
     CHECK(normal.mean > 0.995);
     CHECK(grazing.mean < 0.9);
 }
 
-TEST_CASE("Rough glass stays finite at grazing angles, the critical angle, wo along n, tiny and full "
-          "roughness, and eta = 1",
-          "[stability][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Rough glass stays finite at grazing angles, the critical angle, wo along n, tiny and full "
+    "roughness, and eta = 1",
+    "[stability][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const double critical = std::asin(1 / kEta);
     Pcg32 rng(900, 1);
     for (double roughness : {1e-7, 1e-4, 1e-2, 0.5, 1.0}) {
@@ -794,15 +803,17 @@ TEST_CASE("Rough glass stays finite at grazing angles, the critical angle, wo al
     CHECK(glass.pdf(below, kUp, kUp) == 0);
 }
 
-TEST_CASE("The smooth dielectric reflects with probability fresnel_dielectric by chi-square over angles and "
-          "both lobes, from outside and inside, and transmits nothing beyond the critical angle",
-          "[statistical][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "The smooth dielectric reflects with probability fresnel_dielectric by chi-square over angles and "
+    "both lobes, from outside and inside, and transmits nothing beyond the critical angle",
+    "[statistical][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // Each sample picks one of 2 × 30 angles (θ in 3° steps from 1.5°, η = 1.5 and 1 / 1.5) at random, then
     // the smooth dielectric's lobe: the counts per (angle, lobe) are multinomial, expecting N / 60 R and
     // N / 60 (1 − R).
     constexpr int kAngles = 30, kCases = 2 * kAngles, kDraws = 600000;
     std::vector<double> observed(2 * kCases, 0), expected(2 * kCases, 0);
-    const SmoothDielectric outside(Real(kEta), Transport::kRadiance), inside(Real(1 / kEta), Transport::kRadiance);
+    const SmoothDielectric outside(Real(kEta), Transport::kRadiance),
+        inside(Real(1 / kEta), Transport::kRadiance);
     Pcg32 rng(950, 1);
     int transmitted_in_tir = 0;
     for (int c = 0; c < kCases; ++c) {
@@ -825,11 +836,12 @@ TEST_CASE("The smooth dielectric reflects with probability fresnel_dielectric by
     CHECK(transmitted_in_tir == 0);
 }
 
-TEST_CASE("Furnace: a frosted sphere (roughness 0.3, ior 1.5) under a uniform sky of radiance 1 loses only "
-          "what single-scattering microfacets lose",
-          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+TEST_CASE(
+    "Furnace: a frosted sphere (roughness 0.3, ior 1.5) under a uniform sky of radiance 1 loses only "
+    "what single-scattering microfacets lose",
+    "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+    "[ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract]") {
     const Furnace f = render_furnace(0.3, 32, 256, 11);
     INFO("sphere pixels " << f.sphere_pixels << ", mean " << f.sphere_mean << " +- " << f.sphere_error
                           << ", image mean " << f.render.image.mean());
@@ -877,8 +889,8 @@ TEST_CASE("Furnace: as the roughness goes to 0 the frosted sphere approaches the
         const Furnace rough = render_furnace(roughness, 24, 128, 12);
         const double loss = smooth.sphere_mean - rough.sphere_mean;
         const double se = std::hypot(smooth.sphere_error, rough.sphere_error);
-        INFO("roughness " << roughness << ": sphere mean " << rough.sphere_mean << ", smooth " << smooth.sphere_mean
-                          << ", loss " << loss << " +- " << se);
+        INFO("roughness " << roughness << ": sphere mean " << rough.sphere_mean << ", smooth "
+                          << smooth.sphere_mean << ", loss " << loss << " +- " << se);
         // Measured (24 × 24, 128 paths, seed 12): losses 0.208, 0.046, 0.0031 and 0.0005 ± 0.0006.
         if (roughness > 0.05) {
             CHECK(loss < previous_loss - 3 * se);

@@ -512,9 +512,10 @@ const double kAlphaPerTest = sidak_level(5);
 // The one light of a scene holding only `shapes` (an emissive one) or `lights` (a point light), as an
 // EmitterSampler.
 EmitterSampler one_light(const std::string& shapes, const std::string& lights) {
-    const std::string lamp = shapes.empty() ? "" : R"("lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2]})";
-    const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {)" + lamp +
-                                   R"(}, "shapes": [)" + shapes + R"(], "lights": [)" + lights + "]}");
+    const std::string lamp =
+        shapes.empty() ? "" : R"("lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2]})";
+    const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {)" +
+                                   lamp + R"(}, "shapes": [)" + shapes + R"(], "lights": [)" + lights + "]}");
     return EmitterSampler(collect_lights(scene));
 }
 
@@ -532,49 +533,58 @@ DirectionSampler emitted_directions(const EmitterSampler& emitters, bool local, 
 
 }  // namespace
 
-TEST_CASE("Emitted directions fit their pdfs by chi-square: cosine about the normal for a quad, a triangle "
-          "and a sphere light, uniform over the sphere for a point light",
-          "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch04.uniform_triangle][ex:ch06.uniform_sphere]"
-          "[ex:ch06.cosine_hemisphere_pdf]") {
+TEST_CASE(
+    "Emitted directions fit their pdfs by chi-square: cosine about the normal for a quad, a triangle "
+    "and a sphere light, uniform over the sphere for a point light",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch04.uniform_triangle][ex:ch06.uniform_sphere]"
+    "[ex:ch06.cosine_hemisphere_pdf]") {
     SECTION("a tilted quad: cos θ / π about its normal, in world directions") {
         const EmitterSampler quad = one_light(
-            R"({"type": "quad", "origin": [0, 0, 0], "u": [2, 0, 1], "v": [0, 1, 0.5], "material": "lamp"})", "");
+            R"({"type": "quad", "origin": [0, 0, 0], "u": [2, 0, 1], "v": [0, 1, 0.5], "material": "lamp"})",
+            "");
         const Vec3 n = glm::normalize(glm::cross(Vec3(2, 0, 1), Vec3(0, 1, 0.5f)));
-        require_fit(test_directions(emitted_directions(quad, false, 1),
-                                    [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; },
-                                    1),
-                    kAlphaPerTest);
+        require_fit(
+            test_directions(
+                emitted_directions(quad, false, 1),
+                [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, 1),
+            kAlphaPerTest);
     }
     SECTION("a triangle: cos θ / π about its normal") {
         const EmitterSampler triangle = one_light(
-            R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, -1], [0, 1, 0]], "material": "lamp"})", "");
+            R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, -1], [0, 1, 0]], "material": "lamp"})",
+            "");
         const Vec3 n = glm::normalize(glm::cross(Vec3(1, 0, -1), Vec3(0, 1, 0)));
-        require_fit(test_directions(emitted_directions(triangle, false, 2),
-                                    [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; },
-                                    2),
-                    kAlphaPerTest);
+        require_fit(
+            test_directions(
+                emitted_directions(triangle, false, 2),
+                [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, 2),
+            kAlphaPerTest);
     }
     SECTION("a sphere: cos θ / π about the normal at the point it starts from") {
         const EmitterSampler sphere =
             one_light(R"({"type": "sphere", "center": [1, 2, 3], "radius": 0.5, "material": "lamp"})", "");
-        require_fit(test_directions(emitted_directions(sphere, true, 3),
-                                    [](const Vec3& w) { return double(cosine_hemisphere_pdf(w)); }, 3),
+        require_fit(test_directions(
+                        emitted_directions(sphere, true, 3),
+                        [](const Vec3& w) { return double(cosine_hemisphere_pdf(w)); }, 3),
                     kAlphaPerTest);
     }
     SECTION("a point light: 1 / (4 pi) over the sphere") {
         const EmitterSampler point =
             one_light("", R"({"type": "point", "position": [0, 1, 0], "intensity": [3, 3, 3]})");
-        require_fit(test_directions(emitted_directions(point, false, 4),
-                                    [](const Vec3&) { return double(kUniformSpherePdf); }, 4),
+        require_fit(test_directions(
+                        emitted_directions(point, false, 4),
+                        [](const Vec3&) { return double(kUniformSpherePdf); }, 4),
                     kAlphaPerTest);
     }
 }
 
-TEST_CASE("Light paths start on each light with probability proportional to its power, by chi-square over "
-          "the lights",
-          "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch06.uniform_sphere]") {
+TEST_CASE(
+    "Light paths start on each light with probability proportional to its power, by chi-square over "
+    "the lights",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch06.uniform_sphere]") {
     // Powers Φ = π lum(Le) A (one-sided area lights) and 4π lum(I) (a point light), computed here from the
-    // scene: a dim large quad, a bright small quad, a sphere and a point light, told apart by where they start.
+    // scene: a dim large quad, a bright small quad, a sphere and a point light, told apart by where they
+    // start.
     const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
       "materials": {"dim": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]},
                     "bright": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [6, 3, 1]}},
@@ -585,7 +595,8 @@ TEST_CASE("Light paths start on each light with probability proportional to its 
     const EmitterSampler emitters(collect_lights(scene));
     REQUIRE(emitters.light_count() == 4);
     const double bright = double(luminance(Color(6, 3, 1))), pi = std::numbers::pi;
-    const std::vector<double> power{pi * 1 * 6, pi * bright * 0.5, pi * bright * 4 * pi * 0.4 * 0.4, 4 * pi * 2};
+    const std::vector<double> power{pi * 1 * 6, pi * bright * 0.5, pi * bright * 4 * pi * 0.4 * 0.4,
+                                    4 * pi * 2};
     const double total = power[0] + power[1] + power[2] + power[3];
     constexpr int kDraws = 400000;
     std::vector<double> observed(4, 0), expected(4, 0);
@@ -606,20 +617,22 @@ TEST_CASE("Light paths start on each light with probability proportional to its 
     CHECK(r.p_value > kAlphaPerTest);
 }
 
-TEST_CASE("Light paths through rough glass converge to chapter 06's image: forward and reverse agree within "
-          "error bars",
-          "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
-          "[ex:ch08.project_direction]") {
-    // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect to
-    // the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
+TEST_CASE(
+    "Light paths through rough glass converge to chapter 06's image: forward and reverse agree within "
+    "error bars",
+    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
+    "[ex:ch08.project_direction]") {
+    // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect
+    // to the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
     const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);
     const auto& materials = s.scene.materials;
-    const int glass = int(std::find_if(materials.begin(), materials.end(),
-                                       [](const Material& m) { return m.type == MaterialType::kDielectric; }) -
-                          materials.begin());
+    const int glass =
+        int(std::find_if(materials.begin(), materials.end(),
+                         [](const Material& m) { return m.type == MaterialType::kDielectric; }) -
+            materials.begin());
     REQUIRE(glass < int(materials.size()));
     CHECK(s.importance.bsdf(glass).flags().transmission);
     CHECK_FALSE(s.importance.bsdf(glass).flags().delta);

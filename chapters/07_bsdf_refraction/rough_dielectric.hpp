@@ -9,10 +9,10 @@
 //                        (separable: Walter's form; the height-correlated 1 / (1 + Λ(wo) + Λ(wi)) is the
 //                        reflection's, and would correlate a facet's two sides the wrong way for
 //                        transmission, where a high point helps wo and hides wi)
-//   half vectors:        reflection  m = unit(wo + wi);   transmission  m = ±unit(wo + η wi), turned to n's side;
+//   half vectors:        reflection m = unit(wo + wi); transmission m = ±unit(wo + η wi), on n's side;
 //                        a pair scatters only when wo · m > 0 and wi · m has the sign of wi · n
 //   reflection:          f_r = F(wo · m) D(m) G / (4 |wo · n| |wi · n|)
-//   transmission:        f_t = (1 − F(wo · m)) D(m) G |wo · m| |wi · m| / (|wo · n| |wi · n| (wo · m + η wi · m)²)
+//   transmission:        f_t = (1 − F(wo·m)) D(m) G |wo·m| |wi·m| / (|wo·n| |wi·n| (wo·m + η wi·m)²)
 //                        for radiance; for importance (chapter 08) η² f_t: the BTDF is not symmetric, the
 //                        generalized reciprocity f_t(wo, wi) / η_o² = f_t(wi, wo) / η_i² holds for radiance,
 //                        and the importance BTDF is the radiance one with its arguments swapped
@@ -26,11 +26,11 @@
 // Why visible normals rather than Walter's D(m) |m · n|: no facet facing away from wo is drawn (Walter's
 // sampler wastes those, more of them the more grazing wo is), and the sample weight f |cos θ_i| / pdf is
 //   F G1(wi) / F = G1(wi) ≤ 1 (reflection),  G1(wi) / η² (transmitted radiance),  G1(wi) (importance),
-// bounded at every angle, where Walter's weight |wo · m| G / (|wo · n| |m · n|) grows without bound at grazing
-// wo. A sample whose wi leaves on the wrong side of the surface (a reflection below it, a refraction above
-// it) is lost: pdf 0, f 0. That loss, and G < 1, is the energy single scattering loses: light that a real
-// rough surface would scatter again off a neighbouring facet. eval, sample and pdf share one computation from
-// (wo, wi), so they agree to the last bit.
+// bounded at every angle, where Walter's weight |wo · m| G / (|wo · n| |m · n|) grows without bound at
+// grazing wo. A sample whose wi leaves on the wrong side of the surface (a reflection below it, a refraction
+// above it) is lost: pdf 0, f 0. That loss, and G < 1, is the energy single scattering loses: light that a
+// real rough surface would scatter again off a neighbouring facet. eval, sample and pdf share one computation
+// from (wo, wi), so they agree to the last bit.
 #pragma once
 
 #include "bsdf.hpp"

@@ -1,8 +1,9 @@
-// The chi-square goodness-of-fit test shared by the test programs of chapters 06, 07 and 08 (header-only: each
-// program includes it once). A sampler draws directions; they are counted in cells of the unit sphere and
-// compared with the counts its pdf expects there, N ∫_cell pdf dω, integrated numerically. Each program runs
-// several such tests and states how many: sidak_level(m) is the Šidák-corrected level α' = 1 − (1 − α)^(1/m)
-// at which each is run, so that all m pass together with probability 1 − α when the samplers are right.
+// The chi-square goodness-of-fit test shared by the test programs of chapters 06, 07 and 08 (header-only:
+// each program includes it once). A sampler draws directions; they are counted in cells of the unit sphere
+// and compared with the counts its pdf expects there, N ∫_cell pdf dω, integrated numerically. Each program
+// runs several such tests and states how many: sidak_level(m) is the Šidák-corrected level
+// α' = 1 − (1 − α)^(1/m) at which each is run, so that all m pass together with probability 1 − α when the
+// samplers are right.
 #pragma once
 
 #include <algorithm>
@@ -22,7 +23,7 @@ namespace rt::test {
 // The samples of one direction test.
 inline constexpr int kDirectionSamples = 1000000;
 
-// The level for each of a program's `tests` chi-square tests, so that all pass together with probability 1 − α.
+// The level for each of a program's `tests` chi-square tests: all pass together with probability 1 − α.
 inline double sidak_level(int tests, double alpha = 0.01) {
     return 1 - std::pow(1 - alpha, 1.0 / tests);
 }
@@ -128,8 +129,8 @@ using DirectionPdf = std::function<double(const Vec3&)>;
 // against the sum of it on the four quarters; where they differ by more than 15 tol (an edge of a light, the
 // rim of a cone), each quarter is refined in turn, up to `depth` halvings. Steps in the pdf (which Simpson's
 // rule alone gets wrong by a fraction of a cell) are thus narrowed to 2^-depth of the rectangle.
-inline double adaptive_simpson(const DirectionPdf& pdf, double z0, double z1, double p0, double p1, double tol,
-                        int depth) {
+inline double adaptive_simpson(const DirectionPdf& pdf, double z0, double z1, double p0, double p1,
+                               double tol, int depth) {
     double f[5][5];
     for (int a = 0; a < 5; ++a) {
         const double z = z0 + (z1 - z0) * a / 4, r = std::sqrt(std::max(0.0, 1 - z * z));
