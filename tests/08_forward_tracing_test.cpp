@@ -531,6 +531,15 @@ DirectionSampler emitted_directions(const EmitterSampler& emitters, bool local, 
     };
 }
 
+// A planar light of normal n emits cosine-weighted world directions about n: pdf max(0, w · n) / π.
+void require_cosine_about(const EmitterSampler& emitters, const Vec3& n, std::uint64_t seed) {
+    require_fit(
+        test_directions(
+            emitted_directions(emitters, false, seed),
+            [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, seed),
+        kAlphaPerTest);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -542,23 +551,13 @@ TEST_CASE(
         const EmitterSampler quad = one_light(
             R"({"type": "quad", "origin": [0, 0, 0], "u": [2, 0, 1], "v": [0, 1, 0.5], "material": "lamp"})",
             "");
-        const Vec3 n = glm::normalize(glm::cross(Vec3(2, 0, 1), Vec3(0, 1, 0.5f)));
-        require_fit(
-            test_directions(
-                emitted_directions(quad, false, 1),
-                [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, 1),
-            kAlphaPerTest);
+        require_cosine_about(quad, glm::normalize(glm::cross(Vec3(2, 0, 1), Vec3(0, 1, 0.5f))), 1);
     }
     SECTION("a triangle: cos θ / π about its normal") {
         const EmitterSampler triangle = one_light(
             R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, -1], [0, 1, 0]], "material": "lamp"})",
             "");
-        const Vec3 n = glm::normalize(glm::cross(Vec3(1, 0, -1), Vec3(0, 1, 0)));
-        require_fit(
-            test_directions(
-                emitted_directions(triangle, false, 2),
-                [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, 2),
-            kAlphaPerTest);
+        require_cosine_about(triangle, glm::normalize(glm::cross(Vec3(1, 0, -1), Vec3(0, 1, 0))), 2);
     }
     SECTION("a sphere: cos θ / π about the normal at the point it starts from") {
         const EmitterSampler sphere =
