@@ -1,5 +1,6 @@
 // Tests of chapter 08: light paths from the lights, the camera's importance, the connection to the pinhole
 // (it converges to chapter 06's image), the lens aperture, deterministic splatting, ray counts by kind.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -9,7 +10,10 @@
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/frame.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
+#include "06_monte_carlo/warp_pdfs.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "08_forward_tracing/camera_importance.hpp"
 #include "08_forward_tracing/forward_study.hpp"
@@ -18,6 +22,7 @@
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
+#include "support/chi_square.hpp"
 
 using namespace rt;
 
@@ -92,6 +97,15 @@ struct ForwardTracer {
         return options;
     }
 };
+
+// Chapter 08's default scene (its Cornell box and glass sphere) with the glass changed by `change`.
+template <typename Change>
+Scene default_scene_with_glass(Change&& change) {
+    Scene scene = load_scene(scene_path("ch08_default.json"));
+    for (Material& m : scene.materials)
+        if (m.type == MaterialType::kDielectric) change(m);
+    return scene;
+}
 
 // Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
 void check_forward_matches_reverse(const StudyScene& s, int spp) {
@@ -230,9 +244,7 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
           "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
           "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
           "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
-    Scene with = load_scene(scene_path("ch08_default.json"));
-    for (Material& m : with.materials)
-        if (m.type == MaterialType::kDielectric) m.ior = 1;
+    Scene with = default_scene_with_glass([](Material& m) { m.ior = 1; });
     Scene without = with;
     without.shapes.pop_back();  // the sphere is the last shape
     REQUIRE(std::holds_alternative<SphereShape>(with.shapes.back().geometry));
@@ -486,4 +498,142 @@ TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing an
     CHECK(inside->x == 7);
     CHECK_FALSE(project_direction(c, Vec3(0)));
     CHECK(std::isfinite(pinhole_importance(c, 1e-3f)));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Emission sampling against its pdfs (the shared chi-square harness), and rough glass seen by light paths
+
+namespace {
+
+using namespace rt::test;
+
+// Every chi-square test of this file: the emitted direction of 4 kinds of light, the choice among lights 1.
+const double kAlphaPerTest = sidak_level(5);
+
+// The one light of a scene holding only `shapes` (an emissive one) or `lights` (a point light), as an
+// EmitterSampler.
+EmitterSampler one_light(const std::string& shapes, const std::string& lights) {
+    const std::string lamp =
+        shapes.empty() ? "" : R"("lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2]})";
+    const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {)" +
+                                   lamp + R"(}, "shapes": [)" + shapes + R"(], "lights": [)" + lights + "]}");
+    return EmitterSampler(collect_lights(scene));
+}
+
+// The direction a light path leaves along, u_direction from the harness and u_point from its own generator;
+// `local`: in the frame of the point's normal (a sphere's normal changes from point to point).
+DirectionSampler emitted_directions(const EmitterSampler& emitters, bool local, std::uint64_t seed) {
+    auto points = std::make_shared<Pcg32>(seed, 29);
+    return [&emitters, local, points](Vec2 u) {
+        const auto e = emitters.sample(Real(0.5), points->next_vec2(), u);
+        if (!e) return Drawn{Vec3(0), 0.0};
+        const Vec3 w = local ? make_frame(e->origin.normal).to_local(e->direction) : e->direction;
+        return Drawn{w, 0.0};
+    };
+}
+
+// A planar light of normal n emits cosine-weighted world directions about n: pdf max(0, w · n) / π.
+void require_cosine_about(const EmitterSampler& emitters, const Vec3& n, std::uint64_t seed) {
+    require_fit(
+        test_directions(
+            emitted_directions(emitters, false, seed),
+            [&](const Vec3& w) { return std::max(0.0, double(glm::dot(w, n))) / std::numbers::pi; }, seed),
+        kAlphaPerTest);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "Emitted directions fit their pdfs by chi-square: cosine about the normal for a quad, a triangle "
+    "and a sphere light, uniform over the sphere for a point light",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch04.uniform_triangle][ex:ch06.uniform_sphere]") {
+    SECTION("a tilted quad: cos θ / π about its normal, in world directions") {
+        const EmitterSampler quad = one_light(
+            R"({"type": "quad", "origin": [0, 0, 0], "u": [2, 0, 1], "v": [0, 1, 0.5], "material": "lamp"})",
+            "");
+        require_cosine_about(quad, glm::normalize(glm::cross(Vec3(2, 0, 1), Vec3(0, 1, 0.5f))), 1);
+    }
+    SECTION("a triangle: cos θ / π about its normal") {
+        const EmitterSampler triangle = one_light(
+            R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 0, -1], [0, 1, 0]], "material": "lamp"})",
+            "");
+        require_cosine_about(triangle, glm::normalize(glm::cross(Vec3(1, 0, -1), Vec3(0, 1, 0))), 2);
+    }
+    SECTION("a sphere: cos θ / π about the normal at the point it starts from") {
+        const EmitterSampler sphere =
+            one_light(R"({"type": "sphere", "center": [1, 2, 3], "radius": 0.5, "material": "lamp"})", "");
+        require_fit(test_directions(
+                        emitted_directions(sphere, true, 3),
+                        [](const Vec3& w) { return double(cosine_hemisphere_pdf(w.z)); }, 3),
+                    kAlphaPerTest);
+    }
+    SECTION("a point light: 1 / (4 pi) over the sphere") {
+        const EmitterSampler point =
+            one_light("", R"({"type": "point", "position": [0, 1, 0], "intensity": [3, 3, 3]})");
+        require_fit(test_directions(
+                        emitted_directions(point, false, 4),
+                        [](const Vec3&) { return double(kUniformSpherePdf); }, 4),
+                    kAlphaPerTest);
+    }
+}
+
+TEST_CASE(
+    "Light paths start on each light with probability proportional to its power, by chi-square over "
+    "the lights",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch06.uniform_sphere]") {
+    // Powers Φ = π lum(Le) A (one-sided area lights) and 4π lum(I) (a point light), computed here from the
+    // scene: a dim large quad, a bright small quad, a sphere and a point light, told apart by where they
+    // start.
+    const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
+      "materials": {"dim": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]},
+                    "bright": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [6, 3, 1]}},
+      "shapes": [{"type": "quad", "origin": [0, 0, 0], "u": [3, 0, 0], "v": [0, 2, 0], "material": "dim"},
+                 {"type": "quad", "origin": [10, 0, 0], "u": [1, 0, 0], "v": [0, 0.5, 0], "material": "bright"},
+                 {"type": "sphere", "center": [20, 0, 0], "radius": 0.4, "material": "bright"}],
+      "lights": [{"type": "point", "position": [30, 0, 0], "intensity": [2, 2, 2]}]})");
+    const EmitterSampler emitters(collect_lights(scene));
+    REQUIRE(emitters.light_count() == 4);
+    const double bright = double(luminance(Color(6, 3, 1))), pi = std::numbers::pi;
+    const std::vector<double> power{pi * 1 * 6, pi * bright * 0.5, pi * bright * 4 * pi * 0.4 * 0.4,
+                                    4 * pi * 2};
+    const double total = power[0] + power[1] + power[2] + power[3];
+    constexpr int kDraws = 400000;
+    std::vector<double> observed(4, 0), expected(4, 0);
+    for (std::size_t i = 0; i < 4; ++i) expected[i] = kDraws * power[i] / total;
+    Pcg32 rng(31, 1);
+    for (int k = 0; k < kDraws; ++k) {
+        const Real u_pick = rng.next_real();
+        const Vec2 a = rng.next_vec2(), b = rng.next_vec2();
+        const auto e = emitters.sample(u_pick, a, b);
+        REQUIRE(e);
+        // The lights stand 10 apart along x: which one a path starts on is where it starts.
+        observed[std::size_t(std::clamp(int(std::lround(e->origin.point.x / 10)), 0, 3))] += 1;
+    }
+    const ChiSquare r = chi_square(observed, expected);
+    INFO("observed " << observed[0] << ", " << observed[1] << ", " << observed[2] << ", " << observed[3]
+                     << "; chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value);
+    CHECK(r.dof == 3);
+    CHECK(r.p_value > kAlphaPerTest);
+}
+
+TEST_CASE(
+    "Light paths through rough glass converge to chapter 06's image: forward and reverse agree within "
+    "error bars",
+    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
+    "[ex:ch08.project_direction]") {
+    // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect
+    // to the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
+    const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);
+    const auto& materials = s.scene.materials;
+    const int glass =
+        int(std::find_if(materials.begin(), materials.end(),
+                         [](const Material& m) { return m.type == MaterialType::kDielectric; }) -
+            materials.begin());
+    REQUIRE(glass < int(materials.size()));
+    CHECK(s.importance.bsdf(glass).flags().transmission);
+    CHECK_FALSE(s.importance.bsdf(glass).flags().delta);
+    check_forward_matches_reverse(s, 1024);
 }

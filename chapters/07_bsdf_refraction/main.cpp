@@ -123,9 +123,9 @@ int main(int argc, char** argv) {
         const Renderer renderer = choose_renderer(context.simulated);
         ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options),
                        notes_for(scene, renderer, context.simulated), std::nullopt};
-        run.notes.push_back("sampling: " + sampling + (max_depth ? ", termination: max depth " +
-                                                                         std::to_string(*max_depth)
-                                                              : std::string(", termination: Russian roulette")));
+        run.notes.push_back("sampling: " + sampling +
+                            (max_depth ? ", termination: max depth " + std::to_string(*max_depth)
+                                       : std::string(", termination: Russian roulette")));
         return run;
     };
     return run_chapter(argc, argv, chapter, flags, render);

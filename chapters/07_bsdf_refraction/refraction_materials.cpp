@@ -1,6 +1,7 @@
 #include "refraction_materials.hpp"
 
 #include "dielectric.hpp"
+#include "rough_dielectric.hpp"
 
 namespace rt {
 
@@ -8,6 +9,9 @@ MaterialHooks refraction_materials() {
     MaterialHooks hooks;
     hooks.dielectric = [](const Material& m, bool outside, Transport transport) -> std::unique_ptr<Bsdf> {
         const Real eta = outside ? m.ior : 1 / m.ior;
+        // Index-matched (η = 1) glass is invisible however rough: every facet passes light straight on.
+        if (m.roughness > 0 && m.ior != 1)
+            return std::make_unique<RoughDielectric>(m.roughness, eta, transport);
         return std::make_unique<SmoothDielectric>(eta, transport);
     };
     hooks.dielectric_interior = [](const Material& m) -> std::unique_ptr<Medium> {

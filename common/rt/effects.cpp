@@ -5,7 +5,10 @@
 namespace rt {
 namespace {
 
+// Whether light sampling can reach the material: a diffuse, glossy or retro-reflective lobe that reflects
+// something, or rough glass (its microfacet lobes are not deltas; chapter 07).
 bool reflects_diffusely(const Material& m) {
+    if (m.type == MaterialType::kDielectric) return m.roughness > 0;
     const bool lobe = m.type == MaterialType::kDiffuse || m.type == MaterialType::kGlossy ||
                       m.type == MaterialType::kRetroreflective;
     return lobe && (m.albedo.r > 0 || m.albedo.g > 0 || m.albedo.b > 0);
