@@ -1,7 +1,7 @@
 // A render split by sample range: exact per-pixel sums, the render loop's pieces and resumes, the film file,
 // the merge of pieces and the split among MPI ranks (the executables' side is tests/cli/split_render*.sh).
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -154,11 +154,14 @@ TEST_CASE("The render loop's pieces, added, are the whole render bit for bit", "
 
 TEST_CASE("An interrupted render, resumed, is the uninterrupted render bit for bit", "[split]") {
     RenderSettings settings = small_settings();
-    settings.samples_per_pixel = 40;  // passes of 1, then 5 samples: an interrupt leaves pixels at different counts
+    settings.samples_per_pixel =
+        40;  // passes of 1, then 5 samples: an interrupt leaves pixels at different counts
     const RenderResult whole = render(settings, stratified_sample(settings));
     int taken = 0;
-    auto interrupting = [&, sample = stratified_sample(settings)](const PixelSample& s, Pcg32& rng, RayCounts& r) {
-        if (++taken == 21 * 19 * 3) set_interrupt_requested(true);  // racy between threads, but only its timing
+    auto interrupting = [&, sample = stratified_sample(settings)](const PixelSample& s, Pcg32& rng,
+                                                                  RayCounts& r) {
+        if (++taken == 21 * 19 * 3)
+            set_interrupt_requested(true);  // racy between threads, but only its timing
         return sample(s, rng, r);
     };
     settings.threads = 1;
@@ -175,7 +178,8 @@ TEST_CASE("An interrupted render, resumed, is the uninterrupted render bit for b
     CHECK(partial.samples + resumed.samples == whole.samples);
 }
 
-TEST_CASE("A film written and read back is the same film, and a changed byte is refused as corrupt", "[split]") {
+TEST_CASE("A film written and read back is the same film, and a changed byte is refused as corrupt",
+          "[split]") {
     RenderSettings settings = small_settings();
     settings.samples = SampleRange{2, 5};
     Film film{{"ch00_test", "test.json", 42, "--flag=1", settings.width, settings.height, 7, 3},
@@ -200,7 +204,8 @@ TEST_CASE("A film written and read back is the same film, and a changed byte is 
 TEST_CASE("merge_films adds pieces given in any order, and names the piece that leaves a gap", "[split]") {
     const RenderSettings whole_settings = small_settings();
     const RenderResult whole = render(whole_settings, stratified_sample(whole_settings));
-    const FilmIdentity id{"ch00_test", "test.json", 42, "", whole_settings.width, whole_settings.height, 7, 3};
+    const FilmIdentity id{"ch00_test",          "test.json",           42, "",
+                          whole_settings.width, whole_settings.height, 7,  3};
     auto piece = [&](const char* name, SampleRange r) {
         RenderSettings s = whole_settings;
         s.samples = r;

@@ -121,9 +121,10 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     settings.samples_per_pixel = options.spp.value_or(scene.image.spp);
     settings.seed = options.seed;
     // The ranks of an MPI job on one machine share its cores.
-    settings.threads = options.threads > 0 ? options.threads
-                                           : std::max(1, int(std::thread::hardware_concurrency()) /
-                                                             mpi.ranks_on_this_machine());
+    settings.threads =
+        options.threads > 0
+            ? options.threads
+            : std::max(1, int(std::thread::hardware_concurrency()) / mpi.ranks_on_this_machine());
     settings.progress = options.quiet || !mpi.is_root() ? ProgressStyle::kNone : ProgressStyle::kAuto;
     try {
         check_image_size(settings.width, settings.height);
@@ -161,9 +162,14 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         }
     }
 
-    const FilmIdentity identity{chapter.executable, scene_file.filename().string(),
-                                scene_fingerprint(scene, scene_file), chapter_flags_text(app, core_flags),
-                                settings.width, settings.height, settings.samples_per_pixel, settings.seed};
+    const FilmIdentity identity{chapter.executable,
+                                scene_file.filename().string(),
+                                scene_fingerprint(scene, scene_file),
+                                chapter_flags_text(app, core_flags),
+                                settings.width,
+                                settings.height,
+                                settings.samples_per_pixel,
+                                settings.seed};
     const SplitPlan plan = plan_split(split, identity, mpi, settings);
 
     const EffectSet needed_effects = needed(scene);

@@ -10,7 +10,8 @@ namespace rt {
 
 // Writes through `write_to(file)` into a temporary file beside `path`, then renames it over `path`: all or
 // nothing. Every write, the flush and the close are checked, so a full disk cannot leave a truncated file.
-// Throws InputError (unwritable path) or std::runtime_error (write failure); an earlier file is left as it was.
+// Throws InputError (unwritable path) or std::runtime_error (write failure); an earlier file is left as it
+// was.
 void write_atomically(const std::filesystem::path& path, const std::function<bool(std::FILE*)>& write_to);
 
 // fwrite that says whether every byte was written.

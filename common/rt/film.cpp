@@ -8,6 +8,7 @@
 #include "rt/atomic_file.hpp"
 #include "rt/errors.hpp"
 #include "rt/fnv_hash.hpp"
+#include "rt/image_io.hpp"
 
 namespace rt {
 namespace fs = std::filesystem;
@@ -100,7 +101,8 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
         return differ("samples per pixel", std::to_string(other.samples_per_pixel),
                       std::to_string(expected.samples_per_pixel));
     }
-    if (other.seed != expected.seed) return differ("seed", std::to_string(other.seed), std::to_string(expected.seed));
+    if (other.seed != expected.seed)
+        return differ("seed", std::to_string(other.seed), std::to_string(expected.seed));
     return "";
 }
 
@@ -124,16 +126,14 @@ void write_film(const Film& film, const fs::path& path) {
         out.put(p.non_finite);
     }
     out.put(fnv1a(out.bytes().data(), out.bytes().size()));
-    write_atomically(path, [&](std::FILE* file) { return write_bytes(file, out.bytes().data(), out.bytes().size()); });
+    write_atomically(
+        path, [&](std::FILE* file) { return write_bytes(file, out.bytes().data(), out.bytes().size()); });
 }
 
 Film read_film(const fs::path& path) {
     const std::string name = path.string();
+    check_regular_file(path, "a film file");
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        throw InputError(name + ": must be a film file, got " +
-                         (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
-    }
     std::ifstream file(path, std::ios::binary);
     std::vector<unsigned char> bytes(fs::file_size(path, ec));
     if (ec || !file.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size())))
@@ -147,7 +147,8 @@ Film read_film(const fs::path& path) {
         header.fail("film version " + std::to_string(version) + ", this program reads version " +
                     std::to_string(kFilmVersion));
     }
-    if (bytes.size() < sizeof kMagic + 4 + kChecksumBytes) header.fail("truncated: it ends inside its header");
+    if (bytes.size() < sizeof kMagic + 4 + kChecksumBytes)
+        header.fail("truncated: it ends inside its header");
     const std::size_t body = bytes.size() - kChecksumBytes;
     std::uint64_t stored;
     std::memcpy(&stored, bytes.data() + body, sizeof stored);
@@ -177,7 +178,8 @@ Film read_film(const fs::path& path) {
     const std::size_t pixels = std::size_t(id.width) * std::size_t(id.height);
     if (in.left() != pixels * kPixelBytes) {
         in.fail("pixel data must be " + std::to_string(pixels * kPixelBytes) + " bytes for " +
-                std::to_string(id.width) + "x" + std::to_string(id.height) + ", got " + std::to_string(in.left()));
+                std::to_string(id.width) + "x" + std::to_string(id.height) + ", got " +
+                std::to_string(in.left()));
     }
     film.sums = PixelSums(id.width, id.height);
     for (std::size_t i = 0; i < pixels; ++i) {

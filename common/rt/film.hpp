@@ -17,13 +17,13 @@ inline constexpr std::uint32_t kFilmVersion = 1;
 // What makes two films pieces of one render: the same chapter, scene, flags, size, samples per pixel and
 // seed.
 struct FilmIdentity {
-    std::string chapter;          // "ch06_monte_carlo"
-    std::string scene;            // the scene file's name, for messages only
-    std::uint64_t scene_hash = 0; // FNV-1a of the scene file's bytes and of its meshes' (scene_fingerprint)
-    std::string options;          // the chapter's own flags as given, "--strategy=mis --max-depth=8"
+    std::string chapter;           // "ch06_monte_carlo"
+    std::string scene;             // the scene file's name, for messages only
+    std::uint64_t scene_hash = 0;  // FNV-1a of the scene file's bytes and of its meshes' (scene_fingerprint)
+    std::string options;           // the chapter's own flags as given, "--strategy=mis --max-depth=8"
     int width = 0;
     int height = 0;
-    int samples_per_pixel = 0;    // of the whole render
+    int samples_per_pixel = 0;  // of the whole render
     std::uint64_t seed = 0;
 
     bool operator==(const FilmIdentity&) const = default;

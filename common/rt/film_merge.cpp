@@ -12,8 +12,8 @@ Film merge_films(std::vector<FilmPiece> pieces) {
     for (const FilmPiece& piece : pieces) {
         const std::string difference = first_difference(expected, piece.film.identity);
         if (!difference.empty()) {
-            throw InputError(piece.name + ": not a piece of the same render as " + pieces.front().name + ": " +
-                             difference);
+            throw InputError(piece.name + ": not a piece of the same render as " + pieces.front().name +
+                             ": " + difference);
         }
         if (!piece.film.complete()) {
             throw InputError(piece.name + ": an interrupted render (some pixels have " +

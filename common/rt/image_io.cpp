@@ -48,7 +48,6 @@ void check_writable(const fs::path& path) {
     if (fs::is_directory(path, ec)) throw InputError(where + "it is a folder");
 }
 
-
 void write_png(const Image& image, const fs::path& path) {
     std::vector<std::uint8_t> bytes(image.pixel_count() * 3);
     std::size_t i = 0;
@@ -96,13 +95,18 @@ void write_pfm(const Image& image, const fs::path& path) {
     });
 }
 
-Image read_pfm(const fs::path& path) {
-    const std::string name = path.string();
+void check_regular_file(const fs::path& path, const std::string& kind) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-        throw InputError(name + ": must be a PFM file, got " +
+        throw InputError(path.string() + ": must be " + kind + ", got " +
                          (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
     }
+}
+
+Image read_pfm(const fs::path& path) {
+    const std::string name = path.string();
+    check_regular_file(path, "a PFM file");
+    std::error_code ec;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name + ": cannot be opened for reading");
     std::string magic;

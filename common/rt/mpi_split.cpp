@@ -81,7 +81,8 @@ void MpiSession::gather(RenderResult& result) const {
     MPI_Op_free(&add);
     MPI_Type_free(&pixel);
     auto sum_in_place = [&](void* data, int n, MPI_Datatype type, MPI_Op op) {
-        MPI_Reduce(is_root() ? MPI_IN_PLACE : data, is_root() ? data : nullptr, n, type, op, 0, MPI_COMM_WORLD);
+        MPI_Reduce(is_root() ? MPI_IN_PLACE : data, is_root() ? data : nullptr, n, type, op, 0,
+                   MPI_COMM_WORLD);
     };
     sum_in_place(result.rays.count.data(), kRayKindCount, MPI_UINT64_T, MPI_SUM);
     sum_in_place(&result.samples, 1, MPI_UINT64_T, MPI_SUM);

@@ -43,7 +43,8 @@ std::string write_outputs(const Image& image, const fs::path& png, const Film* f
     sigaddset(&sigint, SIGINT);
     pthread_sigmask(SIG_BLOCK, &sigint, &previous);
     const std::string stage = ".staged-" + std::to_string(::getpid());
-    std::vector<std::pair<fs::path, fs::path>> files{{png.string() + stage, png}, {pfm.string() + stage, pfm}};
+    std::vector<std::pair<fs::path, fs::path>> files{{png.string() + stage, png},
+                                                     {pfm.string() + stage, pfm}};
     if (film) files.emplace_back(film_path.string() + stage, film_path);
     std::error_code ec;
     try {

@@ -14,8 +14,8 @@ namespace rt {
 std::filesystem::path with_suffix(const std::filesystem::path& png, const std::string& suffix,
                                   const std::string& extension);
 
-// No NaN or infinity may reach an image: one is a bug in the chapter, reported as a failure (std::runtime_error,
-// exit 1).
+// No NaN or infinity may reach an image: one is a bug in the chapter, reported as a failure
+// (std::runtime_error, exit 1).
 void check_finite(const Image& image);
 
 // Writes the PNG, the PFM beside it and, given `film`, the film beside them (x.png, x.pfm, x.film): each is

@@ -39,8 +39,8 @@ inline SampleRange samples_taken(const RenderSettings& settings) {
 }
 
 struct RenderResult {
-    Image image;           // each pixel the mean of its samples in `sums`
-    PixelSums sums;        // empty for a render that splats (chapter 08's light paths) instead of sampling pixels
+    Image image;     // each pixel the mean of its samples in `sums`
+    PixelSums sums;  // empty for a render that splats (chapter 08's light paths) instead of sampling pixels
     RayCounts rays;
     double seconds = 0;
     std::uint64_t samples = 0;     // samples actually taken
@@ -78,17 +78,17 @@ RenderResult render(const RenderSettings& settings, F&& sample) {
     const std::uint64_t width = std::uint64_t(settings.width);
     return detail::render_tiles(
         settings, sums, [&](int x0, int y0, int x1, int y1, int first, int end, RayCounts& rays) {
-        for (int y = y0; y < y1; ++y) {
-            for (int x = x0; x < x1; ++x) {
-                const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
-                PixelSum& sum = sums.at(x, y);
-                for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
-                    Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
-                    sum.add(Color(sample(PixelSample{x, y, s}, rng, rays)));
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
+                    PixelSum& sum = sums.at(x, y);
+                    for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
+                        Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
+                        sum.add(Color(sample(PixelSample{x, y, s}, rng, rays)));
+                    }
                 }
             }
-        }
-    });
+        });
 }
 
 }  // namespace rt

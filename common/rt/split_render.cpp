@@ -26,7 +26,8 @@ SplitPlan plan_split(const SplitOptions& options, const FilmIdentity& identity, 
     if (!options.resume.empty()) {
         if (mpi.size() > 1) {
             throw InputError("--resume: continues one process's film; under mpirun with " +
-                             std::to_string(mpi.size()) + " processes, render the samples left as --samples "
+                             std::to_string(mpi.size()) +
+                             " processes, render the samples left as --samples "
                              "pieces and merge them with rt_merge");
         }
         Film film;
@@ -44,8 +45,9 @@ SplitPlan plan_split(const SplitOptions& options, const FilmIdentity& identity, 
             plan.whole = film.range;
         } else if (plan.whole.first != film.range.first || plan.whole.end < film.range.end) {
             throw InputError("--resume: " + options.resume + ": takes samples " + to_string(film.range) +
-                             ": --samples can only extend it (" + std::to_string(film.range.first) + ":B, B >= " +
-                             std::to_string(film.range.end) + "), got " + to_string(plan.whole));
+                             ": --samples can only extend it (" + std::to_string(film.range.first) +
+                             ":B, B >= " + std::to_string(film.range.end) + "), got " +
+                             to_string(plan.whole));
         }
         film.range = plan.whole;
         plan.resumed = std::make_shared<const Film>(std::move(film));

@@ -21,10 +21,10 @@ struct SplitOptions {
 void add_split_flags(CLI::App& app, SplitOptions& options);
 
 struct SplitPlan {
-    FilmIdentity identity;        // of this run
-    SampleRange whole;            // the samples of this run, all ranks together
+    FilmIdentity identity;                // of this run
+    SampleRange whole;                    // the samples of this run, all ranks together
     std::shared_ptr<const Film> resumed;  // the film --resume continues (settings.resume points into it)
-    bool writes_film = false;     // --samples or --resume: the run's film goes beside its image
+    bool writes_film = false;             // --samples or --resume: the run's film goes beside its image
 };
 
 // Checks the flags against the run (`identity`) and sets settings.samples (this rank's share of the range)

@@ -18,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 int merge(int argc, char** argv) {
-    CLI::App app("Adds the films of a render's pieces (--samples A:B) into the image of the whole", "rt_merge");
+    CLI::App app("Adds the films of a render's pieces (--samples A:B) into the image of the whole",
+                 "rt_merge");
     std::string out;
     std::vector<std::string> pieces;
     app.add_option("--out", out, "Output PNG; the PFM and the film of the whole go beside it")->required();
