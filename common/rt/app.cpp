@@ -75,10 +75,12 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf(" (total %llu)\n", static_cast<unsigned long long>(r.rays.total()));
     if (r.interrupted) {
         const double pixels = double(s.width) * double(s.height);
+        // A resumed render's sums hold the samples of the runs before it too.
+        const double taken = r.sums.empty() ? double(r.samples) : double(r.sums.total_count());
         std::printf(
             "  interrupted: partial image with %.4g samples per pixel on average (every pixel has at least "
             "%d) of the %d asked for\n",
-            double(r.samples) / pixels, r.samples_per_pixel, s.samples_per_pixel);
+            taken / pixels, r.samples_per_pixel, samples_taken(s).size());
     }
     auto print_error = [&](const char* against, const Image& image) {
         const ErrorMetrics e = compare(r.image, image);
@@ -179,6 +181,11 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     if (!result) return interrupt_requested() ? kExitInterrupted : kExitOk;
     mpi.gather(result->result);
     if (!mpi.is_root()) return result->result.interrupted ? kExitInterrupted : kExitOk;
+    if (plan.writes_film) {
+        result->notes.push_back("samples " + to_string(plan.whole) + " of the " +
+                                std::to_string(settings.samples_per_pixel) + "-sample render" +
+                                (plan.resumed ? ", resumed from " + split.resume : std::string()));
+    }
     if (mpi.size() > 1) {
         result->notes.push_back("split among " + std::to_string(mpi.size()) + " MPI ranks, samples " +
                                 to_string(plan.whole) + " (rays and samples are every rank's)");
