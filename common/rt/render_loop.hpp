@@ -5,6 +5,7 @@
 // threads, and for a render taken in pieces of its samples (settings.samples) or continued (settings.resume).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <optional>
