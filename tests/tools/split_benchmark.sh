@@ -2,7 +2,7 @@
 # split_benchmark.sh [BUILD_DIR] [SIDE] [SPP]: what splitting a render costs and gives, measured here.
 #  1. Strong scaling with MPI ranks: one render (chapter 06, cornell.json, SIDE² pixels, SPP samples) with
 #     1 rank and with 2 (one thread each, so one core per rank: this machine has 2), wall time of mpirun.
-#  2. The merge: rt_merge of 2 and of 8 pieces of that render (reading and checking the films, adding them,
+#  2. The merge: rt_merge of 2 and of 16 pieces of that render (reading and checking the films, adding them,
 #     writing the PNG, PFM and film), fitted as a + b·pieces, and a film's size.
 #  3. A cluster of N nodes, projected: each node renders 1/N of the samples in (this machine's render time)/N,
 #     then one merge of N films (a + b·N) moves N films to the node that merges. Start-up (mpirun's, a job's
@@ -53,7 +53,7 @@ else
 fi
 [ -n "$one_node" ] || read -r _ one_node < <(seconds "$exe" "${args[@]}" --out "$work/whole.png")
 
-for p in 2 8; do
+for p in 2 16; do
     films=()
     for ((i = 0; i < p; ++i)); do
         first=$((i * spp / p)) end=$(((i + 1) * spp / p))
@@ -63,9 +63,9 @@ for p in 2 8; do
     read -r "merge$p" _ < <(seconds "$merge" --out "$work/m$p.png" "${films[@]}")
 done
 film_bytes=$(stat -c %s "$work/p2-0.film")
-awk -v m2="$merge2" -v m8="$merge8" -v bytes="$film_bytes" -v one="$one_node" -v side="$side" 'BEGIN {
-    b = (m8 - m2) / 6; a = m2 - 2 * b; if (b < 0) b = 0
-    printf "2. rt_merge: 2 pieces %.3f s, 8 pieces %.3f s: %.4f s + %.4f s a piece; a film is %.2f MB (%dx%d)\n", m2, m8, a, b, bytes / 1e6, side, side
+awk -v m2="$merge2" -v m16="$merge16" -v bytes="$film_bytes" -v one="$one_node" -v side="$side" 'BEGIN {
+    b = (m16 - m2) / 14; a = m2 - 2 * b; if (b < 0) b = 0
+    printf "2. rt_merge: 2 pieces %.3f s, 16 pieces %.3f s: %.4f s + %.4f s a piece; a film is %.2f MB (%dx%d)\n", m2, m16, a, b, bytes / 1e6, side, side
     printf "3. projected, each node as this machine (%.3f s for the whole render alone):\n", one
     printf "   %6s %12s %12s %12s %14s\n", "nodes", "render (s)", "merge (s)", "total (s)", "films moved"
     n_count = split("1 4 16 64 256 1024", nodes, " ")
