@@ -201,7 +201,11 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
     const std::optional<Film> film = film_of(plan, r, mpi);
     const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr);
-    print_summary(chapter, context, needed_effects, *result, reference, written);
+    // The summary speaks of every rank's samples, not rank 0's share.
+    RenderSettings all_ranks = settings;
+    all_ranks.samples = plan.whole;
+    print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result, reference,
+                  written);
     return r.interrupted ? kExitInterrupted : kExitOk;
 }
 
