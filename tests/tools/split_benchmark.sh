@@ -38,7 +38,8 @@ seconds() {
     echo "$best $best_render"
 }
 
-echo "chapter 06, cornell.json, ${side}x${side}, $spp spp, on $(nproc) cores"
+echo "chapter 06, cornell.json, ${side}x${side}, $spp spp, on $(nproc) cores (load average $(cut -d' ' -f1-3 /proc/loadavg):"\
+    "above 0 means other work shares them)"
 one_node=""
 if command -v mpirun > /dev/null; then
     read -r w1 t1 < <(seconds mpirun --oversubscribe -np 1 "$exe" "${args[@]}" --threads 1 --out "$work/r1.png")
