@@ -41,10 +41,11 @@ for exe in "$@"; do
             fail "$name mpirun -np $k: rays $(rays_total "ranks$k.stdout"), one process traced $(rays_total whole.stdout)"
         [ "$(grep -c 'wrote' "ranks$k.stdout")" -eq 1 ] || fail "$name mpirun -np $k: not one summary (rank 0's only)"
     done
-    # A piece under mpirun: the ranks split the piece's samples, rank 0 writes its film.
-    "$mpiexec" --oversubscribe -np 2 "$exe" "${args[@]}" --samples 2:5 --out piece.png > /dev/null 2> stderr ||
-        fail "$name mpirun -np 2 --samples 2:5: $(tail -n 3 stderr)"
-    "$exe" "${args[@]}" --samples 2:5 --out alone.png > /dev/null 2>&1 || fail "$name --samples 2:5 failed"
-    cmp -s piece.film alone.film || fail "$name: the film of 2:5 under 2 ranks differs from one process's"
+    # A piece under mpirun: the ranks split the piece's samples (3 ranks, 2 samples: one rank has none), and
+    # rank 0 writes its film, byte for byte one process's.
+    "$mpiexec" --oversubscribe -np 3 "$exe" "${args[@]}" --samples 3:5 --out piece.png > /dev/null 2> stderr ||
+        fail "$name mpirun -np 3 --samples 3:5: $(tail -n 3 stderr)"
+    "$exe" "${args[@]}" --samples 3:5 --out alone.png > /dev/null 2>&1 || fail "$name --samples 3:5 failed"
+    cmp -s piece.film alone.film || fail "$name: the film of 3:5 under 3 ranks differs from one process's"
 done
 finish
