@@ -19,6 +19,7 @@
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
+#include "rt/pixel_sums.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
 
@@ -77,10 +78,11 @@ std::string contents(const fs::path& file) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-// What a render of width × height needs: two buffers of RGB Reals ("103.1 GB" for float at 65536²).
+// What a render of width × height needs: its image of RGB Reals and its exact sums ("326.4 GB" for float at
+// 65536²).
 std::string gigabytes_of_buffers(double width, double height) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", 2 * width * height * double(sizeof(Color)) / 1e9);
+    std::snprintf(text, sizeof text, "%.1f GB", width * height * double(sizeof(Color) + sizeof(PixelSum)) / 1e9);
     return text;
 }
 

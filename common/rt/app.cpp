@@ -1,12 +1,11 @@
 #include "rt/app.hpp"
 
-#include <pthread.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <thread>
 
 #include "rt/assets.hpp"
@@ -15,7 +14,10 @@
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/output_files.hpp"
+#include "rt/render_identity.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/split_render.hpp"
 
 namespace rt {
 namespace {
@@ -73,10 +75,12 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf(" (total %llu)\n", static_cast<unsigned long long>(r.rays.total()));
     if (r.interrupted) {
         const double pixels = double(s.width) * double(s.height);
+        // A resumed render's sums hold the samples of the runs before it too.
+        const double taken = r.sums.empty() ? double(r.samples) : double(r.sums.total_count());
         std::printf(
             "  interrupted: partial image with %.4g samples per pixel on average (every pixel has at least "
             "%d) of the %d asked for\n",
-            double(r.samples) / pixels, r.samples_per_pixel, s.samples_per_pixel);
+            taken / pixels, r.samples_per_pixel, samples_taken(s).size());
     }
     auto print_error = [&](const char* against, const Image& image) {
         const ErrorMetrics e = compare(r.image, image);
@@ -90,68 +94,15 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf("  wrote %s\n", written.c_str());
 }
 
-fs::path with_suffix(const fs::path& png, const std::string& suffix, const std::string& extension) {
-    fs::path p = png;
-    p.replace_filename(png.stem().string() + suffix + extension);
-    return p;
-}
-
-// No NaN or infinity may reach an image: one is a bug in the chapter, reported as a failure (exit 1).
-void check_finite(const Image& image) {
-    std::size_t bad = 0;
-    int first_x = -1, first_y = -1;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            if (is_finite(image.at(x, y))) continue;
-            if (bad++ == 0) first_x = x, first_y = y;
-        }
-    }
-    if (bad > 0) {
-        throw std::runtime_error("the render has " + std::to_string(bad) +
-                                 " pixel(s) NaN or infinite (the first at x " + std::to_string(first_x) +
-                                 ", y " + std::to_string(first_y) +
-                                 "): a bug in the chapter; nothing written");
-    }
-}
-
-// Writes the PNG and the PFM beside it, both or neither. Each is first written whole under a staging name,
-// then both are renamed into place; SIGINT is held back meanwhile, so a second Ctrl-C (which exits at once)
-// cannot leave a staging file behind: it takes effect when the files are complete.
-void write_outputs(const Image& image, const fs::path& png, const fs::path& pfm) {
-    sigset_t sigint, previous;
-    sigemptyset(&sigint);
-    sigaddset(&sigint, SIGINT);
-    pthread_sigmask(SIG_BLOCK, &sigint, &previous);
-    const std::string stage = ".staged-" + std::to_string(::getpid());
-    const fs::path png_stage = png.string() + stage, pfm_stage = pfm.string() + stage;
-    std::error_code ec;
-    try {
-        write_png(image, png_stage);
-        write_pfm(image, pfm_stage);
-        fs::rename(pfm_stage, pfm);
-        fs::rename(png_stage, png);
-    } catch (const std::exception& e) {
-        fs::remove(png_stage, ec);
-        fs::remove(pfm_stage, ec);
-        pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-        // The messages of write_png and write_pfm name the staging file; name the file the user asked for.
-        std::string what = e.what();
-        for (const auto& [staged, final_path] : {std::pair{png_stage, png}, std::pair{pfm_stage, pfm}}) {
-            for (auto at = what.find(staged.string()); at != std::string::npos;
-                 at = what.find(staged.string())) {
-                what.replace(at, staged.string().size(), final_path.string());
-            }
-        }
-        throw std::runtime_error(what);
-    }
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-}
-
 int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
-        const ChapterRender& render) {
+        const ChapterRender& render, const MpiSession& mpi) {
     CLI::App app(chapter.description, chapter.executable);
     CoreOptions options;
     add_core_flags(app, options);
+    SplitOptions split;
+    add_split_flags(app, split);
+    std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
+    for (const CLI::Option* option : app.get_options()) core_flags.insert(option->get_name());
     if (add_flags) add_flags(app);
     try {
         app.parse(argc, argv);
@@ -171,9 +122,12 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     settings.height = options.height.value_or(scene.image.height);
     settings.samples_per_pixel = options.spp.value_or(scene.image.spp);
     settings.seed = options.seed;
+    // The ranks of an MPI job on one machine share its cores.
     settings.threads =
-        options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    settings.progress = options.quiet ? ProgressStyle::kNone : ProgressStyle::kAuto;
+        options.threads > 0
+            ? options.threads
+            : std::max(1, int(std::thread::hardware_concurrency()) / mpi.ranks_on_this_machine());
+    settings.progress = options.quiet || !mpi.is_root() ? ProgressStyle::kNone : ProgressStyle::kAuto;
     try {
         check_image_size(settings.width, settings.height);
     } catch (const InputError& e) {
@@ -186,8 +140,9 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
     if (png.extension() != ".png") throw InputError("--out: must end in .png, got " + png.string());
     // Every file this run may write, finished or partial, is checked before the render starts.
-    for (const fs::path& path : {png, with_suffix(png, "", ".pfm"), with_suffix(png, ".partial", ".png"),
-                                 with_suffix(png, ".partial", ".pfm")}) {
+    for (const fs::path& path : {png, with_suffix(png, "", ".pfm"), with_suffix(png, "", ".film"),
+                                 with_suffix(png, ".partial", ".png"), with_suffix(png, ".partial", ".pfm"),
+                                 with_suffix(png, ".partial", ".film")}) {
         try {
             check_writable(path);
         } catch (const InputError& e) {
@@ -209,11 +164,32 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         }
     }
 
+    const FilmIdentity identity{chapter.executable,
+                                scene_file.filename().string(),
+                                scene_fingerprint(scene, scene_file),
+                                chapter_flags_text(app, core_flags),
+                                settings.width,
+                                settings.height,
+                                settings.samples_per_pixel,
+                                settings.seed};
+    const SplitPlan plan = plan_split(split, identity, mpi, settings);
+
     const EffectSet needed_effects = needed(scene);
     const RunContext context{scene, settings, needed_effects & chapter.supported};
     install_interrupt_handler();
-    const std::optional<ChapterRun> result = render(context);
+    std::optional<ChapterRun> result = render(context);
     if (!result) return interrupt_requested() ? kExitInterrupted : kExitOk;
+    mpi.gather(result->result);
+    if (!mpi.is_root()) return result->result.interrupted ? kExitInterrupted : kExitOk;
+    if (plan.writes_film) {
+        result->notes.push_back("samples " + to_string(plan.whole) + " of the " +
+                                std::to_string(settings.samples_per_pixel) + "-sample render" +
+                                (plan.resumed ? ", resumed from " + split.resume : std::string()));
+    }
+    if (mpi.size() > 1) {
+        result->notes.push_back("split among " + std::to_string(mpi.size()) + " MPI ranks, samples " +
+                                to_string(plan.whole) + " (rays and samples are every rank's)");
+    }
 
     const RenderResult& r = result->result;
     if (r.interrupted && r.samples == 0) {
@@ -223,10 +199,13 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     check_finite(r.image);
     const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
-    const fs::path pfm_out = with_suffix(png_out, "", ".pfm");
-    write_outputs(r.image, png_out, pfm_out);
-    print_summary(chapter, context, needed_effects, *result, reference,
-                  png_out.string() + " and " + pfm_out.string());
+    const std::optional<Film> film = film_of(plan, r, mpi);
+    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr);
+    // The summary speaks of every rank's samples, not rank 0's share.
+    RenderSettings all_ranks = settings;
+    all_ranks.samples = plan.whole;
+    print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result, reference,
+                  written);
     return r.interrupted ? kExitInterrupted : kExitOk;
 }
 
@@ -234,12 +213,19 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
 
 int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
                 const ChapterRender& render) {
+    std::optional<MpiSession> mpi;
     try {
-        return run(argc, argv, chapter, add_flags, render);
+        mpi.emplace();
+        return run(argc, argv, chapter, add_flags, render, *mpi);
     } catch (const InputError& e) {
-        std::fprintf(stderr, "%s: %s\n", chapter.executable, e.what());
+        // Every rank checks the same input and fails alike: rank 0 says why.
+        if (!mpi || mpi->is_root()) std::fprintf(stderr, "%s: %s\n", chapter.executable, e.what());
         return kExitBadInput;
     } catch (const std::exception& e) {
+        if (mpi && mpi->size() > 1) {
+            std::fprintf(stderr, "%s: rank %d failed: %s\n", chapter.executable, mpi->rank(), e.what());
+            mpi->abort(kExitFailure);
+        }
         std::fprintf(stderr, "%s: failed: %s\n", chapter.executable, e.what());
         return kExitFailure;
     }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rt/errors.hpp"
+#include "rt/pixel_sums.hpp"
 
 namespace rt {
 
@@ -24,7 +25,7 @@ void check_image_size(long long width, long long height) {
         throw InputError("image size " + size + " is too large: at most " + std::to_string(kMaxImageSide) +
                          " pixels a side");
     }
-    const double needed = 2.0 * double(width) * double(height) * double(sizeof(Color));
+    const double needed = double(width) * double(height) * double(sizeof(Color) + sizeof(PixelSum));
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
     if (memory > 0 && needed > memory / 2) {
         throw InputError("image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of " +

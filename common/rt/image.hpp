@@ -11,8 +11,9 @@ namespace rt {
 inline constexpr int kMaxImageSide = 1 << 16;
 inline constexpr int kMaxSamplesPerPixel = 1 << 20;
 
-// Throws InputError unless width and height are in [1, kMaxImageSide] and the buffers a render needs
-// (two of RGB floats) fit in this machine's memory; the message gives the size it would need.
+// Throws InputError unless width and height are in [1, kMaxImageSide] and the buffers a render needs (its
+// image and its exact sums, pixel_sums.hpp) fit in this machine's memory; the message gives the size it
+// would need.
 void check_image_size(long long width, long long height);
 
 class Image {

@@ -17,6 +17,7 @@
 #include <system_error>
 #include <vector>
 
+#include "rt/atomic_file.hpp"
 #include "rt/errors.hpp"
 
 namespace rt {
@@ -46,49 +47,6 @@ void check_writable(const fs::path& path) {
     }
     if (fs::is_directory(path, ec)) throw InputError(where + "it is a folder");
 }
-
-namespace {
-
-// What went wrong, from errno, for a message: " (No space left on device)".
-std::string system_reason(int error) {
-    return error != 0 ? " (" + std::string(std::strerror(error)) + ")" : "";
-}
-
-// Writes through `write_to(file)` into a temporary file beside `path`, then renames it over `path`: all or
-// nothing. Every write, the flush and the close are checked, so a full disk cannot leave a truncated file.
-void write_atomically(const fs::path& path, const std::function<bool(std::FILE*)>& write_to) {
-    check_writable(path);
-    const fs::path temporary = path.string() + ".partial-" + std::to_string(::getpid());
-    errno = 0;
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) {
-        throw std::runtime_error(path.string() + ": could not create " + temporary.string() +
-                                 system_reason(errno));
-    }
-    bool ok = write_to(file);
-    ok = std::fflush(file) == 0 && ok;
-    const int error = errno;
-    ok = std::fclose(file) == 0 && ok;
-    std::error_code ec;
-    if (!ok) {
-        fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() + ": could not write the file" +
-                                 system_reason(error ? error : errno) +
-                                 "; an earlier file of that name is left as it was");
-    }
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() +
-                                 ": could not rename the finished file into place: " + ec.message());
-    }
-}
-
-bool write_bytes(std::FILE* file, const void* data, std::size_t size) {
-    return std::fwrite(data, 1, size, file) == size;
-}
-
-}  // namespace
 
 void write_png(const Image& image, const fs::path& path) {
     std::vector<std::uint8_t> bytes(image.pixel_count() * 3);
@@ -137,13 +95,18 @@ void write_pfm(const Image& image, const fs::path& path) {
     });
 }
 
-Image read_pfm(const fs::path& path) {
-    const std::string name = path.string();
+void check_regular_file(const fs::path& path, const std::string& kind) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec)) {
-        throw InputError(name + ": must be a PFM file, got " +
+        throw InputError(path.string() + ": must be " + kind + ", got " +
                          (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
     }
+}
+
+Image read_pfm(const fs::path& path) {
+    const std::string name = path.string();
+    check_regular_file(path, "a PFM file");
+    std::error_code ec;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name + ": cannot be opened for reading");
     std::string magic;

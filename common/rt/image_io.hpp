@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "rt/image.hpp"
 
@@ -22,5 +23,8 @@ Image read_pfm(const std::filesystem::path& path);
 
 // Checks before rendering that `path` can be created: its folder exists and is writable.
 void check_writable(const std::filesystem::path& path);
+// Checks that `path` is a file to read: throws InputError "NAME: must be KIND, got no such file" (or "got
+// something else (a folder?)").
+void check_regular_file(const std::filesystem::path& path, const std::string& kind);
 
 }  // namespace rt

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -64,8 +65,15 @@ class Progress {
 
 }  // namespace
 
-RenderResult render_tiles(const RenderSettings& settings, Image& sums, const TileFunction& render_tile) {
-    const int spp = std::max(settings.samples_per_pixel, 1);
+PixelSums starting_sums(const RenderSettings& settings) {
+    if (!settings.resume) return PixelSums(settings.width, settings.height);
+    if (settings.resume->width() != settings.width || settings.resume->height() != settings.height)
+        throw std::logic_error("render: the sums to resume are not the size of the image");
+    return *settings.resume;
+}
+
+RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const TileFunction& render_tile) {
+    const SampleRange range = samples_taken(settings);
     const int threads =
         settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     ProgressStyle style = settings.progress;
@@ -76,25 +84,34 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
     const int tiles_y = (settings.height + kTileSize - 1) / kTileSize;
     const int tile_count = tiles_x * tiles_y;
-    const double total_samples = double(settings.width) * double(settings.height) * spp;
+    const double total_samples = double(settings.width) * double(settings.height) * range.size();
     auto tile_bounds = [&](int tile) {
         const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
         return std::array<int, 4>{x0, y0, std::min(x0 + kTileSize, settings.width),
                                   std::min(y0 + kTileSize, settings.height)};
     };
+    // Samples a tile's pixels have before `end` of a pass: those resumed count as taken.
+    auto samples_in = [&](int x0, int y0, int x1, int y1, int first, int end) {
+        std::uint64_t n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                const int from = std::max(first, range.first + int(sums.at(x, y).count));
+                n += std::uint64_t(std::max(0, end - from));
+            }
+        return n;
+    };
 
     std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
-    std::vector<int> tile_samples(static_cast<std::size_t>(tile_count),
-                                  0);  // samples each pixel of a tile has
-    std::atomic<std::uint64_t> samples_done{0};
+    const std::uint64_t samples_resumed = sums.total_count();
+    std::atomic<std::uint64_t> samples_done{0};  // by this run
     const auto start = Clock::now();
 
     std::exception_ptr failure;  // the first exception a sample threw, on any thread
     std::mutex failure_mutex;
     std::atomic<bool> failed{false};
-    const int per_pass = std::clamp((spp + kPasses - 1) / kPasses, 1, kMaxPassSamples);
-    for (int first = 0, end = 1; first < spp && !interrupt_requested();
-         first = end, end = std::min(spp, end + per_pass)) {
+    const int per_pass = std::clamp((range.size() + kPasses - 1) / kPasses, 1, kMaxPassSamples);
+    for (int first = range.first, end = range.first + 1; first < range.end && !interrupt_requested();
+         first = end, end = std::min(range.end, end + per_pass)) {
         std::atomic<int> next_tile{0};
         std::atomic<int> workers_running{threads};
         auto worker = [&](int thread_index) {
@@ -103,10 +120,10 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
                 for (int tile = next_tile++; tile < tile_count && !interrupt_requested() && !failed;
                      tile = next_tile++) {
                     const auto [x0, y0, x1, y1] = tile_bounds(tile);
+                    const std::uint64_t taken = samples_in(x0, y0, x1, y1, first, end);
+                    if (taken == 0) continue;
                     render_tile(x0, y0, x1, y1, first, end, rays);
-                    tile_samples[std::size_t(tile)] = end;
-                    samples_done +=
-                        std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(end - first);
+                    samples_done += taken;
                 }
             } catch (...) {
                 // An exception cannot cross a thread: keep the first, stop the others, rethrow it below.
@@ -116,12 +133,13 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
             }
             --workers_running;
         };
+        auto fraction_done = [&] { return double(samples_resumed + samples_done.load()) / total_samples; };
         std::vector<std::thread> pool;
         for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
         if (progress.animated()) {
             std::thread own(worker, 0);
             while (workers_running.load() > 0) {
-                progress.show(double(samples_done.load()) / total_samples, seconds_since(start));
+                progress.show(fraction_done(), seconds_since(start));
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
             }
             own.join();
@@ -130,7 +148,7 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
         }
         for (auto& t : pool) t.join();
         if (failure) std::rethrow_exception(failure);
-        progress.show(double(samples_done.load()) / total_samples, seconds_since(start));
+        progress.show(fraction_done(), seconds_since(start));
     }
     progress.clear();
 
@@ -138,18 +156,11 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     result.seconds = seconds_since(start);
     for (const RayCounts& r : rays_per_thread) result.rays += r;
     // Each pixel is the mean of the samples it has; after an interrupt, tiles may differ by one pass.
-    result.samples_per_pixel = spp;
-    for (int tile = 0; tile < tile_count; ++tile) {
-        const int n = tile_samples[std::size_t(tile)];
-        result.samples_per_pixel = std::min(result.samples_per_pixel, n);
-        const auto [x0, y0, x1, y1] = tile_bounds(tile);
-        const Real inverse = n > 0 ? Real(1) / Real(n) : Real(0);
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) sums.at(x, y) *= inverse;
-    }
+    result.samples_per_pixel = int(sums.min_count());
     result.samples = samples_done.load();
-    result.interrupted = result.samples_per_pixel < spp;
-    result.image = std::move(sums);
+    result.interrupted = result.samples_per_pixel < range.size();
+    result.image = sums.mean_image();
+    result.sums = std::move(sums);
     return result;
 }
 

@@ -1,15 +1,20 @@
 // The parallel render loop: every pixel gets `spp` samples; tiles of 16×16 pixels are handed to the threads.
 // Samples are taken in passes (all pixels get samples [a, b) before any gets sample b), so an interrupted
 // render still has an even image. Each sample gets its own random stream from (pixel, sample, seed) and a
-// pixel's samples are summed in order, so the image is bit-identical for any number of threads.
+// pixel's samples are summed exactly (pixel_sums.hpp), so the image is bit-identical for any number of
+// threads, and for a render taken in pieces of its samples (settings.samples) or continued (settings.resume).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 #include "rt/image.hpp"
+#include "rt/pixel_sums.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
+#include "rt/sample_range.hpp"
 
 namespace rt {
 
@@ -18,18 +23,29 @@ enum class ProgressStyle { kAuto, kBar, kLines, kNone };
 struct RenderSettings {
     int width = 0;
     int height = 0;
-    int samples_per_pixel = 1;
+    int samples_per_pixel = 1;  // of the whole render: a sample function may depend on it (strata)
     std::uint64_t seed = 0;
     int threads = 0;  // 0: every core
     ProgressStyle progress = ProgressStyle::kAuto;
+    // The samples this run takes (--samples A:B, or one MPI rank's share); all of them when empty.
+    std::optional<SampleRange> samples = std::nullopt;
+    // Sums to continue (--resume; not owned): pixel p already holds samples first … first + count − 1 of
+    // `samples`, and the render takes the rest.
+    const PixelSums* resume = nullptr;
 };
 
+// The samples a render with these settings takes.
+inline SampleRange samples_taken(const RenderSettings& settings) {
+    return settings.samples.value_or(SampleRange{0, std::max(settings.samples_per_pixel, 1)});
+}
+
 struct RenderResult {
-    Image image;
+    Image image;     // each pixel the mean of its samples in `sums`
+    PixelSums sums;  // empty for a render that splats (chapter 08's light paths) instead of sampling pixels
     RayCounts rays;
     double seconds = 0;
     std::uint64_t samples = 0;     // samples actually taken
-    int samples_per_pixel = 0;     // samples every pixel has (less than asked when interrupted)
+    int samples_per_pixel = 0;     // samples every pixel has (fewer than asked when interrupted)
     bool interrupted = false;
 };
 
@@ -47,27 +63,30 @@ concept SampleFunction = requires(F f, const PixelSample& s, Pcg32& rng, RayCoun
 };
 
 namespace detail {
-// Runs `render_tile(x0, y0, x1, y1, first_sample, end_sample, sums, rays)` over every tile and pass. If it
-// throws on any thread, the other threads stop after their tile and the first exception is rethrown here.
+// Runs `render_tile(x0, y0, x1, y1, first_sample, end_sample, rays)` over every tile and pass, adding into
+// `sums` (the resumed sums, or zeros), which the result then takes. If it throws on any thread, the other
+// threads stop after their tile and the first exception is rethrown here.
 using TileFunction = std::function<void(int, int, int, int, int, int, RayCounts&)>;
-RenderResult render_tiles(const RenderSettings& settings, Image& sums, const TileFunction& render_tile);
+RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const TileFunction& render_tile);
+// The sums a render starts from: settings.resume's, or zeros. Throws std::logic_error on a size mismatch.
+PixelSums starting_sums(const RenderSettings& settings);
 }  // namespace detail
 
 template <SampleFunction F>
 RenderResult render(const RenderSettings& settings, F&& sample) {
-    Image sums(settings.width, settings.height);
+    PixelSums sums = detail::starting_sums(settings);
+    const int range_first = samples_taken(settings).first;
     const std::uint64_t width = std::uint64_t(settings.width);
     return detail::render_tiles(
         settings, sums, [&](int x0, int y0, int x1, int y1, int first, int end, RayCounts& rays) {
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
-                    Color sum = sums.at(x, y);
-                    for (int s = first; s < end; ++s) {
+                    PixelSum& sum = sums.at(x, y);
+                    for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
                         Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
-                        sum += Color(sample(PixelSample{x, y, s}, rng, rays));
+                        sum.add(Color(sample(PixelSample{x, y, s}, rng, rays)));
                     }
-                    sums.at(x, y) = sum;
                 }
             }
         });

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # interrupt.sh EXECUTABLE PFM_CHECK SLOW_EXECUTABLE: Ctrl-C during a render.
-#  1. One SIGINT: the render stops within a second, writes out.partial.png and out.partial.pfm (finite, with
+#  1. One SIGINT: the render stops within a second, writes out.partial.png, .pfm and .film (finite, with
 #     the samples it has, said in the summary), leaves the earlier out.png and out.pfm as they were, exits 130.
 #  2. Two SIGINTs while the tiles in progress are still being finished: the second exits at once, with 130,
 #     and leaves no file at all (no partial image, no temporary file). SLOW_EXECUTABLE is chapter 02's, run
@@ -36,10 +36,11 @@ echo "one SIGINT: exit status $status, stopped and saved in $stop s"
 awk -v s="$stop" 'BEGIN { exit !(s < 1.0) }' || fail "took $stop s to stop after SIGINT, expected under 1 s"
 [ -f out.partial.png ] || fail "no out.partial.png"
 [ -f out.partial.pfm ] || fail "no out.partial.pfm"
+[ -f out.partial.film ] || fail "no out.partial.film"
 [ "$(md5sum out.png out.pfm)" = "$before" ] || fail "the earlier out.png or out.pfm was changed"
 grep -q "interrupted: finishing the tiles in progress" stderr || fail "no interrupt message on stderr: $(cat stderr)"
 grep -q "interrupted: partial image with" stdout || fail "the summary does not say the image is partial: $(cat stdout)"
-grep -q "wrote out.partial.png and out.partial.pfm" stdout || fail "the summary does not name the partial files"
+grep -q "wrote out.partial.png, out.partial.pfm and out.partial.film" stdout || fail "the summary does not name the partial files"
 grep "interrupted: partial" stdout
 if [ -f out.partial.pfm ]; then
     check=$("$pfm_check" out.partial.pfm 2>&1) || fail "partial PFM: $check"

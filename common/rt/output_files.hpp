@@ -1,0 +1,27 @@
+// A run's output files: the PNG, the PFM beside it and, for a piece of a render, its film; all of them or
+// none, checked for NaN and infinity first. Shared by the chapter executables (app.cpp) and rt_merge.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "rt/film.hpp"
+#include "rt/image.hpp"
+
+namespace rt {
+
+// x.png with `suffix` and `extension`: with_suffix("a/x.png", ".partial", ".pfm") is "a/x.partial.pfm".
+std::filesystem::path with_suffix(const std::filesystem::path& png, const std::string& suffix,
+                                  const std::string& extension);
+
+// No NaN or infinity may reach an image: one is a bug in the chapter, reported as a failure
+// (std::runtime_error, exit 1).
+void check_finite(const Image& image);
+
+// Writes the PNG, the PFM beside it and, given `film`, the film beside them (x.png, x.pfm, x.film): each is
+// first written whole under a staging name, then all are renamed into place; SIGINT is held back meanwhile,
+// so a second Ctrl-C (which exits at once) cannot leave a staging file behind. Returns what it wrote, for the
+// summary: "x.png and x.pfm" or "x.png, x.pfm and x.film".
+std::string write_outputs(const Image& image, const std::filesystem::path& png, const Film* film = nullptr);
+
+}  // namespace rt

@@ -1,0 +1,68 @@
+// rt_merge --out x.png PIECES.film...: adds the films of a render's pieces (chNN_name --samples A:B --out
+// p.png writes p.film) into the image of the whole render, bit for bit the image of one run of --spp N. The
+// pieces must be of one render and together take samples 0:N exactly once; anything else exits with 2 and
+// one line naming the offending piece. Writes x.png, x.pfm and x.film (a film of 0:N).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "rt/errors.hpp"
+#include "rt/film_merge.hpp"
+#include "rt/image_io.hpp"
+#include "rt/output_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int merge(int argc, char** argv) {
+    CLI::App app("Adds the films of a render's pieces (--samples A:B) into the image of the whole",
+                 "rt_merge");
+    std::string out;
+    std::vector<std::string> pieces;
+    app.add_option("--out", out, "Output PNG; the PFM and the film of the whole go beside it")->required();
+    app.add_option("pieces", pieces, "The pieces' films")->required();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
+    }
+    const fs::path png = out;
+    if (png.extension() != ".png") throw rt::InputError("--out: must end in .png, got " + png.string());
+    for (const fs::path& path : {png, rt::with_suffix(png, "", ".pfm"), rt::with_suffix(png, "", ".film")}) {
+        try {
+            rt::check_writable(path);
+        } catch (const rt::InputError& e) {
+            throw rt::InputError(std::string("--out: ") + e.what());
+        }
+    }
+    std::vector<rt::FilmPiece> films;
+    for (const std::string& piece : pieces) films.push_back({piece, rt::read_film(piece)});
+    const rt::Film whole = rt::merge_films(std::move(films));
+    const rt::Image image = whole.sums.mean_image();
+    rt::check_finite(image);
+    const std::string written = rt::write_outputs(image, png, &whole);
+    const rt::FilmIdentity& id = whole.identity;
+    std::printf("rt_merge: %zu pieces of %s on %s, %dx%d, samples 0:%d, seed %llu: wrote %s\n", pieces.size(),
+                id.chapter.c_str(), id.scene.c_str(), id.width, id.height, id.samples_per_pixel,
+                static_cast<unsigned long long>(id.seed), written.c_str());
+    return rt::kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return merge(argc, argv);
+    } catch (const rt::InputError& e) {
+        std::fprintf(stderr, "rt_merge: %s\n", e.what());
+        return rt::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "rt_merge: failed: %s\n", e.what());
+        return rt::kExitFailure;
+    }
+}

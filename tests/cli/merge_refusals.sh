@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# merge_refusals.sh EXECUTABLE OTHER_EXECUTABLE RT_MERGE: what does not fit is refused with exit 2, one line
+# naming the offending piece, and no file written: rt_merge given a gap, an overlap, pieces of other renders
+# (seed, size, samples per pixel, chapter flags, scene, chapter), an interrupted piece, a corrupt, truncated or
+# other-version film, or a file that is no film; a chapter given a bad --samples or a --resume film that does
+# not fit.
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/lib.sh"
+exe=$1
+other=$2
+merge=$3
+name=$(basename "$exe")
+pieces="$scratch/pieces" && mkdir -p "$pieces" && cd "$pieces" || exit 1
+base=(--width 16 --height 8 --spp 6 --threads 2 --quiet)
+piece() {  # piece OUT RANGE [FLAGS...]: renders one piece into $pieces
+    local out=$1 range=$2
+    shift 2
+    "$exe" "${base[@]}" --samples "$range" --out "$out.png" "$@" > /dev/null 2>&1 || fail "piece $out ($range) failed"
+}
+piece a 0:2
+piece b 2:4
+piece c 4:6
+piece overlap 3:6
+piece seed 2:4 --seed 7
+piece flags 2:4 --pixel-sampler uniform
+piece scene 2:4 --scene "$here/../../assets/scenes/cornell.json"
+"$exe" --width 16 --height 9 --spp 6 --threads 2 --quiet --samples 2:4 --out size.png > /dev/null 2>&1 || fail "size piece"
+"$exe" --width 16 --height 8 --spp 8 --threads 2 --quiet --samples 2:4 --out spp.png > /dev/null 2>&1 || fail "spp piece"
+"$other" "${base[@]}" --samples 2:4 --out chapter.png > /dev/null 2>&1 || fail "chapter piece"
+# Corrupt: one byte of the pixel data changed. Truncated: the last 100 bytes cut. Version: the version field
+# (bytes 8-11) set to 2. Not a film: a PFM.
+cp b.film corrupt.film && printf '\x55' | dd of=corrupt.film bs=1 seek=500 conv=notrunc status=none
+head -c -100 b.film > truncated.film
+cp b.film version.film && printf '\x02' | dd of=version.film bs=1 seek=8 conv=notrunc status=none
+# Interrupted: b.film's range widened to 2:5 (checksum recomputed), so its pixels have 2 of its 3 samples.
+python3 - b.film interrupted.film <<'PY'
+import struct, sys
+data = bytearray(open(sys.argv[1], "rb").read()[:-8])
+struct.pack_into("<I", data, 32, 5)  # the end sample (see common/README.md, "The film file")
+h = 0xcbf29ce484222325
+for b in data:
+    h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
+open(sys.argv[2], "wb").write(data + struct.pack("<Q", h))
+PY
+P=$pieces
+# The control: the pieces that fit are merged.
+"$merge" --out "$scratch/control.png" "$P/c.film" "$P/a.film" "$P/b.film" > /dev/null 2>&1 || fail "a, b and c were not merged"
+
+refused() {  # refused WHAT EXPECTED_PREFIX PIECES...
+    local what=$1 expected=$2
+    shift 2
+    expect_bad_input "rt_merge: $what" "rt_merge: $expected" 1 -- "$merge" --out out.png "$@"
+}
+refused "a gap" "$P/c.film: takes samples 4:6, but samples 2:4 are in no piece (the piece before is $P/a.film, 0:2)" \
+    "$P/a.film" "$P/c.film"
+refused "a gap at the start" "$P/b.film: takes samples 2:4, but samples 0:2 are in no piece" "$P/c.film" "$P/b.film"
+refused "a gap at the end" "$P/b.film: the last piece ends at sample 4, but samples 4:6 are in no piece" \
+    "$P/a.film" "$P/b.film"
+refused "an overlap" "$P/overlap.film: takes samples 3:6, which overlap $P/b.film (2:4) at samples 3:4" \
+    "$P/a.film" "$P/b.film" "$P/overlap.film"
+refused "the same piece twice" "$P/b.film: takes samples 2:4, which overlap $P/b.film (2:4) at samples 2:4" \
+    "$P/a.film" "$P/b.film" "$P/b.film" "$P/c.film"
+refused "another seed" "$P/seed.film: not a piece of the same render as $P/a.film: seed 7, expected 1" \
+    "$P/a.film" "$P/seed.film" "$P/c.film"
+refused "another size" "$P/size.film: not a piece of the same render as $P/a.film: size 16x9, expected 16x8" \
+    "$P/a.film" "$P/size.film" "$P/c.film"
+refused "another spp" "$P/spp.film: not a piece of the same render as $P/a.film: samples per pixel 8, expected 6" \
+    "$P/a.film" "$P/spp.film" "$P/c.film"
+refused "other chapter flags" "$P/flags.film: not a piece of the same render as $P/a.film: chapter flags \"--pixel-sampler=uniform\", expected \"\"" \
+    "$P/a.film" "$P/flags.film" "$P/c.film"
+refused "another scene" "$P/scene.film: not a piece of the same render as $P/a.film: scene cornell.json" \
+    "$P/a.film" "$P/scene.film" "$P/c.film"
+refused "another chapter" "$P/chapter.film: not a piece of the same render as $P/a.film: chapter $(basename "$other"), expected $name" \
+    "$P/a.film" "$P/chapter.film" "$P/c.film"
+refused "a corrupt film" "$P/corrupt.film: corrupt: its checksum does not match its contents" \
+    "$P/a.film" "$P/corrupt.film" "$P/c.film"
+refused "a truncated film" "$P/truncated.film: corrupt: its checksum does not match its contents" \
+    "$P/a.film" "$P/truncated.film" "$P/c.film"
+refused "another version" "$P/version.film: film version 2, this program reads version 1" \
+    "$P/a.film" "$P/version.film" "$P/c.film"
+refused "a PFM" "$P/b.pfm: not a film file (it does not start with \"rt-film\")" "$P/a.film" "$P/b.pfm" "$P/c.film"
+refused "a missing piece" "$P/none.film: must be a film file, got no such file" "$P/a.film" "$P/none.film"
+refused "no piece" "usage: pieces is required (see --help)" 
+refused "an interrupted piece" "$P/interrupted.film: an interrupted render (some pixels have 2 of its samples 2:5): finish it first with --resume $P/interrupted.film" \
+    "$P/a.film" "$P/interrupted.film" "$P/c.film"
+expect_bad_input "rt_merge: --out not .png" "rt_merge: --out: must end in .png, got out.pfm" 0 -- \
+    "$merge" --out out.pfm "$P/a.film" "$P/b.film" "$P/c.film"
+
+
+# The chapter's side: bad --samples and --resume films that do not fit, before any render.
+chapter_refused() {  # chapter_refused WHAT EXPECTED ARGS...
+    local what=$1 expected=$2
+    shift 2
+    expect_bad_input "$name $what" "$name: $expected" 1 -- "$exe" "${base[@]}" --out out.png "$@"
+}
+chapter_refused "--samples empty range" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 3:3" --samples 3:3
+chapter_refused "--samples past spp" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 0:7" --samples 0:7
+chapter_refused "--samples not a range" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 2" --samples 2
+chapter_refused "--resume another seed" "--resume: $P/seed.film: a film of another render: seed 7, expected 1" --resume "$P/seed.film"
+chapter_refused "--resume corrupt" "--resume: $P/corrupt.film: corrupt" --resume "$P/corrupt.film"
+chapter_refused "--resume moved" "--resume: $P/b.film: takes samples 2:4: --samples can only extend it (2:B, B >= 4), got 0:6" \
+    --resume "$P/b.film" --samples 0:6
+finish

@@ -1,0 +1,219 @@
+// A render split by sample range: exact per-pixel sums, the render loop's pieces and resumes, the film file,
+// the merge of pieces and the split among MPI ranks (the executables' side is tests/cli/split_render*.sh).
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "rt/errors.hpp"
+#include "rt/film.hpp"
+#include "rt/film_merge.hpp"
+#include "rt/interrupt.hpp"
+#include "rt/pixel_sums.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/sample_range.hpp"
+
+using namespace rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Radiance-like samples over many magnitudes, as a path tracer's fireflies give.
+std::vector<Color> wild_samples(int n) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0, 1);
+    std::vector<Color> samples;
+    for (int i = 0; i < n; ++i) {
+        const float scale = std::pow(10.0f, unit(random) * 12 - 6);
+        samples.emplace_back(unit(random) * scale, unit(random), -unit(random) * scale);
+    }
+    return samples;
+}
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin(),
+                      [](const Color& x, const Color& y) { return std::memcmp(&x, &y, sizeof x) == 0; });
+}
+
+// A sample function that, like a stratified sampler, depends on the render's samples per pixel.
+RenderSettings small_settings() {
+    RenderSettings settings;
+    settings.width = 21;
+    settings.height = 19;
+    settings.samples_per_pixel = 7;
+    settings.seed = 3;
+    settings.threads = 2;
+    settings.progress = ProgressStyle::kNone;
+    return settings;
+}
+auto stratified_sample(const RenderSettings& settings) {
+    return [&settings](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        rays.add(RayKind::kCamera);
+        const Real stratum = (Real(s.index) + rng.next_real()) / Real(settings.samples_per_pixel);
+        return Color(stratum, rng.next_real() * Real(1e4), Real(s.x) * Real(0.1) + rng.next_real());
+    };
+}
+
+}  // namespace
+
+TEST_CASE("Exact sums are the same bits whatever the order and the split of the samples", "[split]") {
+    const std::vector<Color> samples = wild_samples(1000);
+    PixelSum in_order;
+    for (const Color& c : samples) in_order.add(c);
+    std::vector<Color> shuffled = samples;
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(11));
+    PixelSum any_order;
+    for (const Color& c : shuffled) any_order.add(c);
+    PixelSum pieces;
+    for (std::size_t first = 0; first < samples.size(); first += 37) {  // pieces of 37, the last shorter
+        PixelSum piece;
+        for (std::size_t i = first; i < std::min(samples.size(), first + 37); ++i) piece.add(samples[i]);
+        pieces.add(piece);
+    }
+    CHECK(in_order == any_order);
+    CHECK(in_order == pieces);
+    const Color a = in_order.mean(), b = any_order.mean();
+    CHECK(std::memcmp(&a, &b, sizeof a) == 0);
+    // A float sum in another order is not the same bits: this is what the exact sums are for.
+    float forward = 0, backward = 0;
+    for (const Color& c : samples) forward += c.r;
+    for (auto it = samples.rbegin(); it != samples.rend(); ++it) backward += it->r;
+    CHECK(forward != backward);
+}
+
+TEST_CASE("An exact mean is the float mean, rounded once", "[split]") {
+    PixelSum one;
+    one.add(Color(0.1f, 3.0f, 1e-6f));
+    CHECK(one.mean() == Color(0.1f, 3.0f, 1e-6f));  // a single sample comes back as it went in
+    PixelSum two;
+    two.add(Color(0.25f));
+    two.add(Color(0.75f));
+    CHECK(two.mean() == Color(0.5f));
+    const std::vector<Color> samples = wild_samples(100);
+    PixelSum sum;
+    double exact = 0;
+    for (const Color& c : samples) {
+        sum.add(c);
+        exact += double(c.g);
+    }
+    CHECK(double(sum.mean().g) == Approx(exact / 100).epsilon(1e-7));
+    CHECK(PixelSum{}.mean() == Color(0));
+}
+
+TEST_CASE("NaN and infinite samples make the pixel NaN or infinite, as float addition would", "[split]") {
+    const Real inf = std::numeric_limits<Real>::infinity(), nan = std::numeric_limits<Real>::quiet_NaN();
+    PixelSum p;
+    p.add(Color(inf, inf, nan));
+    p.add(Color(-inf, inf, 1));
+    const Color m = p.mean();
+    CHECK(std::isnan(m.r));  // +inf and -inf
+    CHECK(m.g == inf);
+    CHECK(std::isnan(m.b));
+    PixelSum huge;  // beyond ±2^50, a sample is clamped: its pixel stays finite
+    huge.add(Color(Real(1e30), Real(-1e30), 0));
+    CHECK(huge.mean() == Color(Real(0x1p50), Real(-0x1p50), 0));
+}
+
+TEST_CASE("split_range cuts a range into contiguous parts differing by at most one sample", "[split]") {
+    CHECK(split_range({0, 5}, 3, 0) == SampleRange{0, 2});
+    CHECK(split_range({0, 5}, 3, 1) == SampleRange{2, 4});
+    CHECK(split_range({0, 5}, 3, 2) == SampleRange{4, 5});
+    CHECK(split_range({4, 6}, 3, 2).size() == 0);  // more parts than samples: an empty part
+    CHECK(split_range({4, 6}, 1, 0) == SampleRange{4, 6});
+    CHECK(parse_sample_range("3:7", 7) == SampleRange{3, 7});
+    CHECK_THROWS_AS(parse_sample_range("7:7", 7), InputError);
+    CHECK_THROWS_AS(parse_sample_range("0:8", 7), InputError);
+    CHECK_THROWS_AS(parse_sample_range("-1:2", 7), InputError);
+    CHECK_THROWS_AS(parse_sample_range("1:2x", 7), InputError);
+}
+
+TEST_CASE("The render loop's pieces, added, are the whole render bit for bit", "[split]") {
+    const RenderSettings whole_settings = small_settings();
+    const RenderResult whole = render(whole_settings, stratified_sample(whole_settings));
+    PixelSums added(whole_settings.width, whole_settings.height);
+    std::uint64_t rays = 0;
+    for (const SampleRange r : {SampleRange{0, 1}, SampleRange{1, 4}, SampleRange{4, 5}, SampleRange{5, 7}}) {
+        RenderSettings s = whole_settings;
+        s.samples = r;
+        const RenderResult piece = render(s, stratified_sample(s));
+        CHECK(piece.samples_per_pixel == r.size());
+        CHECK_FALSE(piece.interrupted);
+        added.add(piece.sums);
+        rays += piece.rays.total();
+    }
+    CHECK(added == whole.sums);
+    CHECK(same_bits(added.mean_image(), whole.image));
+    CHECK(rays == whole.rays.total());
+}
+
+TEST_CASE("An interrupted render, resumed, is the uninterrupted render bit for bit", "[split]") {
+    RenderSettings settings = small_settings();
+    settings.samples_per_pixel =
+        40;  // passes of 1, then 5 samples: an interrupt leaves pixels at different counts
+    const RenderResult whole = render(settings, stratified_sample(settings));
+    int taken = 0;
+    auto interrupting = [&, sample = stratified_sample(settings)](const PixelSample& s, Pcg32& rng,
+                                                                  RayCounts& r) {
+        if (++taken == 21 * 19 * 3)
+            set_interrupt_requested(true);  // racy between threads, but only its timing
+        return sample(s, rng, r);
+    };
+    settings.threads = 1;
+    const RenderResult partial = render(settings, interrupting);
+    set_interrupt_requested(false);
+    REQUIRE(partial.interrupted);
+    CHECK(partial.sums.min_count() < 40);
+    settings.resume = &partial.sums;
+    settings.threads = 2;
+    const RenderResult resumed = render(settings, stratified_sample(settings));
+    CHECK_FALSE(resumed.interrupted);
+    CHECK(resumed.sums == whole.sums);
+    CHECK(same_bits(resumed.image, whole.image));
+    CHECK(partial.samples + resumed.samples == whole.samples);
+}
+
+TEST_CASE("A film written and read back is the same film, and a changed byte is refused as corrupt",
+          "[split]") {
+    RenderSettings settings = small_settings();
+    settings.samples = SampleRange{2, 5};
+    Film film{{"ch00_test", "test.json", 42, "--flag=1", settings.width, settings.height, 7, 3},
+              {2, 5},
+              render(settings, stratified_sample(settings)).sums};
+    const fs::path file = fs::temp_directory_path() / "rt_split_render_test.film";
+    write_film(film, file);
+    const Film back = read_film(file);
+    CHECK(back.identity == film.identity);
+    CHECK(back.range == film.range);
+    CHECK(back.sums == film.sums);
+    CHECK(back.complete());
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(1000);
+        f.put('\x7f');
+    }
+    CHECK_THROWS_WITH(read_film(file), Catch::Contains("corrupt: its checksum does not match"));
+    fs::remove(file);
+}
+
+TEST_CASE("merge_films adds pieces given in any order, and names the piece that leaves a gap", "[split]") {
+    const RenderSettings whole_settings = small_settings();
+    const RenderResult whole = render(whole_settings, stratified_sample(whole_settings));
+    const FilmIdentity id{"ch00_test",          "test.json",           42, "",
+                          whole_settings.width, whole_settings.height, 7,  3};
+    auto piece = [&](const char* name, SampleRange r) {
+        RenderSettings s = whole_settings;
+        s.samples = r;
+        return FilmPiece{name, Film{id, r, render(s, stratified_sample(s)).sums}};
+    };
+    const Film merged = merge_films({piece("c", {6, 7}), piece("a", {0, 3}), piece("b", {3, 6})});
+    CHECK(merged.range == SampleRange{0, 7});
+    CHECK(merged.sums == whole.sums);
+    CHECK_THROWS_WITH(merge_films({piece("a", {0, 3}), piece("c", {6, 7})}),
+                      "c: takes samples 6:7, but samples 3:6 are in no piece (the piece before is a, 0:3)");
+}
