@@ -273,8 +273,8 @@ TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
     std::ofstream(folder / "out_of_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
     CHECK_THAT(error_for(scene_with_mesh("out_of_range.obj")),
                Catch::Contains("shapes[0].file") &&
-                   Catch::EndsWith("face 1: vertex indices must be in [1, 3] (negative ones count back from "
-                                   "the last vertex), got 9"));
+                   Catch::EndsWith("out_of_range.obj: line 4, column 7: vertex index must be a whole number in "
+                                   "[1, 3] (or negative, counting back from the last), got \"9\""));
     std::ofstream(folder / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
     const Scene scene = parse_scene(scene_with_mesh("good.obj"), folder / "mesh.json");
     const auto& mesh = std::get<MeshShape>(scene.shapes[0].geometry);

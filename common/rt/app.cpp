@@ -1,10 +1,6 @@
 #include "rt/app.hpp"
 
-#include <pthread.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <thread>
@@ -15,15 +11,14 @@
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/printable.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/strict_flags.hpp"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
-
-// 128 + SIGINT: what a shell reports for a program stopped by Ctrl-C.
-constexpr int kExitInterrupted = 130;
 
 void add_core_flags(CLI::App& app, CoreOptions& o) {
     app.add_option("--scene", o.scene, "Scene file (JSON); default: the chapter's scene");
@@ -31,13 +26,7 @@ void add_core_flags(CLI::App& app, CoreOptions& o) {
     app.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    // CLI11 would read -1 as 2^64 - 1 for an unsigned seed: refuse the sign instead.
-    const CLI::Validator non_negative(
-        [](std::string& text) {
-            return text.starts_with('-') ? "must be a whole number >= 0, got " + text : "";
-        },
-        "NONNEGATIVE");
-    app.add_option("--seed", o.seed, "Random seed")->check(non_negative);
+    app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
     app.add_option("--reference", o.reference, "Reference image (PFM) to measure the error against");
     app.add_flag("--quiet", o.quiet, "No progress bar");
@@ -77,6 +66,13 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
             "  interrupted: partial image with %.4g samples per pixel on average (every pixel has at least "
             "%d) of the %d asked for\n",
             double(r.samples) / pixels, r.samples_per_pixel, s.samples_per_pixel);
+        if (r.unsampled_pixels > 0) {
+            const PixelRect& u = r.unsampled_region;
+            std::printf(
+                "  interrupted in the first pass: %llu of %.0f pixels have no sample and are black, all within "
+                "x [%d, %d), y [%d, %d)\n",
+                static_cast<unsigned long long>(r.unsampled_pixels), pixels, u.x0, u.x1, u.y0, u.y1);
+        }
     }
     auto print_error = [&](const char* against, const Image& image) {
         const ErrorMetrics e = compare(r.image, image);
@@ -114,45 +110,23 @@ void check_finite(const Image& image) {
     }
 }
 
-// Writes the PNG and the PFM beside it, both or neither. Each is first written whole under a staging name,
-// then both are renamed into place; SIGINT is held back meanwhile, so a second Ctrl-C (which exits at once)
-// cannot leave a staging file behind: it takes effect when the files are complete.
-void write_outputs(const Image& image, const fs::path& png, const fs::path& pfm) {
-    sigset_t sigint, previous;
-    sigemptyset(&sigint);
-    sigaddset(&sigint, SIGINT);
-    pthread_sigmask(SIG_BLOCK, &sigint, &previous);
-    const std::string stage = ".staged-" + std::to_string(::getpid());
-    const fs::path png_stage = png.string() + stage, pfm_stage = pfm.string() + stage;
+// Two paths name one file: the same path, or links to one file.
+bool same_file(const fs::path& a, const fs::path& b) {
     std::error_code ec;
-    try {
-        write_png(image, png_stage);
-        write_pfm(image, pfm_stage);
-        fs::rename(pfm_stage, pfm);
-        fs::rename(png_stage, png);
-    } catch (const std::exception& e) {
-        fs::remove(png_stage, ec);
-        fs::remove(pfm_stage, ec);
-        pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-        // The messages of write_png and write_pfm name the staging file; name the file the user asked for.
-        std::string what = e.what();
-        for (const auto& [staged, final_path] : {std::pair{png_stage, png}, std::pair{pfm_stage, pfm}}) {
-            for (auto at = what.find(staged.string()); at != std::string::npos;
-                 at = what.find(staged.string())) {
-                what.replace(at, staged.string().size(), final_path.string());
-            }
-        }
-        throw std::runtime_error(what);
-    }
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    if (fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec) && !ec) return true;
+    return fs::equivalent(a, b, ec);
 }
 
 int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
         const ChapterRender& render) {
+    // From the start: a signal during the checks makes the render stop at once (nothing written), and a
+    // second one removes any staging file of the output probes.
+    install_interrupt_handler();
     CLI::App app(chapter.description, chapter.executable);
     CoreOptions options;
     add_core_flags(app, options);
     if (add_flags) add_flags(app);
+    make_values_strict(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -174,20 +148,30 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     settings.threads =
         options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
     settings.progress = options.quiet ? ProgressStyle::kNone : ProgressStyle::kAuto;
+    // The size that will be rendered, whichever of the flags and the scene gave each side.
     try {
         check_image_size(settings.width, settings.height);
     } catch (const InputError& e) {
-        const bool from_flags = options.width || options.height;
-        throw InputError((from_flags ? std::string("--width/--height") : scene_file.string() + ": image") +
-                         ": " + e.what());
+        const std::string from_scene = scene.file + ": image";
+        const std::string source = options.width && options.height ? "--width/--height"
+                                   : options.width                 ? "--width and " + from_scene + ".height"
+                                   : options.height                ? from_scene + ".width and --height"
+                                                                   : from_scene;
+        throw InputError(source + ": " + e.what());
     }
 
     const fs::path png =
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
-    if (png.extension() != ".png") throw InputError("--out: must end in .png, got " + png.string());
-    // Every file this run may write, finished or partial, is checked before the render starts.
-    for (const fs::path& path : {png, with_suffix(png, "", ".pfm"), with_suffix(png, ".partial", ".png"),
-                                 with_suffix(png, ".partial", ".pfm")}) {
+    const std::string png_name = png.filename().string();
+    if (!png_name.ends_with(".png") || png_name.size() == 4) {
+        throw InputError("--out: must name a file ending in .png, with a name before the .png, got " + shown(png));
+    }
+    const fs::path pfm = with_suffix(png, "", ".pfm");
+    const fs::path partial_png = with_suffix(png, ".partial", ".png");
+    const fs::path partial_pfm = with_suffix(png, ".partial", ".pfm");
+    // Every file this run may write, finished or partial, is probed before the render starts: its staging
+    // file is created and removed (staged_file.hpp).
+    for (const fs::path& path : {png, pfm, partial_png, partial_pfm}) {
         try {
             check_writable(path);
         } catch (const InputError& e) {
@@ -196,13 +180,20 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     std::optional<Image> reference;
     if (!options.reference.empty()) {
+        const fs::path reference_file = options.reference;
+        for (const fs::path& output : {pfm, partial_pfm}) {
+            if (same_file(reference_file, output)) {
+                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
+                                 shown(output) + "); give another --out or copy the reference");
+            }
+        }
         try {
-            reference = read_pfm(options.reference);
+            reference = read_pfm(reference_file, PfmPixels::kRadiance);
         } catch (const InputError& e) {
             throw InputError(std::string("--reference: ") + e.what());
         }
         if (reference->width() != settings.width || reference->height() != settings.height) {
-            throw InputError("--reference: " + options.reference + ": must be the size of the image, " +
+            throw InputError("--reference: " + shown(reference_file) + ": must be the size of the image, " +
                              std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                              ", got " + std::to_string(reference->width()) + "x" +
                              std::to_string(reference->height()));
@@ -211,23 +202,27 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
 
     const EffectSet needed_effects = needed(scene);
     const RunContext context{scene, settings, needed_effects & chapter.supported};
-    install_interrupt_handler();
     const std::optional<ChapterRun> result = render(context);
-    if (!result) return interrupt_requested() ? kExitInterrupted : kExitOk;
+    set_interrupt_phase(InterruptPhase::kWriting);
+    if (!result) return interrupt_requested() ? interrupted_exit_status() : kExitOk;
 
     const RenderResult& r = result->result;
     if (r.interrupted && r.samples == 0) {
         std::fprintf(stderr, "%s: interrupted before any sample was taken; nothing written\n",
                      chapter.executable);
-        return kExitInterrupted;
+        return interrupted_exit_status();
     }
     check_finite(r.image);
-    const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
-    const fs::path pfm_out = with_suffix(png_out, "", ".pfm");
-    write_outputs(r.image, png_out, pfm_out);
-    print_summary(chapter, context, needed_effects, *result, reference,
-                  png_out.string() + " and " + pfm_out.string());
-    return r.interrupted ? kExitInterrupted : kExitOk;
+    const fs::path png_out = r.interrupted ? partial_png : png;
+    const fs::path pfm_out = r.interrupted ? partial_pfm : pfm;
+    write_png_and_pfm(r.image, png_out, pfm_out);
+    print_summary(chapter, context, needed_effects, *result, reference, shown(png_out) + " and " + shown(pfm_out));
+    if (!r.interrupted && interrupt_requested()) {
+        // The signal came once the render was done: the complete image was written all the same.
+        std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
+                     chapter.executable);
+    }
+    return r.interrupted || interrupt_requested() ? interrupted_exit_status() : kExitOk;
 }
 
 }  // namespace
@@ -237,10 +232,17 @@ int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const Chapter
     try {
         return run(argc, argv, chapter, add_flags, render);
     } catch (const InputError& e) {
-        std::fprintf(stderr, "%s: %s\n", chapter.executable, e.what());
+        // printable(): whatever the message quotes (a flag's value in CLI11's words), it stays one line.
+        std::fprintf(stderr, "%s: %s\n", chapter.executable, printable(e.what()).c_str());
         return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr,
+                     "%s: failed: out of memory (this machine's memory, or the limit set on this process, "
+                     "ulimit -v, is too small for this run)\n",
+                     chapter.executable);
+        return kExitFailure;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s: failed: %s\n", chapter.executable, e.what());
+        std::fprintf(stderr, "%s: failed: %s\n", chapter.executable, printable(e.what()).c_str());
         return kExitFailure;
     }
 }

@@ -1,5 +1,6 @@
 #include "rt/image.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -29,6 +30,12 @@ void check_image_size(long long width, long long height) {
     if (memory > 0 && needed > memory / 2) {
         throw InputError("image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of " +
                          "this machine's " + gigabytes(memory) + " of memory");
+    }
+    // A limit on this process's address space (ulimit -v) counts too.
+    rlimit limit{};
+    if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY && needed > double(limit.rlim_cur) / 2) {
+        throw InputError("image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of " +
+                         "the " + gigabytes(double(limit.rlim_cur)) + " this process may use (ulimit -v)");
     }
 }
 

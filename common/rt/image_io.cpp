@@ -1,5 +1,6 @@
 #include "rt/image_io.hpp"
 
+#include <pthread.h>
 #include <stb_image_write.h>
 #include <unistd.h>
 
@@ -8,6 +9,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -18,6 +20,9 @@
 #include <vector>
 
 #include "rt/errors.hpp"
+#include "rt/input_file.hpp"
+#include "rt/printable.hpp"
+#include "rt/staged_file.hpp"
 
 namespace rt {
 namespace fs = std::filesystem;
@@ -34,17 +39,15 @@ std::uint8_t to_display_byte(Real linear) {
 }
 
 void check_writable(const fs::path& path) {
+    const StagedFile probe(path);  // the staging file a write would use, created here and removed
+    // The name it would be renamed to must be one the folder takes.
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    const std::string where = path.string() + ": cannot be written: ";
-    std::error_code ec;
-    if (!fs::exists(folder, ec)) throw InputError(where + "folder " + folder.string() + " does not exist");
-    if (!fs::is_directory(folder, ec)) {
-        throw InputError(where + folder.string() + " is a file, not a folder");
+    const long longest = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    const std::size_t length = path.filename().native().size();
+    if (longest > 0 && length > std::size_t(longest)) {
+        throw InputError(shown(path) + ": cannot be written: its name is " + std::to_string(length) +
+                         " bytes, longer than the " + std::to_string(longest) + " its folder takes");
     }
-    if (::access(folder.c_str(), W_OK) != 0) {
-        throw InputError(where + "folder " + folder.string() + " is not writable");
-    }
-    if (fs::is_directory(path, ec)) throw InputError(where + "it is a folder");
 }
 
 namespace {
@@ -54,43 +57,12 @@ std::string system_reason(int error) {
     return error != 0 ? " (" + std::string(std::strerror(error)) + ")" : "";
 }
 
-// Writes through `write_to(file)` into a temporary file beside `path`, then renames it over `path`: all or
-// nothing. Every write, the flush and the close are checked, so a full disk cannot leave a truncated file.
-void write_atomically(const fs::path& path, const std::function<bool(std::FILE*)>& write_to) {
-    check_writable(path);
-    const fs::path temporary = path.string() + ".partial-" + std::to_string(::getpid());
-    errno = 0;
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) {
-        throw std::runtime_error(path.string() + ": could not create " + temporary.string() +
-                                 system_reason(errno));
-    }
-    bool ok = write_to(file);
-    ok = std::fflush(file) == 0 && ok;
-    const int error = errno;
-    ok = std::fclose(file) == 0 && ok;
-    std::error_code ec;
-    if (!ok) {
-        fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() + ": could not write the file" +
-                                 system_reason(error ? error : errno) +
-                                 "; an earlier file of that name is left as it was");
-    }
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw std::runtime_error(path.string() +
-                                 ": could not rename the finished file into place: " + ec.message());
-    }
-}
-
 bool write_bytes(std::FILE* file, const void* data, std::size_t size) {
     return std::fwrite(data, 1, size, file) == size;
 }
 
-}  // namespace
-
-void write_png(const Image& image, const fs::path& path) {
+// The PNG's bytes, tone-mapped and sRGB-encoded, into `file`; false when a write failed.
+bool encode_png(const Image& image, std::FILE* file) {
     std::vector<std::uint8_t> bytes(image.pixel_count() * 3);
     std::size_t i = 0;
     for (const Color& c : image.pixels()) {
@@ -103,46 +75,100 @@ void write_png(const Image& image, const fs::path& path) {
         std::FILE* file;
         bool ok;
     };
-    write_atomically(path, [&](std::FILE* file) {
-        Sink sink{file, true};
-        const int encoded = stbi_write_png_to_func(
-            [](void* context, void* data, int size) {
-                auto* s = static_cast<Sink*>(context);
-                s->ok = s->ok && write_bytes(s->file, data, std::size_t(size));
-            },
-            &sink, image.width(), image.height(), 3, bytes.data(), image.width() * 3);
-        return encoded != 0 && sink.ok;
-    });
+    Sink sink{file, true};
+    const int encoded = stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            auto* s = static_cast<Sink*>(context);
+            s->ok = s->ok && write_bytes(s->file, data, std::size_t(size));
+        },
+        &sink, image.width(), image.height(), 3, bytes.data(), image.width() * 3);
+    return encoded != 0 && sink.ok;
 }
 
 // PFM: "PF\n<width> <height>\n<scale>\n" then float RGB rows from the bottom up; a negative scale is
 // little-endian.
-void write_pfm(const Image& image, const fs::path& path) {
+bool encode_pfm(const Image& image, std::FILE* file) {
     static_assert(std::endian::native == std::endian::little, "the PFM writer marks its data little-endian");
-    write_atomically(path, [&](std::FILE* file) {
-        const std::string header =
-            "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n-1.0\n";
-        bool ok = write_bytes(file, header.data(), header.size());
-        std::vector<float> row(std::size_t(image.width()) * 3);
-        for (int y = image.height() - 1; y >= 0 && ok; --y) {
-            for (int x = 0; x < image.width(); ++x) {
-                const Color& c = image.at(x, y);
-                row[3 * std::size_t(x)] = float(c.r);
-                row[3 * std::size_t(x) + 1] = float(c.g);
-                row[3 * std::size_t(x) + 2] = float(c.b);
-            }
-            ok = write_bytes(file, row.data(), row.size() * sizeof(float));
+    const std::string header =
+        "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n-1.0\n";
+    bool ok = write_bytes(file, header.data(), header.size());
+    std::vector<float> row(std::size_t(image.width()) * 3);
+    for (int y = image.height() - 1; y >= 0 && ok; --y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const Color& c = image.at(x, y);
+            row[3 * std::size_t(x)] = float(c.r);
+            row[3 * std::size_t(x) + 1] = float(c.g);
+            row[3 * std::size_t(x) + 2] = float(c.b);
         }
-        return ok;
-    });
+        ok = write_bytes(file, row.data(), row.size() * sizeof(float));
+    }
+    return ok;
 }
 
-Image read_pfm(const fs::path& path) {
-    const std::string name = path.string();
+// Writes through `encode` into a staging file beside `path`, closing it; throws when a write, the flush or
+// the close failed, removing the staging file (an earlier file at `path` is left as it was).
+void stage(StagedFile& staged, const Image& image, bool (*encode)(const Image&, std::FILE*)) {
+    errno = 0;
+    bool ok = encode(image, staged.file());
+    const int error = errno;
+    ok = staged.close() && ok;
+    if (!ok) {
+        throw std::runtime_error(shown(staged.target()) + ": could not write the file" +
+                                 system_reason(error ? error : errno) +
+                                 "; an earlier file of that name is left as it was");
+    }
+}
+
+}  // namespace
+
+void write_png(const Image& image, const fs::path& path) {
+    StagedFile png(path);
+    stage(png, image, encode_png);
+    png.commit();
+}
+
+void write_pfm(const Image& image, const fs::path& path) {
+    StagedFile pfm(path);
+    stage(pfm, image, encode_pfm);
+    pfm.commit();
+}
+
+void write_png_and_pfm(const Image& image, const fs::path& png_path, const fs::path& pfm_path) {
+    StagedFile png(png_path), pfm(pfm_path);
+    stage(png, image, encode_png);
+    stage(pfm, image, encode_pfm);
+    // The two renames with SIGINT and SIGTERM held back: a signal that ends the process at once cannot fall
+    // between them (a new PFM beside an old PNG); it takes effect once both are in place.
+    sigset_t held, previous;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &held, &previous);
+    try {
+        pfm.commit();
+        png.commit();
+    } catch (...) {
+        pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+        throw;
+    }
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
+
+namespace {
+
+std::string show_number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", x);
+    return text;
+}
+
+}  // namespace
+
+Image read_pfm(const fs::path& path, PfmPixels pixels) {
+    const std::string name = shown(path);
     std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        throw InputError(name + ": must be a PFM file, got " +
-                         (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
+    if (const std::string problem = not_a_regular_file(path); !problem.empty()) {
+        throw InputError(name + ": must be a PFM file, got " + problem);
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name + ": cannot be opened for reading");
@@ -160,9 +186,17 @@ Image read_pfm(const fs::path& path) {
         !std::isfinite(scale)) {
         throw InputError(name + ": PFM header must give a width and height in [1, " +
                          std::to_string(kMaxImageSide) + "] and a non-zero scale, got " +
-                         std::to_string(width) + " " + std::to_string(height) + " " + std::to_string(scale));
+                         std::to_string(width) + " " + std::to_string(height) + " " + show_number(scale));
     }
-    in.get();  // the single whitespace after the scale
+    // One whitespace byte ends the header; a CRLF line end would shift every pixel by a byte.
+    const int after_scale = in.get();
+    if (after_scale == '\r' && in.peek() == '\n') {
+        throw InputError(name + ": PFM header must end in one whitespace byte before the pixels, got \"\\r\\n\" "
+                         "(a Windows line end)");
+    }
+    if (!std::isspace(after_scale)) {
+        throw InputError(name + ": PFM header must end in one whitespace byte before the pixels");
+    }
     // The data must all be there before the image is allocated: a short file with a huge header is refused.
     const auto data_start = in.tellg();
     const auto file_size = fs::file_size(path, ec);
@@ -191,10 +225,11 @@ Image read_pfm(const fs::path& path) {
                 }
             }
             const Color c(rgb[0], rgb[1], rgb[2]);
-            if (!is_finite(c)) {
-                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                 ") must be finite, got " + std::to_string(c.r) + " " + std::to_string(c.g) +
-                                 " " + std::to_string(c.b));
+            const bool radiance = pixels == PfmPixels::kRadiance;
+            if (!is_finite(c) || (radiance && (c.r < 0 || c.g < 0 || c.b < 0))) {
+                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") must be " +
+                                 (radiance ? "finite radiance, >= 0" : "finite") + ", got " + show_number(c.r) +
+                                 " " + show_number(c.g) + " " + show_number(c.b));
             }
             image.at(x, y) = c;
         }

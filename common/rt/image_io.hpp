@@ -1,5 +1,6 @@
 // Image files: PNG for people (tone-mapped, sRGB) and PFM for numbers (linear radiance, lossless floats).
-// Every file is written to a temporary name beside it and renamed, so a failed run never leaves half a file.
+// Every file is written under a staging name beside it (staged_file.hpp) and renamed, so a failed run never
+// leaves half a file.
 #pragma once
 
 #include <cstdint>
@@ -17,10 +18,15 @@ std::uint8_t to_display_byte(Real linear);
 // Throws InputError (unwritable path) or std::runtime_error (write failure); an earlier file is left as it was.
 void write_png(const Image& image, const std::filesystem::path& path);
 void write_pfm(const Image& image, const std::filesystem::path& path);
+// Both files or neither: each is written whole under its staging name, then both are renamed into place.
+void write_png_and_pfm(const Image& image, const std::filesystem::path& png, const std::filesystem::path& pfm);
+// What read_pfm accepts in a pixel: any finite value, or radiance (finite and >= 0, as a reference image's).
+enum class PfmPixels { kFinite, kRadiance };
 // Reads a colour PFM ("PF"), either byte order. Throws InputError naming the file and what is wrong.
-Image read_pfm(const std::filesystem::path& path);
+Image read_pfm(const std::filesystem::path& path, PfmPixels pixels = PfmPixels::kFinite);
 
-// Checks before rendering that `path` can be created: its folder exists and is writable.
+// Checks before rendering that `path` can be written: it is not a folder, and its folder exists, is a folder
+// and takes the staging file a write would use (created there and removed). Throws InputError naming why.
 void check_writable(const std::filesystem::path& path);
 
 }  // namespace rt

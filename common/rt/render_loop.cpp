@@ -17,10 +17,9 @@
 namespace rt::detail {
 namespace {
 
-constexpr int kTileSize = 16;
-// Samples are taken in passes: first one sample per pixel (so an interrupted image covers every pixel), then
-// an eighth of the rest per pass, but at most kMaxPassSamples, so Ctrl-C is answered within a pass of 256 ×
-// 16 samples per tile, whatever the sample count.
+// Samples are taken in passes: first one sample per pixel (so an image interrupted after it covers every
+// pixel), then an eighth of the rest per pass, but at most kMaxPassSamples, so that the passes a tile keeps
+// stay even. An interrupt is answered within a sample (render_loop.hpp), whatever the pass.
 constexpr int kPasses = 8;
 constexpr int kMaxPassSamples = 16;
 
@@ -103,7 +102,7 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
                 for (int tile = next_tile++; tile < tile_count && !interrupt_requested() && !failed;
                      tile = next_tile++) {
                     const auto [x0, y0, x1, y1] = tile_bounds(tile);
-                    render_tile(x0, y0, x1, y1, first, end, rays);
+                    if (!render_tile(x0, y0, x1, y1, first, end, rays)) break;
                     tile_samples[std::size_t(tile)] = end;
                     samples_done +=
                         std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0) * std::uint64_t(end - first);
@@ -139,18 +138,30 @@ RenderResult render_tiles(const RenderSettings& settings, Image& sums, const Til
     for (const RayCounts& r : rays_per_thread) result.rays += r;
     // Each pixel is the mean of the samples it has; after an interrupt, tiles may differ by one pass.
     result.samples_per_pixel = spp;
+    PixelRect& unsampled = result.unsampled_region;
+    unsampled = {settings.width, settings.height, 0, 0};
     for (int tile = 0; tile < tile_count; ++tile) {
         const int n = tile_samples[std::size_t(tile)];
         result.samples_per_pixel = std::min(result.samples_per_pixel, n);
         const auto [x0, y0, x1, y1] = tile_bounds(tile);
+        if (n == 0) {
+            result.unsampled_pixels += std::uint64_t(x1 - x0) * std::uint64_t(y1 - y0);
+            unsampled = {std::min(unsampled.x0, x0), std::min(unsampled.y0, y0), std::max(unsampled.x1, x1),
+                         std::max(unsampled.y1, y1)};
+        }
         const Real inverse = n > 0 ? Real(1) / Real(n) : Real(0);
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) sums.at(x, y) *= inverse;
     }
+    if (result.unsampled_pixels == 0) unsampled = {};
     result.samples = samples_done.load();
     result.interrupted = result.samples_per_pixel < spp;
     result.image = std::move(sums);
     return result;
+}
+
+bool interrupted() {
+    return interrupt_requested();
 }
 
 }  // namespace rt::detail
