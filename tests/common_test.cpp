@@ -15,6 +15,7 @@
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
+#include "rt/interrupt.hpp"
 #include "rt/random.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene_loader.hpp"
@@ -177,6 +178,55 @@ TEST_CASE("The render loop gives the same image, bit for bit, for 1 and 2 thread
     CHECK_FALSE(one.interrupted);
     // Sample indices 0..6 average to 3: each pixel is the mean of its samples.
     CHECK(one.image.at(36, 28).b == Approx(3));
+}
+
+TEST_CASE("An interrupt stops the render within one sample, and the first pass's unsampled pixels are named",
+          "[render]") {
+    // One thread; the interrupt comes with the 300th sample: no sample starts after it, the tile it cut short
+    // is dropped (its pixels keep no half pass), and the pixels left without a sample are counted.
+    int taken = 0, after_interrupt = 0;
+    auto sample = [&](const PixelSample&, Pcg32&, RayCounts&) {
+        if (interrupt_requested()) ++after_interrupt;
+        if (++taken == 300) set_interrupt_requested(true);
+        return Color(1);
+    };
+    const RenderSettings settings{40, 20, 4, 1, 1, ProgressStyle::kNone};
+    const RenderResult r = render(settings, sample);
+    set_interrupt_requested(false);
+    CHECK(after_interrupt == 0);
+    CHECK(taken == 300);
+    CHECK(r.interrupted);
+    CHECK(r.samples_per_pixel == 0);
+    // Tiles of 16 × 16: the first (256 pixels) is whole; the second was cut short at its 44th sample.
+    CHECK(r.samples == 256);
+    CHECK(r.unsampled_pixels == 40u * 20u - 256u);
+    CHECK(r.unsampled_region.x0 == 0);
+    CHECK(r.unsampled_region.y0 == 0);
+    CHECK(r.unsampled_region.x1 == 40);
+    CHECK(r.unsampled_region.y1 == 20);
+    CHECK(r.image.at(0, 0) == Color(1));
+    CHECK(r.image.at(16, 0) == Color(0));  // the tile cut short keeps nothing of its pass
+    int sampled = 0;
+    for (const Color& c : r.image.pixels()) sampled += c == Color(1) ? 1 : 0;
+    CHECK(sampled == 256);
+}
+
+TEST_CASE("An interrupt after the first pass leaves every pixel the mean of whole passes", "[render]") {
+    int taken = 0;
+    const int first_pass = 40 * 20;
+    auto sample = [&](const PixelSample& s, Pcg32&, RayCounts&) {
+        if (++taken == first_pass + 100) set_interrupt_requested(true);
+        return Color(Real(s.index));
+    };
+    const RenderSettings settings{40, 20, 64, 1, 1, ProgressStyle::kNone};
+    const RenderResult r = render(settings, sample);
+    set_interrupt_requested(false);
+    CHECK(r.interrupted);
+    CHECK(r.unsampled_pixels == 0);
+    CHECK(r.samples_per_pixel == 1);
+    // Sample 0 for every pixel, then a pass of samples 1..8 kept by no tile: the image is sample 0's value.
+    for (const Color& c : r.image.pixels()) REQUIRE(c == Color(0));
+    CHECK(r.samples == std::uint64_t(first_pass));
 }
 
 TEST_CASE("Edit distance and did-you-mean find near misses only", "[scene]") {
