@@ -78,24 +78,10 @@ class StrictBuilder {
     bool number_float(Json::number_float_t v, const std::string& s) { return value(), dom_.number_float(v, s); }
     bool string(std::string& v) { return value(), dom_.string(v); }
     bool binary(Json::binary_t& v) { return value(), dom_.binary(v); }
-    bool start_object(std::size_t n) {
-        value();
-        frames_.push_back({true, {}, "", 0});
-        return dom_.start_object(n);
-    }
-    bool end_object() {
-        frames_.pop_back();
-        return dom_.end_object();
-    }
-    bool start_array(std::size_t n) {
-        value();
-        frames_.push_back({false, {}, "", 0});
-        return dom_.start_array(n);
-    }
-    bool end_array() {
-        frames_.pop_back();
-        return dom_.end_array();
-    }
+    bool start_object(std::size_t n) { return open(true), dom_.start_object(n); }
+    bool end_object() { return frames_.pop_back(), dom_.end_object(); }
+    bool start_array(std::size_t n) { return open(false), dom_.start_array(n); }
+    bool end_array() { return frames_.pop_back(), dom_.end_array(); }
     bool key(std::string& k) {
         Frame& f = frames_.back();
         const std::size_t here = key_start();
@@ -124,6 +110,11 @@ class StrictBuilder {
     // A value starts: in an array, it is the next element.
     void value() {
         if (!frames_.empty() && !frames_.back().object) ++frames_.back().next;
+    }
+    // An object or an array starts: a value, then a frame of its own.
+    void open(bool object) {
+        value();
+        frames_.push_back({object, {}, "", 0});
     }
     // The place of the object being read, as the scene loader names places: "shapes[2].transform".
     std::string path() const {

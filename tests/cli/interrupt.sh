@@ -26,6 +26,21 @@ no_staging_files() {
     left=$(staging_files)
     [ -z "$left" ] || fail "$1: staging files left: $left"
 }
+# signal_and_wait PID SIGNAL: sends SIGNAL, waits for the run to end; sets $status and $stop (seconds taken).
+signal_and_wait() {
+    local sent
+    sent=$(now)
+    kill -"$2" "$1"
+    wait "$1"
+    status=$?
+    stop=$(seconds_between "$sent" "$(now)")
+}
+# expect_stop WHAT EXPECTED_STATUS SECONDS: the run ended with EXPECTED_STATUS within SECONDS of the signal.
+expect_stop() {
+    echo "$1: exit status $status after $stop s"
+    [ "$status" -eq "$2" ] || fail "$1: exit status $status, expected $2; stderr: $(head -c 300 stderr)"
+    awk -v s="$stop" -v m="$3" 'BEGIN { exit !(s < m) }' || fail "$1: took $stop s, expected under $3 s"
+}
 # wait_for_writing PID: waits (up to 60 s) until the run writes its image, after its output probes.
 wait_for_writing() {
     sleep 0.3
@@ -49,14 +64,8 @@ for signal in INT TERM; do
     pid=$!
     sleep 1.5
     kill -0 "$pid" 2> /dev/null || fail "SIG$signal: the render ended before it was interrupted"
-    sent=$(now)
-    kill -$signal "$pid"
-    wait "$pid"
-    status=$?
-    stop=$(seconds_between "$sent" "$(now)")
-    echo "one SIG$signal: exit status $status, stopped and saved in $stop s"
-    [ "$status" -eq "$expected_status" ] || fail "exit status $status after SIG$signal, expected $expected_status; stderr: $(cat stderr)"
-    awk -v s="$stop" 'BEGIN { exit !(s < 1.0) }' || fail "took $stop s to stop after SIG$signal, expected under 1 s"
+    signal_and_wait "$pid" $signal
+    expect_stop "one SIG$signal, stopped and saved" "$expected_status" 1.0
     [ -f out.partial.png ] || fail "SIG$signal: no out.partial.png"
     [ -f out.partial.pfm ] || fail "SIG$signal: no out.partial.pfm"
     [ "$(md5sum out.png out.pfm)" = "$before" ] || fail "SIG$signal: the earlier out.png or out.pfm was changed"
@@ -84,14 +93,8 @@ JSON
 pid=$!
 sleep 3.5
 kill -0 "$pid" 2> /dev/null || fail "the slow render ended before it was interrupted: $(cat stderr)"
-sent=$(now)
-kill -INT "$pid"
-wait "$pid"
-status=$?
-stop=$(seconds_between "$sent" "$(now)")
-echo "slow samples, one SIGINT: exit status $status, stopped and saved in $stop s"
-[ "$status" -eq 130 ] || fail "slow samples: exit status $status after SIGINT, expected 130; stderr: $(cat stderr)"
-awk -v s="$stop" 'BEGIN { exit !(s < 0.5) }' || fail "slow samples: took $stop s to stop after SIGINT, expected under 0.5 s"
+signal_and_wait "$pid" INT
+expect_stop "slow samples, one SIGINT" 130 0.5
 # A tile's first pass takes about a second here (256 samples): some tiles have their sample, most have none
 # (under the sanitizers, maybe none has: then nothing is written, and the run says so).
 if [ -f out.partial.pfm ]; then
@@ -113,14 +116,8 @@ for second in INT TERM; do
     kill -INT "$pid"
     wait_for_writing "$pid" || fail "second SIG$second: the partial image was never written"
     kill -0 "$pid" 2> /dev/null || fail "second SIG$second: the run ended before the second signal"
-    sent=$(now)
-    kill -$second "$pid"
-    wait "$pid"
-    status=$?
-    stop=$(seconds_between "$sent" "$(now)")
-    echo "SIGINT, then SIG$second while writing: exit status $status after $stop s"
-    [ "$status" -eq "$expected_status" ] || fail "exit status $status after the second signal (SIG$second), expected $expected_status"
-    awk -v s="$stop" 'BEGIN { exit !(s < 0.5) }' || fail "took $stop s to exit after the second signal (SIG$second)"
+    signal_and_wait "$pid" $second
+    expect_stop "SIGINT, then SIG$second while writing" "$expected_status" 0.5
     files=$(ls -a | grep -v -E '^(\.|\.\.|stdout|stderr)$')
     [ -z "$files" ] || fail "files left after the second signal (SIG$second): $files"
 done

@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "fuzz_promise.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
 
@@ -33,9 +34,7 @@ const std::string kScene = R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
   "shapes": [{"type": "mesh", "file": "fuzz.obj", "material": "white", "transform": {"scale": 2}}]})";
 
 void expect(bool holds, const char* promise) {
-    if (holds) return;
-    std::fprintf(stderr, "mesh_loader_fuzz: broken promise: %s\n", promise);
-    std::abort();
+    expect_promise(holds, "mesh_loader_fuzz", promise);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "fuzz_promise.hpp"
 #include "rt/errors.hpp"
 #include "rt/obj_parser.hpp"
 
@@ -16,9 +17,7 @@ namespace {
 constexpr double kLimit = 1e9;
 
 void expect(bool holds, const char* promise) {
-    if (holds) return;
-    std::fprintf(stderr, "obj_parser_fuzz: broken promise: %s\n", promise);
-    std::abort();
+    expect_promise(holds, "obj_parser_fuzz", promise);
 }
 
 }  // namespace
