@@ -208,6 +208,11 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
             std::to_string(ec || data_start < 0 ? 0 : file_size - (unsigned long long)(data_start)) +
             " (truncated)");
     }
+    try {
+        check_image_size(width, height);  // within this machine's memory and this process's limit
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
     const bool file_little_endian = scale < 0;
     const bool swap = file_little_endian != (std::endian::native == std::endian::little);
     Image image{int(width), int(height)};

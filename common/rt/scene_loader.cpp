@@ -1,6 +1,7 @@
 #include "rt/scene_loader.hpp"
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -27,6 +28,7 @@ using Json = nlohmann::json;
 // product), and (2·1e9)³·3 ≈ 2.4e28 stays far below float's 3.4e38; a scene beyond 1e9 units could not hold
 // a unit-sized object in float anyway (the spacing of floats there is 64).
 constexpr double kLargestNumber = 1e9;
+constexpr const char* kRealName = sizeof(Real) == sizeof(float) ? "float" : "double";
 
 std::string show(double x) {
     std::ostringstream out;
@@ -116,17 +118,20 @@ class Node {
         return x;
     }
     Real real() const { return Real(number()); }
+    // The range is checked on the value as it will be used, in Real: 179.99999999 is 180 in float, and 1e-50
+    // is 0.
     Real real_in(double low, double high, bool low_open, bool high_open) const {
         const double x = number();
-        if ((low_open ? x <= low : x < low) || (high_open ? x >= high : x > high)) {
+        const double r = double(Real(x));
+        if ((low_open ? r <= low : r < low) || (high_open ? r >= high : r > high)) {
             fail("must be in " + std::string(low_open ? "(" : "[") + show(low) + ", " + show(high) +
-                 (high_open ? ")" : "]") + ", got " + show(x));
+                 (high_open ? ")" : "]") + ", got " + as_used(x));
         }
         return Real(x);
     }
     Real positive() const {
         const double x = number();
-        if (!(x > 0)) fail("must be > 0, got " + show(x));
+        if (!(Real(x) > 0)) fail("must be > 0, got " + as_used(x));
         return Real(x);
     }
     int integer(long long low, long long high) const {
@@ -168,6 +173,13 @@ class Node {
     }
 
   private:
+    // The value as given, and what Real makes of it when that differs: "1e-50, which is 0 in float".
+    static std::string as_used(double x) {
+        if (double(Real(x)) == x) return show(x);
+        char text[32];
+        const auto end = std::to_chars(text, text + sizeof text, x).ptr;  // the shortest exact form
+        return std::string(text, end) + ", which is " + show(double(Real(x))) + " in " + kRealName;
+    }
     std::string child_place(std::string_view key) const {
         return place_.empty() ? shown_name(key) : place_ + "." + shown_name(key);
     }
