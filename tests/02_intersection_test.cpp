@@ -627,7 +627,7 @@ int check_soup(const std::vector<Vec3>& corners, std::span<const BvhQuery> queri
 }  // namespace
 
 TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, on one line",
-          "[stability][bvh]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
     Pcg32 rng(3, 14);
     const Vec3d center{0.5, -2, 7};
     std::vector<Vec3> point(3 * 600, Vec3(center));
@@ -649,7 +649,7 @@ TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, 
 }
 
 TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e30 and across them",
-          "[stability][bvh]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test]") {
     Pcg32 rng(5, 40);
     // `count` boxes near `center`, each of size 10^e for e drawn from [low, high].
     auto boxes_near = [&](const Vec3d& center, double spread, double low, double high, int count) {
@@ -703,7 +703,7 @@ TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e
 }
 
 TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit through the BVH",
-          "[stability][bvh]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
     Pcg32 rng(6, 12);
     for (const double scale : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
         INFO("triangles of size " << scale << " in a cloud 10 times that");
