@@ -4,8 +4,8 @@
 #     (finite, with the samples it has, said in the summary), leaves the earlier out.png and out.pfm as they
 #     were, exits 130. SIGTERM does the same and exits 143.
 #  2. A render whose every sample is slow (SLOW_EXECUTABLE, chapter 02 testing each of 300,000 triangles for
-#     every ray, about 4 ms a sample) stops within half a second all the same: the interrupt is looked for
-#     before every sample, not after a tile's pass (a second or more here). Interrupted in its first pass,
+#     every ray, about 4 ms a sample in a release build) stops within a few samples' time all the same: the
+#     interrupt is looked for before every sample, not after a tile's pass (256 samples, a second or more). Interrupted in its first pass,
 #     its summary says which pixels have no sample.
 #  3. A second signal while the partial image is being written (SIGINT, then SIGTERM) exits at once, with the
 #     status of the second, and leaves no file at all: no partial image, no staging file.
@@ -89,12 +89,25 @@ cat > slow.json <<'JSON'
 {"camera": {"from": [0, 0, 2], "at": [0, 0, 0]}, "materials": {"w": {"type": "diffuse"}},
  "shapes": [{"type": "mesh", "file": "grid.obj", "material": "w"}]}
 JSON
+# What one sample costs in this build (4 ms in a release build, far more under the sanitizers), from a render
+# of two samples of one pixel: the run must stop within 0.5 s (writing the partial image and exiting) and 8
+# samples' time, where waiting for a tile's pass to end would take 256 samples' time.
+# The signal is sent once the render has surely begun: after twice the whole calibration run (loading the
+# mesh, under the sanitizers, takes seconds, and a signal during the loading is answered when it ends).
+started=$(now)
+"$slow_exe" --scene slow.json --accel none --width 1 --height 1 --spp 2 --threads 1 --quiet --out one.png > one.txt 2>&1 ||
+    fail "slow samples: the calibration run failed: $(cat one.txt)"
+calibration=$(seconds_between "$started" "$(now)")
+rate=$(grep -o -E '[0-9.e+-]+ samples/s' one.txt | awk '{print $1}')
+limit=$(awk -v r="$rate" 'BEGIN { printf "%.3f", 0.5 + 8 / r }')
+echo "slow samples: $rate samples/s on one thread; the interrupt must be answered within $limit s"
+rm -f one.png one.pfm one.txt
 "$slow_exe" --scene slow.json --accel none --width 320 --height 180 --spp 1048576 --threads 2 --out out.png > stdout 2> stderr &
 pid=$!
-sleep 3.5
+sleep "$(awk -v c="$calibration" 'BEGIN { printf "%.2f", (2 * c > 3.5 ? 2 * c : 3.5) }')"
 kill -0 "$pid" 2> /dev/null || fail "the slow render ended before it was interrupted: $(cat stderr)"
 signal_and_wait "$pid" INT
-expect_stop "slow samples, one SIGINT" 130 0.5
+expect_stop "slow samples, one SIGINT" 130 "$limit"
 # A tile's first pass takes about a second here (256 samples): some tiles have their sample, most have none
 # (under the sanitizers, maybe none has: then nothing is written, and the run says so).
 if [ -f out.partial.pfm ]; then
