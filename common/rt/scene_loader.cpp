@@ -12,9 +12,9 @@
 
 #include "rt/did_you_mean.hpp"
 #include "rt/errors.hpp"
+#include "rt/image.hpp"
 #include "rt/input_file.hpp"
 #include "rt/json_reader.hpp"
-#include "rt/image.hpp"
 #include "rt/obj_parser.hpp"
 #include "rt/printable.hpp"
 
