@@ -2,10 +2,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "camera.hpp"
-#include "edge_coverage.hpp"
-#include "pixel_sampling.hpp"
-#include "ray_generation_render.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "01_ray_generation/edge_coverage.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
+#include "01_ray_generation/ray_generation_render.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
@@ -14,7 +14,9 @@ using namespace rt;
 
 namespace {
 
-CameraDesc looking_down_z(Real vfov = 60) { return CameraDesc{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, vfov}; }
+CameraDesc looking_down_z(Real vfov = 60) {
+    return CameraDesc{{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, vfov};
+}
 
 double angle_between(const Vec3& a, const Vec3& b) {
     return std::acos(std::clamp(double(glm::dot(glm::normalize(a), glm::normalize(b))), -1.0, 1.0));
@@ -36,8 +38,10 @@ TEST_CASE("The top and bottom edge rays make half the vertical field of view wit
     for (Real vfov : {10.0f, 40.0f, 90.0f, 150.0f}) {
         const PinholeCamera camera = make_pinhole_camera(looking_down_z(vfov), 200, 100);
         const Vec3 ahead = camera.forward;
-        CHECK(angle_between(camera_ray(camera, 100, 0).direction, ahead) == Approx(radians(vfov / 2)).epsilon(1e-5));
-        CHECK(angle_between(camera_ray(camera, 100, 100).direction, ahead) == Approx(radians(vfov / 2)).epsilon(1e-5));
+        CHECK(angle_between(camera_ray(camera, 100, 0).direction, ahead) ==
+              Approx(radians(vfov / 2)).epsilon(1e-5));
+        CHECK(angle_between(camera_ray(camera, 100, 100).direction, ahead) ==
+              Approx(radians(vfov / 2)).epsilon(1e-5));
         CHECK(camera_ray(camera, 100, 0).direction.y > 0);  // the top row looks up
     }
 }
@@ -50,9 +54,11 @@ TEST_CASE("The horizontal field of view follows the aspect ratio", "[ch01][ex:ch
 }
 
 TEST_CASE("Every camera ray has unit length", "[ch01][ex:ch01.camera_ray]") {
-    const PinholeCamera camera = make_pinhole_camera(CameraDesc{{1, 2, 3}, {-4, 5, 6}, {0, 1, 0}, 75}, 97, 61);
+    const PinholeCamera camera =
+        make_pinhole_camera(CameraDesc{{1, 2, 3}, {-4, 5, 6}, {0, 1, 0}, 75}, 97, 61);
     for (int y = 0; y <= 61; ++y)
-        for (int x = 0; x <= 97; ++x) REQUIRE(glm::length(camera_ray(camera, Real(x), Real(y)).direction) == Approx(1).epsilon(1e-6));
+        for (int x = 0; x <= 97; ++x)
+            REQUIRE(glm::length(camera_ray(camera, Real(x), Real(y)).direction) == Approx(1).epsilon(1e-6));
 }
 
 TEST_CASE("The camera basis stays orthonormal when up is nearly parallel to the view", "[ch01][stability]") {
@@ -69,7 +75,8 @@ TEST_CASE("The camera basis stays orthonormal when up is nearly parallel to the 
     }
 }
 
-TEST_CASE("A camera whose up is exactly parallel to the view is refused with a clear error", "[ch01][stability]") {
+TEST_CASE("A camera whose up is exactly parallel to the view is refused with a clear error",
+          "[ch01][stability]") {
     CHECK_THROWS_WITH(make_pinhole_camera(CameraDesc{{0, 0, 0}, {0, 3, 0}, {0, 1, 0}, 45}, 8, 8),
                       Catch::Contains("camera.up") && Catch::Contains("parallel"));
     CHECK_THROWS_WITH(make_pinhole_camera(CameraDesc{{0, 0, 0}, {0, -3, 0}, {0, 1, 0}, 45}, 8, 8),
@@ -130,10 +137,13 @@ TEST_CASE("Coverage from many stratified samples converges to the exact coverage
     const PinholeCamera camera = make_pinhole_camera(looking_down_z(), 48, 32);
     const FilmEdge edge = make_film_edge(camera, 20);
     RenderSettings settings{48, 32, 256, 3, 1, ProgressStyle::kNone};
-    const double stratified = edge_rmse(render_coverage(camera, edge, PixelSampler::kStratified, settings).image, edge);
-    const double uniform = edge_rmse(render_coverage(camera, edge, PixelSampler::kUniform, settings).image, edge);
+    const double stratified =
+        edge_rmse(render_coverage(camera, edge, PixelSampler::kStratified, settings).image, edge);
+    const double uniform =
+        edge_rmse(render_coverage(camera, edge, PixelSampler::kUniform, settings).image, edge);
     settings.samples_per_pixel = 1;
-    const double centre = edge_rmse(render_coverage(camera, edge, PixelSampler::kCenter, settings).image, edge);
+    const double centre =
+        edge_rmse(render_coverage(camera, edge, PixelSampler::kCenter, settings).image, edge);
     CHECK(stratified < 0.02);
     CHECK(stratified < uniform);  // stratification beats independent jitter at the same count
     CHECK(uniform < centre);      // and any anti-aliasing beats one sample at the centre
@@ -152,5 +162,6 @@ TEST_CASE("Chapter 01's default scene renders: finite, plausible and determinist
     CHECK(a.image.mean() < 1.0);
     CHECK(a.rays[RayKind::kCamera] == 64u * 36u * 4u);
     CHECK(a.rays.total() == a.rays[RayKind::kCamera]);
-    for (std::size_t i = 0; i < a.image.pixel_count(); ++i) REQUIRE(a.image.pixels()[i] == b.image.pixels()[i]);
+    for (std::size_t i = 0; i < a.image.pixel_count(); ++i)
+        REQUIRE(a.image.pixels()[i] == b.image.pixels()[i]);
 }

@@ -5,18 +5,18 @@
 #include <limits>
 #include <span>
 
-#include "aabb.hpp"
-#include "bvh_agreement.hpp"
-#include "camera.hpp"
-#include "intersection_render.hpp"
-#include "leak_probe.hpp"
-#include "mesh_generator.hpp"
-#include "quad_packet.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/aabb.hpp"
+#include "02_intersection/bvh_agreement.hpp"
+#include "02_intersection/intersection_render.hpp"
+#include "02_intersection/leak_probe.hpp"
+#include "02_intersection/mesh_generator.hpp"
+#include "02_intersection/quad_packet.hpp"
+#include "02_intersection/world.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 using namespace rt;
 

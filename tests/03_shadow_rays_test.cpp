@@ -11,22 +11,22 @@
 #include <string_view>
 #include <variant>
 
-#include "camera.hpp"
-#include "exact_visibility.hpp"
-#include "float_error.hpp"
-#include "offset_study.hpp"
-#include "point_light.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/float_error.hpp"
+#include "02_intersection/triangle.hpp"
+#include "02_intersection/world.hpp"
+#include "03_shadow_rays/exact_visibility.hpp"
+#include "03_shadow_rays/offset_study.hpp"
+#include "03_shadow_rays/point_light.hpp"
+#include "03_shadow_rays/ray_offset.hpp"
+#include "03_shadow_rays/scene_scale.hpp"
+#include "03_shadow_rays/shadow_ray.hpp"
+#include "03_shadow_rays/shadow_render.hpp"
 #include "random_unit.hpp"
-#include "ray_offset.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "scene_scale.hpp"
-#include "shadow_ray.hpp"
-#include "shadow_render.hpp"
-#include "triangle.hpp"
-#include "world.hpp"
 
 using namespace rt;
 

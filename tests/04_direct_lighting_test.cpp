@@ -8,23 +8,23 @@
 #include <string>
 #include <vector>
 
-#include "analytic_scene.hpp"
-#include "area_light_sampling.hpp"
-#include "brdf.hpp"
-#include "camera.hpp"
-#include "direct_render.hpp"
-#include "frame.hpp"
-#include "irradiance.hpp"
-#include "quad.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/quad.hpp"
+#include "02_intersection/sphere.hpp"
+#include "02_intersection/triangle.hpp"
+#include "04_direct_lighting/analytic_scene.hpp"
+#include "04_direct_lighting/area_light_sampling.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "sampling.hpp"
-#include "sphere.hpp"
-#include "sphere_light_sampling.hpp"
-#include "triangle.hpp"
 
 using namespace rt;
 
@@ -55,12 +55,14 @@ Vec3 polar(double theta, double phi = 0) {
 }
 
 // The BRDFs under test, each with a name, albedo 1 (the hardest case for energy conservation).
-std::vector<std::pair<std::string, Brdf>> white_brdfs() {
-    std::vector<std::pair<std::string, Brdf>> brdfs{{"lambert", LambertBrdf{Color(1)}}};
+std::vector<std::pair<std::string, std::shared_ptr<const Bsdf>>> white_brdfs() {
+    std::vector<std::pair<std::string, std::shared_ptr<const Bsdf>>> brdfs{
+        {"lambert", std::make_shared<LambertBrdf>(Color(1))}};
     for (Real r : {0.05f, 0.2f, 0.5f, 1.0f}) {
-        brdfs.push_back({"glossy roughness " + std::to_string(r), GlossyBrdf{Color(1), phong_exponent(r)}});
-        brdfs.push_back(
-            {"retro roughness " + std::to_string(r), RetroreflectiveBrdf{Color(1), phong_exponent(r)}});
+        brdfs.push_back({"glossy roughness " + std::to_string(r),
+                         std::make_shared<GlossyBrdf>(Color(1), phong_exponent(r))});
+        brdfs.push_back({"retro roughness " + std::to_string(r),
+                         std::make_shared<RetroreflectiveBrdf>(Color(1), phong_exponent(r))});
     }
     return brdfs;
 }
@@ -91,7 +93,7 @@ Shape shape(decltype(Shape::geometry) geometry, int material) {
 // BRDFs
 
 TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[brdf][ex:ch04.lambert]") {
-    const Brdf lambert = LambertBrdf{Color(0.2f, 0.5f, 0.8f)};
+    const LambertBrdf lambert{Color(0.2f, 0.5f, 0.8f)};
     Pcg32 rng(1, 1);
     for (int i = 0; i < 1000; ++i) {
         Vec3 wo = random_unit(rng), wi = random_unit(rng);
@@ -109,7 +111,8 @@ TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[
 TEST_CASE("Every BRDF is reciprocal: f(a, b) = f(b, a)",
           "[brdf][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective]") {
     Pcg32 rng(2, 1);
-    for (const auto& [name, brdf] : white_brdfs()) {
+    for (const auto& [name, owner] : white_brdfs()) {
+        const Bsdf& brdf = *owner;
         INFO(name);
         for (int i = 0; i < 2000; ++i) {
             Vec3 a = random_unit(rng), b = random_unit(rng);
@@ -130,7 +133,8 @@ TEST_CASE("Every BRDF conserves energy for ten outgoing directions",
     // of the BRDF's own sampling) and with the BRDF's sample(); both <= 1 within 4 standard errors, and they
     // agree with each other, which checks sample() and pdf().
     constexpr int kSamples = 20000;
-    for (const auto& [name, brdf] : white_brdfs()) {
+    for (const auto& [name, owner] : white_brdfs()) {
+        const Bsdf& brdf = *owner;
         int index = 0;
         for (const Vec3& wo : ten_outgoing()) {
             INFO(name << ", outgoing θ = " << std::acos(double(wo.z)) * 180 / std::numbers::pi << "°");
@@ -140,7 +144,7 @@ TEST_CASE("Every BRDF conserves energy for ten outgoing directions",
                 return double(eval(brdf, wo, wi, kUp).g * wi.z / kUniformHemispherePdf);
             });
             const Estimate sampled = estimate(kSamples, [&] {
-                const BrdfSample s = sample(brdf, wo, kUp, brdf_rng.next_vec2());
+                const BsdfSample s = sample(brdf, wo, kUp, brdf_rng.next_vec2());
                 return s.pdf > 0 ? double(s.f.g * std::max(Real(0), s.wi.z) / s.pdf) : 0.0;
             });
             CHECK(uniform.mean <= 1 + 4 * uniform.error);
@@ -156,16 +160,17 @@ TEST_CASE("Lambert reflects all of albedo 1 and the lobes are normalized at norm
           "[ex:ch04.power_cosine]") {
     // Not only <= 1: the (e + 2) / (2π) factor makes a lobe reflect exactly ρ when it lies wholly above the
     // surface. Estimated with the BRDF's own sampling (f cos / pdf = ρ (e + 2)/(e + 1) cos θ_i).
-    for (const auto& [name, brdf] : white_brdfs()) {
+    for (const auto& [name, owner] : white_brdfs()) {
+        const Bsdf& brdf = *owner;
         INFO(name);
-        const bool wide =
-            std::holds_alternative<GlossyBrdf>(brdf) && std::get<GlossyBrdf>(brdf).exponent < 10;
-        const bool wide_retro = std::holds_alternative<RetroreflectiveBrdf>(brdf) &&
-                                std::get<RetroreflectiveBrdf>(brdf).exponent < 10;
+        const auto* glossy = dynamic_cast<const GlossyBrdf*>(&brdf);
+        const auto* retro = dynamic_cast<const RetroreflectiveBrdf*>(&brdf);
+        const bool wide = glossy && glossy->exponent < 10;
+        const bool wide_retro = retro && retro->exponent < 10;
         if (wide || wide_retro) continue;  // a wide lobe around the normal is clipped by the horizon
         Pcg32 rng(12, 0);
         const Estimate e = estimate(20000, [&] {
-            const BrdfSample s = sample(brdf, kUp, kUp, rng.next_vec2());
+            const BsdfSample s = sample(brdf, kUp, kUp, rng.next_vec2());
             return s.pdf > 0 ? double(s.f.g * std::max(Real(0), s.wi.z) / s.pdf) : 0.0;
         });
         CHECK(std::abs(e.mean - 1) <= 4 * e.error + 1e-3);
@@ -176,11 +181,12 @@ TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled d
           "[brdf][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]"
           "[ex:ch04.retroreflective]") {
     Pcg32 rng(13, 0);
-    for (const auto& [name, brdf] : white_brdfs()) {
+    for (const auto& [name, owner] : white_brdfs()) {
+        const Bsdf& brdf = *owner;
         INFO(name);
         for (const Vec3& wo : ten_outgoing()) {
             for (int i = 0; i < 200; ++i) {
-                const BrdfSample s = sample(brdf, wo, kUp, rng.next_vec2());
+                const BsdfSample s = sample(brdf, wo, kUp, rng.next_vec2());
                 REQUIRE(glm::length(s.wi) == Approx(1).epsilon(1e-5));
                 REQUIRE_FALSE(s.delta);
                 REQUIRE(s.pdf == Approx(pdf(brdf, wo, s.wi, kUp)).epsilon(1e-4));
@@ -192,7 +198,7 @@ TEST_CASE("sample() returns f and pdf equal to eval() and pdf() at the sampled d
 
 TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflects R",
           "[brdf][ex:ch04.mirror]") {
-    const Brdf mirror = MirrorBrdf{Color(0.9f)};
+    const MirrorBrdf mirror{Color(0.9f)};
     CHECK(is_delta(mirror));
     const Vec3 wo = glm::normalize(Vec3{1, 0, 1});
     // Even the exact mirror direction gives 0 through eval(): a delta has no finite value there.
@@ -200,7 +206,7 @@ TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflect
     CHECK(pdf(mirror, wo, reflect(wo, kUp), kUp) == 0);
     Pcg32 rng(14, 0);
     for (int i = 0; i < 100; ++i) CHECK(eval(mirror, wo, random_unit(rng), kUp) == Color(0));
-    const BrdfSample s = sample(mirror, wo, kUp, Vec2(0.5f));
+    const BsdfSample s = sample(mirror, wo, kUp, Vec2(0.5f));
     CHECK(s.delta);
     CHECK(s.wi.x == Approx(-wo.x));
     CHECK(s.wi.z == Approx(wo.z));
@@ -215,9 +221,9 @@ TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and fin
     CHECK(std::isfinite(sharp));
     // A lobe sharper than float's resolution near cos α = 1 still samples directions off the axis.
     Pcg32 rng(15, 0);
-    const Brdf glossy = GlossyBrdf{Color(1), sharp};
+    const GlossyBrdf glossy{Color(1), sharp};
     for (int i = 0; i < 100; ++i) {
-        const BrdfSample s = sample(glossy, kUp, kUp, rng.next_vec2());
+        const BsdfSample s = sample(glossy, kUp, kUp, rng.next_vec2());
         REQUIRE(std::isfinite(s.pdf));
         REQUIRE(is_finite(s.f));
         REQUIRE(is_finite(s.wi));
@@ -470,10 +476,11 @@ TEST_CASE("Edge-on, touching and grazing cases give no sample or a finite one, n
     }
     // Grazing directions for every BRDF: finite values and pdfs.
     const Vec3 grazing = glm::normalize(Vec3{1, 0, 1e-7f});
-    for (const auto& [name, brdf] : white_brdfs()) {
+    for (const auto& [name, owner] : white_brdfs()) {
+        const Bsdf& brdf = *owner;
         INFO(name);
         for (int i = 0; i < 100; ++i) {
-            const BrdfSample s = sample(brdf, grazing, kUp, rng.next_vec2());
+            const BsdfSample s = sample(brdf, grazing, kUp, rng.next_vec2());
             REQUIRE((is_finite(s.f) && std::isfinite(s.pdf) && is_finite(s.wi)));
             REQUIRE(is_finite(eval(brdf, grazing, random_unit(rng), kUp)));
         }
@@ -502,7 +509,8 @@ struct FloorScene {
 RenderResult render_scene(const Scene& scene, DirectOptions options, int size = 32, int spp = 1,
                           int threads = 1) {
     const World world(scene);
-    const DirectLighting shading(world, scene, collect_lights(scene), options);
+    const MaterialTable materials(scene, options.simulated);
+    const DirectLighting shading(world, materials, collect_lights(scene), options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const RenderSettings settings{size, size, spp, 3, threads, ProgressStyle::kNone};
     return render_direct(shading, camera, settings, FilmPoints::kStratified);
@@ -532,7 +540,7 @@ TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
     CHECK(render_scene(f.scene, {}).rays[RayKind::kShadow] == 0);
     f.scene.materials[0] = diffuse(Color(0.5f));
     DirectOptions no_shadows;
-    no_shadows.shadows = false;
+    no_shadows.simulated = EffectSet::all().without({Effect::kShadows});
     const RenderResult r = render_scene(f.scene, no_shadows);
     CHECK(r.rays[RayKind::kShadow] == 0);
     CHECK(r.image.mean() > 0);
@@ -545,7 +553,8 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
     FloorScene f;
     f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
     const World world(f.scene);
-    const DirectLighting shading(world, f.scene, collect_lights(f.scene), {});
+    const MaterialTable shading_materials(f.scene, EffectSet::all());
+    const DirectLighting shading(world, shading_materials, collect_lights(f.scene), {});
     Pcg32 rng(70, 0);
     RayCounts rays;
     const Ray down{{0, 1, 0}, {0, -1, 0}};
@@ -560,15 +569,49 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
     const World sky_world(sky.scene);
     DirectOptions four;
     four.shadow_samples = 4;
-    const DirectLighting sky_shading(sky_world, sky.scene, collect_lights(sky.scene), four);
+    const MaterialTable sky_shading_materials(sky.scene, EffectSet::all());
+    const DirectLighting sky_shading(sky_world, sky_shading_materials, collect_lights(sky.scene), four);
     RayCounts sky_rays;
     CHECK(double(sky_shading.radiance(down, rng, sky_rays).g) == Approx(0.5 * 2).epsilon(1e-5));
     CHECK(sky_rays[RayKind::kShadow] == 4);
     // Under a large blocker the sky is hidden: no light at all.
     sky.scene.shapes.push_back(shape(QuadShape{{-50, 0.5f, -50}, {0, 0, 100}, {100, 0, 0}}, 0));
     const World blocked(sky.scene);
-    const DirectLighting blocked_shading(blocked, sky.scene, collect_lights(sky.scene), four);
+    const MaterialTable blocked_shading_materials(sky.scene, EffectSet::all());
+    const DirectLighting blocked_shading(blocked, blocked_shading_materials, collect_lights(sky.scene), four);
     CHECK(blocked_shading.radiance(Ray{{0, 0.25f, 0}, {0, -1, 0}}, rng, sky_rays) == Color(0));
+}
+
+TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and agrees with every light",
+          "[direct][statistical][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
+    // 40 small emissive spheres of different brightness above the floor, and one point light.
+    FloorScene f;
+    f.scene.camera = CameraDesc{{0, 6, 6}, {0, 0, 0}, {0, 1, 0}, 50};
+    for (int i = 0; i < 40; ++i) {
+        const int lamp = f.add_material(diffuse(Color(0), Color(Real(1 + i % 5))));
+        f.scene.shapes.push_back(
+            shape(SphereShape{{Real(i % 8) - 3.5f, 1.5f + Real(i / 8) * 0.3f, Real(i / 8) - 2}, 0.1f}, lamp));
+    }
+    f.scene.point_lights.push_back({{0, 3, 0}, Color(2)});
+    DirectOptions every, power, automatic;
+    every.light_selection = LightSelection::kEvery;
+    power.light_selection = LightSelection::kPower;
+    every.shadow_samples = power.shadow_samples = automatic.shadow_samples = 2;
+    const RenderResult e = render_scene(f.scene, every, 24, 64, 2);
+    const RenderResult p = render_scene(f.scene, power, 24, 64, 2);
+    // Every light: 2 shadow rays for each of 40 spheres and one for the point light, per floor hit. Picked:
+    // at most 2 per hit, whatever the number of lights.
+    const double hits = double(e.rays[RayKind::kCamera]);
+    CHECK(double(e.rays[RayKind::kShadow]) > 20 * hits);
+    CHECK(double(p.rays[RayKind::kShadow]) <= 2 * hits);
+    // The same expected image: the means agree within 2 % (64 samples of 576 pixels each).
+    CHECK(p.image.mean() == Approx(e.image.mean()).epsilon(0.02));
+    // Beyond 16 lights the automatic choice picks.
+    const RenderResult a = render_scene(f.scene, automatic, 24, 64, 2);
+    CHECK(a.rays[RayKind::kShadow] == p.rays[RayKind::kShadow]);
+    CHECK(a.image.pixels() == p.image.pixels());
 }
 
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
@@ -581,7 +624,8 @@ TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra
     const World world(f.scene);
     DirectOptions options;
     options.shadow_samples = 64;
-    const DirectLighting shading(world, f.scene, collect_lights(f.scene), options);
+    const MaterialTable shading_materials(f.scene, EffectSet::all());
+    const DirectLighting shading(world, shading_materials, collect_lights(f.scene), options);
     Pcg32 rng(71, 0);
     RayCounts rays;
     auto at = [&](Real x) { return shading.radiance(Ray{{x, 0.5f, 0.001f}, {0, -1, 0}}, rng, rays).g; };
@@ -605,7 +649,8 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
           "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.lambert_polygon]"
           "[ex:ch04.sample_quad_light]") {
     Scene scene = load_scene(scene_path("ch04_analytic.json"));
-    const auto analytic = find_plane_under_quad(scene);
+    const MaterialTable materials(scene, EffectSet::all());
+    const auto analytic = find_plane_under_quad(scene, materials);
     REQUIRE(analytic);
     const World world(scene);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, 48, 48);
@@ -615,7 +660,7 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
     // One thread: an exception (a student's unfinished exercise) then reaches the test instead of a worker
     // thread.
     const RenderSettings settings{48, 48, 1, 5, 1, ProgressStyle::kNone};
-    const auto rows = shadow_study(world, scene, collect_lights(scene), {}, camera, settings, exact,
+    const auto rows = shadow_study(world, materials, collect_lights(scene), {}, camera, settings, exact,
                                    {LightSampler::kIndependent, LightSampler::kStratified}, {4, 64});
     REQUIRE(rows.size() == 4);
     // Error falls like 1/√N: 16× the samples, about 4× less RMSE.
@@ -632,7 +677,7 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
     CHECK(rows[3].rmse < rows[1].rmse / 2);
     // A scene that is not a plane under one quad has no exact image.
     scene.point_lights.push_back({{0, 1, 0}, Color(1)});
-    CHECK_FALSE(find_plane_under_quad(scene));
+    CHECK_FALSE(find_plane_under_quad(scene, materials));
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",

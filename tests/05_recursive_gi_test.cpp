@@ -9,17 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
-#include "furnace.hpp"
-#include "gi_render.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "05_recursive_gi/furnace.hpp"
+#include "05_recursive_gi/gi_render.hpp"
+#include "05_recursive_gi/recursive_tracer.hpp"
+#include "05_recursive_gi/scatter.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
-#include "recursive_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
-#include "scatter.hpp"
-#include "termination.hpp"
 
 using namespace rt;
 
@@ -51,18 +51,24 @@ TerminationSettings rule(Termination t, int max_depth, Real min_throughput = Rea
 struct Setup {
     Scene scene;
     std::unique_ptr<World> world;
+    std::unique_ptr<MaterialTable> materials;
     std::unique_ptr<DirectLighting> shading;
     std::unique_ptr<RecursiveTracer> tracer;
 
-    Setup(Scene s, TerminationSettings termination, DirectOptions direct = {}, bool reflection = true,
-          bool indirect = true)
-        : scene(std::move(s)) {
+    // The effects simulated are direct.simulated (every effect by default).
+    Setup(Scene s, TerminationSettings termination, DirectOptions direct = {}) : scene(std::move(s)) {
         world = std::make_unique<World>(scene);
-        shading = std::make_unique<DirectLighting>(*world, scene, collect_lights(scene), direct);
-        tracer =
-            std::make_unique<RecursiveTracer>(*shading, scene, GiOptions{termination, reflection, indirect});
+        materials = std::make_unique<MaterialTable>(scene, direct.simulated);
+        shading = std::make_unique<DirectLighting>(*world, *materials, collect_lights(scene), direct);
+        tracer = std::make_unique<RecursiveTracer>(*shading, GiOptions{termination});
     }
 };
+
+DirectOptions simulating(const EffectSet& effects) {
+    DirectOptions options;
+    options.simulated = effects;
+    return options;
+}
 
 Material diffuse(Color albedo, Color emission = Color(0)) {
     Material m;
@@ -220,9 +226,7 @@ TEST_CASE("The furnace scene is recognised, and the default scene is not", "[fur
 // light found by indirect rays alone (effect "direct" off), where a path adds Le β_k at its k-th vertex with
 // β_k <= (2ρ)^k up to the cap: bounded; light sampling is checked where its samples are bounded (below).
 DirectOptions indirect_rays_alone() {
-    DirectOptions options;
-    options.direct = false;
-    return options;
+    return simulating(EffectSet::all().without({Effect::kDirect}));
 }
 
 TEST_CASE("Cut after N bounces, the furnace gives Le (1 - rho^(N+1)) / (1 - rho) within its error bars",
@@ -394,7 +398,8 @@ TEST_CASE("A mirror shows the lamp it faces at R times its radiance, through one
     CHECK(rays[RayKind::kShadow] == 0);  // a delta BRDF is never light-sampled
     CHECK(rays[RayKind::kIndirect] == 0);
     // The effect reflection off: the mirror is black.
-    const Setup off(scene, rule(Termination::kRussianRoulette, kSafetyDepthCap), {}, false);
+    const Setup off(scene, rule(Termination::kRussianRoulette, kSafetyDepthCap),
+                    simulating(EffectSet::all().without({Effect::kReflection})));
     RayCounts none;
     CHECK(off.tracer->radiance(ray, rng, none) == Color(0));
     CHECK(none[RayKind::kReflection] == 0);
@@ -479,7 +484,7 @@ TEST_CASE("Grazing rays give finite radiance, never NaN",
     }
     // A hemisphere direction in the tangent plane (u₁ = 0 gives z = 0) carries nothing; u just below 1 is
     // finite and unit. A mirror hit edge-on reflects nothing.
-    const Brdf lambert = LambertBrdf{Color(0.5f)};
+    const LambertBrdf lambert{Color(0.5f)};
     const Vec3 n{0, 1, 0}, wo = glm::normalize(Vec3{1, 1, 0});
     CHECK_FALSE(uniform_scatter(lambert, wo, n, Vec2(0, 0.3f)));
     const auto top = uniform_scatter(lambert, wo, n, Vec2(kOneMinusEpsilon, kOneMinusEpsilon));
@@ -493,7 +498,7 @@ TEST_CASE("Grazing rays give finite radiance, never NaN",
 
 TEST_CASE("The uniform hemisphere weight 2 rho cos has mean rho",
           "[statistical][ex:ch04.lambert][ex:ch04.uniform_hemisphere][ex:ch05.uniform_scatter]") {
-    const Brdf lambert = LambertBrdf{Color(0.7f)};
+    const LambertBrdf lambert{Color(0.7f)};
     Pcg32 rng(1100, 0);
     const Vec3 n = glm::normalize(Vec3{0.2f, -0.3f, -1});  // near −z, where frames are hardest
     const Vec3 wo = glm::normalize(n + Vec3{0.3f, 0, 0});
@@ -514,11 +519,7 @@ namespace {
 
 RenderResult render_scene(const Scene& scene, TerminationSettings termination, int size, int spp, int threads,
                           EffectSet effects = EffectSet::all()) {
-    DirectOptions direct;
-    direct.direct = effects.contains(Effect::kDirect);
-    direct.shadows = effects.contains(Effect::kShadows);
-    const Setup setup(scene, termination, direct, effects.contains(Effect::kReflection),
-                      effects.contains(Effect::kIndirect));
+    const Setup setup(scene, termination, simulating(effects));
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const RenderSettings settings{size, size, spp, 5, threads, ProgressStyle::kNone};
     return render_gi(*setup.tracer, camera, settings);

@@ -6,16 +6,18 @@
 #include <variant>
 #include <vector>
 
-#include "camera.hpp"
-#include "camera_importance.hpp"
-#include "forward_study.hpp"
-#include "light_emission.hpp"
-#include "light_tracer.hpp"
-#include "path_tracer.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "08_forward_tracing/camera_importance.hpp"
+#include "08_forward_tracing/forward_study.hpp"
+#include "08_forward_tracing/light_emission.hpp"
+#include "08_forward_tracing/light_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 using namespace rt;
 
@@ -78,12 +80,26 @@ MeanAndError batch_statistics(int batches, std::size_t values, Render&& render) 
     return out;
 }
 
+// A light tracer for `s` that simulates `simulated`, with the material table it reads (importance).
+struct ForwardTracer {
+    MaterialTable materials;
+    LightTracer tracer;
+    ForwardTracer(const StudyScene& s, const EffectSet& simulated, LightTracerOptions options = {})
+        : materials(s.scene, simulated, refraction_materials(), Transport::kImportance),
+          tracer(s.prepared.world, materials, s.prepared.lights, s.camera, simulating(options, simulated)) {}
+    static LightTracerOptions simulating(LightTracerOptions options, const EffectSet& simulated) {
+        options.simulated = simulated;
+        return options;
+    }
+};
+
 // Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
 void check_forward_matches_reverse(const StudyScene& s, int spp) {
     constexpr int kBatches = 16;
     const std::size_t values = s.camera.width * std::size_t(s.camera.height) * 3;
-    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
-    const PathTracer path(s.world, s.scene, s.lights, reverse_options(EffectSet::all()));
+    const ForwardTracer light_f(s, EffectSet::all());
+    const LightTracer& light = light_f.tracer;
+    const PathTracer path(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
     const auto forward = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
         const RenderSettings settings = settings_of(s.camera.width, s.camera.height, spp / kBatches, seed);
         return render_light_tracing(light, settings, paths_per_image(settings)).render.image;
@@ -221,15 +237,17 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     without.shapes.pop_back();  // the sphere is the last shape
     REQUIRE(std::holds_alternative<SphereShape>(with.shapes.back().geometry));
     const StudyScene a(with, 8, 8), b(without, 8, 8);
-    const LightTracer ta(a.world, a.scene, a.lights, a.camera, forward_options(EffectSet::all()));
-    const LightTracer tb(b.world, b.scene, b.lights, b.camera, forward_options(EffectSet::all()));
+    const ForwardTracer ta_f(a, EffectSet::all());
+    const LightTracer& ta = ta_f.tracer;
+    const ForwardTracer tb_f(b, EffectSet::all());
+    const LightTracer& tb = tb_f.tracer;
     // The pixels that see the sphere anywhere (a 6×6 grid of camera rays per pixel).
     std::vector<std::uint8_t> sphere(64, 0);
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             for (int k = 0; k < 36; ++k) {
-                const auto hit = a.world.intersect(camera_ray(a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6,
-                                                              Real(y) + (Real(k / 6) + 0.5f) / 6));
+                const auto hit = a.prepared.world.intersect(camera_ray(
+                    a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6, Real(y) + (Real(k / 6) + 0.5f) / 6));
                 if (hit && a.scene.materials[std::size_t(hit->material)].type == MaterialType::kDielectric)
                     sphere[std::size_t(y * 8 + x)] = 1;
             }
@@ -273,13 +291,15 @@ TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through th
       "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [1, 1, 1]}},
       "shapes": [{"type": "quad", "origin": [-5, -5, 0], "u": [10, 0, 0], "v": [0, 10, 0],
                   "material": "lamp"}]})"),
-                  4, 4);
-    LightTracerOptions options = forward_options(EffectSet::all());
-    const LightTracer pinhole(s.world, s.scene, s.lights, s.camera, options);
+                       4, 4);
+    LightTracerOptions options = ForwardTracer::simulating({}, EffectSet::all());
+    const ForwardTracer pinhole_f(s, options.simulated, options);
+    const LightTracer& pinhole = pinhole_f.tracer;
     const SplatResult connect = render_light_tracing(pinhole, settings_of(4, 4, 16384, 1), 4 * 4 * 16384);
     options.variant = CameraVariant::kAperture;
     options.aperture_radius = 0.5f;
-    const LightTracer lens(s.world, s.scene, s.lights, s.camera, options);
+    const ForwardTracer lens_f(s, options.simulated, options);
+    const LightTracer& lens = lens_f.tracer;
     const SplatResult aperture = render_light_tracing(lens, settings_of(4, 4, 1, 1), 4'000'000);
     for (const Color& c : connect.render.image.pixels()) CHECK(c.g == Approx(1).epsilon(0.03));
     CHECK(connect.render.image.mean() == Approx(1).epsilon(0.01));
@@ -302,9 +322,10 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
                         "white": {"type": "diffuse", "albedo": [0.8, 0.8, 0.8]}},
           "shapes": [{"type": "quad", "origin": [-1, -1, 0], "u": [0, 2, 0], "v": [2, 0, 0], "material": "lamp"},
                      {"type": "quad", "origin": [-3, -3, 1], "u": [6, 0, 0], "v": [0, 6, 0], "material": "white"}]})"),
-                      8, 8);
+                           8, 8);
         // The lamp emits toward −z (u × v = −z); the white quad lies on its dark side.
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+        const ForwardTracer tracer_f(s, EffectSet::all());
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 1024);
         CHECK(r.contributing_paths == 0);
         CHECK(r.render.image.mean() == 0);
@@ -319,8 +340,9 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
           "shapes": [{"type": "quad", "origin": [-2, 3, -3], "u": [4, 0, 0], "v": [0, 0, 2], "material": "lamp"},
                      {"type": "quad", "origin": [-5, 0, 0], "u": [0, 0, -5], "v": [10, 0, 0], "material": "white"},
                      {"type": "quad", "origin": [-50, -50, 2], "u": [100, 0, 0], "v": [0, 100, 0], "material": "white"}]})"),
-                      8, 8);
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+                           8, 8);
+        const ForwardTracer tracer_f(s, EffectSet::all());
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 4096);
         CHECK(r.contributing_paths == 0);
         CHECK(r.render.image.mean() == 0);
@@ -337,7 +359,8 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
     const Scene cornell = load_scene(scene_path("ch06_default.json"));
     SECTION("every path leaves its light once: one shadow-kind ray per path; no mirror, no reflection rays") {
         const StudyScene s(cornell, 8, 8);
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const ForwardTracer tracer_f(s, needed(s.scene));
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 5000);
         CHECK(r.render.samples == 5000);
         CHECK(r.render.rays[RayKind::kShadow] == 5000);
@@ -351,7 +374,8 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
         Scene dark = cornell;
         for (Material& m : dark.materials) m.emission = Color(0);
         const StudyScene s(dark, 8, 8);
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const ForwardTracer tracer_f(s, needed(s.scene));
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 1000);
         CHECK(r.render.rays.total() == 0);
         CHECK(r.render.image.mean() == 0);
@@ -360,9 +384,10 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
         Scene direct = cornell;
         direct.effects = EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect};
         const StudyScene s(direct, 8, 8);
-        const LightTracerOptions options = forward_options(needed(s.scene));
-        CHECK_FALSE(options.indirect);
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, options);
+        const LightTracerOptions options = ForwardTracer::simulating({}, needed(s.scene));
+        CHECK_FALSE(options.simulates(Effect::kIndirect));
+        const ForwardTracer tracer_f(s, options.simulated, options);
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 5000);
         CHECK(r.render.rays[RayKind::kIndirect] == 0);
         CHECK(r.render.rays[RayKind::kReflection] == 0);
@@ -372,19 +397,21 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
     }
     SECTION("the mirror scene bounces off its mirror: reflection rays, no refraction rays") {
         const StudyScene s(load_scene(scene_path("ch08_mirror.json")), 8, 8);
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const ForwardTracer tracer_f(s, needed(s.scene));
+        const LightTracer& tracer = tracer_f.tracer;
         const SplatResult r = render_light_tracing(tracer, settings_of(8, 8, 16, 1), 20000);
         CHECK(r.render.rays[RayKind::kReflection] > 0);
         CHECK(r.render.rays[RayKind::kRefraction] == 0);
     }
     SECTION("the glass sphere refracts: refraction rays; without the refraction effect, none") {
         const StudyScene s(load_scene(scene_path("ch08_default.json")), 8, 8);
-        const LightTracer glass(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+        const ForwardTracer glass_f(s, needed(s.scene));
+        const LightTracer& glass = glass_f.tracer;
         const SplatResult r = render_light_tracing(glass, settings_of(8, 8, 16, 1), 20000);
         CHECK(r.render.rays[RayKind::kRefraction] > 0);
         CHECK(r.render.rays[RayKind::kReflection] > 0);  // Fresnel reflection off the glass
-        const LightTracer lambert(s.world, s.scene, s.lights, s.camera,
-                                  forward_options(needed(s.scene).without(EffectSet{Effect::kRefraction})));
+        const ForwardTracer lambert_f(s, needed(s.scene).without(EffectSet{Effect::kRefraction}));
+        const LightTracer& lambert = lambert_f.tracer;
         const SplatResult l = render_light_tracing(lambert, settings_of(8, 8, 16, 1), 20000);
         CHECK(l.render.rays[RayKind::kRefraction] == 0);
         CHECK(l.render.rays[RayKind::kReflection] == 0);
@@ -397,7 +424,8 @@ TEST_CASE("The default scene renders finite, plausible and identical for 1, 2 an
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
           "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const StudyScene s(load_scene(scene_path("ch08_default.json")), 24, 24);
-    const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(needed(s.scene)));
+    const ForwardTracer tracer_f(s, needed(s.scene));
+    const LightTracer& tracer = tracer_f.tracer;
     // 24 × 24 × 96 paths: several chunks, so threads really share the work.
     const std::uint64_t paths = 24 * 24 * 96;
     REQUIRE(paths > 2 * chunk_size(24, 24));
@@ -432,10 +460,11 @@ TEST_CASE("Time to an RMSE is read off a log-log curve, and extrapolated with RM
 TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing and never NaN",
           "[ch08][stability][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const StudyScene s(load_scene(scene_path("ch06_default.json")), 8, 8);
-    const LightTracer tracer(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    const ForwardTracer tracer_f(s, EffectSet::all());
+    const LightTracer& tracer = tracer_f.tracer;
     Image film(8, 8);
     RayCounts rays;
-    const Brdf lambert = LambertBrdf{Color(0.5f)};
+    const LambertBrdf lambert{Color(0.5f)};
     Hit at_eye;
     at_eye.point = s.camera.eye;  // r = 0: no direction to the eye
     at_eye.normal = -s.camera.forward;

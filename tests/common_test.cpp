@@ -251,7 +251,7 @@ TEST_CASE("The course's scenes all load", "[scene]") {
     CHECK(loaded >= 2);
 }
 
-TEST_CASE("The Cornell box loads as DESIGN.md describes it", "[scene]") {
+TEST_CASE("The Cornell box loads as assets/scenes/README.md describes it", "[scene]") {
     const Scene scene = load_scene(scene_path("cornell.json"));
     CHECK(scene.shapes.size() == 8);
     CHECK(scene.materials.size() == 5);

@@ -8,15 +8,21 @@
 namespace rt {
 
 struct Hit {
-    Real t = kInfinity;   // distance along the ray (directions are unit length)
-    Vec3 point{0};        // on the surface, computed by the shape from its own parameters (not ray.at(t))
-    Vec3 point_error{0};  // per component, |point − exact surface point| <= point_error (rounding bound)
+    Real t = kInfinity;    // distance along the ray (directions are unit length)
+    Vec3 point{0};         // on the surface, computed by the shape from its own parameters (not ray.at(t))
+    Vec3 point_error{0};   // per component, |point − exact surface point| <= point_error (rounding bound)
     Vec3 normal{0, 0, 1};  // unit geometric normal, facing the side the ray came from: dot(normal, d) <= 0
-    bool front_face = true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
+    bool front_face =
+        true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
     // No surface coordinates: no chapter has a texture to look up, and a sphere's (atan2 and acos per hit)
     // cost the glass Cornell box about 2 % of its time.
-    int material = -1;  // index into Scene::materials
+    int material = -1;            // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
+    // The light this surface is: k for the k-th primitive, in scene order, whose material emits (a box
+    // counts its 6 faces, a mesh its triangles); −1 for a surface that emits nothing and for an emissive
+    // plane, which has infinite area and is no light a sampler can draw from. Chapter 04's LightSet numbers
+    // its lights the same way, so a path that hits a light knows which one without searching.
+    std::int32_t light = -1;
 };
 
 // Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.

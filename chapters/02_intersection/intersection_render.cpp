@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "pixel_sampling.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
 #include "rt/errors.hpp"
 #include "rt/interrupt.hpp"
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
 #include "rt/render_loop.hpp"
 #include "world.hpp"
 

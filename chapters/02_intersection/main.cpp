@@ -6,7 +6,7 @@
 #include <string>
 #include <variant>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
 #include "intersection_render.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"

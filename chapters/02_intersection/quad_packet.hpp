@@ -1,7 +1,7 @@
 // Four quads tested at once. A ray inside a room of big quads (the Cornell box) must test most of its walls:
 // there the BVH has little to cull, and the quad test itself is the cost. A QuadPacket holds four quads
-// coordinate by coordinate, so that each step of intersect_quad's equations (quad.hpp) runs on all four in one
-// SIMD instruction (std::experimental::simd, from GCC's standard library, libstdc++), and one branch asks
+// coordinate by coordinate, so that each step of intersect_quad's equations (quad.hpp) runs on all four in
+// one SIMD instruction (std::experimental::simd, from GCC's standard library, libstdc++), and one branch asks
 // whether any of them is hit. Each lane does intersect_quad's operations in intersect_quad's order, so it
 // rounds the same way: the tests check that a packet and intersect_quad give the same hit, bit for bit.
 #pragma once
@@ -44,7 +44,8 @@ inline std::optional<PacketHit> intersect_quad_packet(const Ray& ray, const Quad
     const auto& normal = packet.normal;
     const auto& a_axis = packet.a_axis;
     const auto& b_axis = packet.b_axis;
-    // t = n · (Q − o) / (n · d), then q = o + t d − Q, a = q · a_axis, b = q · b_axis, for four quads at once.
+    // t = n · (Q − o) / (n · d), then q = o + t d − Q, a = q · a_axis, b = q · b_axis, for four quads at
+    // once.
     const QuadLanes denominator = normal[0] * d.x + normal[1] * d.y + normal[2] * d.z;
     const QuadLanes to_x = origin[0] - o.x, to_y = origin[1] - o.y, to_z = origin[2] - o.z;
     const QuadLanes t = (normal[0] * to_x + normal[1] * to_y + normal[2] * to_z) / denominator;

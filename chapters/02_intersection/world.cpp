@@ -9,7 +9,7 @@
 namespace rt {
 
 World::World(const Scene& scene, WorldOptions options) : options_(options) {
-    for (const Shape& shape : scene.shapes) add(shape);
+    for (const Shape& shape : scene.shapes) add(shape, scene.material_of(shape).emissive());
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration == Acceleration::kBvh) {
         if (!quads_.empty()) pack_quads();
@@ -51,8 +51,9 @@ void World::pack_quads() {
     primitives_ = std::move(items);
 }
 
-void World::add_primitive(Kind kind, std::uint32_t index, int material) {
+void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive) {
     primitives_.push_back({kind, index, material, std::uint32_t(primitives_.size())});
+    light_of_primitive_.push_back(emissive ? light_count_++ : -1);
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
@@ -97,32 +98,32 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     packets_ = std::move(packets);
 }
 
-void World::add(const Shape& shape) {
+void World::add(const Shape& shape, bool emissive) {
     const int material = shape.material;
     std::visit(
         [&](const auto& g) {
             using T = std::decay_t<decltype(g)>;
             if constexpr (std::is_same_v<T, SphereShape>) {
-                add_primitive(Kind::kSphere, std::uint32_t(spheres_.size()), material);
+                add_primitive(Kind::kSphere, std::uint32_t(spheres_.size()), material, emissive);
                 spheres_.push_back({g.center, g.radius});
             } else if constexpr (std::is_same_v<T, QuadShape>) {
-                add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material);
+                add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive);
                 quads_.push_back(make_quad(g.origin, g.u, g.v));
             } else if constexpr (std::is_same_v<T, TriangleShape>) {
-                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material);
+                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive);
                 triangles_.push_back({g.vertices[0], g.vertices[1], g.vertices[2]});
             } else if constexpr (std::is_same_v<T, PlaneShape>) {
                 planes_.push_back({make_plane(g.point, g.normal), material});
             } else if constexpr (std::is_same_v<T, BoxShape>) {
                 for (const Quad& face : box_faces(g)) {
-                    add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material);
+                    add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive);
                     quads_.push_back(face);
                 }
             } else if constexpr (std::is_same_v<T, MeshShape>) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
                 for (const auto& tri : g.triangles) {
-                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material);
+                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive);
                     triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
                 }
             }
@@ -222,8 +223,9 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
         limit = found.t;
         return true;
     };
-    // A BVH of one leaf (a small scene, like the Cornell box once its quads are packed) is a list: its box would
-    // only turn away the rays that miss the whole scene, at the price of three divisions and a slab test each.
+    // A BVH of one leaf (a small scene, like the Cornell box once its quads are packed) is a list: its box
+    // would only turn away the rays that miss the whole scene, at the price of three divisions and a slab
+    // test each.
     if (options_.acceleration == Acceleration::kBvh && bvh_.nodes().size() > 1) {
         return bvh_.traverse(ray, inverse_direction(ray.direction), t_max, any_hit, test_one, stats) || hit;
     }
@@ -257,6 +259,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     if (p.kind == Kind::kQuadPacket) p = quad_primitives_[packets_[p.index].quad[std::size_t(found.lane)]];
     hit.primitive = p.id;
     hit.material = p.material;
+    hit.light = light_of_primitive_[p.id];
     switch (p.kind) {
         case Kind::kSphere: {
             const Sphere& s = spheres_[p.index];

@@ -60,7 +60,8 @@ class World {
         int material;
     };
     // The nearest hit found so far, before its hit record is made: `slot` is the primitive's place in
-    // primitives_, or primitives_.size() + i for plane i; `lane` is the quad's lane when the slot is a packet.
+    // primitives_, or primitives_.size() + i for plane i; `lane` is the quad's lane when the slot is a
+    // packet.
     struct Candidate {
         Real t;
         std::uint32_t slot;
@@ -68,8 +69,9 @@ class World {
         int lane = 0;
     };
 
-    void add(const Shape& shape);
-    void add_primitive(Kind kind, std::uint32_t index, int material);
+    // Adds the primitives of `shape`; `emissive`: its material emits, so each bounded primitive is a light.
+    void add(const Shape& shape, bool emissive);
+    void add_primitive(Kind kind, std::uint32_t index, int material, bool emissive);
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
     std::vector<Aabb> all_bounds() const;
@@ -84,9 +86,11 @@ class World {
     std::vector<Quad> quads_;
     std::vector<Triangle> triangles_;
     std::vector<QuadPacket> packets_;
-    std::vector<Primitive> quad_primitives_;  // with packets: quad i's own record (material, number)
-    std::vector<Primitive> primitives_;       // the bounded ones; planes are numbered after them
-    std::uint32_t bounded_count_ = 0;          // spheres, quads and triangles
+    std::vector<Primitive> quad_primitives_;        // with packets: quad i's own record (material, number)
+    std::vector<Primitive> primitives_;             // the bounded ones; planes are numbered after them
+    std::vector<std::int32_t> light_of_primitive_;  // by Primitive::id: Hit::light
+    std::int32_t light_count_ = 0;                  // emissive bounded primitives so far
+    std::uint32_t bounded_count_ = 0;               // spheres, quads and triangles
     std::vector<MaterialPlane> planes_;
     Bvh bvh_;
 };

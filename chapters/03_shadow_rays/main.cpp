@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "offset_study.hpp"
 #include "ray_offset.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "scene_scale.hpp"
 #include "shadow_render.hpp"
-#include "world.hpp"
 
 namespace {
 

@@ -5,12 +5,12 @@
 #include <chrono>
 #include <memory>
 
+#include "02_intersection/world.hpp"
 #include "exact_visibility.hpp"
 #include "point_light.hpp"
 #include "scene_scale.hpp"
 #include "shadow_ray.hpp"
 #include "shadow_render.hpp"
-#include "world.hpp"
 
 namespace rt {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <string_view>
 
-#include "hit.hpp"
+#include "02_intersection/hit.hpp"
 #include "rt/math.hpp"
 #include "rt/ray.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "float_error.hpp"
+#include "02_intersection/float_error.hpp"
 
 namespace rt {
 

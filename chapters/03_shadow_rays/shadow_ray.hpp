@@ -2,11 +2,11 @@
 // (World::occluded) answers it: the first occluder found ends the search, none needs to be the nearest.
 #pragma once
 
-#include "hit.hpp"
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
 #include "rt/ray.hpp"
 #include "rt/ray_counts.hpp"
-#include "world.hpp"
 
 namespace rt {
 

@@ -1,22 +1,11 @@
 #include "shadow_render.hpp"
 
-#include "pixel_sampling.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
 #include "point_light.hpp"
 #include "rt/effects.hpp"
 #include "shadow_ray.hpp"
 
 namespace rt {
-
-Color shading_albedo(const Material& material) {
-    switch (material.type) {
-        case MaterialType::kMirror:
-            return material.reflectance;
-        case MaterialType::kDielectric:
-            return Color(Real(0.73));
-        default:
-            return material.albedo;
-    }
-}
 
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng) {
     const Vec2 film = pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, spp, rng.next_vec2());
@@ -26,7 +15,7 @@ Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg3
 Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
                       RayCounts& rays) {
     if (!options.direct) return Color(0);
-    const Color albedo = shading_albedo(scene.materials[std::size_t(hit.material)]);
+    const Color albedo = scene.materials[std::size_t(hit.material)].stand_in_albedo();
     if (albedo == Color(0)) return Color(0);
     Color irradiance(0);
     for (const PointLight& light : scene.point_lights) {
@@ -73,27 +62,11 @@ std::vector<std::string> shading_notes(const Scene& scene) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];
-        auto note = [&](const char* kind, Effect effect) {
-            notes.push_back(std::string(kind) + " material '" + m.name + "': shaded as Lambertian here; " +
-                            kEffectNames[std::size_t(effect)].data() + " is simulated from " +
-                            chapter_that_adds(effect) + " on");
-        };
-        switch (m.type) {
-            case MaterialType::kMirror:
-                note("mirror", Effect::kReflection);
-                break;
-            case MaterialType::kGlossy:
-                note("glossy", Effect::kGlossy);
-                break;
-            case MaterialType::kRetroreflective:
-                note("retroreflective", Effect::kGlossy);
-                break;
-            case MaterialType::kDielectric:
-                note("dielectric", Effect::kRefraction);
-                break;
-            case MaterialType::kDiffuse:
-                break;
-        }
+        const auto effect = effect_of(m);
+        if (!effect) continue;
+        notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+                        "': shaded as Lambertian here; " + kEffectNames[std::size_t(*effect)].data() +
+                        " is simulated from " + chapter_that_adds(*effect) + " on");
     }
     return notes;
 }

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
-#include "world.hpp"
 
 namespace rt {
 
@@ -22,10 +22,6 @@ struct ShadowOptions {
     bool direct = true;   // effect "direct": light the surfaces at all
     bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
 };
-
-// The albedo a surface is shaded with here: diffuse, glossy and retro-reflective materials by their albedo,
-// mirrors by their reflectance, dielectrics as a grey 0.73 (each is shaded as Lambertian before its chapter).
-Color shading_albedo(const Material& material);
 
 // The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);

@@ -4,18 +4,21 @@
 #include <numbers>
 #include <variant>
 
+#include "brdf.hpp"
 #include "irradiance.hpp"
 
 namespace rt {
 
-std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene) {
+std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene, const MaterialTable& materials) {
     if (scene.shapes.size() != 2 || !scene.point_lights.empty() || scene.environment) return std::nullopt;
     const PlaneShape* plane = nullptr;
+    const LambertBrdf* plane_brdf = nullptr;
     const Shape* lamp = nullptr;
     for (const Shape& shape : scene.shapes) {
         const Material& m = scene.material_of(shape);
         if (const auto* p = std::get_if<PlaneShape>(&shape.geometry); p && !m.emissive()) {
-            if (m.type != MaterialType::kDiffuse) return std::nullopt;
+            plane_brdf = dynamic_cast<const LambertBrdf*>(&materials.bsdf(shape.material));
+            if (!plane_brdf) return std::nullopt;
             plane = p;
         } else if (std::holds_alternative<QuadShape>(shape.geometry) && m.emissive()) {
             lamp = &shape;
@@ -29,12 +32,7 @@ std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene) {
     for (const Vec3& corner : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v}) {
         if (!(glm::dot(n, corner - plane->point) > 0)) return std::nullopt;
     }
-    for (const Shape& shape : scene.shapes) {
-        if (std::holds_alternative<PlaneShape>(shape.geometry)) {
-            return PlaneUnderQuad{scene.material_of(shape).albedo, light, lamp->material};
-        }
-    }
-    return std::nullopt;
+    return PlaneUnderQuad{plane_brdf->albedo, light, lamp->material};
 }
 
 Color exact_radiance(const PlaneUnderQuad& analytic, const World& world, const Ray& ray) {

@@ -6,11 +6,12 @@
 
 #include <optional>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "light_set.hpp"
+#include "material_table.hpp"
 #include "rt/image.hpp"
 #include "rt/scene.hpp"
-#include "world.hpp"
 
 namespace rt {
 
@@ -20,9 +21,10 @@ struct PlaneUnderQuad {
     int light_material = -1;  // the lamp's material: a hit with it is on the light
 };
 
-// The scene's plane and light when it is exactly one diffuse plane and one emissive quad whose four corners
-// lie strictly on the plane's front side, with no point or environment light; nothing otherwise.
-std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene);
+// The scene's plane and light when it is exactly one plane shaded as Lambert (in `materials`) and one
+// emissive quad whose four corners lie strictly on the plane's front side, with no point or environment
+// light; nothing otherwise.
+std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene, const MaterialTable& materials);
 
 // The exact radiance along a ray: ρ / π · E(p) on the plane (E = 0 behind the one-sided light), L on the
 // light's front, 0 elsewhere. E is computed in double.

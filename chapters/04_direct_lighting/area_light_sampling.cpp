@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "float_error.hpp"
+#include "02_intersection/float_error.hpp"
 #include "sampling.hpp"
 
 namespace rt {

@@ -28,9 +28,9 @@ Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, c
 
 // The mirror's one direction wi = r(wo), with f = R / cos θ_i and pdf 1 (a delta), so that f cos θ_i / pdf =
 // R; nothing (f = 0) when r(wo) is not above the surface.
-BrdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
+BsdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
     // EXERCISE(ch04.mirror)
-    BrdfSample s;
+    BsdfSample s;
     s.wi = reflect(wo, n);
     const Real cos_i = glm::dot(s.wi, n);
     s.f = cos_i > 0 ? mirror.reflectance / cos_i : Color(0);
@@ -59,115 +59,79 @@ Color retroreflective_eval(const RetroreflectiveBrdf& retro, const Vec3& wo, con
 
 // pdf = (e + 1) / (2π) cos^e α: the density of sample_power_cosine about `axis`.
 Real lobe_pdf(Real exponent, const Vec3& axis, const Vec3& wi) {
-    return (exponent + 1) * Real(0.5) * kInvPi * lobe_power(wi, axis, exponent);
+    return power_cosine_pdf(glm::dot(wi, axis), exponent);
 }
 
-BrdfSample lobe_sample(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& n,
+BsdfSample lobe_sample(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& n,
                        Vec2 u) {
-    BrdfSample s;
+    BsdfSample s;
     s.wi = glm::normalize(make_frame(axis).to_world(sample_power_cosine(u, exponent)));
     s.f = lobe_eval(albedo, exponent, axis, wo, s.wi, n);  // 0 when the lobe dips below the surface
     s.pdf = lobe_pdf(exponent, axis, s.wi);
     return s;
 }
 
-struct Eval {
-    const Vec3& wo;
-    const Vec3& wi;
-    const Vec3& n;
-    Color operator()(const LambertBrdf& b) const { return lambert_eval(b, wo, wi, n); }
-    Color operator()(const MirrorBrdf&) const { return Color(0); }
-    Color operator()(const GlossyBrdf& b) const {
-        return lobe_eval(b.albedo, b.exponent, reflect(wo, n), wo, wi, n);
-    }
-    Color operator()(const RetroreflectiveBrdf& b) const { return retroreflective_eval(b, wo, wi, n); }
-};
-
-struct Sample {
-    const Vec3& wo;
-    const Vec3& n;
-    Vec2 u;
-    BrdfSample operator()(const LambertBrdf& b) const {
-        BrdfSample s;
-        s.wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(u)));
-        s.f = lambert_eval(b, wo, s.wi, n);
-        s.pdf = std::max(Real(0), glm::dot(s.wi, n)) * kInvPi;
-        return s;
-    }
-    BrdfSample operator()(const MirrorBrdf& b) const { return mirror_sample(b, wo, n); }
-    BrdfSample operator()(const GlossyBrdf& b) const {
-        return lobe_sample(b.albedo, b.exponent, reflect(wo, n), wo, n, u);
-    }
-    BrdfSample operator()(const RetroreflectiveBrdf& b) const {
-        return lobe_sample(b.albedo, b.exponent, wo, wo, n, u);
-    }
-};
-
-struct Pdf {
-    const Vec3& wo;
-    const Vec3& wi;
-    const Vec3& n;
-    Real operator()(const LambertBrdf&) const { return std::max(Real(0), glm::dot(wi, n)) * kInvPi; }
-    Real operator()(const MirrorBrdf&) const { return 0; }
-    Real operator()(const GlossyBrdf& b) const { return lobe_pdf(b.exponent, reflect(wo, n), wi); }
-    Real operator()(const RetroreflectiveBrdf& b) const { return lobe_pdf(b.exponent, wo, wi); }
-};
-
 }  // namespace
+
+LambertBrdf::LambertBrdf(const Color& albedo_)
+    : Bsdf({.diffuse = true, .black = is_black(albedo_)}), albedo(albedo_) {}
+
+Color LambertBrdf::eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
+    return lambert_eval(*this, wo, wi, n);
+}
+
+BsdfSample LambertBrdf::sample(const Vec3& wo, const Vec3& n, Vec2 u, Real) const {
+    BsdfSample s;
+    s.wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(u)));
+    s.f = lambert_eval(*this, wo, s.wi, n);
+    s.pdf = cosine_hemisphere_pdf(glm::dot(s.wi, n));
+    return s;
+}
+
+Real LambertBrdf::pdf(const Vec3&, const Vec3& wi, const Vec3& n) const {
+    return cosine_hemisphere_pdf(glm::dot(wi, n));
+}
+
+MirrorBrdf::MirrorBrdf(const Color& reflectance_)
+    : Bsdf({.delta = true, .black = is_black(reflectance_)}), reflectance(reflectance_) {}
+
+BsdfSample MirrorBrdf::sample(const Vec3& wo, const Vec3& n, Vec2, Real) const {
+    return mirror_sample(*this, wo, n);
+}
+
+GlossyBrdf::GlossyBrdf(const Color& albedo_, Real exponent_)
+    : Bsdf({.black = is_black(albedo_)}), albedo(albedo_), exponent(exponent_) {}
+
+Color GlossyBrdf::eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
+    return lobe_eval(albedo, exponent, reflect(wo, n), wo, wi, n);
+}
+
+BsdfSample GlossyBrdf::sample(const Vec3& wo, const Vec3& n, Vec2 u, Real) const {
+    return lobe_sample(albedo, exponent, reflect(wo, n), wo, n, u);
+}
+
+Real GlossyBrdf::pdf(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
+    return lobe_pdf(exponent, reflect(wo, n), wi);
+}
+
+RetroreflectiveBrdf::RetroreflectiveBrdf(const Color& albedo_, Real exponent_)
+    : Bsdf({.black = is_black(albedo_)}), albedo(albedo_), exponent(exponent_) {}
+
+Color RetroreflectiveBrdf::eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
+    return retroreflective_eval(*this, wo, wi, n);
+}
+
+BsdfSample RetroreflectiveBrdf::sample(const Vec3& wo, const Vec3& n, Vec2 u, Real) const {
+    return lobe_sample(albedo, exponent, wo, wo, n, u);
+}
+
+Real RetroreflectiveBrdf::pdf(const Vec3& wo, const Vec3& wi, const Vec3&) const {
+    return lobe_pdf(exponent, wo, wi);
+}
 
 Real phong_exponent(Real roughness) {
     const Real r = std::max(roughness, Real(1e-3));
     return std::max(Real(0), 2 / (r * r) - 2);
-}
-
-Brdf brdf_of(const Material& m, const Brdf& dielectric_stand_in) {
-    switch (m.type) {
-        case MaterialType::kDiffuse:
-            return LambertBrdf{m.albedo};
-        case MaterialType::kMirror:
-            return MirrorBrdf{m.reflectance};
-        case MaterialType::kGlossy:
-            return GlossyBrdf{m.albedo, phong_exponent(m.roughness)};
-        case MaterialType::kRetroreflective:
-            return RetroreflectiveBrdf{m.albedo, phong_exponent(m.roughness)};
-        case MaterialType::kDielectric:
-            return dielectric_stand_in;
-    }
-    return LambertBrdf{m.albedo};
-}
-
-Color eval(const Brdf& brdf, const Vec3& wo, const Vec3& wi, const Vec3& n) {
-    return std::visit(Eval{wo, wi, n}, brdf);
-}
-
-BrdfSample sample(const Brdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u) {
-    return std::visit(Sample{wo, n, u}, brdf);
-}
-
-Real pdf(const Brdf& brdf, const Vec3& wo, const Vec3& wi, const Vec3& n) {
-    return std::visit(Pdf{wo, wi, n}, brdf);
-}
-
-bool is_delta(const Brdf& brdf) {
-    return std::holds_alternative<MirrorBrdf>(brdf);
-}
-
-bool is_black(const Brdf& brdf) {
-    return std::visit(
-        [](const auto& b) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(b)>, MirrorBrdf>) {
-                return is_black(b.reflectance);
-            } else {
-                return is_black(b.albedo);
-            }
-        },
-        brdf);
-}
-
-Brdf without_lobes(const Brdf& brdf) {
-    if (const auto* g = std::get_if<GlossyBrdf>(&brdf)) return LambertBrdf{g->albedo};
-    if (const auto* r = std::get_if<RetroreflectiveBrdf>(&brdf)) return LambertBrdf{r->albedo};
-    return brdf;
 }
 
 }  // namespace rt

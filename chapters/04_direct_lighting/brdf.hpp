@@ -1,58 +1,71 @@
-// The four BRDFs of the course. A BRDF f(wo, wi) is the ratio of the radiance reflected toward wo to the
-// irradiance arriving from wi: dL_o(wo) = f(wo, wi) L_i(wi) cos θ_i dω_i. Directions point away from the
-// surface; n is the unit normal on wo's side. Each BRDF has
+// The four BRDFs of the course, each a Bsdf (bsdf.hpp) that only reflects. A BRDF f(wo, wi) is the ratio of
+// the radiance reflected toward wo to the irradiance arriving from wi: dL_o(wo) = f(wo, wi) L_i(wi) cos θ_i
+// dω_i. Directions point away from the surface; n is the unit normal on wo's side. Each BRDF has
 //   eval(wo, wi, n):   f(wo, wi), 0 unless both directions are above the surface;
 //   sample(wo, n, u):  a direction wi drawn with density pdf (solid angle), with f(wo, wi) — for chapter 06;
 //   pdf(wo, wi, n):    the density of sample() at wi.
 // Energy conservation: ∫ f(wo, wi) cos θ_i dω_i <= 1 for every wo. Reciprocity: f(wo, wi) = f(wi, wo).
 #pragma once
 
-#include <variant>
-
+#include "bsdf.hpp"
 #include "rt/math.hpp"
-#include "rt/scene.hpp"
 
 namespace rt {
 
-struct BrdfSample {
-    Vec3 wi{0, 0, 1};
-    Color f{0};  // f(wo, wi); for a delta BRDF, the factor that makes f cos θ_i / pdf the reflected fraction
-    Real pdf = 0;  // solid-angle density; for a delta BRDF, 1 by convention
-    bool delta = false;
-};
-
 // Ideal diffuse (Lambert): f = ρ / π for every pair of directions above the surface. ∫ f cos = ρ.
 // Sampled cosine-weighted: pdf = cos θ_i / π.
-struct LambertBrdf {
-    Color albedo{0.8f};
+class LambertBrdf final : public Bsdf {
+  public:
+    explicit LambertBrdf(const Color& albedo);
+    Color eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
+    BsdfSample sample(const Vec3& wo, const Vec3& n, Vec2 u, Real u_lobe) const override;
+    Real pdf(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
+
+    Color albedo;
 };
 
 // Ideal specular: all light from wi leaves along its mirror image r(wi) = 2 (n · wi) n − wi. f is a delta
 // (Dirac) distribution: eval is 0 for every wi a light sample can produce (the set r(wo) has measure zero),
 // so the direct term of a mirror from area and point lights is 0. sample() returns wi = r(wo) with
 // f = R / cos θ_i and pdf = 1, so f cos / pdf = R, the reflectance.
-struct MirrorBrdf {
-    Color reflectance{1};
+class MirrorBrdf final : public Bsdf {
+  public:
+    explicit MirrorBrdf(const Color& reflectance);
+    Color eval(const Vec3&, const Vec3&, const Vec3&) const override { return Color(0); }
+    BsdfSample sample(const Vec3& wo, const Vec3& n, Vec2 u, Real u_lobe) const override;
+    Real pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0; }
+
+    Color reflectance;
 };
 
 // Glossy: the normalized modified Phong lobe around the mirror direction r(wo) (Lafortune & Willems 1994):
 // f = ρ (e + 2) / (2π) cos^e α, with cos α = max(0, wi · r(wo)). (e + 2) / (2π) makes ∫ f cos = ρ at normal
 // incidence, less elsewhere. wi · r(wo) = wo · r(wi), so it is reciprocal. e = phong_exponent(roughness).
 // Sampled from the lobe: pdf = (e + 1) / (2π) cos^e α.
-struct GlossyBrdf {
-    Color albedo{0.8f};
-    Real exponent = 48;
+class GlossyBrdf final : public Bsdf {
+  public:
+    GlossyBrdf(const Color& albedo, Real exponent);
+    Color eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
+    BsdfSample sample(const Vec3& wo, const Vec3& n, Vec2 u, Real u_lobe) const override;
+    Real pdf(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
+
+    Color albedo;
+    Real exponent;
 };
 
 // Retro-reflective: the same normalized lobe around wo itself (light returns toward where it came from):
 // f = ρ (e + 2) / (2π) cos^e β, cos β = max(0, wi · wo); symmetric in wi and wo. pdf = (e + 1) / (2π) cos^e
 // β.
-struct RetroreflectiveBrdf {
-    Color albedo{0.8f};
-    Real exponent = 198;
-};
+class RetroreflectiveBrdf final : public Bsdf {
+  public:
+    RetroreflectiveBrdf(const Color& albedo, Real exponent);
+    Color eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
+    BsdfSample sample(const Vec3& wo, const Vec3& n, Vec2 u, Real u_lobe) const override;
+    Real pdf(const Vec3& wo, const Vec3& wi, const Vec3& n) const override;
 
-using Brdf = std::variant<LambertBrdf, MirrorBrdf, GlossyBrdf, RetroreflectiveBrdf>;
+    Color albedo;
+    Real exponent;
+};
 
 // The Phong exponent of a roughness r in (0, 1]: e = 2 / r² − 2 (the relation Walter et al. 2007 give between
 // Phong and Beckmann microfacet distributions); r = 1 gives e = 0, a diffuse-like lobe. r is clamped to >=
@@ -63,18 +76,5 @@ Real phong_exponent(Real roughness);
 inline Vec3 reflect(const Vec3& w, const Vec3& n) {
     return 2 * glm::dot(n, w) * n - w;
 }
-
-// The BRDF of a scene material. A dielectric (refraction comes in chapter 07) is given `dielectric_stand_in`.
-Brdf brdf_of(const Material& material, const Brdf& dielectric_stand_in);
-
-Color eval(const Brdf& brdf, const Vec3& wo, const Vec3& wi, const Vec3& n);
-BrdfSample sample(const Brdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u);
-Real pdf(const Brdf& brdf, const Vec3& wo, const Vec3& wi, const Vec3& n);
-// True for a BRDF whose every value is a delta (the mirror): light sampling cannot reach it.
-bool is_delta(const Brdf& brdf);
-// Zero everywhere (black diffuse, zero reflectance): nothing to light, no shadow rays needed.
-bool is_black(const Brdf& brdf);
-// With the glossy effect off, a glossy or retro-reflective lobe is shaded as a Lambert surface of its albedo.
-Brdf without_lobes(const Brdf& brdf);
 
 }  // namespace rt

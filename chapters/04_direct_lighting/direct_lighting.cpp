@@ -2,12 +2,13 @@
 
 #include <algorithm>
 
+#include "01_ray_generation/pixel_sampling.hpp"
+#include "03_shadow_rays/shadow_ray.hpp"
 #include "area_light_sampling.hpp"
 #include "frame.hpp"
-#include "pixel_sampling.hpp"
 #include "rt/errors.hpp"
+#include "point_light_sampling.hpp"
 #include "sampling.hpp"
-#include "shadow_ray.hpp"
 #include "sphere_light_sampling.hpp"
 
 namespace rt {
@@ -21,23 +22,42 @@ LightSampler light_sampler_from_string(std::string_view name) {
     throw InputError("--light-sampler: expected independent or stratified, got '" + std::string(name) + "'");
 }
 
-DirectLighting::DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options)
-    : world_(world), scene_(scene), lights_(std::move(lights)), options_(options) {
-    options_.shadow_samples = std::max(1, options_.shadow_samples);
-    const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
-    for (const Material& m : scene.materials) {
-        const Brdf b = brdf_of(m, stand_in);
-        brdfs_.push_back(options_.glossy ? b : without_lobes(b));
+std::string_view to_string(LightSelection selection) {
+    switch (selection) {
+        case LightSelection::kAuto:
+            return "auto";
+        case LightSelection::kEvery:
+            return "every";
+        case LightSelection::kPower:
+            return "power";
     }
+    return "?";
 }
 
-Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& s,
+LightSelection light_selection_from_string(std::string_view name) {
+    if (name == "auto") return LightSelection::kAuto;
+    if (name == "every") return LightSelection::kEvery;
+    if (name == "power") return LightSelection::kPower;
+    throw InputError("--light-selection: expected auto, every or power, got '" + std::string(name) + "'");
+}
+
+DirectLighting::DirectLighting(const World& world, const MaterialTable& materials, LightSet lights,
+                               DirectOptions options)
+    : world_(world), materials_(materials), lights_(std::move(lights)), options_(options) {
+    options_.shadow_samples = std::max(1, options_.shadow_samples);
+    const std::size_t count = lights_.area_count() + lights_.points.size();
+    const bool pick = options_.light_selection == LightSelection::kPower ||
+                      (options_.light_selection == LightSelection::kAuto && count > kEveryLightLimit);
+    if (pick) picker_.emplace(lights_);
+}
+
+Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Bsdf& brdf, const LightSample& s,
                                    RayCounts& rays) const {
     const Real cos_i = glm::dot(s.wi, hit.normal);
     if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.radiance)) return Color(0);
     const Color f = eval(brdf, wo, s.wi, hit.normal);
     if (is_black(f)) return Color(0);
-    if (options_.shadows) {
+    if (options_.simulates(Effect::kShadows)) {
         const bool lit = s.on_surface() ? visible(world_, hit, SurfacePoint{s.point, s.normal, s.point_error},
                                                   options_.offset, rays)
                                         : visible(world_, hit, s.point, options_.offset, rays);
@@ -56,11 +76,18 @@ Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
 }
 
 Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
-    // EXERCISE(ch04.direct_light)
-    const Brdf& b = brdf(hit.material);
+    const Bsdf& b = materials_.bsdf(hit.material, hit.front_face);
     // A light sample never falls on a delta BRDF's one direction, and a black BRDF reflects nothing: neither
     // needs a single shadow ray.
-    if (!options_.direct || is_delta(b) || is_black(b)) return Color(0);
+    if (!options_.simulates(Effect::kDirect) || is_delta(b) || is_black(b)) return Color(0);
+    Color sum = picker_ ? picked_lights(hit, wo, b, rng, rays) : every_light(hit, wo, b, rng, rays);
+    add_environment(hit, wo, b, rng, rays, sum);
+    return sum;
+}
+
+Color DirectLighting::every_light(const Hit& hit, const Vec3& wo, const Bsdf& b, Pcg32& rng,
+                                  RayCounts& rays) const {
+    // EXERCISE(ch04.direct_light)
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
     Color sum(0);
@@ -88,40 +115,52 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
     }
     // A point light is a delta: its one direction carries E = I cos θ / d², i.e. L_e / pdf = I / d².
     for (const PointLight& light : lights_.points) {
-        const Vec3 to_light = light.position - p;
-        const Real d2 = glm::dot(to_light, to_light);
-        if (!(d2 > 0)) continue;
-        const Real d = std::sqrt(d2);
-        sum += contribution(hit, wo, b, LightSample{light.position, to_light / d, d, light.intensity / d2, 1},
-                            rays);
-    }
-    // The environment: cosine-weighted directions (pdf = cos θ / π); the shadow ray goes to infinity.
-    if (lights_.environment && !is_black(lights_.environment->radiance)) {
-        const Frame frame = make_frame(hit.normal);
-        for (int j = 0; j < n; ++j) {
-            const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(light_point(j, rng))));
-            const Real cos_i = glm::dot(wi, hit.normal);
-            if (!(cos_i > 0)) continue;
-            const Color f = eval(b, wo, wi, hit.normal);
-            if (is_black(f)) continue;
-            if (options_.shadows) {
-                rays.add(RayKind::kShadow);
-                if (world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity)) continue;
-            }
-            sum += weight * f * lights_.environment->radiance * kPi;  // f L cos / (cos / π)
-        }
+        if (const auto s = sample_point_light(light, p)) sum += contribution(hit, wo, b, *s, rays);
     }
     return sum;
     // END EXERCISE
 }
 
+Color DirectLighting::picked_lights(const Hit& hit, const Vec3& wo, const Bsdf& b, Pcg32& rng,
+                                    RayCounts& rays) const {
+    const int n = options_.shadow_samples;
+    const Real weight = Real(1) / Real(n);
+    Color sum(0);
+    for (int j = 0; j < n; ++j) {
+        const Real u_pick = rng.next_real();
+        if (const auto s = picker_->sample(hit.point, u_pick, light_point(j, rng))) {
+            sum += weight * contribution(hit, wo, b, *s, rays);
+        }
+    }
+    return sum;
+}
+
+void DirectLighting::add_environment(const Hit& hit, const Vec3& wo, const Bsdf& b, Pcg32& rng,
+                                     RayCounts& rays, Color& sum) const {
+    // The environment: cosine-weighted directions (pdf = cos θ / π); the shadow ray goes to infinity.
+    if (!lights_.environment || is_black(lights_.environment->radiance)) return;
+    const int n = options_.shadow_samples;
+    const Real weight = Real(1) / Real(n);
+    const Frame frame = make_frame(hit.normal);
+    for (int j = 0; j < n; ++j) {
+        const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(light_point(j, rng))));
+        const Real cos_i = glm::dot(wi, hit.normal);
+        if (!(cos_i > 0)) continue;
+        const Color f = eval(b, wo, wi, hit.normal);
+        if (is_black(f)) continue;
+        if (options_.simulates(Effect::kShadows)) {
+            rays.add(RayKind::kShadow);
+            if (world_.occluded(spawn_ray(hit, wi, options_.offset), kInfinity)) continue;
+        }
+        sum += weight * f * lights_.environment->radiance * kPi;  // f L cos / (cos / π)
+    }
+}
+
 Color DirectLighting::radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const {
     const auto hit = world_.intersect(ray);
     if (!hit) return lights_.environment ? lights_.environment->radiance : Color(0);
-    const Material& m = scene_.materials[std::size_t(hit->material)];
     // Emission is one-sided: the front of a quad (u × v), the outside of a sphere.
-    const Color emitted = hit->front_face ? m.emission : Color(0);
-    return emitted + direct(*hit, -ray.direction, rng, rays);
+    return materials_.emission(hit->material, hit->front_face) + direct(*hit, -ray.direction, rng, rays);
 }
 
 }  // namespace rt

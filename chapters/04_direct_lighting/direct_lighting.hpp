@@ -7,18 +7,19 @@
 // A shadow ray is traced only when its sample could carry light (f, L_e and cos θ all > 0).
 #pragma once
 
+#include <optional>
 #include <string_view>
-#include <vector>
 
-#include "brdf.hpp"
-#include "hit.hpp"
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
+#include "bsdf.hpp"
+#include "light_picker.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
-#include "ray_offset.hpp"
+#include "material_table.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
-#include "rt/scene.hpp"
-#include "world.hpp"
+#include "trace_options.hpp"
 
 namespace rt {
 
@@ -30,20 +31,32 @@ std::string_view to_string(LightSampler sampler);
 // "independent" or "stratified"; throws InputError for any other name.
 LightSampler light_sampler_from_string(std::string_view name);
 
-struct DirectOptions {
-    int shadow_samples = 1;  // N: shadow rays per area light (and environment) per hit
+// Which lights a hit samples. Every light, N samples each, is this chapter's estimator; its cost grows with
+// the number of lights (50 000 emissive spheres: 50 000 N shadow rays per hit). Picking N lights with
+// probability proportional to their power (the LightPicker, pdf = P(light) pdf_light) costs N shadow rays
+// whatever their number, at the price of more noise when few lights matter at a point. kAuto samples every
+// light up to kEveryLightLimit lights, and picks beyond.
+enum class LightSelection { kAuto, kEvery, kPower };
+inline constexpr std::size_t kEveryLightLimit = 16;
+
+std::string_view to_string(LightSelection selection);
+// "auto", "every" or "power"; throws InputError for any other name.
+LightSelection light_selection_from_string(std::string_view name);
+
+// Effects read: "direct" (sample the lights at all), "shadows" (trace shadow rays; without it every light
+// counts as visible). The material table holds what "glossy" changes.
+struct DirectOptions : TraceOptions {
+    int shadow_samples = 1;  // N: shadow rays per light (or picked lights) and for the environment per hit
     LightSampler light_sampler = LightSampler::kStratified;
-    bool direct = true;   // effect "direct": sample the lights at all
-    bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
-    bool glossy = true;   // effect "glossy": false shades glossy and retro-reflective lobes as Lambert
-    RayOffset offset{};
-    Color dielectric_albedo{0.73f};  // dielectrics are shaded as Lambert of this albedo until chapter 07
+    LightSelection light_selection = LightSelection::kAuto;
 };
 
 // What shading needs, built once per render.
 class DirectLighting {
   public:
-    DirectLighting(const World& world, const Scene& scene, LightSet lights, DirectOptions options);
+    // `world` and `materials` must outlive it.
+    DirectLighting(const World& world, const MaterialTable& materials, LightSet lights,
+                   DirectOptions options);
 
     // The direct term at `hit` toward wo (unit, pointing away from the surface, on the side of hit.normal).
     Color direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const;
@@ -51,23 +64,32 @@ class DirectLighting {
     // environment when the ray leaves the scene.
     Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;
 
-    const Brdf& brdf(int material) const { return brdfs_[std::size_t(material)]; }
+    const MaterialTable& materials() const { return materials_; }
     const LightSet& lights() const { return lights_; }
+    // Whether hits pick their lights by power (LightSelection, resolved for this scene's lights).
+    bool picks_lights() const { return picker_.has_value(); }
     const DirectOptions& options() const { return options_; }
     const World& world() const { return world_; }
 
   private:
     // The point of [0, 1)² that light sample j of N is warped from.
     Vec2 light_point(int j, Pcg32& rng) const;
+    // Σ over every area and point light of (1 / N) Σ_j f L cos / pdf, with their shadow rays.
+    Color every_light(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;
+    // (1 / N) Σ_j f L cos / pdf over N lights picked by power.
+    Color picked_lights(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;
+    // Adds the environment's N cosine-weighted samples to `sum`.
+    void add_environment(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays,
+                         Color& sum) const;
     // One light sample's contribution f L cos / pdf, with its shadow ray; 0 without tracing when it is 0.
-    Color contribution(const Hit& hit, const Vec3& wo, const Brdf& brdf, const LightSample& sample,
+    Color contribution(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const LightSample& sample,
                        RayCounts& rays) const;
 
     const World& world_;
-    const Scene& scene_;
+    const MaterialTable& materials_;
     LightSet lights_;
     DirectOptions options_;
-    std::vector<Brdf> brdfs_;  // one per scene material
+    std::optional<LightPicker> picker_;  // with LightSelection::kPower (or kAuto beyond the limit)
 };
 
 }  // namespace rt

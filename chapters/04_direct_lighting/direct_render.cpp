@@ -1,6 +1,6 @@
 #include "direct_render.hpp"
 
-#include "camera_render.hpp"
+#include "01_ray_generation/camera_render.hpp"
 #include "rt/error_metrics.hpp"
 
 namespace rt {
@@ -14,10 +14,10 @@ RenderResult render_direct(const DirectLighting& shading, const PinholeCamera& c
     });
 }
 
-std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
-                                         DirectOptions options, const PinholeCamera& camera,
-                                         RenderSettings settings, const Image& exact,
-                                         const std::vector<LightSampler>& samplers,
+std::vector<ShadowStudyRow> shadow_study(const World& world, const MaterialTable& materials,
+                                         const LightSet& lights, DirectOptions options,
+                                         const PinholeCamera& camera, RenderSettings settings,
+                                         const Image& exact, const std::vector<LightSampler>& samplers,
                                          const std::vector<int>& shadow_samples) {
     std::vector<ShadowStudyRow> rows;
     settings.samples_per_pixel = 1;
@@ -25,7 +25,7 @@ std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene,
         for (int n : shadow_samples) {
             options.light_sampler = sampler;
             options.shadow_samples = n;
-            const DirectLighting shading(world, scene, lights, options);
+            const DirectLighting shading(world, materials, lights, options);
             const RenderResult r = render_direct(shading, camera, settings, FilmPoints::kCentre);
             const ErrorMetrics e = compare(r.image, exact);
             rows.push_back(

@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "01_ray_generation/camera.hpp"
 #include "analytic_scene.hpp"
-#include "camera.hpp"
 #include "direct_lighting.hpp"
 #include "rt/render_loop.hpp"
 
@@ -29,10 +29,10 @@ struct ShadowStudyRow {
 };
 
 // The analytic scene at 1 sample per pixel (pixel centres) with N shadow samples, for each sampler and N.
-std::vector<ShadowStudyRow> shadow_study(const World& world, const Scene& scene, const LightSet& lights,
-                                         DirectOptions options, const PinholeCamera& camera,
-                                         RenderSettings settings, const Image& exact,
-                                         const std::vector<LightSampler>& samplers,
+std::vector<ShadowStudyRow> shadow_study(const World& world, const MaterialTable& materials,
+                                         const LightSet& lights, DirectOptions options,
+                                         const PinholeCamera& camera, RenderSettings settings,
+                                         const Image& exact, const std::vector<LightSampler>& samplers,
                                          const std::vector<int>& shadow_samples);
 
 }  // namespace rt

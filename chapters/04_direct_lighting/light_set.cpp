@@ -3,16 +3,27 @@
 #include <type_traits>
 #include <variant>
 
-#include "box.hpp"
+#include "02_intersection/box.hpp"
 
 namespace rt {
 namespace {
 
+// Adds `light` to `list` when it has an area, and numbers it (Hit::light) either way.
+template <class Light>
+void add_light(const Light& light, LightRef::List which, std::vector<Light>& list, LightSet& lights) {
+    if (area_of(light) > 0) {
+        lights.by_hit.push_back({which, std::uint32_t(list.size())});
+        list.push_back(light);
+    } else {
+        lights.by_hit.push_back({});
+    }
+}
+
 // The 6 faces of a transformed box (chapter 02's box_faces) as one-sided quad lights, emitting outward.
 void add_box_faces(const BoxShape& box, const Color& radiance, LightSet& lights) {
     for (const Quad& face : box_faces(box)) {
-        const QuadLight q = make_quad_light(face.origin, face.u, face.v, radiance);
-        if (q.area > 0) lights.quads.push_back(q);
+        add_light(make_quad_light(face.origin, face.u, face.v, radiance), LightRef::List::kQuads,
+                  lights.quads, lights);
     }
 }
 
@@ -42,21 +53,21 @@ LightSet collect_lights(const Scene& scene) {
             [&](const auto& g) {
                 using T = std::decay_t<decltype(g)>;
                 if constexpr (std::is_same_v<T, SphereShape>) {
-                    if (g.radius > 0) lights.spheres.push_back({g.center, g.radius, L});
+                    add_light(SphereLight{g.center, g.radius, L}, LightRef::List::kSpheres, lights.spheres,
+                              lights);
                 } else if constexpr (std::is_same_v<T, QuadShape>) {
-                    const QuadLight q = make_quad_light(g.origin, g.u, g.v, L);
-                    if (q.area > 0) lights.quads.push_back(q);
+                    add_light(make_quad_light(g.origin, g.u, g.v, L), LightRef::List::kQuads, lights.quads,
+                              lights);
                 } else if constexpr (std::is_same_v<T, TriangleShape>) {
-                    const TriangleLight t =
-                        make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L);
-                    if (t.area > 0) lights.triangles.push_back(t);
+                    add_light(make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L),
+                              LightRef::List::kTriangles, lights.triangles, lights);
                 } else if constexpr (std::is_same_v<T, BoxShape>) {
                     add_box_faces(g, L, lights);
                 } else if constexpr (std::is_same_v<T, MeshShape>) {
                     for (const auto& tri : g.triangles) {
-                        const TriangleLight t = make_triangle_light(g.positions[tri[0]], g.positions[tri[1]],
-                                                                    g.positions[tri[2]], L);
-                        if (t.area > 0) lights.triangles.push_back(t);
+                        add_light(make_triangle_light(g.positions[tri[0]], g.positions[tri[1]],
+                                                      g.positions[tri[2]], L),
+                                  LightRef::List::kTriangles, lights.triangles, lights);
                     }
                 } else if constexpr (std::is_same_v<T, PlaneShape>) {
                     lights.unsampled.push_back(shape.place + " (an emissive plane has infinite area)");

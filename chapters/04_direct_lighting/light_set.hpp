@@ -4,6 +4,7 @@
 // (a quad: the side of u × v; a triangle: counter-clockwise; a sphere: outward).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,25 @@ struct SphereLight {
     Color radiance{1};
 };
 
+// The emitting area of a light: |u × v| for a quad, half that for a triangle, 4π r² for a sphere.
+inline Real area_of(const QuadLight& q) {
+    return q.area;
+}
+inline Real area_of(const TriangleLight& t) {
+    return t.area;
+}
+inline Real area_of(const SphereLight& s) {
+    return 4 * kPi * s.radius * s.radius;
+}
+
+// Where light number k of Hit::light is in a LightSet: its list and its place there (kNone for a degenerate
+// emitter of zero area, which is left out).
+struct LightRef {
+    enum class List : std::uint8_t { kQuads, kTriangles, kSpheres, kNone };
+    List list = List::kNone;
+    std::uint32_t index = 0;
+};
+
 struct LightSet {
     std::vector<QuadLight> quads;
     std::vector<TriangleLight> triangles;
@@ -47,6 +67,9 @@ struct LightSet {
     std::optional<EnvironmentLight> environment;
     // Emitters that cannot be sampled (an infinite plane): they are seen by camera rays only.
     std::vector<std::string> unsampled;
+    // By Hit::light: every emissive bounded primitive in scene order, numbered as chapter 02's World numbers
+    // them.
+    std::vector<LightRef> by_hit;
 
     std::size_t area_count() const { return quads.size() + triangles.size() + spheres.size(); }
     bool empty() const { return area_count() == 0 && points.empty() && !environment; }

@@ -6,14 +6,14 @@
 #include <fstream>
 #include <string>
 
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "analytic_scene.hpp"
-#include "camera.hpp"
 #include "direct_render.hpp"
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -22,41 +22,13 @@ std::string count_text(std::size_t n, const std::string& what) {
     return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
-// What the scene asks for that this chapter shades differently or not at all, one note per material.
-std::vector<std::string> material_notes(const rt::Scene& scene, const rt::DirectOptions& options) {
-    using namespace rt;
-    std::vector<std::string> notes;
-    const std::vector<bool> used = scene.used_materials();
-    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        if (!used[i]) continue;
-        const Material& m = scene.materials[i];
-        if (m.type == MaterialType::kMirror) {
-            notes.push_back(
-                "mirror material '" + m.name +
-                "': a delta BRDF, so its direct term from lights is 0 (it shows only its emission); "
-                "mirror reflection is simulated from chapter 05 on");
-        } else if (m.type == MaterialType::kDielectric) {
-            char albedo[64];
-            std::snprintf(albedo, sizeof albedo, "%.2g", double(options.dielectric_albedo.g));
-            notes.push_back(
-                "dielectric material '" + m.name +
-                "': refraction is simulated from chapter 07 on; shaded as diffuse white (albedo " + albedo +
-                ")");
-        } else if (!options.glossy &&
-                   (m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective)) {
-            notes.push_back("material '" + m.name +
-                            "': the glossy effect is off; its lobe is shaded as Lambert");
-        }
-    }
-    return notes;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     using namespace rt;
     int shadow_samples = 1;
     std::string light_sampler = "stratified";
+    std::string light_selection = "auto";
     bool study = false;
     std::string csv;
     const ChapterInfo chapter{
@@ -70,6 +42,10 @@ int main(int argc, char** argv) {
         app.add_option("--light-sampler", light_sampler,
                        "How a light's N samples are spread: independent|stratified (one per cell of a grid)")
             ->check(CLI::IsMember({"independent", "stratified"}));
+        app.add_option("--light-selection", light_selection,
+                       "Which lights a hit samples: every (N samples each), power (N lights picked with "
+                       "probability proportional to power) or auto (every light up to 16 lights, else power)")
+            ->check(CLI::IsMember({"auto", "every", "power"}));
         app.add_flag(
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
@@ -79,18 +55,19 @@ int main(int argc, char** argv) {
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;
         DirectOptions options;
+        options.simulated = context.simulated;
         options.shadow_samples = shadow_samples;
         options.light_sampler = light_sampler_from_string(light_sampler);
-        options.direct = context.simulated.contains(Effect::kDirect);
-        options.shadows = context.simulated.contains(Effect::kShadows);
-        options.glossy = context.simulated.contains(Effect::kGlossy);
+        options.light_selection = light_selection_from_string(light_selection);
         if (study) {
             // The study needs an exact image: the given scene if it is a plane under a quad light, else the
             // course's analytic scene (at the image size of the run).
-            const Scene scene = find_plane_under_quad(context.scene)
-                                    ? context.scene
-                                    : load_scene(scene_path("ch04_analytic.json"));
-            const auto analytic = find_plane_under_quad(scene);
+            const Scene scene =
+                find_plane_under_quad(context.scene, MaterialTable(context.scene, context.simulated))
+                    ? context.scene
+                    : load_scene(scene_path("ch04_analytic.json"));
+            const MaterialTable materials(scene, context.simulated);
+            const auto analytic = find_plane_under_quad(scene, materials);
             if (!analytic)
                 throw InputError(scene.file + ": --shadow-study: not a plane under one quad light");
             if (!csv.empty()) {
@@ -101,7 +78,7 @@ int main(int argc, char** argv) {
             const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
             const Image exact = exact_image(*analytic, world, camera);
             const auto rows =
-                shadow_study(world, scene, collect_lights(scene), options, camera, settings, exact,
+                shadow_study(world, materials, collect_lights(scene), options, camera, settings, exact,
                              {LightSampler::kIndependent, LightSampler::kStratified}, {1, 4, 16, 64, 256});
             std::printf(
                 "shadow samples per pixel against error and time: %s, %dx%d, pixel centres, %d threads\n",
@@ -130,21 +107,26 @@ int main(int argc, char** argv) {
         const World world(scene);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
         LightSet lights = collect_lights(scene);
-        const auto analytic = options.direct ? find_plane_under_quad(scene) : std::nullopt;
-        std::vector<std::string> notes = material_notes(scene, options);
-        if (lights.empty()) {
+        const MaterialTable materials(scene, context.simulated);
+        const auto analytic =
+            options.simulates(Effect::kDirect) ? find_plane_under_quad(scene, materials) : std::nullopt;
+        std::vector<std::string> notes = materials.notes();
+        for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
+        const DirectLighting shading(world, materials, std::move(lights), options);
+        const LightSet& sampled = shading.lights();
+        if (sampled.empty()) {
             notes.push_back("the scene has no light to sample: no direct light, no shadow rays");
         } else {
-            notes.push_back("lights: " + count_text(lights.quads.size(), "quad") + ", " +
-                            count_text(lights.triangles.size(), "triangle") + ", " +
-                            count_text(lights.spheres.size(), "sphere") + ", " +
-                            count_text(lights.points.size(), "point") +
-                            (lights.environment ? ", an environment" : "") + "; " +
+            notes.push_back("lights: " + count_text(sampled.quads.size(), "quad") + ", " +
+                            count_text(sampled.triangles.size(), "triangle") + ", " +
+                            count_text(sampled.spheres.size(), "sphere") + ", " +
+                            count_text(sampled.points.size(), "point") +
+                            (sampled.environment ? ", an environment" : "") + "; " +
                             count_text(std::size_t(shadow_samples), "shadow sample") +
-                            " per light per hit, " + light_sampler);
+                            (shading.picks_lights() ? " per hit, each from a light picked by power, "
+                                                    : " per light per hit, ") +
+                            light_sampler);
         }
-        for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
-        const DirectLighting shading(world, scene, std::move(lights), options);
         ChapterRun run{render_direct(shading, camera, settings,
                                      analytic ? FilmPoints::kCentre : FilmPoints::kStratified),
                        std::move(notes), std::nullopt};

@@ -55,4 +55,27 @@ Vec2 sample_uniform_triangle(Vec2 u) {
     // END EXERCISE
 }
 
+Real uniform_hemisphere_pdf(const Vec3& w) {
+    // EXERCISE(ch04.uniform_hemisphere_pdf)
+    return w.z >= 0 ? kUniformHemispherePdf : Real(0);
+    // END EXERCISE
+}
+
+Real uniform_cone_pdf(const Vec3& w, Real one_minus_cos_max) {
+    // EXERCISE(ch04.uniform_cone_pdf)
+    if (!(one_minus_cos_max > 0)) return 0;
+    // 1 − z from sin²θ / (1 + z) when z > 0, so a narrow cone keeps its digits.
+    const Real sin2 = w.x * w.x + w.y * w.y;
+    const Real one_minus_z = w.z > 0 ? sin2 / (1 + w.z) : 1 - w.z;
+    return one_minus_z <= one_minus_cos_max ? Real(1) / (2 * kPi * one_minus_cos_max) : Real(0);
+    // END EXERCISE
+}
+
+Real power_cosine_pdf(Real cos_alpha, Real exponent) {
+    // EXERCISE(ch04.power_cosine_pdf)
+    if (!(cos_alpha > 0)) return 0;
+    return (exponent + 1) * Real(0.5) * kInvPi * std::pow(std::min(Real(1), cos_alpha), exponent);
+    // END EXERCISE
+}
+
 }  // namespace rt

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "float_error.hpp"
+#include "02_intersection/float_error.hpp"
 #include "frame.hpp"
 #include "sampling.hpp"
 

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/material_table.hpp"
+
 namespace rt {
 namespace {
 
@@ -62,16 +65,19 @@ std::optional<Furnace> find_furnace(const Scene& scene, const World& world) {
         if (s.material != material) return std::nullopt;
     }
     const Material& m = scene.materials[std::size_t(material)];
-    if (m.type != MaterialType::kDiffuse || !m.emissive()) return std::nullopt;
+    // Diffuse: what the material table makes a Lambert BRDF of when every effect is simulated.
+    const MaterialTable materials(scene, EffectSet::all());
+    const auto* lambert = dynamic_cast<const LambertBrdf*>(&materials.bsdf(material));
+    if (!lambert || !m.emissive()) return std::nullopt;
     for (int c = 0; c < 3; ++c) {
-        if (!(m.albedo[c] >= 0 && m.albedo[c] < 1)) return std::nullopt;
+        if (!(lambert->albedo[c] >= 0 && lambert->albedo[c] < 1)) return std::nullopt;
     }
     constexpr int kProbes = 1000;
     for (int i = 0; i < kProbes; ++i) {
         const auto hit = world.intersect(Ray{scene.camera.from, spiral_direction(i, kProbes)});
         if (!hit || !hit->front_face) return std::nullopt;
     }
-    return Furnace{m.albedo, m.emission};
+    return Furnace{lambert->albedo, m.emission};
 }
 
 Image furnace_image(const Furnace& furnace, int width, int height) {

@@ -9,9 +9,9 @@
 
 #include <optional>
 
+#include "02_intersection/world.hpp"
 #include "rt/image.hpp"
 #include "rt/scene.hpp"
-#include "world.hpp"
 
 namespace rt {
 

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <limits>
 
-#include "camera_render.hpp"
+#include "01_ray_generation/camera_render.hpp"
 #include "rt/error_metrics.hpp"
 
 namespace rt {
@@ -41,15 +42,17 @@ std::string describe(const TerminationSettings& t) {
 
 std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
                                        const PinholeCamera& camera, const RenderSettings& settings,
-                                       const std::vector<TerminationSettings>& rules,
-                                       const DirectOptions& direct) {
-    const DirectLighting shading(world, scene, collect_lights(scene), direct);
+                                       const std::vector<TerminationSettings>& rules, DirectOptions direct) {
+    // The furnace's light reaches the camera after any number of bounces: indirect light always.
+    direct.simulated.insert(Effect::kIndirect);
+    const MaterialTable materials(scene, direct.simulated);
+    const DirectLighting shading(world, materials, collect_lights(scene), direct);
     const Vec3d exact3 = furnace_radiance(furnace);
     const double exact = (exact3.x + exact3.y + exact3.z) / 3;
     const Image exact_image = furnace_image(furnace, settings.width, settings.height);
     std::vector<DepthStudyRow> rows;
     for (const TerminationSettings& termination : rules) {
-        const RecursiveTracer tracer(shading, scene, GiOptions{termination, true, true});
+        const RecursiveTracer tracer(shading, GiOptions{termination});
         // The same render kRepeats times (the same image each time): the median time resists the machine's
         // noise.
         RenderResult r;
@@ -62,7 +65,7 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
         std::sort(seconds.begin(), seconds.end());
         DepthStudyRow row;
         row.termination = termination;
-        row.light_sampling = direct.direct;
+        row.light_sampling = direct.simulates(Effect::kDirect);
         double sum = 0, sum2 = 0;
         for (const Color& c : r.image.pixels()) {
             const double m = (double(c.r) + double(c.g) + double(c.b)) / 3;
@@ -88,6 +91,41 @@ std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, c
         rows.push_back(row);
     }
     return rows;
+}
+
+void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene, const Furnace& furnace,
+                       const RenderSettings& settings, const std::string& csv) {
+    std::printf(
+        "termination rules in the furnace: %s, albedo %.3g, emission %.3g, exact L = Le / (1 - rho) = %.6g\n"
+        "%dx%d, %d spp, seed %llu, %d threads; bias = mean - exact (+- its standard error), RMSE over "
+        "pixels\n",
+        scene.file.c_str(), double(furnace.albedo.g), double(furnace.emission.g),
+        rows.empty() ? 0 : rows[0].exact, settings.width, settings.height, settings.samples_per_pixel,
+        static_cast<unsigned long long>(settings.seed), settings.threads);
+    std::printf("%-28s %-8s %10s %10s %10s %10s %10s %10s %9s\n", "rule", "lights", "mean", "expected",
+                "bias", "std.error", "RMSE", "time (s)", "rays/path");
+    std::ofstream out;
+    if (!csv.empty()) {
+        out.open(csv);
+        out << "rule,max_depth,min_throughput,roulette_start,light_sampling,mean,expected,exact,bias,"
+               "standard_error,rmse,seconds,"
+               "rays_per_path\n";
+    }
+    for (const DepthStudyRow& r : rows) {
+        char expected[32] = "-";
+        if (!std::isnan(r.expected)) std::snprintf(expected, sizeof expected, "%.5f", r.expected);
+        std::printf("%-28s %-8s %10.5f %10s %+10.5f %10.5f %10.5f %10.4f %9.2f\n",
+                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean, expected,
+                    r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
+        if (out) {
+            out << to_string(r.termination.rule) << ',' << r.termination.max_depth << ','
+                << r.termination.min_throughput << ',' << r.termination.roulette_start_depth << ','
+                << (r.light_sampling ? "sampled" : "hit") << ',' << r.mean << ','
+                << (std::isnan(r.expected) ? std::string() : std::to_string(r.expected)) << ',' << r.exact
+                << ',' << r.bias << ',' << r.standard_error << ',' << r.rmse << ',' << r.seconds << ','
+                << r.rays_per_path << '\n';
+        }
+    }
 }
 
 }  // namespace rt

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
 #include "furnace.hpp"
 #include "recursive_tracer.hpp"
 #include "rt/render_loop.hpp"
@@ -30,13 +30,16 @@ struct DepthStudyRow {
 };
 
 // The furnace rendered once per rule (same size, samples and seed), each row timed and compared; with
-// `direct.direct` false the walls' light is found by indirect rays alone (no light sampling).
+// the effect "direct" not simulated the walls' light is found by indirect rays alone (no light sampling).
 std::vector<DepthStudyRow> depth_study(const World& world, const Scene& scene, const Furnace& furnace,
                                        const PinholeCamera& camera, const RenderSettings& settings,
-                                       const std::vector<TerminationSettings>& rules,
-                                       const DirectOptions& direct);
+                                       const std::vector<TerminationSettings>& rules, DirectOptions direct);
 
 // "depth 4", "throughput 0.01 (cap 64)", "roulette from 3 (cap 64)".
 std::string describe(const TerminationSettings& termination);
+
+// The study's table on stdout, and as CSV in `csv` when it is not empty.
+void print_depth_study(const std::vector<DepthStudyRow>& rows, const Scene& scene, const Furnace& furnace,
+                       const RenderSettings& settings, const std::string& csv);
 
 }  // namespace rt

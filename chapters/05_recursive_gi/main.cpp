@@ -10,85 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "furnace.hpp"
+#include "gi_notes.hpp"
 #include "gi_render.hpp"
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
-
-namespace {
-
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
-}
-
-// What this chapter shades differently from the scene's materials, or leaves to a later chapter.
-std::vector<std::string> material_notes(const rt::Scene& scene, const rt::EffectSet& simulated) {
-    using namespace rt;
-    std::vector<std::string> notes;
-    const std::vector<bool> used = scene.used_materials();
-    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-        if (!used[i]) continue;
-        const Material& m = scene.materials[i];
-        const std::string name = "material '" + m.name + "'";
-        if (m.type == MaterialType::kMirror && !simulated.contains(Effect::kReflection)) {
-            notes.push_back(name + ": the effect reflection is off, so the mirror shows only its emission");
-        } else if (m.type == MaterialType::kDielectric) {
-            notes.push_back(name +
-                            ": refraction is simulated from chapter 07 on; shaded as diffuse white "
-                            "(albedo 0.73), with direct and indirect light");
-        } else if ((m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective) &&
-                   simulated.contains(Effect::kGlossy) && simulated.contains(Effect::kIndirect)) {
-            notes.push_back(name +
-                            ": its lobe reflects direct light (chapter 04) and indirect light from uniform "
-                            "hemisphere directions, unbiased but noisy for a sharp lobe; chapter 06 samples "
-                            "the lobe itself (BRDF sampling)");
-        }
-    }
-    return notes;
-}
-
-void print_study(const std::vector<rt::DepthStudyRow>& rows, const rt::Scene& scene,
-                 const rt::Furnace& furnace, const rt::RenderSettings& settings, const std::string& csv) {
-    using namespace rt;
-    std::printf(
-        "termination rules in the furnace: %s, albedo %.3g, emission %.3g, exact L = Le / (1 - rho) = %.6g\n"
-        "%dx%d, %d spp, seed %llu, %d threads; bias = mean - exact (+- its standard error), RMSE over "
-        "pixels\n",
-        scene.file.c_str(), double(furnace.albedo.g), double(furnace.emission.g),
-        rows.empty() ? 0 : rows[0].exact, settings.width, settings.height, settings.samples_per_pixel,
-        static_cast<unsigned long long>(settings.seed), settings.threads);
-    std::printf("%-28s %-8s %10s %10s %10s %10s %10s %10s %9s\n", "rule", "lights", "mean", "expected",
-                "bias", "std.error", "RMSE", "time (s)", "rays/path");
-    std::ofstream out;
-    if (!csv.empty()) {
-        out.open(csv);
-        out << "rule,max_depth,min_throughput,roulette_start,light_sampling,mean,expected,exact,bias,"
-               "standard_error,rmse,seconds,"
-               "rays_per_path\n";
-    }
-    for (const DepthStudyRow& r : rows) {
-        const std::string expected = std::isnan(r.expected) ? "-" : format("%.5f", r.expected);
-        std::printf("%-28s %-8s %10.5f %10s %+10.5f %10.5f %10.5f %10.4f %9.2f\n",
-                    describe(r.termination).c_str(), r.light_sampling ? "sampled" : "hit", r.mean,
-                    expected.c_str(), r.bias, r.standard_error, r.rmse, r.seconds, r.rays_per_path);
-        if (out) {
-            out << to_string(r.termination.rule) << ',' << r.termination.max_depth << ','
-                << r.termination.min_throughput << ',' << r.termination.roulette_start_depth << ','
-                << (r.light_sampling ? "sampled" : "hit") << ',' << r.mean << ','
-                << (std::isnan(r.expected) ? std::string() : std::to_string(r.expected)) << ',' << r.exact
-                << ',' << r.bias << ',' << r.standard_error << ',' << r.rmse << ',' << r.seconds << ','
-                << r.rays_per_path << '\n';
-        }
-    }
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
     using namespace rt;
@@ -143,9 +73,7 @@ int main(int argc, char** argv) {
         termination.min_throughput = min_throughput;
         termination.roulette_start_depth = roulette_start;
         DirectOptions direct;
-        direct.direct = context.simulated.contains(Effect::kDirect);
-        direct.shadows = context.simulated.contains(Effect::kShadows);
-        direct.glossy = context.simulated.contains(Effect::kGlossy);
+        direct.simulated = context.simulated;
 
         if (study) {
             std::optional<Scene> loaded;
@@ -178,12 +106,12 @@ int main(int argc, char** argv) {
             std::vector<DepthStudyRow> rows =
                 depth_study(world, scene, *furnace, camera, settings, rules, direct);
             DirectOptions no_light_sampling = direct;
-            no_light_sampling.direct = false;
+            no_light_sampling.simulated = direct.simulated.without({Effect::kDirect});
             for (const DepthStudyRow& r :
                  depth_study(world, scene, *furnace, camera, settings, rules, no_light_sampling)) {
                 rows.push_back(r);
             }
-            print_study(rows, scene, *furnace, settings, csv);
+            print_depth_study(rows, scene, *furnace, settings, csv);
             return std::nullopt;
         }
 
@@ -191,50 +119,14 @@ int main(int argc, char** argv) {
         const RenderSettings& settings = context.settings;
         const World world(scene);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-        const DirectLighting shading(world, scene, collect_lights(scene), direct);
-        const GiOptions options{termination, context.simulated.contains(Effect::kReflection),
-                                context.simulated.contains(Effect::kIndirect)};
-        const RecursiveTracer tracer(shading, scene, options);
-        ChapterRun run{render_gi(tracer, camera, settings), material_notes(scene, context.simulated),
-                       std::nullopt};
-        std::string rule = "termination: " + describe(termination);
-        if (termination.rule == Termination::kMinThroughput ||
-            termination.rule == Termination::kRussianRoulette) {
-            rule += termination.rule == Termination::kMinThroughput ? ", biased" : ", unbiased below the cap";
-        } else {
-            rule += format(", light after more than %.0f bounces is lost (biased)",
-                           double(termination.max_depth));
-        }
-        run.notes.push_back(rule);
-        if (shading.lights().empty())
-            run.notes.push_back("the scene has no light: no direct light, no shadow rays");
-        for (const std::string& u : shading.lights().unsampled) {
-            run.notes.push_back("emitter not sampled as a light: " + u +
-                                "; indirect rays count its emission");
-        }
-        if (!direct.direct) {
-            run.notes.push_back(
-                "the effect direct is off: no light sampling; indirect rays count every emitter");
-        }
-        const double camera_rays = double(run.result.rays[RayKind::kCamera]);
-        if (camera_rays > 0) {
-            run.notes.push_back(
-                format("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
-                       double(run.result.rays[RayKind::kReflection]) / camera_rays,
-                       double(run.result.rays[RayKind::kIndirect]) / camera_rays,
-                       double(run.result.rays[RayKind::kShadow]) / camera_rays));
-        }
+        const MaterialTable materials(scene, context.simulated);
+        const DirectLighting shading(world, materials, collect_lights(scene), direct);
+        const RecursiveTracer tracer(shading, GiOptions{termination});
+        ChapterRun run{render_gi(tracer, camera, settings), {}, std::nullopt};
+        run.notes = gi_notes(scene, shading, termination, run.result);
         if (const auto furnace = find_furnace(scene, world)) {
             run.exact = furnace_image(*furnace, settings.width, settings.height);
-            const Vec3d exact = furnace_radiance(*furnace);
-            std::string note = format("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
-            if (termination.rule != Termination::kMinThroughput && options.indirect) {
-                note +=
-                    format("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
-                           furnace_radiance_truncated(*furnace, termination.max_depth).y,
-                           double(termination.max_depth));
-            }
-            run.notes.push_back(note + " (green channel)");
+            run.notes.push_back(furnace_note(*furnace, termination, direct.simulates(Effect::kIndirect)));
         }
         return run;
     };

@@ -1,30 +1,20 @@
 #include "recursive_tracer.hpp"
 
-#include <variant>
-
-#include "ray_offset.hpp"
+#include "03_shadow_rays/ray_offset.hpp"
 #include "scatter.hpp"
 
 namespace rt {
-namespace {
 
-std::uint32_t plane_count(const Scene& scene) {
-    std::uint32_t n = 0;
-    for (const Shape& s : scene.shapes) n += std::holds_alternative<PlaneShape>(s.geometry) ? 1u : 0u;
-    return n;
-}
-
-}  // namespace
-
-RecursiveTracer::RecursiveTracer(const DirectLighting& shading, const Scene& scene, GiOptions options)
+RecursiveTracer::RecursiveTracer(const DirectLighting& shading, GiOptions options)
     : shading_(shading),
-      scene_(scene),
       options_(options),
-      first_plane_(std::uint32_t(shading.world().primitive_count()) - plane_count(scene)),
-      indirect_rays_find_emitters_(!shading.options().direct || !shading.lights().unsampled.empty()) {}
+      indirect_(shading.options().simulates(Effect::kIndirect)),
+      indirect_rays_find_emitters_(!shading.options().simulates(Effect::kDirect) ||
+                                   !shading.lights().unsampled.empty()) {}
 
 bool RecursiveTracer::emission_sampled_by_direct(const Hit& hit) const {
-    return shading_.options().direct && hit.primitive < first_plane_;
+    // The hit knows its light: an emissive plane has none (Hit::light = −1), so indirect rays count it.
+    return shading_.options().simulates(Effect::kDirect) && hit.light >= 0;
 }
 
 Color RecursiveTracer::radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const {
@@ -39,22 +29,23 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     if (!hit) {
         // The environment is light-sampled too (chapter 04 draws cosine-weighted directions toward it).
         const auto& environment = shading_.lights().environment;
-        if (!environment || (!counts_emission && shading_.options().direct)) return Color(0);
+        if (!environment || (!counts_emission && shading_.options().simulates(Effect::kDirect)))
+            return Color(0);
         return throughput * environment->radiance;
     }
-    const Material& material = scene_.materials[std::size_t(hit->material)];
+    const MaterialTable& materials = shading_.materials();
+    const Color emitted = materials.emission(hit->material, hit->front_face);
     Color L(0);
-    if (hit->front_face && material.emissive() && (counts_emission || !emission_sampled_by_direct(*hit))) {
-        L += throughput * material.emission;
-    }
+    if (!is_black(emitted) && (counts_emission || !emission_sampled_by_direct(*hit)))
+        L += throughput * emitted;
     // Does the path bounce at this vertex at all? (Russian roulette divides β by q when it does.)
     if (!continue_path(options_.termination, depth, throughput, rng.next_real())) return L;
 
     const Vec3 wo = -ray.direction;
-    const Brdf& brdf = shading_.brdf(hit->material);
+    const Bsdf& brdf = materials.bsdf(hit->material, hit->front_face);
     const RayOffset& offset = shading_.options().offset;
-    if (const auto* mirror = std::get_if<MirrorBrdf>(&brdf)) {
-        if (!options_.reflection) return L;
+    // Chapter 05's one delta BRDF is the mirror (its material table makes no glass).
+    if (const auto* mirror = is_delta(brdf) ? dynamic_cast<const MirrorBrdf*>(&brdf) : nullptr) {
         const auto s = mirror_scatter(*mirror, wo, hit->normal);
         if (!s) return L;
         rays.add(RayKind::kReflection);
@@ -63,7 +54,7 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     }
     if (is_black(brdf)) return L;
     L += throughput * shading_.direct(*hit, wo, rng, rays);
-    if (!options_.indirect) return L;
+    if (!indirect_) return L;
     // The vertex the indirect ray reaches may not bounce again (depth + 1 is the cap), so there it could only
     // add the emission of an emitter light sampling misses: without one, the ray is not worth tracing.
     if (depth + 1 >= options_.termination.max_depth && !indirect_rays_find_emitters_) return L;

@@ -16,7 +16,7 @@
 
 #include <vector>
 
-#include "direct_lighting.hpp"
+#include "04_direct_lighting/direct_lighting.hpp"
 #include "rt/random.hpp"
 #include "rt/ray.hpp"
 #include "rt/ray_counts.hpp"
@@ -24,16 +24,17 @@
 
 namespace rt {
 
+// The effects come with the shading (DirectLighting's options): "indirect" gives one indirect ray per
+// diffuse or glossy bounce; without "reflection" the material table has made mirrors black.
 struct GiOptions {
     TerminationSettings termination{};
-    bool reflection = true;  // effect "reflection": mirrors trace reflection rays (off: mirrors are black)
-    bool indirect = true;    // effect "indirect": one indirect ray per diffuse or glossy bounce
 };
 
 class RecursiveTracer {
   public:
-    // `shading` supplies the world, the lights, the BRDFs and the direct term; it must outlive the tracer.
-    RecursiveTracer(const DirectLighting& shading, const Scene& scene, GiOptions options);
+    // `shading` supplies the world, the lights, the material table and the direct term; it must outlive the
+    // tracer.
+    RecursiveTracer(const DirectLighting& shading, GiOptions options);
 
     // The radiance arriving along a camera ray: trace(ray, kCamera, 0, β = 1).
     Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;
@@ -50,9 +51,8 @@ class RecursiveTracer {
 
   private:
     const DirectLighting& shading_;
-    const Scene& scene_;
     GiOptions options_;
-    std::uint32_t first_plane_;  // hits with primitive >= first_plane_ are on planes (never light-sampled)
+    bool indirect_;  // the effect "indirect" is simulated
     // True when an indirect ray can find light light sampling has not counted (unsampled emitters, or no
     // light sampling at all); otherwise the last indirect ray under a depth cap would add nothing.
     bool indirect_rays_find_emitters_;

@@ -1,7 +1,7 @@
 #include "scatter.hpp"
 
-#include "frame.hpp"
-#include "sampling.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
 
 namespace rt {
 std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
@@ -16,7 +16,7 @@ std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, 
     // END EXERCISE
 }
 
-std::optional<Scatter> uniform_scatter(const Brdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u) {
+std::optional<Scatter> uniform_scatter(const Bsdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u) {
     // EXERCISE(ch05.uniform_scatter)
     const Vec3 wi = glm::normalize(make_frame(n).to_world(sample_uniform_hemisphere(u)));
     const Real cos_i = glm::dot(wi, n);

@@ -41,11 +41,10 @@ double relative_squared_difference(const Image& a, const Image& ref) {
     return sum / (3.0 * double(a.pixels().size()));
 }
 
-RenderResult render_with(const World& world, const Scene& scene, const LightSet& lights, PathOptions options,
-                         SamplingStrategy strategy, const PinholeCamera& camera,
-                         const RenderSettings& settings) {
+RenderResult render_with(const RenderScene& prepared, PathOptions options, SamplingStrategy strategy,
+                         const PinholeCamera& camera, const RenderSettings& settings) {
     options.strategy = strategy;
-    const PathTracer tracer(world, scene, lights, options);
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     return render_paths(tracer, camera, settings);
 }
 
@@ -57,12 +56,12 @@ fs::path reference_path(const fs::path& folder, const Scene& scene, int width, i
                      "_" + std::to_string(spp) + "spp.pfm");
 }
 
-Reference converged_reference(const World& world, const Scene& scene, const LightSet& lights,
-                              const PathOptions& options, const PinholeCamera& camera,
-                              RenderSettings settings, int spp, const fs::path& folder) {
+Reference converged_reference(const RenderScene& prepared, const PathOptions& options,
+                              const PinholeCamera& camera, RenderSettings settings, int spp,
+                              const fs::path& folder) {
     Reference ref;
     ref.spp = spp;
-    ref.file = reference_path(folder, scene, settings.width, settings.height, spp);
+    ref.file = reference_path(folder, prepared.scene, settings.width, settings.height, spp);
     fs::path half = ref.file;
     half.replace_filename(ref.file.stem().string() + "_half.pfm");
     std::error_code ec;
@@ -81,11 +80,9 @@ Reference converged_reference(const World& world, const Scene& scene, const Ligh
     check_writable(ref.file);
     settings.samples_per_pixel = std::max(1, spp / 2);
     settings.seed = kReferenceSeedA;
-    const RenderResult a =
-        render_with(world, scene, lights, options, SamplingStrategy::kMis, camera, settings);
+    const RenderResult a = render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
     settings.seed = kReferenceSeedB;
-    const RenderResult b =
-        render_with(world, scene, lights, options, SamplingStrategy::kMis, camera, settings);
+    const RenderResult b = render_with(prepared, options, SamplingStrategy::kMis, camera, settings);
     if (a.interrupted || b.interrupted) throw std::runtime_error("the reference render was interrupted");
     Image mean(settings.width, settings.height);
     for (std::size_t i = 0; i < mean.pixels().size(); ++i) {
@@ -100,16 +97,16 @@ Reference converged_reference(const World& world, const Scene& scene, const Ligh
     return ref;
 }
 
-std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& scene, const LightSet& lights,
-                                              PathOptions options, const PinholeCamera& camera,
-                                              RenderSettings settings, const Reference& reference,
+std::vector<ConvergenceRow> convergence_study(const RenderScene& prepared, PathOptions options,
+                                              const PinholeCamera& camera, RenderSettings settings,
+                                              const Reference& reference,
                                               const std::vector<SamplingStrategy>& strategies, int max_spp) {
     std::vector<ConvergenceRow> rows;
     for (SamplingStrategy strategy : strategies) {
         for (int spp = 1; spp <= max_spp; spp *= 2) {
             settings.samples_per_pixel = spp;
             const std::clock_t cpu_start = std::clock();
-            const RenderResult r = render_with(world, scene, lights, options, strategy, camera, settings);
+            const RenderResult r = render_with(prepared, options, strategy, camera, settings);
             const double cpu = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
             if (r.interrupted) return rows;
             const ErrorMetrics e = compare(r.image, reference.image);

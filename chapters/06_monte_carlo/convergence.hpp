@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "04_direct_lighting/render_scene.hpp"
 #include "path_tracer.hpp"
 #include "rt/image.hpp"
 
@@ -35,9 +36,9 @@ std::filesystem::path reference_path(const std::filesystem::path& folder, const 
 
 // Reads the cached reference if both files are there and of the right size, else renders A and B with MIS
 // (spp / 2 each, seeds 1001 and 1002) and writes them. Throws InputError if the folder is not writable.
-Reference converged_reference(const World& world, const Scene& scene, const LightSet& lights,
-                              const PathOptions& options, const PinholeCamera& camera,
-                              RenderSettings settings, int spp, const std::filesystem::path& folder);
+Reference converged_reference(const RenderScene& prepared, const PathOptions& options,
+                              const PinholeCamera& camera, RenderSettings settings, int spp,
+                              const std::filesystem::path& folder);
 
 struct ConvergenceRow {
     SamplingStrategy strategy;
@@ -50,9 +51,9 @@ struct ConvergenceRow {
 };
 
 // Every strategy at spp = 1, 2, 4, …, max_spp with the settings' seed.
-std::vector<ConvergenceRow> convergence_study(const World& world, const Scene& scene, const LightSet& lights,
-                                              PathOptions options, const PinholeCamera& camera,
-                                              RenderSettings settings, const Reference& reference,
+std::vector<ConvergenceRow> convergence_study(const RenderScene& prepared, PathOptions options,
+                                              const PinholeCamera& camera, RenderSettings settings,
+                                              const Reference& reference,
                                               const std::vector<SamplingStrategy>& strategies, int max_spp);
 
 struct EfficiencyRow {

@@ -5,7 +5,7 @@
 // lose their length and their right angles (Nelson Max 2017; Duff et al. 2017).
 #pragma once
 
-#include "frame.hpp"
+#include "04_direct_lighting/frame.hpp"
 
 namespace rt {
 

@@ -3,14 +3,14 @@
 #include <chrono>
 #include <cmath>
 
-#include "area_light_sampling.hpp"
-#include "frame.hpp"
-#include "irradiance.hpp"
+#include "01_ray_generation/pixel_sampling.hpp"
+#include "04_direct_lighting/area_light_sampling.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "mis.hpp"
-#include "pixel_sampling.hpp"
 #include "rt/random.hpp"
-#include "sampling.hpp"
-#include "sphere_light_sampling.hpp"
 #include "warp_pdfs.hpp"
 
 namespace rt {
@@ -38,7 +38,7 @@ Arrival arrival(const IrradianceCase& c, const Vec3& wi) {
         const Real pdf = uniform_cone_pdf(local, one_minus_cos_stable(ratio * ratio));
         return {pdf > 0 ? s.radiance.g : Real(0), pdf};
     }
-    if (c.lights.environment) return {c.lights.environment->radiance.g, cosine_hemisphere_pdf(wi)};
+    if (c.lights.environment) return {c.lights.environment->radiance.g, cosine_hemisphere_pdf(wi.z)};
     return {0, 0};
 }
 
@@ -57,7 +57,7 @@ Drawn light_sample(const IrradianceCase& c, Vec2 u) {
         s = sample_sphere_light(c.lights.spheres[0], kOrigin, u);
     else if (c.lights.environment) {
         const Vec3 wi = sample_cosine_hemisphere(u);
-        return {wi, cosine_hemisphere_pdf(wi), c.lights.environment->radiance.g};
+        return {wi, cosine_hemisphere_pdf(wi.z), c.lights.environment->radiance.g};
     }
     if (!s) return {{0, 0, 1}, 0, 0};
     return {s->wi, s->pdf, s->radiance.g};
@@ -73,7 +73,7 @@ double one_estimate(const IrradianceCase& c, SamplingStrategy strategy, Vec2 u, 
         case SamplingStrategy::kCosine:
         case SamplingStrategy::kBrdf: {
             const Vec3 wi = sample_cosine_hemisphere(u);
-            const Real pdf = cosine_hemisphere_pdf(wi);
+            const Real pdf = cosine_hemisphere_pdf(wi.z);
             return pdf > 0 ? double(arrival(c, wi).radiance * wi.z / pdf) : 0.0;
         }
         case SamplingStrategy::kLight: {
@@ -85,10 +85,10 @@ double one_estimate(const IrradianceCase& c, SamplingStrategy strategy, Vec2 u, 
             const Drawn d = light_sample(c, u);
             if (d.pdf > 0 && d.wi.z > 0) {
                 sum +=
-                    double(power_heuristic(d.pdf, cosine_hemisphere_pdf(d.wi)) * d.radiance * d.wi.z / d.pdf);
+                    double(power_heuristic(d.pdf, cosine_hemisphere_pdf(d.wi.z)) * d.radiance * d.wi.z / d.pdf);
             }
             const Vec3 wi = sample_cosine_hemisphere(v);
-            const Real pdf = cosine_hemisphere_pdf(wi);
+            const Real pdf = cosine_hemisphere_pdf(wi.z);
             const Arrival a = arrival(c, wi);
             if (pdf > 0 && a.radiance > 0) {
                 sum += double(power_heuristic(pdf, a.light_pdf) * a.radiance * wi.z / pdf);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "light_set.hpp"
+#include "04_direct_lighting/light_set.hpp"
 #include "sampling_strategy.hpp"
 
 namespace rt {

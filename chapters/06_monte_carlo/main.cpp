@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <string>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "convergence.hpp"
 #include "irradiance_study.hpp"
 #include "path_tracer.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -47,20 +47,12 @@ void print_irradiance_study(int runs) {
         "N = 4096, independent and stratified points\n");
 }
 
-std::vector<std::string> material_notes(const Scene& scene) {
+std::vector<std::string> light_notes(const Scene& scene) {
     std::vector<std::string> notes;
-    for (const Material& m : scene.materials) {
-        if (m.type == MaterialType::kDielectric) {
-            notes.push_back(
-                "dielectric material '" + m.name +
-                "': refraction is simulated from chapter 07 on; shaded as diffuse white (albedo 0.73)");
-        }
-    }
     if (!scene.point_lights.empty()) {
         notes.push_back(
             "point lights are deltas: only the light and mis strategies see them (no sampled direction hits "
-            "a "
-            "point)");
+            "a point)");
     }
     return notes;
 }
@@ -125,12 +117,9 @@ int main(int argc, char** argv) {
         // path between two mirrors, high enough not to bias the result measurably.
         options.termination.max_depth =
             max_depth.value_or(options.termination.rule == Termination::kMaxDepth ? 8 : kSafetyDepthCap);
-        options.direct = context.simulated.contains(Effect::kDirect);
-        options.shadows = context.simulated.contains(Effect::kShadows);
-        options.indirect = context.simulated.contains(Effect::kIndirect);
-        options.glossy = context.simulated.contains(Effect::kGlossy);
-        const World world(scene);
-        const LightSet lights = collect_lights(scene);
+        options.simulated = context.simulated;
+        const RenderScene prepared(scene, context.simulated);
+        const LightSet& lights = prepared.lights;
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
 
         if (converge) {
@@ -140,13 +129,13 @@ int main(int argc, char** argv) {
                         settings.height);
             std::fflush(stdout);
             const Reference ref =
-                converged_reference(world, scene, lights, options, camera, settings, reference_spp, cache);
+                converged_reference(prepared, options, camera, settings, reference_spp, cache);
             std::printf("  %s %s; its own noise: MSE %.3e (RMSE %.3e)\n",
                         ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(), ref.noise_mse,
                         std::sqrt(ref.noise_mse));
             const std::vector<SamplingStrategy> strategies(kAllStrategies.begin(), kAllStrategies.end());
             const auto rows =
-                convergence_study(world, scene, lights, options, camera, settings, ref, strategies, max_spp);
+                convergence_study(prepared, options, camera, settings, ref, strategies, max_spp);
             std::printf("%-8s %6s %12s %12s %12s %10s %10s\n", "strategy", "spp", "RMSE", "MSE-noise",
                         "rel.MSE-noise", "wall (s)", "cpu (s)");
             for (const ConvergenceRow& r : rows) {
@@ -196,8 +185,10 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
 
-        const PathTracer tracer(world, scene, lights, options);
-        ChapterRun run{render_paths(tracer, camera, settings), material_notes(scene), std::nullopt};
+        const PathTracer tracer(prepared.world, prepared.materials, lights, options);
+        std::vector<std::string> notes = prepared.materials.notes();
+        for (const std::string& note : light_notes(scene)) notes.push_back(note);
+        ChapterRun run{render_paths(tracer, camera, settings), std::move(notes), std::nullopt};
         run.notes.push_back("sampling: " + sampling + ", termination: " + termination);
         for (const std::string& u : lights.unsampled)
             run.notes.push_back("emitter not sampled as a light: " + u);

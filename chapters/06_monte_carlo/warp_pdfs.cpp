@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sampling.hpp"
+#include "04_direct_lighting/sampling.hpp"
 
 namespace rt {
 
@@ -14,35 +14,6 @@ Vec3 sample_uniform_sphere(Vec2 u) {
     const Real r = 2 * std::sqrt(std::max(Real(0), u.x * (1 - u.x)));
     const Real phi = 2 * kPi * u.y;
     return {r * std::cos(phi), r * std::sin(phi), z};
-    // END EXERCISE
-}
-
-Real uniform_hemisphere_pdf(const Vec3& w) {
-    // EXERCISE(ch06.uniform_hemisphere_pdf)
-    return w.z >= 0 ? kUniformHemispherePdf : Real(0);
-    // END EXERCISE
-}
-
-Real cosine_hemisphere_pdf(const Vec3& w) {
-    // EXERCISE(ch06.cosine_hemisphere_pdf)
-    return std::max(Real(0), w.z) * kInvPi;
-    // END EXERCISE
-}
-
-Real uniform_cone_pdf(const Vec3& w, Real one_minus_cos_max) {
-    // EXERCISE(ch06.uniform_cone_pdf)
-    if (!(one_minus_cos_max > 0)) return 0;
-    // 1 − z from sin²θ / (1 + z) when z > 0, so a narrow cone keeps its digits.
-    const Real sin2 = w.x * w.x + w.y * w.y;
-    const Real one_minus_z = w.z > 0 ? sin2 / (1 + w.z) : 1 - w.z;
-    return one_minus_z <= one_minus_cos_max ? Real(1) / (2 * kPi * one_minus_cos_max) : Real(0);
-    // END EXERCISE
-}
-
-Real power_cosine_pdf(const Vec3& w, Real exponent) {
-    // EXERCISE(ch06.power_cosine_pdf)
-    if (!(w.z >= 0)) return 0;
-    return (exponent + 1) * Real(0.5) * kInvPi * std::pow(std::min(Real(1), w.z), exponent);
     // END EXERCISE
 }
 

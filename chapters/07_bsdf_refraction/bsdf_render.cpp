@@ -1,66 +1,35 @@
 #include "bsdf_render.hpp"
 
-#include "camera.hpp"
-#include "direct_render.hpp"
-#include "light_set.hpp"
-#include "path_tracer.hpp"
-#include "world.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "refraction_materials.hpp"
 
 namespace rt {
 
 std::string_view to_string(Renderer renderer) {
-    switch (renderer) {
-        case Renderer::kDirect:
-            return "direct (chapter 04)";
-        case Renderer::kPaths:
-            return "paths (chapter 06)";
-        case Renderer::kGlass:
-            return "glass (chapter 07)";
-    }
-    return "?";
+    return renderer == Renderer::kDirect ? "direct (chapter 04)"
+                                         : "paths (chapter 06's loop, chapter 07's BSDFs)";
 }
 
 Renderer choose_renderer(const EffectSet& simulated) {
-    if (simulated.contains(Effect::kRefraction)) return Renderer::kGlass;
     if (simulated.without(kDirectRendererEffects).empty()) return Renderer::kDirect;
     return Renderer::kPaths;
 }
 
-BsdfPathOptions path_options_for(const EffectSet& simulated, BsdfPathOptions options) {
-    options.direct = simulated.contains(Effect::kDirect);
-    options.shadows = simulated.contains(Effect::kShadows);
-    options.indirect = simulated.contains(Effect::kIndirect);
-    options.glossy = simulated.contains(Effect::kGlossy);
-    return options;
-}
-
 RenderResult render_with(Renderer renderer, const Scene& scene, const EffectSet& simulated,
-                         const RenderSettings& settings, const BsdfPathOptions& options) {
-    const World world(scene);
-    const LightSet lights = collect_lights(scene);
+                         const RenderSettings& settings, PathOptions options) {
+    const RenderScene prepared(scene, simulated, refraction_materials());
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-    const BsdfPathOptions o = path_options_for(simulated, options);
-    switch (renderer) {
-        case Renderer::kDirect: {
-            const DirectLighting shading(world, scene, lights, direct_options(o));
-            return render_direct(shading, camera, settings, FilmPoints::kStratified);
-        }
-        case Renderer::kPaths: {
-            PathOptions p;
-            p.termination = o.termination;
-            p.direct = o.direct;
-            p.shadows = o.shadows;
-            p.indirect = o.indirect;
-            p.glossy = o.glossy;
-            p.offset = o.offset;
-            const PathTracer tracer(world, scene, lights, p);
-            return render_paths(tracer, camera, settings);
-        }
-        case Renderer::kGlass:
-            break;
+    options.simulated = simulated;
+    if (renderer == Renderer::kDirect) {
+        DirectOptions direct;
+        static_cast<TraceOptions&>(direct) = options;
+        const DirectLighting shading(prepared.world, prepared.materials, prepared.lights, direct);
+        return render_direct(shading, camera, settings, FilmPoints::kStratified);
     }
-    const BsdfPathTracer tracer(world, scene, lights, o);
-    return render_bsdf_paths(tracer, camera, settings);
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    return render_paths(tracer, camera, settings);
 }
 
 }  // namespace rt

@@ -2,23 +2,24 @@
 // simulates needed(scene) ∩ supported:
 //   direct: chapter 04's direct lighting (one camera ray, its shadow rays: maximum depth 1) when every
 //           simulated effect is one chapter 04 has (camera, shadows, direct, glossy);
-//   paths:  chapter 06's path tracer (MIS) when there is no refraction to simulate;
-//   glass:  this chapter's path tracer with the dielectric BSDF otherwise.
-// So a scene without glass pays nothing for refraction, and a direct-only scene nothing for paths.
+//   paths:  chapter 06's path loop otherwise, with MIS, on a material table that holds this chapter's
+//           dielectrics when refraction is simulated (refraction_materials.hpp).
+// So a direct-only scene pays nothing for paths, and a scene without glass only one flag test per vertex for
+// the transmission it does not have.
 #pragma once
 
 #include <string_view>
 
-#include "bsdf_path_tracer.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
 
 namespace rt {
 
-enum class Renderer { kDirect, kPaths, kGlass };
+enum class Renderer { kDirect, kPaths };
 
-// "direct (chapter 04)", "paths (chapter 06)" or "glass (chapter 07)".
+// "direct (chapter 04)" or "paths (chapter 06's loop, chapter 07's BSDFs)".
 std::string_view to_string(Renderer renderer);
 
 inline constexpr EffectSet kDirectRendererEffects{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
@@ -26,11 +27,8 @@ inline constexpr EffectSet kDirectRendererEffects{Effect::kCameraRays, Effect::k
 
 Renderer choose_renderer(const EffectSet& simulated);
 
-// The options of a path tracer for the effects simulated: direct, shadows, indirect and glossy on or off.
-BsdfPathOptions path_options_for(const EffectSet& simulated, BsdfPathOptions options = {});
-
-// Renders `scene` with `renderer` (chapter 04's, 06's or this chapter's), the path tracers with `options`.
+// Renders `scene` with `renderer`, the path loop with `options` (its effects set to `simulated`).
 RenderResult render_with(Renderer renderer, const Scene& scene, const EffectSet& simulated,
-                         const RenderSettings& settings, const BsdfPathOptions& options);
+                         const RenderSettings& settings, PathOptions options = {});
 
 }  // namespace rt

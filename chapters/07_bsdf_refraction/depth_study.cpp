@@ -1,28 +1,20 @@
 #include "depth_study.hpp"
 
-#include "camera.hpp"
-#include "light_set.hpp"
+#include "bsdf_render.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/image_io.hpp"
-#include "world.hpp"
 
 namespace rt {
 namespace {
 
-RenderResult render_glass(const Scene& scene, const RenderSettings& settings,
-                          const BsdfPathOptions& options) {
-    const World world(scene);
-    const LightSet lights = collect_lights(scene);
-    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-    const BsdfPathTracer tracer(world, scene, lights, options);
-    return render_bsdf_paths(tracer, camera, settings);
+RenderResult render_glass(const Scene& scene, const RenderSettings& settings, const PathOptions& options) {
+    return render_with(Renderer::kPaths, scene, options.simulated, settings, options);
 }
 
 }  // namespace
 
-Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
-                            const BsdfPathOptions& options, int spp, const std::filesystem::path& folder,
-                            bool& cached) {
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                            int spp, const std::filesystem::path& folder, bool& cached) {
     const std::filesystem::path file =
         folder / ("ch07_reference_" + std::filesystem::path(scene.file).stem().string() + "_" +
                   std::to_string(settings.width) + "x" + std::to_string(settings.height) + "_" +
@@ -44,11 +36,11 @@ Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
 }
 
 std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
-                                             const BsdfPathOptions& options, const Image& reference,
+                                             const PathOptions& options, const Image& reference,
                                              const std::vector<int>& depths) {
     std::vector<GlassDepthRow> rows;
     for (int depth : depths) {
-        BsdfPathOptions o = options;
+        PathOptions o = options;
         o.termination = {Termination::kMaxDepth, depth};
         const RenderResult r = render_glass(scene, settings, o);
         const ErrorMetrics e = compare(r.image, reference);

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "bsdf_path_tracer.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "rt/image.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
@@ -25,12 +25,11 @@ struct GlassDepthRow {
 
 // The reference: `spp` samples with Russian roulette, read from `cache` when a file of that name and size is
 // there, else rendered and written: <folder>/ch07_reference_<scene stem>_<W>x<H>_<spp>spp.pfm.
-Image glass_depth_reference(const Scene& scene, const RenderSettings& settings,
-                            const BsdfPathOptions& options, int spp, const std::filesystem::path& folder,
-                            bool& cached);
+Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                            int spp, const std::filesystem::path& folder, bool& cached);
 
 std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSettings& settings,
-                                             const BsdfPathOptions& options, const Image& reference,
+                                             const PathOptions& options, const Image& reference,
                                              const std::vector<int>& depths);
 
 }  // namespace rt

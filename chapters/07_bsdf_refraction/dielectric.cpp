@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "brdf.hpp"
+#include "04_direct_lighting/brdf.hpp"
 #include "fresnel.hpp"
 #include "snell.hpp"
 
@@ -20,6 +20,23 @@ DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real
     }
     return {glm::normalize(reflect(wo, n)), Color(1), DielectricLobe::kReflection, R};
     // END EXERCISE
+}
+
+SmoothDielectric::SmoothDielectric(Real eta_, Transport transport_)
+    : Bsdf({.delta = true, .transmission = true}), eta(eta_), transport(transport_) {}
+
+BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_lobe) const {
+    const DielectricSample d = sample_dielectric(wo, n, eta, u_lobe);
+    BsdfSample s;
+    s.wi = d.wi;
+    s.delta = true;
+    s.pdf = 1;
+    s.transmitted = d.lobe == DielectricLobe::kTransmission;
+    const Color weight = transport == Transport::kImportance ? Color(1) : d.weight;
+    // f |cos θ_i| / pdf = weight, the convention of every delta lobe (chapter 04's mirror).
+    const Real cos_i = std::abs(glm::dot(d.wi, n));
+    s.f = cos_i > 0 ? weight / cos_i : Color(0);
+    return s;
 }
 
 Color beer_lambert(const Color& absorption, Real distance) {

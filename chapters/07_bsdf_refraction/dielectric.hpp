@@ -8,6 +8,8 @@
 // Light paths (chapter 08) carry importance, which does not scale: the BTDF is not symmetric.
 #pragma once
 
+#include "04_direct_lighting/bsdf.hpp"
+#include "04_direct_lighting/material_table.hpp"
 #include "rt/math.hpp"
 
 namespace rt {
@@ -25,8 +27,32 @@ struct DielectricSample {
 // chooses the lobe: reflection when u < R. Under total internal reflection R = 1: always reflection.
 DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real u);
 
+// The smooth dielectric as a Bsdf of the course's material model (chapter 04's bsdf.hpp): delta and
+// transmitting, its lobe chosen by u_lobe through sample_dielectric. η is fixed per object: the material
+// table holds one for each side, η = ior seen from outside and 1 / ior from inside. A sampled lobe's
+// f |cos θ_i| / pdf is the weight above for radiance, and 1 either way for importance (chapter 08).
+class SmoothDielectric final : public Bsdf {
+  public:
+    SmoothDielectric(Real eta, Transport transport);
+    Color eval(const Vec3&, const Vec3&, const Vec3&) const override { return Color(0); }
+    BsdfSample sample(const Vec3& wo, const Vec3& n, Vec2 u, Real u_lobe) const override;
+    Real pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0; }
+
+    Real eta;
+    Transport transport;
+};
+
 // Beer–Lambert: the fraction of radiance left after a distance d inside a medium of absorption coefficient
 // σ_a (per unit length): T = exp(−σ_a d), per colour channel. σ_a = 0 gives exactly 1 for every d, even ∞.
 Color beer_lambert(const Color& absorption, Real distance);
+
+// What fills absorbing glass: Beer–Lambert with σ_a = the material's "absorption".
+class AbsorbingMedium final : public Medium {
+  public:
+    explicit AbsorbingMedium(const Color& absorption_) : absorption(absorption_) {}
+    Color transmittance(Real distance) const override { return beer_lambert(absorption, distance); }
+
+    Color absorption;
+};
 
 }  // namespace rt

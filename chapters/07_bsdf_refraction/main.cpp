@@ -10,6 +10,7 @@
 #include "bsdf_render.hpp"
 #include "depth_study.hpp"
 #include "fresnel_study.hpp"
+#include "refraction_materials.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 
@@ -37,25 +38,19 @@ void print_fresnel_study(Real ior, const std::string& csv) {
     }
 }
 
-// The index of the scene's first dielectric (1.5 without one).
+// The index of the scene's first dielectric, the one the material table made glass of (1.5 without one).
 Real scene_ior(const Scene& scene) {
-    for (const Material& m : scene.materials)
-        if (m.type == MaterialType::kDielectric) return m.ior;
+    const MaterialTable materials(scene, EffectSet::all(), refraction_materials());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+        if (materials.bsdf(int(i)).flags().transmission) return scene.materials[i].ior;
+    }
     return Real(1.5);
 }
 
 std::vector<std::string> notes_for(const Scene& scene, Renderer renderer, const EffectSet& simulated) {
     std::vector<std::string> notes{"renderer: " + std::string(to_string(renderer))};
-    if (!simulated.contains(Effect::kRefraction)) {
-        for (const Material& m : scene.materials) {
-            if (m.type == MaterialType::kDielectric) {
-                notes.push_back(
-                    "dielectric material '" + m.name +
-                    "': refraction is not in the scene's effects; shaded as diffuse white (albedo "
-                    "0.73)");
-            }
-        }
-    }
+    const MaterialTable materials(scene, simulated, refraction_materials());
+    for (const std::string& note : materials.notes()) notes.push_back(note);
     return notes;
 }
 
@@ -63,6 +58,7 @@ std::vector<std::string> notes_for(const Scene& scene, Renderer renderer, const 
 
 int main(int argc, char** argv) {
     std::optional<int> max_depth;
+    std::string sampling = "mis";
     bool fresnel = false;
     std::string csv;
     bool depth = false;
@@ -79,6 +75,9 @@ int main(int argc, char** argv) {
                        "End every path after this many bounces (chapter 05's depth rule) instead of Russian "
                        "roulette")
             ->check(CLI::Range(1, 1000));
+        app.add_option("--sampling", sampling,
+                       "How chapter 06's loop draws directions: uniform|cosine|brdf|light|mis")
+            ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
         app.add_flag("--fresnel-study", fresnel,
                      "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
         app.add_option("--csv", csv, "With --fresnel-study: write R(theta) both ways to this CSV file");
@@ -97,7 +96,9 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         if (!csv.empty()) throw InputError("--csv: only with --fresnel-study");
-        BsdfPathOptions options = path_options_for(context.simulated);
+        PathOptions options;
+        options.simulated = context.simulated;
+        options.strategy = sampling_strategy_from_string(sampling);
         if (max_depth) options.termination = {Termination::kMaxDepth, *max_depth};
         if (depth) {
             if (!std::filesystem::is_directory(cache))
@@ -122,8 +123,9 @@ int main(int argc, char** argv) {
         const Renderer renderer = choose_renderer(context.simulated);
         ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options),
                        notes_for(scene, renderer, context.simulated), std::nullopt};
-        run.notes.push_back(max_depth ? "termination: max depth " + std::to_string(*max_depth)
-                                      : std::string("termination: Russian roulette"));
+        run.notes.push_back("sampling: " + sampling + (max_depth ? ", termination: max depth " +
+                                                                         std::to_string(*max_depth)
+                                                              : std::string(", termination: Russian roulette")));
         return run;
     };
     return run_chapter(argc, argv, chapter, flags, render);

@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
 #include "rt/math.hpp"
 
 namespace rt {

@@ -5,14 +5,15 @@
 #include <filesystem>
 #include <fstream>
 
-#include "bsdf_path_tracer.hpp"
-#include "convergence.hpp"
+#include "02_intersection/world.hpp"
+#include "06_monte_carlo/convergence.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace rt {
 namespace {
@@ -31,8 +32,8 @@ RenderSettings study_settings(const StudyOptions& o, int spp) {
 Reference reference_of(const StudyScene& s, const StudyOptions& o) {
     std::printf("  converged reference (chapter 06, MIS, %d spp) ...", o.reference_spp);
     std::fflush(stdout);
-    const Reference ref = converged_reference(s.world, s.scene, s.lights, reverse_options(EffectSet::all()),
-                                              s.camera, study_settings(o, 1), o.reference_spp, o.cache);
+    const Reference ref = converged_reference(s.prepared, PathOptions{}, s.camera, study_settings(o, 1),
+                                              o.reference_spp, o.cache);
     std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
                 ref.file.string().c_str(), std::sqrt(ref.noise_mse));
     return ref;
@@ -46,7 +47,7 @@ void fractions(const StudyScene& s, const StudyOptions& o) {
                 "time (s)");
     RenderSettings settings = study_settings(o, 1);
     auto row = [&](const char* name, LightTracerOptions options) {
-        const LightTracer tracer(s.world, s.scene, s.lights, s.camera, options);
+        const LightTracer tracer(s.prepared.world, s.importance, s.prepared.lights, s.camera, options);
         const SplatResult r = render_light_tracing(tracer, settings, o.fraction_paths);
         std::printf("%-28s %14llu %12.4e %14.3f %10.3f\n", name,
                     static_cast<unsigned long long>(r.contributing_paths),
@@ -54,17 +55,17 @@ void fractions(const StudyScene& s, const StudyOptions& o) {
                     double(r.render.rays[RayKind::kCamera]) / double(r.render.samples), r.render.seconds);
     };
     for (Real radius : {Real(1), Real(4), Real(16), Real(64)}) {
-        LightTracerOptions options = forward_options(EffectSet::all());
+        LightTracerOptions options;
         options.variant = CameraVariant::kAperture;
         options.aperture_radius = radius;
         char name[64];
         std::snprintf(name, sizeof name, "aperture, lens radius %g", double(radius));
         row(name, options);
     }
-    row("connect (pinhole)", forward_options(EffectSet::all()));
+    row("connect (pinhole)", LightTracerOptions{});
     // Without the lamp's own point (which the camera sees whole): the paths whose bounces reach the camera.
-    LightTracerOptions bounces_only = forward_options(EffectSet::all());
-    bounces_only.camera = false;
+    LightTracerOptions bounces_only;
+    bounces_only.simulated = bounces_only.simulated.without({Effect::kCameraRays});
     row("connect, bounces only", bounces_only);
 }
 
@@ -80,7 +81,8 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     const Reference ref = reference_of(s, o);
     std::vector<TimedRmse> forward;
     std::vector<double> fs, fr;
-    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
+    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                            LightTracerOptions{});
     for (int spp : {4, 16, 64, 256}) {
         const RenderSettings settings = study_settings(o, spp);
         const SplatResult r = render_light_tracing(light, settings, paths_per_image(settings));
@@ -102,9 +104,9 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n%-22s %6s %12s %10s %18s %12s\n", "reverse (chapter 06)", "spp", "RMSE", "time (s)",
                 "forward to same", "forward/rev.");
     for (SamplingStrategy strategy : {SamplingStrategy::kMis, SamplingStrategy::kBrdf}) {
-        PathOptions options = reverse_options(EffectSet::all());
+        PathOptions options = PathOptions{};
         options.strategy = strategy;
-        const PathTracer tracer(s.world, s.scene, s.lights, options);
+        const PathTracer tracer(s.prepared.world, s.prepared.materials, s.prepared.lights, options);
         for (int spp : {4, 16, 64}) {
             const RenderResult r = render_paths(tracer, s.camera, study_settings(o, spp));
             const double rmse = compare(r.image, ref.image).rmse;
@@ -141,12 +143,12 @@ Reference glass_reference(const StudyScene& s, const StudyOptions& o) {
                      a.height() == o.size;
     }
     if (!ref.cached) {
-        const BsdfPathTracer tracer(s.world, s.scene, s.lights, BsdfPathOptions{});
+        const PathTracer tracer(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
         RenderSettings settings = study_settings(o, o.glass_reference_spp / 2);
         settings.seed = 1001;
-        const RenderResult ra = render_bsdf_paths(tracer, s.camera, settings);
+        const RenderResult ra = render_paths(tracer, s.camera, settings);
         settings.seed = 1002;
-        const RenderResult rb = render_bsdf_paths(tracer, s.camera, settings);
+        const RenderResult rb = render_paths(tracer, s.camera, settings);
         a = ra.image;
         ref.image = Image(o.size, o.size);
         for (std::size_t i = 0; i < a.pixel_count(); ++i)
@@ -173,22 +175,23 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     const Reference ref = glass_reference(s, o);
     // The regions: pixels whose centre sees a mirror first; pixels the caustic lights (the light tracer's
     // caustic paths alone give at least 10% of the reference); the rest.
-    LightTracerOptions caustic_options = forward_options(EffectSet::all());
+    LightTracerOptions caustic_options = LightTracerOptions{};
     caustic_options.caustics_only = true;
-    const LightTracer caustic_tracer(s.world, s.scene, s.lights, s.camera, caustic_options);
+    const LightTracer caustic_tracer(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                                     caustic_options);
     const RenderSettings caustic_settings = study_settings(o, 64);
     const Image caustic =
-        render_light_tracing(caustic_tracer, caustic_settings, paths_per_image(caustic_settings)).render.image;
+        render_light_tracing(caustic_tracer, caustic_settings, paths_per_image(caustic_settings))
+            .render.image;
     const std::size_t n = ref.image.pixel_count();
     std::vector<std::uint8_t> mirror(n, 0), lit(n, 0), rest(n, 0);
     for (int y = 0; y < o.size; ++y) {
         for (int x = 0; x < o.size; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(o.size) + std::size_t(x);
             const auto hit =
-                s.world.intersect(camera_ray(s.camera, Real(x) + Real(0.5), Real(y) + Real(0.5)));
-            const MaterialType type =
-                hit ? s.scene.materials[std::size_t(hit->material)].type : MaterialType::kDiffuse;
-            if (type == MaterialType::kMirror || type == MaterialType::kDielectric)
+                s.prepared.world.intersect(camera_ray(s.camera, Real(x) + Real(0.5), Real(y) + Real(0.5)));
+            // Mirrors and smooth glass: delta BSDFs, which a pinhole cannot be connected to.
+            if (hit && s.prepared.materials.bsdf(hit->material, hit->front_face).flags().delta)
                 mirror[i] = 1;
             else if (luminance(caustic.pixels()[i]) >= Real(0.1) * luminance(ref.image.pixels()[i]) &&
                      luminance(caustic.pixels()[i]) > 0)
@@ -204,20 +207,21 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     };
     std::printf("  regions: caustic %zu pixels, mirror or glass %zu pixels, the rest %zu pixels\n",
                 count(lit), count(mirror), count(rest));
-    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic", "RMSE specular",
-                "RMSE rest");
+    std::printf("%-22s %6s %10s %14s %14s %14s\n", "tracer", "spp", "time (s)", "RMSE caustic",
+                "RMSE specular", "RMSE rest");
     // Render A of the reference against the mean: the reference's own RMSE, region by region.
     const Image a =
         read_pfm(std::filesystem::path(ref.file).replace_filename(ref.file.stem().string() + "_half.pfm"));
     std::printf("%-22s %6d %10s %14.4e %14.4e %14.4e\n", "reference's own noise", ref.spp, "",
                 masked_rmse(a, ref.image, lit), masked_rmse(a, ref.image, mirror),
                 masked_rmse(a, ref.image, rest));
-    const LightTracer light(s.world, s.scene, s.lights, s.camera, forward_options(EffectSet::all()));
-    const BsdfPathTracer path(s.world, s.scene, s.lights, BsdfPathOptions{});
+    const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera,
+                            LightTracerOptions{});
+    const PathTracer path(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
     for (int spp : {16, 64}) {
         const RenderSettings settings = study_settings(o, spp);
         const SplatResult f = render_light_tracing(light, settings, paths_per_image(settings));
-        const RenderResult r = render_bsdf_paths(path, s.camera, settings);
+        const RenderResult r = render_paths(path, s.camera, settings);
         for (const auto& [name, image, seconds] :
              {std::tuple{"forward (connect)", &f.render.image, f.render.seconds},
               std::tuple{"reverse (chapter 07)", &r.image, r.seconds}}) {
@@ -229,25 +233,6 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
 }
 
 }  // namespace
-
-LightTracerOptions forward_options(const EffectSet& simulated) {
-    LightTracerOptions o;
-    o.camera = simulated.contains(Effect::kCameraRays);
-    o.direct = simulated.contains(Effect::kDirect);
-    o.indirect = simulated.contains(Effect::kIndirect);
-    o.glossy = simulated.contains(Effect::kGlossy);
-    o.refraction = simulated.contains(Effect::kRefraction);
-    return o;
-}
-
-PathOptions reverse_options(const EffectSet& simulated) {
-    PathOptions o;
-    o.direct = simulated.contains(Effect::kDirect);
-    o.shadows = simulated.contains(Effect::kShadows);
-    o.indirect = simulated.contains(Effect::kIndirect);
-    o.glossy = simulated.contains(Effect::kGlossy);
-    return o;
-}
 
 double masked_rmse(const Image& image, const Image& reference, const std::vector<std::uint8_t>& mask) {
     double sum = 0;
@@ -286,11 +271,10 @@ void run_forward_study(const StudyOptions& options) {
     }
 }
 
-
 StudyScene::StudyScene(Scene s, int width, int height)
     : scene(std::move(s)),
-      world(scene),
-      lights(collect_lights(scene)),
+      prepared(scene, EffectSet::all(), refraction_materials()),
+      importance(scene, EffectSet::all(), refraction_materials(), Transport::kImportance),
       camera(make_pinhole_camera(scene.camera, width, height)) {}
 
 }  // namespace rt

@@ -14,18 +14,14 @@
 #include <string>
 #include <vector>
 
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "light_tracer.hpp"
-#include "path_tracer.hpp"
-#include "world.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/image.hpp"
 
 namespace rt {
-
-// The light tracer's options for the effects a run simulates.
-LightTracerOptions forward_options(const EffectSet& simulated);
-// Chapter 06's path tracer (MIS) for the same effects.
-PathOptions reverse_options(const EffectSet& simulated);
 
 struct StudyOptions {
     int size = 100;                           // the image is size × size
@@ -38,11 +34,13 @@ struct StudyOptions {
     std::uint64_t seed = 1;
 };
 
-// A scene and what both tracers need to render it: its World, its lights and a width × height pinhole camera.
+// A scene and what both tracers need to render it, every effect simulated: its World, lights and material
+// table for radiance paths (prepared), the same materials for light paths (importance), and a width × height
+// pinhole camera.
 struct StudyScene {
     Scene scene;
-    World world;
-    LightSet lights;
+    RenderScene prepared;
+    MaterialTable importance;
     PinholeCamera camera;
     StudyScene(Scene s, int width, int height);
 };

@@ -1,12 +1,11 @@
 #include "light_emission.hpp"
 
-#include <algorithm>
 #include <cmath>
 
-#include "float_error.hpp"
-#include "frame.hpp"
-#include "sampling.hpp"
-#include "warp_pdfs.hpp"
+#include "02_intersection/float_error.hpp"
+#include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
+#include "06_monte_carlo/warp_pdfs.hpp"
 
 namespace rt {
 namespace {
@@ -20,41 +19,20 @@ void emit_lambertian(EmissionSample& s, Vec2 u_direction) {
 
 }  // namespace
 
-EmitterSampler::EmitterSampler(const LightSet& lights)
-    : quads_(lights.quads), triangles_(lights.triangles), spheres_(lights.spheres), points_(lights.points) {
-    for (const QuadLight& q : quads_) weights_.push_back(kPi * luminance(q.radiance) * q.area);
-    for (const TriangleLight& t : triangles_) weights_.push_back(kPi * luminance(t.radiance) * t.area);
-    for (const SphereLight& s : spheres_)
-        weights_.push_back(kPi * luminance(s.radiance) * 4 * kPi * s.radius * s.radius);
-    for (const PointLight& p : points_) weights_.push_back(4 * kPi * luminance(p.intensity));
-    for (Real& w : weights_) w = std::isfinite(w) ? std::max(w, Real(0)) : Real(0);
-    for (Real w : weights_) total_ += w;
-    if (!(total_ > 0)) {
-        weights_.clear();
-        return;
-    }
-    Real running = 0;
-    for (Real w : weights_) {
-        running += w;
-        cdf_.push_back(running / total_);
-    }
-    cdf_.back() = 1;
-}
-
-Real EmitterSampler::probability(std::size_t index) const {
-    return index < weights_.size() ? weights_[index] / total_ : Real(0);
-}
+EmitterSampler::EmitterSampler(const LightSet& lights) : picker_(lights) {}
 
 std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, Vec2 u_direction) const {
-    if (cdf_.empty()) return std::nullopt;
-    std::size_t i = std::size_t(std::upper_bound(cdf_.begin(), cdf_.end(), u_pick) - cdf_.begin());
-    i = std::min(i, cdf_.size() - 1);
+    if (picker_.empty()) return std::nullopt;
+    std::size_t i = picker_.pick(u_pick);
     // A light of zero power shares its cdf value with the one before it and is never picked.
     const Real P = probability(i);
     if (!(P > 0)) return std::nullopt;
     EmissionSample s;
-    if (i < quads_.size()) {
-        const QuadLight& q = quads_[i];
+    const auto& quads = picker_.quads();
+    const auto& triangles = picker_.triangles();
+    const auto& spheres = picker_.spheres();
+    if (i < quads.size()) {
+        const QuadLight& q = quads[i];
         const Vec3 a = u_point.x * q.u, b = u_point.y * q.v;
         s.origin.point = q.origin + a + b;
         // x = Q + a u + b v: three rounded operations per component.
@@ -64,9 +42,9 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         emit_lambertian(s, u_direction);
         return s;
     }
-    i -= quads_.size();
-    if (i < triangles_.size()) {
-        const TriangleLight& t = triangles_[i];
+    i -= quads.size();
+    if (i < triangles.size()) {
+        const TriangleLight& t = triangles[i];
         const Vec2 bary = sample_uniform_triangle(u_point);
         const Vec3 a = (1 - bary.x - bary.y) * t.p0, b = bary.x * t.p1, c = bary.y * t.p2;
         s.origin.point = a + b + c;
@@ -76,9 +54,9 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         emit_lambertian(s, u_direction);
         return s;
     }
-    i -= triangles_.size();
-    if (i < spheres_.size()) {
-        const SphereLight& sp = spheres_[i];
+    i -= triangles.size();
+    if (i < spheres.size()) {
+        const SphereLight& sp = spheres[i];
         const Vec3 w = sample_uniform_sphere(u_point);
         s.origin.point = sp.center + sp.radius * w;
         s.origin.point_error = gamma_bound(5) * (abs(sp.center) + abs(sp.radius * w));
@@ -87,8 +65,8 @@ std::optional<EmissionSample> EmitterSampler::sample(Real u_pick, Vec2 u_point, 
         emit_lambertian(s, u_direction);
         return s;
     }
-    i -= spheres_.size();
-    const PointLight& p = points_[i];
+    i -= spheres.size();
+    const PointLight& p = picker_.points()[i];
     s.point_light = true;
     s.origin.point = p.position;
     s.position_weight = p.intensity / P;

@@ -1,4 +1,5 @@
-// Where a light path starts: a light chosen with probability P ∝ its power Φ, a point on it and a direction
+// Where a light path starts: a light chosen with probability P ∝ its power Φ (chapter 04's LightPicker, the
+// one the path tracers sample for next-event estimation), a point on it and a direction
 // it emits into. An area light of radiance Le and area A emits Φ = π lum(Le) A (one-sided, Lambertian); a
 // point light of intensity I emits Φ = 4π lum(I).
 //   area light:  x uniform by area (pdf_A = 1 / A), ω cosine-weighted about its normal (pdf_ω = cos θ / π):
@@ -9,10 +10,10 @@
 #pragma once
 
 #include <optional>
-#include <vector>
 
-#include "hit.hpp"
-#include "light_set.hpp"
+#include "02_intersection/hit.hpp"
+#include "04_direct_lighting/light_picker.hpp"
+#include "04_direct_lighting/light_set.hpp"
 
 namespace rt {
 
@@ -29,24 +30,19 @@ class EmitterSampler {
     // Area lights (quads, triangles, spheres) and point lights of `lights`; the environment is not sampled.
     explicit EmitterSampler(const LightSet& lights);
 
-    bool empty() const { return cdf_.empty(); }
-    std::size_t light_count() const { return cdf_.size(); }
+    bool empty() const { return picker_.empty(); }
+    std::size_t light_count() const { return picker_.light_count(); }
     // P(light i) = Φ_i / Σ Φ (lights in the order quads, triangles, spheres, points).
-    Real probability(std::size_t index) const;
-    Real total_power() const { return total_; }
+    Real probability(std::size_t index) const { return picker_.probability(index); }
+    // Σ Φ: π times the picker's weights, which leave the π out.
+    Real total_power() const { return kPi * picker_.total_weight(); }
 
     // A light chosen by u_pick, a point on it from u_point, a direction from u_direction. Nothing when there
     // is no light.
     std::optional<EmissionSample> sample(Real u_pick, Vec2 u_point, Vec2 u_direction) const;
 
   private:
-    std::vector<QuadLight> quads_;
-    std::vector<TriangleLight> triangles_;
-    std::vector<SphereLight> spheres_;
-    std::vector<PointLight> points_;
-    std::vector<Real> weights_;  // Φ_i
-    std::vector<Real> cdf_;
-    Real total_ = 0;
+    LightPicker picker_;
 };
 
 }  // namespace rt

@@ -3,9 +3,8 @@
 #include <cmath>
 #include <string>
 
-#include "dielectric.hpp"
+#include "03_shadow_rays/shadow_ray.hpp"
 #include "rt/errors.hpp"
-#include "shadow_ray.hpp"
 
 namespace rt {
 namespace {
@@ -25,38 +24,29 @@ CameraVariant camera_variant_from_string(std::string_view name) {
     throw InputError("--variant: must be connect or aperture, got " + std::string(name));
 }
 
-LightTracer::LightTracer(const World& world, const Scene& scene, const LightSet& lights,
+LightTracer::LightTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
                          const PinholeCamera& camera, LightTracerOptions options)
-    : world_(world), camera_(camera), emitters_(lights), options_(options) {
+    : world_(world), materials_(materials), camera_(camera), emitters_(lights), options_(options) {
     if (options_.variant == CameraVariant::kAperture && !(options_.aperture_radius > 0)) {
         throw InputError("--aperture: the lens radius must be > 0, got " +
                          std::to_string(options_.aperture_radius));
     }
-    const Brdf stand_in = LambertBrdf{options_.dielectric_albedo};
-    for (const Material& m : scene.materials) {
-        const Brdf b = options_.glossy ? brdf_of(m, stand_in) : without_lobes(brdf_of(m, stand_in));
-        brdfs_.push_back(b);
-        const bool glass = options_.refraction && m.type == MaterialType::kDielectric;
-        black_.push_back(!glass && is_black(b) ? 1 : 0);
-        delta_.push_back(glass || is_delta(b) ? 1 : 0);
-        glass_.push_back(glass ? 1 : 0);
-        ior_.push_back(m.ior);
-        absorption_.push_back(m.absorption);
-    }
 }
 
-bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Color& beta, Image& film,
+bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const Color& beta, Image& film,
                           RayCounts& rays) const {
     // EXERCISE(ch08.connect)
     const Vec3 to_eye = camera_.eye - hit.point;
     const Real r2 = glm::dot(to_eye, to_eye);
     if (!(r2 > 0)) return false;
     const Vec3 wc = to_eye / std::sqrt(r2);
-    const Real cos_x = glm::dot(wc, hit.normal);
+    // |cos θ_x| on the eye's side; a BSDF that transmits also reaches an eye behind the surface.
+    const Real dot_x = glm::dot(wc, hit.normal);
+    const Real cos_x = bsdf.flags().transmission ? std::abs(dot_x) : dot_x;
     if (!(cos_x > 0)) return false;
     const auto p = project_direction(camera_, -to_eye);
     if (!p) return false;
-    const Color f = eval(brdf, wo, wc, hit.normal);
+    const Color f = bsdf.eval(wo, wc, hit.normal);
     if (is_black(f)) return false;
     const ShadowRay s = spawn_shadow_ray(hit, camera_.eye, options_.offset);
     rays.add(RayKind::kCamera);
@@ -106,7 +96,8 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
     if (!e) return false;
     const bool connecting = options_.variant == CameraVariant::kConnect;
     bool added = false;
-    if (connecting && options_.camera && !options_.caustics_only) added |= connect_light(*e, film, rays);
+    if (connecting && options_.simulates(Effect::kCameraRays) && !options_.caustics_only)
+        added |= connect_light(*e, film, rays);
     Ray ray = e->point_light ? Ray{e->origin.point, e->direction}
                              : spawn_ray(e->origin, e->direction, options_.offset);
     rays.add(RayKind::kShadow);
@@ -118,38 +109,34 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         const auto hit = world_.intersect(ray);
         if (!connecting) added |= through_aperture(ray, hit ? hit->t : kInfinity, beta, film);
         if (!hit) break;
-        const std::size_t m = std::size_t(hit->material);
-        if (black_[m]) break;
-        const Vec3 wo = -ray.direction;
-        if (glass_[m]) {
-            // A segment that ends on the inside of glass ran through it: Beer–Lambert over its length.
-            if (!hit->front_face) relative *= beer_lambert(absorption_[m], hit->t);
-            const Real eta = hit->front_face ? ior_[m] : 1 / ior_[m];
-            const DielectricSample d = sample_dielectric(wo, hit->normal, eta, rng.next_real());
-            from_mirror = true;
-            if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
-            ray = spawn_ray(*hit, d.wi, options_.offset);
-            rays.add(d.lobe == DielectricLobe::kReflection ? RayKind::kReflection : RayKind::kRefraction);
-            continue;
+        // A segment that ends on the inside of a shape ran through what fills it (Beer–Lambert in glass).
+        if (!hit->front_face) {
+            if (const Medium* medium = materials_.interior(hit->material))
+                relative *= medium->transmittance(hit->t);
         }
-        const Brdf& brdf = brdfs_[m];
-        const bool delta = delta_[m] != 0;
-        if (connecting && !delta) {
-            const bool wanted = diffuse_bounces == 0 ? options_.direct : options_.indirect;
+        const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
+        const BsdfFlags& flags = bsdf.flags();
+        if (flags.black) break;
+        const Vec3 wo = -ray.direction;
+        // A delta vertex (mirror, smooth glass) cannot be connected: its f is 0 toward the pinhole.
+        if (connecting && !flags.delta) {
+            const bool wanted = diffuse_bounces == 0 ? options_.simulates(Effect::kDirect)
+                                                     : options_.simulates(Effect::kIndirect);
             if (wanted && (!options_.caustics_only || from_mirror))
-                added |= connect(*hit, wo, brdf, beta, film, rays);
+                added |= connect(*hit, wo, bsdf, beta, film, rays);
         }
         // Without the indirect effect a path ends at its first diffuse vertex: maximum depth 1.
-        if (!delta && !options_.indirect) break;
-        const BrdfSample s = sample(brdf, wo, hit->normal, rng.next_vec2());
-        const Real cos_i = glm::dot(s.wi, hit->normal);
+        if (!flags.delta && !options_.simulates(Effect::kIndirect)) break;
+        const Vec2 u = rng.next_vec2();
+        const BsdfSample s = bsdf.sample(wo, hit->normal, u, flags.transmission ? rng.next_real() : Real(0));
+        const Real cos_i = scattering_cosine(s.wi, hit->normal, s.transmitted);
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
         relative *= s.f * (cos_i / s.pdf);
-        from_mirror = delta;
-        if (!delta) ++diffuse_bounces;
+        from_mirror = flags.delta;
+        if (!flags.delta) ++diffuse_bounces;
         if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
         ray = spawn_ray(*hit, s.wi, options_.offset);
-        rays.add(std::holds_alternative<LambertBrdf>(brdf) ? RayKind::kIndirect : RayKind::kReflection);
+        rays.add(ray_kind(flags, s.transmitted));
     }
     return added;
 }

@@ -17,21 +17,19 @@
 // camera); bounces as indirect (Lambert) or reflection (mirror, glossy, retro-reflective), as in chapter 06.
 #pragma once
 
-#include <vector>
-
-#include "brdf.hpp"
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/hit.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/bsdf.hpp"
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/material_table.hpp"
+#include "04_direct_lighting/trace_options.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "camera_importance.hpp"
-#include "hit.hpp"
 #include "light_emission.hpp"
-#include "light_set.hpp"
-#include "ray_offset.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
-#include "rt/scene.hpp"
 #include "splat_render.hpp"
-#include "termination.hpp"
-#include "world.hpp"
 
 namespace rt {
 
@@ -40,26 +38,23 @@ enum class CameraVariant { kConnect, kAperture };
 // "connect" or "aperture"; the other name throws InputError.
 CameraVariant camera_variant_from_string(std::string_view name);
 
-struct LightTracerOptions {
+// Effects read: "camera" (the emitters themselves, seen by the camera), "direct" (vertices after no diffuse
+// or glossy bounce), "indirect" (bounces off diffuse and glossy surfaces). The material table — built for
+// Transport::kImportance — holds what "glossy", "reflection" and "refraction" change.
+struct LightTracerOptions : TraceOptions {
     CameraVariant variant = CameraVariant::kConnect;
     Real aperture_radius = 1;  // kAperture: the lens radius R, in scene units
     // Chapter 05's Russian roulette on the relative throughput Π f cos θ / pdf (β / β₀), under its cap.
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
-    bool camera = true;      // effect "camera": the emitters themselves, seen by the camera
-    bool direct = true;      // effect "direct": vertices after no diffuse or glossy bounce
-    bool indirect = true;    // effect "indirect": bounces off diffuse and glossy surfaces
-    bool glossy = true;      // false: glossy and retro-reflective lobes shaded as Lambert (as chapter 06)
-    bool refraction = true;  // effect "refraction": false shades dielectrics as Lambert (as chapter 06)
     // Only vertices whose light arrived straight from a mirror (paths L…S D E): the caustics alone.
     bool caustics_only = false;
-    RayOffset offset{};
-    Color dielectric_albedo{0.73f};  // without refraction, dielectrics are Lambert of this albedo
 };
 
 class LightTracer {
   public:
-    LightTracer(const World& world, const Scene& scene, const LightSet& lights, const PinholeCamera& camera,
-                LightTracerOptions options);
+    // `materials` carries importance (Transport::kImportance); `world` and `materials` must outlive it.
+    LightTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
+                const PinholeCamera& camera, LightTracerOptions options);
 
     // Traces one light path, adding its contributions to `film` (pixel sums). Returns whether it added any.
     bool trace(Pcg32& rng, Image& film, RayCounts& rays) const;
@@ -70,7 +65,7 @@ class LightTracer {
     // The splat of a connection at surface vertex `hit` reached with throughput β from direction wo:
     // β f(wo, wc) cos θ_x cos θ_c We / r², wc the unit direction to the eye. Adds it to `film` when the eye
     // is visible (one camera ray) and returns whether it did.
-    bool connect(const Hit& hit, const Vec3& wo, const Brdf& brdf, const Color& beta, Image& film,
+    bool connect(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const Color& beta, Image& film,
                  RayCounts& rays) const;
     // The light's own point seen by the camera: Le cos θ_l cos θ_c We / (P pdf_A r²). A point light is not
     // seen (nothing, as in every chapter: no camera ray can hit a point; its pixel would read I We cos / r²).
@@ -81,13 +76,10 @@ class LightTracer {
 
   private:
     const World& world_;
+    const MaterialTable& materials_;
     PinholeCamera camera_;
     EmitterSampler emitters_;
     LightTracerOptions options_;
-    std::vector<Brdf> brdfs_;
-    std::vector<std::uint8_t> black_, delta_, glass_;  // per material; glass_: a simulated dielectric
-    std::vector<Real> ior_;
-    std::vector<Color> absorption_;
 };
 
 // N light paths with `tracer` (deterministic for any thread count, see splat_render.hpp).

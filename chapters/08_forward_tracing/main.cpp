@@ -6,38 +6,31 @@
 #include <cstdio>
 #include <string>
 
-#include "bsdf_render.hpp"
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
-#include "world.hpp"
 
 namespace {
 
 using namespace rt;
 
-std::vector<std::string> scene_notes(const Scene& scene, const LightSet& lights, bool forward,
-                                     bool refraction) {
-    std::vector<std::string> notes;
-    for (const Material& m : scene.materials) {
-        if (m.type == MaterialType::kDielectric && !refraction) {
-            notes.push_back(
-                "dielectric material '" + m.name +
-                "': refraction is not simulated in this run; shaded as diffuse white (albedo 0.73)");
-        }
-        if (forward && m.type == MaterialType::kDielectric && refraction) {
-            notes.push_back(
-                "dielectric material '" + m.name +
-                "': a pinhole cannot be connected through glass, so the light tracer shows it black; "
-                "the caustics it casts are found");
-        }
-        if (forward && m.type == MaterialType::kMirror) {
-            notes.push_back(
-                "mirror material '" + m.name +
-                "': a pinhole cannot be connected to a mirror vertex, so the light tracer shows it "
-                "black (what it reflects is lost); its caustics are found");
+std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& materials,
+                                     const LightSet& lights, bool forward) {
+    std::vector<std::string> notes = materials.notes();
+    const std::vector<bool> used = scene.used_materials();
+    for (std::size_t i = 0; i < materials.size() && forward; ++i) {
+        const Bsdf& bsdf = materials.bsdf(int(i));
+        if (used[i] && is_delta(bsdf) && !is_black(bsdf)) {
+            notes.push_back("material '" + scene.materials[i].name +
+                            "': a delta BSDF (mirror or smooth glass): a pinhole cannot be connected to its "
+                            "vertices, so the light tracer shows it black (what it reflects or refracts is "
+                            "lost); the caustics it casts are found");
         }
     }
     if (forward && lights.environment) {
@@ -115,25 +108,25 @@ int main(int argc, char** argv) {
         const Scene& scene = context.scene;
         const RenderSettings& settings = context.settings;
         const bool forward = tracer_name == "forward";
-        const LightSet lights = collect_lights(scene);
-        ChapterRun run{{},
-                       scene_notes(scene, lights, forward, context.simulated.contains(Effect::kRefraction)),
-                       std::nullopt};
+        // Light paths carry importance: the material table is built for it (chapter 07's glass scales
+        // differently).
+        const RenderScene prepared(scene, context.simulated, refraction_materials(),
+                                   forward ? Transport::kImportance : Transport::kRadiance);
+        ChapterRun run{{}, scene_notes(scene, prepared.materials, prepared.lights, forward), std::nullopt};
         if (!forward) {
             const Renderer renderer = choose_renderer(context.simulated);
-            run.result = render_with(renderer, scene, context.simulated, settings,
-                                     path_options_for(context.simulated));
+            run.result = render_with(renderer, scene, context.simulated, settings);
             run.notes.push_back("tracer: reverse, chapter 07's renderer: " +
                                 std::string(to_string(renderer)));
             return run;
         }
-        const World world(scene);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-        LightTracerOptions options = forward_options(context.simulated);
+        LightTracerOptions options;
+        options.simulated = context.simulated;
         options.variant = camera_variant_from_string(variant);
         options.aperture_radius = aperture;
         options.caustics_only = caustics_only;
-        const LightTracer tracer(world, scene, lights, camera, options);
+        const LightTracer tracer(prepared.world, prepared.materials, prepared.lights, camera, options);
         const std::uint64_t paths = paths_per_image(settings);
         const SplatResult r = render_light_tracing(tracer, settings, paths);
         run.result = r.render;

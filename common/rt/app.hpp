@@ -1,4 +1,4 @@
-// What every chapter executable does around its render: the core flags of DESIGN.md, loading and checking
+// What a chapter executable does around its render: the core flags of common/README.md, loading and checking
 // the scene, the output files, the summary, and exit statuses (0 done, 2 bad usage or input, 1 failure,
 // 130 interrupted by SIGINT, 143 by SIGTERM).
 #pragma once

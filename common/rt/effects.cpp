@@ -13,6 +13,21 @@ bool reflects_diffusely(const Material& m) {
 
 }  // namespace
 
+std::optional<Effect> effect_of(const Material& m) {
+    switch (m.type) {
+        case MaterialType::kDiffuse:
+            return std::nullopt;
+        case MaterialType::kMirror:
+            return Effect::kReflection;
+        case MaterialType::kGlossy:
+        case MaterialType::kRetroreflective:
+            return Effect::kGlossy;
+        case MaterialType::kDielectric:
+            return Effect::kRefraction;
+    }
+    return std::nullopt;
+}
+
 EffectSet needed(const Scene& scene) {
     EffectSet content{Effect::kCameraRays};
     const bool lights = !scene.point_lights.empty() || scene.environment || scene.has_area_lights();
@@ -20,12 +35,9 @@ EffectSet needed(const Scene& scene) {
     for (const Shape& shape : scene.shapes) {
         const Material& m = scene.material_of(shape);
         diffuse = diffuse || reflects_diffusely(m);
-        if (m.type == MaterialType::kMirror) content.insert(Effect::kReflection);
-        if (m.type == MaterialType::kGlossy || m.type == MaterialType::kRetroreflective) content.insert(Effect::kGlossy);
-        if (m.type == MaterialType::kDielectric) {
-            content.insert(Effect::kRefraction);
-            content.insert(Effect::kReflection);
-        }
+        if (const auto effect = effect_of(m)) content.insert(*effect);
+        // Glass reflects too (Fresnel): reflection rays.
+        if (effect_of(m) == Effect::kRefraction) content.insert(Effect::kReflection);
     }
     if (lights && diffuse) {
         content.insert(Effect::kShadows);

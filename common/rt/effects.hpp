@@ -1,6 +1,7 @@
 // Only the effects a scene calls for are simulated: needed(scene) ∩ supported(chapter).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "rt/effect_set.hpp"
@@ -12,6 +13,10 @@ namespace rt {
 // retro-reflective materials → glossy; lights and diffusely reflecting surfaces → indirect; dielectrics →
 // refraction, and reflection), narrowed by the scene's "effects" list when it has one.
 EffectSet needed(const Scene& scene);
+
+// The effect that shades material `m` as what it is rather than as a Lambert surface: reflection for a
+// mirror, glossy for glossy and retro-reflective lobes, refraction for a dielectric; none for diffuse.
+std::optional<Effect> effect_of(const Material& m);
 
 // The course chapter that first simulates `effect` ("chapter 07"), for messages about skipped effects.
 std::string chapter_that_adds(Effect effect);

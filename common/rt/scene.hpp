@@ -1,4 +1,4 @@
-// The scene description: plain data, as read from a scene file (see DESIGN.md "Scene files"). Each chapter
+// The scene description: plain data, as read from a scene file (see assets/scenes/README.md). Each chapter
 // turns it into what it can simulate.
 #pragma once
 
@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -28,18 +29,31 @@ struct ImageDesc {
 };
 
 enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric };
+// The names the scene files use, in the order of MaterialType.
+inline constexpr std::array<std::string_view, 5> kMaterialTypeNames = {"diffuse", "mirror", "glossy",
+                                                                       "retroreflective", "dielectric"};
 
 struct Material {
     std::string name;
     MaterialType type = MaterialType::kDiffuse;
-    Color albedo{0.8f};        // diffuse, glossy, retroreflective: reflectance in [0, 1]
-    Color reflectance{1.0f};   // mirror: the fraction reflected
-    Color emission{0.0f};      // radiance emitted (any type): makes its shapes area lights
-    Real roughness = 0.2f;     // glossy, retroreflective: width of the lobe in (0, 1]
-    Real ior = 1.5f;           // dielectric: index of refraction
-    Color absorption{0.0f};    // dielectric: Beer–Lambert absorption coefficient per unit length
+    Color albedo{0.8f};       // diffuse, glossy, retroreflective: reflectance in [0, 1]
+    Color reflectance{1.0f};  // mirror: the fraction reflected
+    Color emission{0.0f};     // radiance emitted (any type): makes its shapes area lights
+    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric: 0 is
+                              // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
+    Real ior = 1.5f;          // dielectric: index of refraction
+    Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
+    // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:
+    // its albedo (diffuse, glossy, retro-reflective), a mirror's reflectance, and for a dielectric (before
+    // chapter 07) a light grey, kDielectricStandIn. The one place a stand-in colour is chosen.
+    Color stand_in_albedo() const {
+        if (type == MaterialType::kMirror) return reflectance;
+        if (type == MaterialType::kDielectric) return Color(kDielectricStandIn);
+        return albedo;
+    }
+    static constexpr Real kDielectricStandIn = Real(0.73);
 };
 
 // Scale, then rotations about x, y and z (degrees), then translation.

@@ -193,8 +193,6 @@ constexpr std::string_view kTopKeys[] = {"description", "camera", "image",  "mat
                                          "shapes",      "lights", "effects"};
 constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
-constexpr std::string_view kMaterialTypes[] = {"diffuse", "mirror", "glossy", "retroreflective",
-                                               "dielectric"};
 constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
 constexpr std::string_view kLightTypes[] = {"point", "environment"};
 constexpr std::string_view kTransformKeys[] = {"scale", "rotate_x", "rotate_y", "rotate_z", "translate"};
@@ -247,10 +245,11 @@ Material read_material(const Node& node, const std::string& name) {
                            "a " + type + " material");
     } else if (type == "dielectric") {
         m.type = MaterialType::kDielectric;
-        node.expect_object(std::array<std::string_view, 3>{"type", "ior", "absorption"},
+        m.roughness = 0;  // smooth unless the file says otherwise
+        node.expect_object(std::array<std::string_view, 4>{"type", "ior", "absorption", "roughness"},
                            "a dielectric material");
     } else {
-        node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypes) +
+        node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
                           "; expected diffuse, mirror, glossy, retroreflective or dielectric");
     }
     if (node.has("albedo")) m.albedo = node["albedo"].color_in(1);

@@ -1,4 +1,4 @@
-// Reading a scene file (JSON, the format of DESIGN.md). Every error is an InputError whose one line names
+// Reading a scene file (JSON; see assets/scenes/README.md). Every error is an InputError whose one line names
 // the file and the place: "cornell.json: shapes[3].radius: must be > 0, got -1".
 #pragma once
 

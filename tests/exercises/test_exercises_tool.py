@@ -103,6 +103,18 @@ class Marks(unittest.TestCase):
         with self.assertRaisesRegex(marks.ToolError, "no such exercise"):
             edition.generate(self.root, out, ["ch07.nothing"], force=True)
 
+    def test_the_student_edition_keeps_warnings_as_warnings(self):
+        option = 'option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" ON)\n'
+        (self.root / "CMakeLists.txt").write_text("project(x)\n" + option, encoding="utf-8")
+        out = self.folder / "edition"
+        edition.generate(self.root, out, [], force=False)
+        written = (out / "CMakeLists.txt").read_text(encoding="utf-8")
+        self.assertIn('option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" OFF)', written)
+        self.assertEqual((self.root / "CMakeLists.txt").read_text(encoding="utf-8"), "project(x)\n" + option)
+        (self.root / "CMakeLists.txt").write_text("project(x)\n", encoding="utf-8")
+        with self.assertRaisesRegex(marks.ToolError, "RT_WARNINGS_AS_ERRORS"):
+            edition.generate(self.root, out, [], force=True)
+
     def test_refuses_to_write_over_a_folder_that_is_not_an_edition(self):
         other = self.folder / "other"
         other.mkdir()
@@ -176,6 +188,23 @@ class Results(unittest.TestCase):
         ]
         states = {k: v["state"] for k, v in test_runs.summarise(found, results, None).items()}
         self.assertEqual(states, {"ch07.a": "left", "ch07.b": "failing", "ch07.c": "done", "ch07.d": "untested"})
+
+    def test_the_next_exercise_is_one_whose_tests_need_no_other_exercise_left(self):
+        # ch07.path needs ch04.lambert (left, in another chapter); ch07.weight needs nothing else.
+        found = [marks.Exercise(n, Path("x.cpp"), 0, 1, stubbed=True) for n in ("ch07.path", "ch07.weight")]
+        results = [self.result("path", False, "not implemented: ch04.lambert — see", ["ch04.lambert", "ch07.path"]),
+                   self.result("weight", False, "not implemented: ch07.weight — see", ["ch07.weight"])]
+        entries = list(test_runs.summarise(found, results, None).values())
+        left = {"ch04.lambert", "ch07.path", "ch07.weight"}
+        upcoming, blocking = test_runs.next_exercise(entries, left)
+        self.assertEqual(upcoming.name, "ch07.weight")
+        # With ch07.weight done, ch07.path is not ready until chapter 04's exercise is written.
+        upcoming, blocking = test_runs.next_exercise([x for x in entries if x["exercise"].name == "ch07.path"],
+                                                     left - {"ch07.weight"})
+        self.assertIsNone(upcoming)
+        self.assertEqual(blocking, {"ch04.lambert"})
+        upcoming, _ = test_runs.next_exercise(entries, {"ch07.path"})
+        self.assertEqual(upcoming.name, "ch07.path")
 
 
 if __name__ == "__main__":

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <vector>
 
-#include "bvh_agreement.hpp"
+#include "02_intersection/bvh_agreement.hpp"
 
 namespace {
 

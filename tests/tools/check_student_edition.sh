@@ -13,7 +13,8 @@ command -v python3 > /dev/null || { echo "check_student_edition.sh: python3 not 
 
 start=$(date +%s)
 python3 "$root/tests/tools/exercises.py" generate "$out" --force
-cmake -S "$out" -B "$out/build" -DCMAKE_BUILD_TYPE=Release > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
+# The edition turns warnings-as-errors off for students; the check turns it back on.
+cmake -S "$out" -B "$out/build" -DCMAKE_BUILD_TYPE=Release -DRT_WARNINGS_AS_ERRORS=ON > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
 mapfile -t targets < <(cmake --build "$out/build" --target help | sed -n 's/^\.\.\. \([A-Za-z0-9_]*_test\)$/\1/p')
 [ ${#targets[@]} -gt 0 ] || { echo "check_student_edition.sh: no test programs in $out/build" >&2; exit 1; }
 echo "building the student edition's test programs: ${targets[*]}"

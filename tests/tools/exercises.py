@@ -79,11 +79,16 @@ def command_status(args: argparse.Namespace) -> int:
     exercises = find_exercises(source)
     results = run_tests(build, args.label, args.jobs)
     summary = summarise(exercises, results, args.label)
+    warn_if_stale(build, source)
+    # Every exercise left in the course, whatever the label: an exercise waits for those its tests need.
+    left = {e.name for e in exercises if e.stubbed} | {
+        name for r in results for name in r.not_implemented()}
     symbols = {"done": "done", "written": "written", "left": "LEFT", "failing": "FAILING", "untested": "untested"}
     by_chapter: dict[str, list[dict]] = {}
     for entry in summary.values():
         by_chapter.setdefault(entry["exercise"].chapter, []).append(entry)
     total_done = 0
+    first = None  # the first chapter's ready exercise: the course's next
     for chapter in sorted(by_chapter):
         entries = by_chapter[chapter]
         done = [x for x in entries if x["state"] == "done"]
@@ -103,16 +108,39 @@ def command_status(args: argparse.Namespace) -> int:
                 waits = bool(set(r.tags) & stubbed)
                 if not r.passed and ((x["state"] == "failing" and not waits) or args.verbose):
                     print(f"              failing: {r.name}" + (" (waits for an exercise left)" if waits else ""))
-        upcoming = next_exercise(entries)
+        upcoming, blocking = next_exercise(entries, left)
         if upcoming:
             print(f"  next: {upcoming.name} in {upcoming.where()} — see {upcoming.reference()}")
+        elif blocking:
+            print(f"  next: none yet; its tests also need {', '.join(sorted(blocking))}")
+        if upcoming and first is None:
+            first = upcoming
     other = [r for r in results if not r.passed and not r.tags]
     if other:
         print(f"{len(other)} failing tests depend on no exercise:")
         for r in other:
             print(f"  {r.label or '?'}: {r.name}")
     print(f"{total_done} of {len(summary)} exercises done; {sum(r.passed for r in results)} of {len(results)} tests pass")
+    if first:
+        print(f"write next: {first.name} in {first.where()} — see {first.reference()}")
     return 0
+
+
+def warn_if_stale(build: Path, source: Path) -> None:
+    """Says so when a source file is newer than the build's newest test program: the results are then
+    those of the code as it was at the last build, not as it is."""
+    programs = [p for p in build.rglob("*_test") if p.is_file()]
+    sources = [p for folder in ("chapters", "common", "tests") for p in (source / folder).rglob("*")
+               if p.suffix in (".cpp", ".hpp") and p.is_file()]
+    if not programs or not sources:
+        return
+    built = max(p.stat().st_mtime for p in programs)
+    newer = [p for p in sources if p.stat().st_mtime > built]
+    if newer:
+        names = ", ".join(str(p.relative_to(source)) for p in sorted(newer)[:3])
+        more = f" and {len(newer) - 3} more" if len(newer) > 3 else ""
+        print(f"warning: {names}{more} changed after the last build of {build}: rebuild first "
+              f"(cmake --build {build}), or these results are of the old code")
 
 
 def command_check(args: argparse.Namespace) -> int:

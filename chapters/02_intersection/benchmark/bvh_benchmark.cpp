@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
 #include "mesh_generator.hpp"
 #include "rt/random.hpp"
 #include "world.hpp"

@@ -1,4 +1,4 @@
-// What the path tracer costs, measured on the course's benchmark scene (the Cornell box of DESIGN.md with a
+// What the path tracer costs, measured on the course's benchmark scene (cornell.json's Cornell box with a
 // diffuse sphere, 600×600, MIS): samples (paths) per second on 1 and 2 threads (the median of `--repeats`
 // renders), whether the image is bit-identical for both, and the time to a relative MSE of 1e-3 against a
 // converged reference (cached as PFM in `--cache`). Targets: >= 3e6 samples/s on 2 threads, 2 threads >= 1.8×
@@ -14,14 +14,14 @@
 #include <thread>
 #include <vector>
 
-#include "camera.hpp"
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
 #include "convergence.hpp"
 #include "path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -70,8 +70,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
     try {
         const Scene scene = load_scene(scene_file);
-        const World world(scene);
-        const LightSet lights = collect_lights(scene);
+        const RenderScene prepared(scene, EffectSet::all());
         PathOptions options;
         options.strategy = sampling_strategy_from_string(sampling);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
@@ -79,7 +78,7 @@ int main(int argc, char** argv) {
         settings.width = settings.height = size;
         settings.seed = 1;
         settings.progress = ProgressStyle::kNone;
-        const PathTracer tracer(world, scene, lights, options);
+        const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
         std::printf("ch06_benchmark: %s, %dx%d, %s, %u hardware threads, load average %s\n",
                     scene_file.c_str(), size, size, sampling.c_str(), std::thread::hardware_concurrency(),
                     load_average().c_str());
@@ -120,8 +119,7 @@ int main(int argc, char** argv) {
 
         // Time to a relative MSE of `target`: relative MSE falls like 1/spp, so the spp that reaches it is
         // predicted from the error at `spp` and then rendered to check.
-        const Reference ref =
-            converged_reference(world, scene, lights, options, camera, settings, reference_spp, cache);
+        const Reference ref = converged_reference(prepared, options, camera, settings, reference_spp, cache);
         std::printf("  reference: %s %s (relative MSE of its own noise %.2e)\n",
                     ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(),
                     ref.noise_relative_mse);

@@ -3,10 +3,11 @@
 //  2. only the effects a scene calls for: chapter 07 against chapter 04 on the box called for shadows and
 //     direct light only, and against chapter 06 on the box without glass (ch06_default.json); the renders
 //     alternate, so both see the same load, and the ratio of the medians is reported;
-//  3. the time to a relative MSE of --target against a converged reference (two halves A and B, cached as
-//     PFM; its own noise mean((A − B)² / (r² + 0.01)) / 4 is subtracted), for this chapter's path tracer
-//     (next-event estimation) and for the strategy without light sampling (chapter 06's "brdf"), each at
-//     growing spp until it is within 4× of the target, extrapolated with relMSE ∝ 1 / spp.
+//  3. the time to a relative MSE of --target on --conv-scene against a converged reference (two halves A and
+//     B, cached as PFM; its own noise mean((A − B)² / (r² + 0.01)) / 4 is subtracted), for chapter 06's loop
+//     with MIS (this chapter's renderer), with next-event estimation alone ("light", what this chapter did
+//     before it rendered through chapter 06's loop) and without light sampling ("brdf"), each at growing spp
+//     until it is within 4× of the target, extrapolated with relMSE ∝ 1 / spp.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -15,16 +16,16 @@
 #include <string>
 #include <vector>
 
+#include "01_ray_generation/camera.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/direct_render.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
-#include "camera.hpp"
-#include "direct_render.hpp"
-#include "light_set.hpp"
-#include "path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
-#include "world.hpp"
 
 namespace {
 
@@ -35,7 +36,7 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-RenderResult chapter07(const Scene& scene, const RenderSettings& settings, BsdfPathOptions options = {}) {
+RenderResult chapter07(const Scene& scene, const RenderSettings& settings, PathOptions options = {}) {
     const EffectSet simulated = needed(scene) & EffectSet::all();
     return render_with(choose_renderer(simulated), scene, simulated, settings, options);
 }
@@ -67,7 +68,7 @@ Image cached_half(const Scene& scene, RenderSettings settings, int spp, std::uin
 }
 
 void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
-         double target, const std::string& cache, bool speed_only);
+         double target, const std::string& cache, bool speed_only, const std::string& conv_scene);
 
 }  // namespace
 
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
     int size = 600, spp = 8, repeats = 3, threads = 2, conv_size = 150, reference_spp = 4096, max_spp = 2048;
     double target = 1e-3;
     std::string cache = ".";
+    std::string conv_scene = "cornell.json";
     app.add_option("--size", size, "Width and height of the timed renders")->check(CLI::Range(8, 4096));
     app.add_option("--spp", spp, "Samples per pixel of each timed render")->check(CLI::Range(1, 1 << 16));
     app.add_option("--repeats", repeats, "Timed renders per row (the median is reported)")
@@ -89,12 +91,14 @@ int main(int argc, char** argv) {
     app.add_option("--max-spp", max_spp, "The largest spp tried for the time to --target")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
+    app.add_option("--conv-scene", conv_scene,
+                   "Scene of the time to --target (default cornell.json; ch07_glossy_glass.json for MIS)");
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     bool speed_only = false;
     app.add_flag("--speed-only", speed_only, "Only the samples per second");
     CLI11_PARSE(app, argc, argv);
     try {
-        run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache, speed_only);
+        run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache, speed_only, conv_scene);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ch07_benchmark: %s\n", e.what());
         return 1;
@@ -105,7 +109,7 @@ int main(int argc, char** argv) {
 namespace {
 
 void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
-         double target, const std::string& cache, bool speed_only) {
+         double target, const std::string& cache, bool speed_only, const std::string& conv_scene) {
     const Scene cornell = load_scene(scene_path("cornell.json"));
     RenderSettings settings;
     settings.width = settings.height = size;
@@ -147,19 +151,21 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
     };
     for (const Pair& p : {Pair{"box, effects shadows+direct: ch07 / ch04", direct_only, true},
                           Pair{"box without glass (ch06_default): ch07 / ch06", no_glass, false}}) {
-        const World world(p.scene);
-        const LightSet lights = collect_lights(p.scene);
-        const PinholeCamera camera = make_pinhole_camera(p.scene.camera, size, size);
         const EffectSet simulated = needed(p.scene) & EffectSet::all();
+        const RenderScene prepared(p.scene, simulated);
+        const PinholeCamera camera = make_pinhole_camera(p.scene.camera, size, size);
         std::vector<double> ours, theirs;
         for (int r = 0; r < repeats; ++r) {
             ours.push_back(chapter07(p.scene, settings).seconds);
             if (p.against_04) {
-                const DirectLighting shading(world, p.scene, lights,
-                                             direct_options(path_options_for(simulated)));
+                DirectOptions direct;
+                direct.simulated = simulated;
+                const DirectLighting shading(prepared.world, prepared.materials, prepared.lights, direct);
                 theirs.push_back(render_direct(shading, camera, settings, FilmPoints::kStratified).seconds);
             } else {
-                const PathTracer tracer(world, p.scene, lights, PathOptions{});
+                PathOptions paths;
+                paths.simulated = simulated;
+                const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, paths);
                 theirs.push_back(render_paths(tracer, camera, settings).seconds);
             }
         }
@@ -169,32 +175,33 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
     }
 
     // 3. Time to the target relative MSE.
+    const Scene converging = load_scene(scene_path(conv_scene.c_str()));
     RenderSettings conv = settings;
     conv.width = conv.height = conv_size;
-    const std::string stem =
-        "ch07_benchmark_reference_" + std::to_string(conv_size) + "_" + std::to_string(reference_spp) + "spp";
+    const std::string stem = "ch07_benchmark_reference_" + std::filesystem::path(conv_scene).stem().string() +
+                             "_" + std::to_string(conv_size) + "_" + std::to_string(reference_spp) + "spp";
     const Image a =
-        cached_half(cornell, conv, reference_spp / 2, 1001, std::filesystem::path(cache) / (stem + "_a.pfm"));
+        cached_half(converging, conv, reference_spp / 2, 1001, std::filesystem::path(cache) / (stem + "_a.pfm"));
     const Image b =
-        cached_half(cornell, conv, reference_spp / 2, 1002, std::filesystem::path(cache) / (stem + "_b.pfm"));
+        cached_half(converging, conv, reference_spp / 2, 1002, std::filesystem::path(cache) / (stem + "_b.pfm"));
     const double noise = relative_mse(a, a, b) / 4;  // (A − r) = (A − B) / 2; the mean's noise is a quarter
     std::printf(
-        "\ntime to relative MSE %.0e, glass Cornell box %dx%d, reference %d spp (its own relative MSE "
-        "%.2e)\n",
-        target, conv_size, conv_size, reference_spp, noise);
+        "\ntime to relative MSE %.0e, %s %dx%d, reference %d spp (its own relative MSE %.2e)\n", target,
+        conv_scene.c_str(), conv_size, conv_size, reference_spp, noise);
     std::printf("%-22s %6s %12s %10s %16s\n", "estimator", "spp", "rel. MSE", "time (s)", "time to target");
-    for (bool nee : {true, false}) {
-        BsdfPathOptions options;
-        options.next_event = nee;
+    for (SamplingStrategy strategy :
+         {SamplingStrategy::kMis, SamplingStrategy::kLight, SamplingStrategy::kBrdf}) {
+        PathOptions options;
+        options.strategy = strategy;
         double estimate = 0;
         for (int n = 1; n <= max_spp; n *= 2) {
             conv.samples_per_pixel = n;
             conv.seed = 7;
-            const RenderResult r = chapter07(cornell, conv, options);
+            const RenderResult r = chapter07(converging, conv, options);
             const double rel = std::max(0.0, relative_mse(r.image, a, b) - noise);
             estimate = r.seconds * rel / target;
-            std::printf("%-22s %6d %12.4e %10.3f %14.3f s\n", nee ? "ch07 (NEE)" : "no light sampling (brdf)",
-                        n, rel, r.seconds, estimate);
+            std::printf("%-22s %6d %12.4e %10.3f %14.3f s\n", to_string(strategy).data(), n, rel, r.seconds,
+                        estimate);
             if (rel < 4 * target) break;
         }
     }

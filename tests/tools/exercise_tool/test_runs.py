@@ -145,12 +145,18 @@ def summarise(exercises: list[Exercise], results: list[TestResult], label: str |
     return summary
 
 
-def next_exercise(entries: list[dict]) -> Exercise | None:
-    """The exercise left to write first: one with a test that needs the fewest other exercises left."""
-    left = {x["exercise"].name for x in entries if x["state"] == "left"}
+def next_exercise(entries: list[dict], left: set[str]) -> tuple[Exercise | None, set[str]]:
+    """The exercise of `entries` to write next, and what it waits for. `left` holds every exercise left in the
+    whole course, not only in these entries: an exercise is ready when one of its tests needs no other
+    exercise left. The ready one whose tests need the fewest is chosen, by name among equals; when none is
+    ready, (None, the exercises left elsewhere that the closest one waits for)."""
+    def waits_for(x: dict) -> set[str]:
+        needs = [set(r.tags) & left - {x["exercise"].name} for r in x["tests"]]
+        return min(needs, key=len) if needs else set()
 
-    def others_needed(x: dict) -> int:
-        return min((len(set(r.tags) & left) for r in x["tests"]), default=99)
-
-    candidates = [x for x in entries if x["state"] == "left"]
-    return min(candidates, key=others_needed)["exercise"] if candidates else None
+    candidates = sorted((x for x in entries if x["state"] == "left"), key=lambda x: x["exercise"].name)
+    if not candidates:
+        return None, set()
+    best = min(candidates, key=lambda x: len(waits_for(x)))
+    blocking = waits_for(best)
+    return (None, blocking) if blocking else (best["exercise"], set())

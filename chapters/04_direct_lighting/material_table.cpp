@@ -1,0 +1,84 @@
+#include "material_table.hpp"
+
+#include <cstdio>
+
+#include "brdf.hpp"
+#include "rt/effects.hpp"
+
+namespace rt {
+namespace {
+
+std::string albedo_text(const Color& albedo) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2g", double(luminance(albedo)));
+    return text;
+}
+
+std::string skipped(Effect effect) {
+    return std::string(kEffectNames[std::size_t(effect)]) + " is not simulated in this run (" +
+           chapter_that_adds(effect) + " adds it)";
+}
+
+}  // namespace
+
+MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks,
+                             Transport transport) {
+    const std::vector<bool> used = scene.used_materials();
+    const bool refraction = simulated.contains(Effect::kRefraction) && hooks.dielectric;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        emission_.push_back(m.emission);
+        std::unique_ptr<Medium> interior;
+        std::unique_ptr<Bsdf> outside, inside;
+        std::string note;
+        const auto lambert_stand_in = [&](const std::string& why) {
+            outside = std::make_unique<LambertBrdf>(m.stand_in_albedo());
+            note = why + "; shaded as Lambert (albedo " + albedo_text(m.stand_in_albedo()) + ")";
+        };
+        switch (m.type) {
+            case MaterialType::kDiffuse:
+                outside = std::make_unique<LambertBrdf>(m.albedo);
+                break;
+            case MaterialType::kMirror:
+                if (simulated.contains(Effect::kReflection)) {
+                    outside = std::make_unique<MirrorBrdf>(m.reflectance);
+                } else {
+                    outside = std::make_unique<MirrorBrdf>(Color(0));
+                    note = skipped(Effect::kReflection) + "; shaded black (it shows only its emission)";
+                }
+                break;
+            case MaterialType::kGlossy:
+            case MaterialType::kRetroreflective:
+                if (!simulated.contains(Effect::kGlossy)) {
+                    lambert_stand_in(skipped(Effect::kGlossy));
+                } else if (m.type == MaterialType::kGlossy) {
+                    outside = std::make_unique<GlossyBrdf>(m.albedo, phong_exponent(m.roughness));
+                } else {
+                    outside = std::make_unique<RetroreflectiveBrdf>(m.albedo, phong_exponent(m.roughness));
+                }
+                break;
+            case MaterialType::kDielectric:
+                if (refraction) {
+                    outside = hooks.dielectric(m, true, transport);
+                    inside = hooks.dielectric(m, false, transport);
+                    if (hooks.dielectric_interior) interior = hooks.dielectric_interior(m);
+                } else {
+                    lambert_stand_in(skipped(Effect::kRefraction));
+                }
+                break;
+        }
+        const Bsdf* out = outside.get();
+        const Bsdf* in = inside ? inside.get() : out;  // a reflector looks the same from both sides
+        owned_.push_back(std::move(outside));
+        if (inside) owned_.push_back(std::move(inside));
+        sides_.push_back(out);
+        sides_.push_back(in);
+        interiors_.push_back(std::move(interior));
+        if (used[i] && !note.empty()) {
+            notes_.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+                             "': " + note);
+        }
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,74 @@
+// The material table: the one place where a render turns the scene's materials into what it simulates.
+// Built once per render from the Scene and the simulated effects, it holds for every material
+//   - its Bsdf seen from each side: outside (the side its shape's outward normal points to) and inside, so a
+//     dielectric seen from inside has η = 1 / ior, and the path loops never ask which side they are on;
+//   - its emission (one-sided: from the outside only);
+//   - what fills the inside of its shapes (a Medium: chapter 07's Beer–Lambert absorption), if anything.
+// What a chapter cannot simulate gets a stand-in here, and only here, with a note for the run's summary:
+//   a dielectric without refraction:     Lambert of Material::stand_in_albedo() (0.73);
+//   a glossy lobe without "glossy":      Lambert of its albedo;
+//   a mirror without "reflection":       black (it shows only its emission).
+// Chapter 04 knows the four BRDFs; a later chapter adds what it simulates through MaterialHooks, so the table
+// grows without this chapter including the later one.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bsdf.hpp"
+#include "rt/effect_set.hpp"
+#include "rt/scene.hpp"
+
+namespace rt {
+
+// What fills the inside of a shape. Chapter 07 has absorbing glass; chapter 09 adds scattering media.
+class Medium {
+  public:
+    virtual ~Medium() = default;
+    // The fraction of radiance left after `distance` inside it, per colour channel.
+    virtual Color transmittance(Real distance) const = 0;
+};
+
+// What a path carries: radiance (from the camera, chapters 04–07) or importance (from the lights, chapter
+// 08). A BSDF that refracts treats them differently: radiance crossing an interface scales by 1 / η², power
+// does not (the BTDF is not symmetric).
+enum class Transport { kRadiance, kImportance };
+
+// The makers a later chapter hands the table for the materials it simulates.
+struct MaterialHooks {
+    // With refraction simulated: the BSDF of a dielectric seen from outside (true) or inside, and what fills
+    // it (null for clear glass).
+    std::function<std::unique_ptr<Bsdf>(const Material&, bool outside, Transport)> dielectric;
+    std::function<std::unique_ptr<Medium>(const Material&)> dielectric_interior;
+};
+
+class MaterialTable {
+  public:
+    MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks = {},
+                  Transport transport = Transport::kRadiance);
+
+    // The BSDF at a hit on material m, from the side the ray came from (Hit::front_face).
+    const Bsdf& bsdf(int material, bool front_face = true) const {
+        return *sides_[2 * std::size_t(material) + (front_face ? 0 : 1)];
+    }
+    // What the ray meets when it hits material m from that side: its emission, only on the outside.
+    Color emission(int material, bool front_face) const {
+        return front_face ? emission_[std::size_t(material)] : Color(0);
+    }
+    // The medium inside material m's shapes (null: nothing there, the ray travels unattenuated).
+    const Medium* interior(int material) const { return interiors_[std::size_t(material)].get(); }
+    // One line per used material shaded by a stand-in: what it is shaded as, and the chapter that adds it.
+    const std::vector<std::string>& notes() const { return notes_; }
+    std::size_t size() const { return emission_.size(); }
+
+  private:
+    std::vector<std::unique_ptr<Bsdf>> owned_;
+    std::vector<const Bsdf*> sides_;  // 2 per material: outside, inside
+    std::vector<Color> emission_;
+    std::vector<std::unique_ptr<Medium>> interiors_;
+    std::vector<std::string> notes_;
+};
+
+}  // namespace rt
