@@ -3,9 +3,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/aabb.hpp"
+#include "02_intersection/bvh_agreement.hpp"
 #include "02_intersection/intersection_render.hpp"
 #include "02_intersection/leak_probe.hpp"
 #include "02_intersection/mesh_generator.hpp"
@@ -171,18 +173,10 @@ TEST_CASE("Generated spheres are closed meshes with the announced triangle count
     }
 }
 
-TEST_CASE("The BVH holds every primitive once, in boxes that contain their children", "[bvh]") {
-    Pcg32 rng(7, 1);
-    std::vector<Aabb> boxes;
-    for (int i = 0; i < 500; ++i) {
-        Aabb b;
-        const Vec3 c{rng.next_real() * 10, rng.next_real() * 10, rng.next_real() * 10};
-        b.extend(c);
-        b.extend(c + Vec3{rng.next_real(), rng.next_real(), rng.next_real()});
-        boxes.push_back(b);
-    }
-    std::vector<std::uint32_t> order;
-    const Bvh bvh(boxes, order);
+namespace {
+
+// Every primitive in exactly one leaf, every box containing its children's and its primitives' boxes.
+void check_hierarchy(const Bvh& bvh, std::span<const Aabb> boxes, const std::vector<std::uint32_t>& order) {
     std::vector<int> seen(boxes.size(), 0);
     for (std::size_t n = 0; n < bvh.nodes().size(); ++n) {
         const BvhNode& node = bvh.nodes()[n];
@@ -201,6 +195,23 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
         }
     }
     for (int s : seen) CHECK(s == 1);
+}
+
+}  // namespace
+
+TEST_CASE("The BVH holds every primitive once, in boxes that contain their children", "[bvh]") {
+    Pcg32 rng(7, 1);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 500; ++i) {
+        Aabb b;
+        const Vec3 c{rng.next_real() * 10, rng.next_real() * 10, rng.next_real() * 10};
+        b.extend(c);
+        b.extend(c + Vec3{rng.next_real(), rng.next_real(), rng.next_real()});
+        boxes.push_back(b);
+    }
+    std::vector<std::uint32_t> order;
+    const Bvh bvh(boxes, order);
+    check_hierarchy(bvh, boxes, order);
     CHECK(bvh.bytes() <= boxes.size() * 64);  // the lesson's memory target: 64 bytes per primitive at most
 }
 
@@ -567,6 +578,142 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
     CHECK(hits > 10000);
     CHECK(mismatches == 0);
     CHECK(occlusion_mismatches == 0);
+}
+
+namespace {
+
+// A random point of the box [-1, 1]³ scaled by `size` about `center`, in double so that neither a tiny size
+// (1e-40, below float's normal range) nor a huge one loses the point.
+Vec3 point_near(Pcg32& rng, const Vec3d& center, double size) {
+    const Vec3d u{rng.next_real(), rng.next_real(), rng.next_real()};
+    return Vec3(center + (u * 2.0 - 1.0) * size);
+}
+
+// `count` rays from around the soup's box toward points inside it: their direction is normalised in double
+// (float's length of a 1e-40 vector underflows to zero), half of them with a t_max inside the box.
+std::vector<BvhQuery> rays_at(Pcg32& rng, const Vec3d& center, double size, int count) {
+    std::vector<BvhQuery> queries;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 origin = point_near(rng, center, 3 * size);
+        const Vec3d d = Vec3d(point_near(rng, center, size)) - Vec3d(origin);
+        const Real t_max = i % 2 ? kInfinity : Real(3 * size * double(rng.next_real()));
+        if (glm::length(d) > 0) queries.push_back({Ray{origin, Vec3(glm::normalize(d))}, t_max});
+    }
+    return queries;
+}
+
+// The soup's BVH: built without a fault, every primitive once in boxes containing their children, and every
+// ray answered as by testing every triangle. Returns how many rays hit something (brute force).
+int check_soup(const std::vector<Vec3>& corners, std::span<const BvhQuery> queries) {
+    const Scene scene = triangle_soup(corners);
+    std::vector<Aabb> boxes;
+    for (std::size_t i = 0; i + 2 < corners.size(); i += 3) {
+        Aabb b;
+        for (std::size_t k = 0; k < 3; ++k) b.extend(corners[i + k]);
+        boxes.push_back(b);
+    }
+    std::vector<std::uint32_t> order;
+    const Bvh bvh(boxes, order);
+    check_hierarchy(bvh, boxes, order);
+    const auto disagreement = first_bvh_disagreement(scene, queries);
+    INFO((disagreement ? *disagreement : std::string("every ray agrees")));
+    CHECK_FALSE(disagreement);
+    const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
+    int hits = 0;
+    for (const BvhQuery& q : queries) hits += brute.intersect(q.ray, q.t_max) ? 1 : 0;
+    return hits;
+}
+
+}  // namespace
+
+TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, on one line",
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
+    Pcg32 rng(3, 14);
+    const Vec3d center{0.5, -2, 7};
+    std::vector<Vec3> point(3 * 600, Vec3(center));
+    std::vector<Vec3> plane, line, across_line;
+    for (int i = 0; i < 3 * 600; ++i) {
+        Vec3 p = point_near(rng, center, 4);
+        p.z = Real(center.z);
+        plane.push_back(p);
+        line.push_back(Vec3(center) + Vec3(rng.next_real() * 8, 0, 0));
+    }
+    for (int i = 0; i < 600; ++i) {  // triangles across the x axis: their centroids all on one line
+        const Vec3 c = Vec3(center) + Vec3(rng.next_real() * 8, 0, 0);
+        across_line.insert(across_line.end(), {c + Vec3(0, -1, -1), c + Vec3(0, 1, -1), c + Vec3(0, 0, 1)});
+    }
+    SECTION("one point: nothing is ever hit") { CHECK(check_soup(point, rays_at(rng, center, 4, 2000)) == 0); }
+    SECTION("one plane") { CHECK(check_soup(plane, rays_at(rng, center, 4, 4000)) > 400); }
+    SECTION("one line: no triangle has an area") { CHECK(check_soup(line, rays_at(rng, center, 4, 2000)) == 0); }
+    SECTION("centroids on one line") { CHECK(check_soup(across_line, rays_at(rng, center, 4, 4000)) > 200); }
+}
+
+TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e30 and across them",
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test]") {
+    Pcg32 rng(5, 40);
+    // `count` boxes near `center`, each of size 10^e for e drawn from [low, high].
+    auto boxes_near = [&](const Vec3d& center, double spread, double low, double high, int count) {
+        std::vector<Aabb> boxes;
+        for (int i = 0; i < count; ++i) {
+            const Vec3 c = point_near(rng, center, spread);
+            const double size = std::pow(10.0, low + (high - low) * double(rng.next_real()));
+            Aabb b;
+            for (int k = 0; k < 2; ++k) b.extend(Vec3(Vec3d(c) + Vec3d(point_near(rng, Vec3d(0), size))));
+            boxes.push_back(b);
+        }
+        return boxes;
+    };
+    // Boxes as primitives, hit at their exact entry: the BVH must return exactly the brute-force minimum.
+    auto check = [&](const std::vector<Aabb>& boxes, std::span<const BvhQuery> queries) {
+        std::vector<std::uint32_t> order;
+        check_hierarchy(Bvh(boxes, order), boxes, order);
+        const auto disagreement = first_box_disagreement(boxes, queries);
+        INFO((disagreement ? *disagreement : std::string("every ray agrees")));
+        CHECK_FALSE(disagreement);
+    };
+    for (const double scale : {1e-44, 1e-40, 1e-30, 1e-20, 1e-5, 1e5, 1e20, 1e30}) {
+        INFO("boxes of size " << scale << " in a cloud 10 times that");
+        check(boxes_near(Vec3d(0), 10 * scale, std::log10(scale), std::log10(scale), 700),
+              rays_at(rng, Vec3d(0), 10 * scale, 2000));
+        INFO("the same 1e6 sizes away from the origin");
+        check(boxes_near(Vec3d(1e6 * scale), 10 * scale, std::log10(scale), std::log10(scale), 700),
+              rays_at(rng, Vec3d(1e6 * scale), 10 * scale, 2000));
+    }
+    // Sizes from 1e-30 to 1e30 in one cloud, rays aimed at the cloud and at some of its tiny boxes.
+    const auto mixed = boxes_near(Vec3d(0), 1e30, -30, 30, 1500);
+    auto queries = rays_at(rng, Vec3d(0), 1e30, 2000);
+    for (std::size_t i = 0; i < mixed.size() && i < 300; ++i) {
+        const Vec3d c = (Vec3d(mixed[i].min) + Vec3d(mixed[i].max)) / 2.0;
+        const auto near = rays_at(rng, c, glm::length(Vec3d(mixed[i].max) - Vec3d(mixed[i].min)), 3);
+        queries.insert(queries.end(), near.begin(), near.end());
+    }
+    check(mixed, queries);
+    // Rays whose direction has a subnormal x (float's 1 / d_x overflows), starting a few subnormals short of
+    // the face x = 0 every box starts at: they enter the boxes at t = (0 − o_x) / d_x, about 1e-5.
+    auto at_face = boxes_near(Vec3d(0), 10, -1, 1, 1500);
+    for (Aabb& b : at_face) b.min.x = 0, b.max.x = std::abs(b.max.x) + 1;
+    std::vector<BvhQuery> nearly_parallel;
+    for (int i = 0; i < 2000; ++i) {
+        Vec3 origin = point_near(rng, Vec3d(0), 12);
+        origin.x = -std::numeric_limits<Real>::denorm_min() * Real(1 + i % 64);
+        const Vec3 d{Real(1e-40) * (1 + rng.next_real()), rng.next_real() - Real(0.5), 1};
+        nearly_parallel.push_back({Ray{origin, d}, kInfinity});
+    }
+    check(at_face, nearly_parallel);
+}
+
+TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit through the BVH",
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
+    Pcg32 rng(6, 12);
+    for (const double scale : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
+        INFO("triangles of size " << scale << " in a cloud 10 times that");
+        std::vector<Vec3> corners;
+        for (int i = 0; i < 800; ++i) {
+            const Vec3 c = point_near(rng, Vec3d(0), 10 * scale);
+            for (int k = 0; k < 3; ++k) corners.push_back(Vec3(Vec3d(c) + Vec3d(point_near(rng, Vec3d(0), scale))));
+        }
+        CHECK(check_soup(corners, rays_at(rng, Vec3d(0), 10 * scale, 3000)) > 300);
+    }
 }
 
 TEST_CASE("A quad packet gives intersect_quad's nearest hit bit for bit, on hard cases too",

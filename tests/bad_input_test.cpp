@@ -19,9 +19,13 @@
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
+#include "rt/interrupt.hpp"
+#include "rt/obj_parser.hpp"
 #include "rt/pixel_sums.hpp"
+#include "rt/printable.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/staged_file.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -132,12 +136,11 @@ TEST_CASE("Scenes at the edge of what is allowed still load", "[bad_input]") {
         parse_scene(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1], "vfov": 179.9}})", "e.json"));
 }
 
-TEST_CASE("A scene image too large for memory is refused before allocation, with the size it needs",
-          "[bad_input]") {
+TEST_CASE("A scene's image too large for memory loads: the size refused is the one rendered", "[bad_input]") {
     const std::string text = "{" + std::string(kCamera) + R"(, "image": {"width": 65536, "height": 65536}})";
-    CHECK_THAT(error_of([&] { parse_scene(text, "huge.json"); }),
-               Catch::StartsWith("huge.json: image: image size 65536x65536 needs " +
-                                 gigabytes_of_buffers(65536, 65536) +
+    CHECK(parse_scene(text, "huge.json").image.width == 65536);
+    CHECK_THAT(error_of([] { check_image_size(65536, 65536); }),
+               Catch::StartsWith("image size 65536x65536 needs " + gigabytes_of_buffers(65536, 65536) +
                                  " of buffers, more than half of this machine's"));
 }
 
@@ -165,27 +168,51 @@ TEST_CASE("A reference image that is missing, a folder, not PFM, truncated or no
     in_folder(folder, [&] {
         CHECK(error_of([] { read_pfm("absent.pfm"); }) == "absent.pfm: must be a PFM file, got no such file");
         fs::create_directories("folder.pfm");
-        CHECK(error_of([] { read_pfm("folder.pfm"); }) ==
-              "folder.pfm: must be a PFM file, got something else (a folder?)");
+        CHECK(error_of([] { read_pfm("folder.pfm"); }) == "folder.pfm: must be a PFM file, got a folder");
+        fs::create_symlink("loop_b.pfm", "loop_a.pfm");
+        fs::create_symlink("loop_a.pfm", "loop_b.pfm");
+        CHECK(error_of([] { read_pfm("loop_a.pfm"); }) ==
+              "loop_a.pfm: must be a PFM file, got a path that cannot be followed (Too many levels of symbolic "
+              "links)");
         std::ofstream("p6.pfm") << "P6\n4 4\n255\n";
         CHECK(error_of([] { read_pfm("p6.pfm"); }) ==
               "p6.pfm: must be a colour PFM file starting with \"PF\", got \"P6\"");
         std::ofstream("zero.pfm") << "PF\n0 4\n-1.0\n";
         CHECK(error_of([] { read_pfm("zero.pfm"); }) ==
-              "zero.pfm: PFM header must give a width and height in [1, 65536] and a non-zero scale, got 0 4 "
-              "-1.000000");
+              "zero.pfm: PFM header must give a width and height in [1, 65536] and a non-zero scale, got 0 4 -1");
+        std::ofstream("big_scale.pfm") << "PF\n0 4\n-1e308\n";
+        CHECK(error_of([] { read_pfm("big_scale.pfm"); }) ==
+              "big_scale.pfm: PFM header must give a width and height in [1, 65536] and a non-zero scale, got 0 4 "
+              "-1e+308");
         // A header that promises 51 GB is refused by the file's size, before anything is allocated.
         std::ofstream("huge.pfm") << "PF\n65536 65536\n-1.0\n" << std::string(100, 'x');
         CHECK(error_of([] { read_pfm("huge.pfm"); }) ==
               "huge.pfm: PFM data must be 51539607552 bytes for 65536x65536, got 100 (truncated)");
-        {
-            std::ofstream nan_file("nan.pfm", std::ios::binary);
-            nan_file << "PF\n1 1\n-1.0\n";
-            const float rgb[3] = {0.5f, std::numeric_limits<float>::quiet_NaN(), 1};
-            nan_file.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
-        }
+        // One pixel of the given value, under the given header.
+        auto pfm = [](const char* file, const char* header, float r, float g, float b) {
+            std::ofstream out(file, std::ios::binary);
+            out << header;
+            const float rgb[3] = {r, g, b};
+            out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
+        };
+        pfm("nan.pfm", "PF\n1 1\n-1.0\n", 0.5f, std::numeric_limits<float>::quiet_NaN(), 1);
         CHECK(error_of([] { read_pfm("nan.pfm"); }) ==
-              "nan.pfm: pixel (0, 0) must be finite, got 0.500000 nan 1.000000");
+              "nan.pfm: pixel (0, 0) must be finite, got 0.5 nan 1");
+        // A reference is radiance: never negative.
+        pfm("negative.pfm", "PF\n1 1\n-1.0\n", 0.5f, -0.25f, 1);
+        CHECK(read_pfm("negative.pfm").at(0, 0) == Color(0.5f, -0.25f, 1));
+        CHECK(error_of([] { read_pfm("negative.pfm", PfmPixels::kRadiance); }) ==
+              "negative.pfm: pixel (0, 0) must be finite radiance, >= 0, got 0.5 -0.25 1");
+        pfm("minus_1e30.pfm", "PF\n1 1\n-1.0\n", -1e30f, 0, 0);
+        CHECK(error_of([] { read_pfm("minus_1e30.pfm", PfmPixels::kRadiance); }) ==
+              "minus_1e30.pfm: pixel (0, 0) must be finite radiance, >= 0, got -1.00000002e+30 0 0");
+        // A CRLF header would shift every pixel by one byte: it is named, not read as a NaN pixel.
+        pfm("crlf.pfm", "PF\r\n1 1\r\n-1.0\r\n", 0.5f, 0.5f, 0.5f);
+        CHECK(error_of([] { read_pfm("crlf.pfm"); }) ==
+              "crlf.pfm: PFM header must end in one whitespace byte before the pixels, got \"\\r\\n\" (a "
+              "Windows line end)");
+        pfm("good.pfm", "PF\n1 1\n-1.0\n", 0.5f, 0, 2);
+        CHECK(read_pfm("good.pfm").at(0, 0) == Color(0.5f, 0, 2));
     });
     fs::remove_all(folder);
 }
@@ -255,7 +282,7 @@ TEST_CASE("A write that fails (file too large) leaves the earlier file as it was
         CHECK(contents("keep.png") == "earlier png");
         CHECK(contents("keep.pfm") == "earlier pfm");
         for (const auto& entry : fs::directory_iterator(".")) {
-            CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
+            CHECK(entry.path().filename().string().find(".staging") == std::string::npos);
         }
         // Without the limit, the same writes replace the files whole.
         write_pfm(noise, "keep.pfm");
@@ -356,5 +383,241 @@ TEST_CASE("An OBJ file cannot make the loader open another file through mtllib",
         "shapes": [{"type": "mesh", "file": "m.obj", "material": "w"}]})",
                                     folder / "m.json");
     CHECK(std::get<MeshShape>(scene.shapes[0].geometry).triangles.size() == 1);
+    fs::remove_all(folder);
+}
+
+TEST_CASE("Every number of an OBJ file is read strictly, and an error names its line and column",
+          "[bad_input][obj]") {
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    auto obj_error = [](const std::string& text) { return error_of([&] { parse_obj(text, 1e9); }); };
+    const std::string vertex = "must be a finite number of magnitude at most 1e+09, got ";
+    CHECK(obj_error(tri + "v nan 0 0\nf 1 2 3\n") == "line 4, column 3: " + vertex + "\"nan\"");
+    CHECK(obj_error(tri + "v 0 -inf 0\n") == "line 4, column 5: " + vertex + "\"-inf\"");
+    CHECK(obj_error("v abc def ghi\n") == "line 1, column 3: " + vertex + "\"abc\"");
+    CHECK(obj_error("v 1 2 3x\n") == "line 1, column 7: " + vertex + "\"3x\"");
+    CHECK(obj_error("v 1e400 0 0\n") == "line 1, column 3: " + vertex + "\"1e400\" (beyond a double)");
+    CHECK(obj_error("v 0 0 2e9\n") == "line 1, column 7: " + vertex + "\"2e9\"");
+    CHECK(obj_error(tri + "v -1 0\n") ==
+          "line 4, column 1: a vertex must have 3 coordinates x y z (then w, or r g b), got 2 number(s)");
+    const std::string index =
+        "vertex index must be a whole number in [1, 3] (or negative, counting back from the last), got ";
+    CHECK(obj_error(tri + "f 1 2 3abc\n") == "line 4, column 7: " + index + "\"3abc\"");
+    CHECK(obj_error(tri + "f 1 2 3.7\n") == "line 4, column 7: " + index + "\"3.7\"");
+    CHECK(obj_error(tri + "f 1 2 4294967299\n") == "line 4, column 7: " + index + "\"4294967299\"");
+    CHECK(obj_error(tri + "f 1 2 99999999999999999999\n") ==
+          "line 4, column 7: " + index + "\"99999999999999999999\"");
+    CHECK(obj_error(tri + "f 1 2 0\n") == "line 4, column 7: " + index + "\"0\"");
+    CHECK(obj_error(tri + "f 1 2 -4\n") == "line 4, column 7: " + index + "\"-4\"");
+    CHECK(obj_error(tri + "f 1 2 +3\n") == "line 4, column 7: " + index + "\"+3\"");
+    CHECK(obj_error(tri + "f 1 2 4\n") == "line 4, column 7: " + index + "\"4\"");  // checked at the end
+    CHECK(obj_error(tri + "f 1 2\n") == "line 4, column 1: a face must have at least 3 vertices, got 2");
+    CHECK(obj_error(tri + "f 1/1 2 3\n") ==
+          "line 4, column 5: texture coordinate index must be a whole number in [1, 0] (or negative, counting "
+          "back from the last), got \"1\"");
+    CHECK(obj_error(tri + "vn 0 0 x\n") == "line 4, column 8: " + vertex + "\"x\"");
+    CHECK(obj_error(tri + "curv 0 1 2\n") ==
+          "line 4, column 1: unknown statement \"curv\"; expected v, vt, vn, f, o, g, s, usemtl, mtllib, l or p");
+    CHECK(obj_error("v 0 0 0\n\x01 1 2\n") ==
+          "line 2, column 1: unknown statement \"\\x01\"; expected v, vt, vn, f, o, g, s, usemtl, mtllib, l or p");
+
+    // What is allowed: a byte order mark, CRLF, comments, w and colours, vt and vn, every corner form,
+    // negative indices, forward references, polygons.
+    const ObjMesh m = parse_obj(
+        "\xEF\xBB\xBFv 0 0 0 1\r\nv 1 0 0 0.5 0.5 0.5\r\n# a comment\nv 0 1 0 # after a vertex\nvt 0 1\n"
+        "vn 0 0 1\ng part\ns off\nf 1/1/1 2//1 -1/1\nf 1 2 3 4\nv 1 1 0\n",
+        1e9);
+    REQUIRE(m.positions.size() == 4);
+    REQUIRE(m.faces.size() == 2);
+    CHECK(m.faces[0].vertices == std::vector<std::uint32_t>{0, 1, 2});
+    CHECK(m.faces[1].vertices == std::vector<std::uint32_t>{0, 1, 2, 3});
+    CHECK(m.faces[1].line == 10);
+    CHECK(m.positions[1] == Vec3(1, 0, 0));
+}
+
+TEST_CASE("An OBJ mesh whose every face has no area is refused, as a lone triangle of no area is",
+          "[bad_input][obj]") {
+    const fs::path folder = temporary_folder();
+    std::ofstream(folder / "flat.obj") << "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 3 3 3\nf 1 2 3\nf 2 3 4 1\n";
+    std::ofstream(folder / "one_good.obj") << "v 0 0 0\nv 1 1 1\nv 2 2 2\nv 0 1 0\nf 1 2 3\nf 1 2 4\n";
+    auto scene = [&](const std::string& obj, const std::string& transform) {
+        return "{" + std::string(kCamera) + R"(, "materials": {"w": {"type": "diffuse"}},
+            "shapes": [{"type": "mesh", "file": ")" + obj + R"(", "material": "w")" + transform + "}]}";
+    };
+    CHECK(error_of([&] { parse_scene(scene("flat.obj", ""), folder / "s.json"); }) ==
+          shown(folder / "s.json") + ": shapes[0].file: " + shown(folder / "flat.obj") +
+              ": must have at least one face with an area, got 3 triangle(s), each with repeated or collinear "
+              "vertices");
+    CHECK(parse_scene(scene("one_good.obj", ""), folder / "s.json").shapes.size() == 1);
+    // Scaled down until float's cross product underflows: no face has an area left.
+    CHECK_THAT(error_of([&] { parse_scene(scene("one_good.obj", R"(, "transform": {"scale": 1e-30})"),
+                                          folder / "s.json"); }),
+               Catch::EndsWith("each with repeated or collinear vertices after the transform"));
+    fs::remove_all(folder);
+}
+
+TEST_CASE("A key given twice in one object is refused, naming the key and both places", "[bad_input][json]") {
+    CHECK(error_of([] {
+              parse_scene("{\"camera\": {\"from\": [0, 0, 5], \"at\": [0, 0, 0], \"from\": [1, 0, 5]}}", "d.json");
+          }) == "d.json: camera: key \"from\" given twice, at line 1, column 13 and line 1, column 49");
+    CHECK(error_of([] {
+              parse_scene("{\"camera\": {\"from\": [0, 0, 5], \"at\": [0, 0, 0]},\n \"shapes\": [{}, {\"a\\\"b\": 1,\n"
+                          "   \"a\\\"b\": 2}]}",
+                          "d.json");
+          }) == "d.json: shapes[1]: key \"a\"b\" given twice, at line 2, column 18 and line 3, column 4");
+    CHECK(error_of([] { parse_scene("{\"camera\": 1, \"camera\": 2}", "d.json"); }) ==
+          "d.json: key \"camera\" given twice, at line 1, column 2 and line 1, column 15");
+    // Equal keys in different objects are not duplicates.
+    CHECK_NOTHROW(parse_scene(
+        "{\"camera\": {\"from\": [0, 0, 5], \"at\": [0, 0, 0]}, \"materials\": {\"a\": {\"type\": \"diffuse\"}, "
+        "\"b\": {\"type\": \"diffuse\"}}, \"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, "
+        "\"material\": \"a\"}, {\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"b\"}]}",
+        "d.json"));
+}
+
+TEST_CASE("Paths in messages are quoted and escaped when they hold anything but plain characters",
+          "[bad_input][message]") {
+    CHECK(shown("renders/x-1.png") == "renders/x-1.png");
+    CHECK(shown("a b.png") == "\"a b.png\"");
+    CHECK(shown("a\nb.png") == "\"a\\nb.png\"");
+    CHECK(shown("\x1b[31mred.png") == "\"\\x1b[31mred.png\"");
+    CHECK(shown("say \"hi\".png") == "\"say \\\"hi\\\".png\"");
+    CHECK(shown("") == "\"\"");
+    CHECK(error_of([] { check_writable("no\nsuch/x.png"); }) ==
+          "\"no\\nsuch/x.png\": cannot be written: folder \"no\\nsuch\" does not exist");
+    CHECK(error_of([] { load_scene("two\nlines.json"); }) ==
+          "\"two\\nlines.json\": must be a scene file (JSON), got no such file");
+}
+
+TEST_CASE("Staging names are short, unique per process, never someone else's, and removed on every path",
+          "[bad_input][staging]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        auto staged_names = [] {
+            std::vector<std::string> names;
+            for (const auto& e : fs::directory_iterator(".")) {
+                if (e.path().filename().string().ends_with(".staging")) names.push_back(e.path().filename());
+            }
+            return names;
+        };
+        const std::string longest(251, 'n');  // 255 bytes with ".png": the longest name a folder takes
+        {
+            StagedFile a(longest + ".png"), b(longest + ".png");
+            const auto names = staged_names();
+            REQUIRE(names.size() == 2);
+            CHECK(names[0] != names[1]);
+            for (const std::string& n : names) {
+                CHECK(n.size() <= 40);
+                CHECK(n.find(std::to_string(::getpid())) != std::string::npos);
+            }
+        }
+        CHECK(staged_names().empty());  // removed, never committed
+        {
+            StagedFile c("kept.png");
+            std::fputs("whole", c.file());
+            c.commit();
+        }
+        CHECK(contents("kept.png") == "whole");
+        CHECK(staged_names().empty());
+        // A signal handler's removal: every live staging file goes, the committed ones stay.
+        {
+            StagedFile d("d.png");
+            StagedFile e("e.png");
+            std::fputs("e", e.file());
+            e.commit();
+            CHECK(staged_names().size() == 1);
+            remove_staged_files_now();
+            CHECK(staged_names().empty());
+            CHECK(contents("e.png") == "e");
+        }
+        // The names the old code used for someone else's file (m.obj.tmp) and for its own stay untouched.
+        std::ofstream("m.obj.tmp") << "theirs";
+        check_writable("m.obj");
+        CHECK(contents("m.obj.tmp") == "theirs");
+        // A folder that takes no new file is found by the probe: /proc takes none, even for root.
+        CHECK_THAT(error_of([] { check_writable("/proc/x.png"); }),
+                   Catch::StartsWith("/proc/x.png: cannot be written: folder /proc does not take a new file"));
+        CHECK_NOTHROW(check_writable(longest + ".png"));
+        CHECK_THAT(error_of([&] { check_writable(longest + ".partial.png"); }),
+                   Catch::EndsWith(": cannot be written: its name is 263 bytes, longer than the 255 its folder takes"));
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("Empty and overflowing flag values are refused, never replaced", "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const std::vector<std::string> base{"--width", "4", "--height", "3", "--quiet", "--out", "w.png"};
+        auto status = [&](std::vector<std::string> extra) {
+            std::vector<std::string> args = base;
+            args.insert(args.end(), extra.begin(), extra.end());
+            return run_fake_chapter(args, [](const RunContext& c) -> std::optional<ChapterRun> {
+                return fake_run(c, Color(1), false, 12);
+            });
+        };
+        for (const auto& bad : std::vector<std::vector<std::string>>{
+                 {"--scene", ""}, {"--out", ""}, {"--reference", ""}, {"--seed", "18446744073709551616"},
+                 {"--seed", " -1"}, {"--seed", "-1"}, {"--seed", "0x10"}, {"--seed", "010"}, {"--seed", "1 "},
+                 {"--spp", "1e1"}, {"--threads", "+1"}, {"--out", ".png"}, {"--out", "folder/"}}) {
+            INFO(bad[0] << " \"" << bad[1] << "\"");
+            CHECK(status(bad) == kExitBadInput);
+            CHECK(fs::is_empty("."));
+        }
+        CHECK(status({"--seed", "18446744073709551615"}) == kExitOk);
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("A reference that is the output's own PFM is refused, not overwritten", "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        write_pfm(Image(4, 3), "r.pfm");
+        fs::create_symlink("r.pfm", "link.pfm");
+        const auto before = contents("r.pfm");
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"--out", "r.png", "--reference", "r.pfm"},
+              std::vector<std::string>{"--out", "./r.png", "--reference", "link.pfm"},
+              std::vector<std::string>{"--out", "r.png", "--reference", "r.partial.pfm"}}) {
+            std::vector<std::string> all{"--width", "4", "--height", "3", "--quiet"};
+            all.insert(all.end(), args.begin(), args.end());
+            CHECK(run_fake_chapter(all, [](const RunContext& c) -> std::optional<ChapterRun> {
+                      return fake_run(c, Color(1), false, 12);
+                  }) == kExitBadInput);
+        }
+        CHECK(contents("r.pfm") == before);
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("The image size validated is the one rendered: flags may override a scene's too large image",
+          "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        std::ofstream("huge.json") << "{" << kCamera << R"(, "image": {"width": 65536, "height": 65536}})";
+        auto render = [](const RunContext& c) -> std::optional<ChapterRun> {
+            return fake_run(c, Color(1), false, 12);
+        };
+        CHECK(run_fake_chapter({"--scene", "huge.json", "--quiet", "--out", "h.png"}, render) == kExitBadInput);
+        CHECK(run_fake_chapter({"--scene", "huge.json", "--width", "4", "--height", "3", "--quiet", "--out", "h.png"},
+                               render) == kExitOk);
+        CHECK(fs::exists("h.png"));
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("An interrupt once the render is done lets the complete image be written, and says so",
+          "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const int status = run_fake_chapter({"--width", "4", "--height", "3", "--quiet", "--out", "i.png"},
+                                            [](const RunContext& c) -> std::optional<ChapterRun> {
+                                                set_interrupt_requested(true);  // as if Ctrl-C came now
+                                                return fake_run(c, Color(1), false, 12);
+                                            });
+        set_interrupt_requested(false);
+        set_interrupt_phase(InterruptPhase::kRendering);
+        CHECK(status == 130);
+        CHECK(read_pfm("i.pfm").at(1, 1) == Color(1));  // the complete image, not a partial one
+        CHECK_FALSE(fs::exists("i.partial.pfm"));
+    });
     fs::remove_all(folder);
 }

@@ -15,6 +15,7 @@
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
+#include "rt/interrupt.hpp"
 #include "rt/random.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene_loader.hpp"
@@ -60,14 +61,16 @@ TEST_CASE("A PFM written and read back is the same image, bit for bit", "[image]
 }
 
 TEST_CASE("A PNG is written whole under its name, with no temporary file left", "[image]") {
-    const fs::path folder = temporary_folder();
+    const fs::path folder = temporary_folder() / "png_alone";
+    fs::create_directories(folder);
     Image image(4, 3);
     image.at(1, 1) = Color(0.5f);
     write_png(image, folder / "picture.png");
     CHECK(fs::file_size(folder / "picture.png") > 0);
-    for (const auto& entry : fs::directory_iterator(folder)) {
-        CHECK(entry.path().filename().string().find(".partial-") == std::string::npos);
-    }
+    // Nothing else: no staging file (.rt-PID-N.staging) is left beside it.
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    CHECK(names == std::vector<std::string>{"picture.png"});
 }
 
 TEST_CASE("A PNG written and read back holds the tone-mapped, sRGB-encoded bytes", "[image]") {
@@ -179,6 +182,55 @@ TEST_CASE("The render loop gives the same image, bit for bit, for 1 and 2 thread
     CHECK(one.image.at(36, 28).b == Approx(3));
 }
 
+TEST_CASE("An interrupt stops the render within one sample, and the first pass's unsampled pixels are named",
+          "[render]") {
+    // One thread; the interrupt comes with the 300th sample: no sample starts after it, the tile it cut short
+    // is dropped (its pixels keep no half pass), and the pixels left without a sample are counted.
+    int taken = 0, after_interrupt = 0;
+    auto sample = [&](const PixelSample&, Pcg32&, RayCounts&) {
+        if (interrupt_requested()) ++after_interrupt;
+        if (++taken == 300) set_interrupt_requested(true);
+        return Color(1);
+    };
+    const RenderSettings settings{40, 20, 4, 1, 1, ProgressStyle::kNone};
+    const RenderResult r = render(settings, sample);
+    set_interrupt_requested(false);
+    CHECK(after_interrupt == 0);
+    CHECK(taken == 300);
+    CHECK(r.interrupted);
+    CHECK(r.samples_per_pixel == 0);
+    // Tiles of 16 × 16: the first (256 pixels) is whole; the second was cut short at its 44th sample.
+    CHECK(r.samples == 256);
+    CHECK(r.unsampled_pixels == 40u * 20u - 256u);
+    CHECK(r.unsampled_region.x0 == 0);
+    CHECK(r.unsampled_region.y0 == 0);
+    CHECK(r.unsampled_region.x1 == 40);
+    CHECK(r.unsampled_region.y1 == 20);
+    CHECK(r.image.at(0, 0) == Color(1));
+    CHECK(r.image.at(16, 0) == Color(0));  // the tile cut short keeps nothing of its pass
+    int sampled = 0;
+    for (const Color& c : r.image.pixels()) sampled += c == Color(1) ? 1 : 0;
+    CHECK(sampled == 256);
+}
+
+TEST_CASE("An interrupt after the first pass leaves every pixel the mean of whole passes", "[render]") {
+    int taken = 0;
+    const int first_pass = 40 * 20;
+    auto sample = [&](const PixelSample& s, Pcg32&, RayCounts&) {
+        if (++taken == first_pass + 100) set_interrupt_requested(true);
+        return Color(Real(s.index));
+    };
+    const RenderSettings settings{40, 20, 64, 1, 1, ProgressStyle::kNone};
+    const RenderResult r = render(settings, sample);
+    set_interrupt_requested(false);
+    CHECK(r.interrupted);
+    CHECK(r.unsampled_pixels == 0);
+    CHECK(r.samples_per_pixel == 1);
+    // Sample 0 for every pixel, then a pass of samples 1..8 kept by no tile: the image is sample 0's value.
+    for (const Color& c : r.image.pixels()) REQUIRE(c == Color(0));
+    CHECK(r.samples == std::uint64_t(first_pass));
+}
+
 TEST_CASE("Edit distance and did-you-mean find near misses only", "[scene]") {
     CHECK(edit_distance("radius", "radius") == 0);
     CHECK(edit_distance("raduis", "radius") == 2);
@@ -273,8 +325,8 @@ TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
     std::ofstream(folder / "out_of_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
     CHECK_THAT(error_for(scene_with_mesh("out_of_range.obj")),
                Catch::Contains("shapes[0].file") &&
-                   Catch::EndsWith("face 1: vertex indices must be in [1, 3] (negative ones count back from "
-                                   "the last vertex), got 9"));
+                   Catch::EndsWith("out_of_range.obj: line 4, column 7: vertex index must be a whole number in "
+                                   "[1, 3] (or negative, counting back from the last), got \"9\""));
     std::ofstream(folder / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
     const Scene scene = parse_scene(scene_with_mesh("good.obj"), folder / "mesh.json");
     const auto& mesh = std::get<MeshShape>(scene.shapes[0].geometry);

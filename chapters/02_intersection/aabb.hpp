@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "float_error.hpp"
 #include "rt/math.hpp"
@@ -35,31 +37,43 @@ struct Aabb {
     }
 };
 
-// 1 / d per component, computed once per ray: d_i = +0 gives +∞ and d_i = −0 gives −∞.
+// 1 / d per component, computed once per ray: d_i = +0 gives +∞ and d_i = −0 gives −∞ (a subnormal d_i
+// gives ±∞ too: slab_entry tells them apart by d_i itself).
 inline Vec3 inverse_direction(const Vec3& d) {
     return Vec3{1} / d;
 }
 
 // The slab test on [0, t_max]: the entry distance into the box, or +∞ when the ray misses it.
 // A direction component d_i = ±0 never reaches 1 / d_i: the ray is parallel to slab i and stays inside it
-// (min_i <= o_i <= max_i, faces included) or outside it for ever, whatever the zero's sign. A ray starting
-// inside the box enters at t = 0. The exit distance is enlarged by 1 + 2γ₃ (PBRT 4 §6.8), so rounding never
-// culls a surface lying on the box; a box of zero thickness (min_i = max_i) is entered and left at one t.
+// (min_i <= o_i <= max_i, faces included) or outside it for ever, whatever the zero's sign. A subnormal d_i
+// (below 1.2e-38) has an infinite 1 / d_i in float: its slab is computed in double, where the quotient is
+// finite. A ray starting inside the box enters at t = 0. The exit distance is enlarged by 1 + 2γ₃ (PBRT 4
+// §6.8) and the entry shrunk by 1 − 2γ₃, and both by the smallest float (a product below float's normal
+// range is rounded to a multiple of it, not to a relative error), so rounding never culls a surface lying
+// on the box, neither against the exit nor against a t_max that is the rounded distance of a hit on the same
+// plane; a box of zero thickness (min_i = max_i) is entered and left at one t.
 inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, Real t_max) {
     // EXERCISE(ch02.slab_test)
     constexpr Real kGamma3 = gamma_bound(3);
+    constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
     Real t_enter = 0;
     Real t_exit = t_max;
     for (int i = 0; i < 3; ++i) {
-        if (ray.direction[i] == 0) {
+        Real t_near, t_far;
+        if (std::abs(inverse_d[i]) < kInfinity) {
+            t_near = (box.min[i] - ray.origin[i]) * inverse_d[i];
+            t_far = (box.max[i] - ray.origin[i]) * inverse_d[i];
+        } else if (ray.direction[i] == 0) {
             if (ray.origin[i] < box.min[i] || ray.origin[i] > box.max[i]) return kInfinity;
             continue;
+        } else {
+            const double d = ray.direction[i];
+            t_near = Real((double(box.min[i]) - double(ray.origin[i])) / d);
+            t_far = Real((double(box.max[i]) - double(ray.origin[i])) / d);
         }
-        Real t_near = (box.min[i] - ray.origin[i]) * inverse_d[i];
-        Real t_far = (box.max[i] - ray.origin[i]) * inverse_d[i];
         if (t_near > t_far) std::swap(t_near, t_far);
-        t_enter = std::max(t_enter, t_near);
-        t_exit = std::min(t_exit, t_far * (1 + 2 * kGamma3));
+        t_enter = std::max(t_enter, t_near * (1 - 2 * kGamma3) - kSmallest);
+        t_exit = std::min(t_exit, t_far * (1 + 2 * kGamma3) + kSmallest);
     }
     return t_enter <= t_exit ? t_enter : kInfinity;
     // END EXERCISE

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace rt {
@@ -13,7 +15,25 @@ constexpr std::uint32_t kMinSplitCount = 4;
 constexpr int kMaxDepth =
     36;  // below it, splits are median splits: the traversal stack of 64 never overflows
 // SAH costs, in units of one primitive test: a node visit (two box tests) costs about one primitive test.
-constexpr Real kTraversalCost = 1;
+constexpr double kTraversalCost = 1;
+
+// Half the surface area of a box, in double: float's product of two extents underflows to zero below about
+// 1e-23 and overflows above about 1e19, and the SAH divides by it.
+double half_area(const Aabb& b) {
+    const Vec3d e = glm::max(Vec3d(b.max) - Vec3d(b.min), Vec3d(0));
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+// A centroid that sorts and bins: the midpoint in double (float's min + max can overflow), held within the
+// finite Reals; a primitive whose box is unbounded both ways or empty (its centre NaN) counts as at the
+// origin, so every comparison stays ordered and every extent finite.
+Vec3 centroid_of(const Aabb& b) {
+    constexpr double kLargest = std::numeric_limits<Real>::max();
+    const Vec3d c = Vec3d(b.min) * 0.5 + Vec3d(b.max) * 0.5;
+    Vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = std::isnan(c[i]) ? 0 : Real(std::clamp(c[i], -kLargest, kLargest));
+    return out;
+}
 
 struct Builder {
     std::span<const Aabb> bounds;
@@ -48,11 +68,15 @@ struct Builder {
         // (64 bytes) and a level to descend; at 10^6 triangles the memory traffic costs more than the tests.
         if (count <= kMinSplitCount) return make_leaf(node, begin, end);
         const int axis = centroid_box.longest_axis();
-        const Real lo = centroid_box.min[axis];
-        const Real extent = centroid_box.max[axis] - lo;
+        // In double: a float extent may be subnormal (its inverse infinite) or overflow to infinity (centroids
+        // at -3e38 and 3e38), and a float area may underflow to zero or overflow; in double neither can.
+        const double lo = centroid_box.min[axis];
+        const double extent = double(centroid_box.max[axis]) - lo;
+        const double node_area = half_area(box);
         std::uint32_t middle = 0;
-        if (!(extent > 0)) {
-            // Every centroid in one point: no plane separates them.
+        if (!(extent > 0) || !(node_area > 0)) {
+            // Every centroid in one point (no plane separates them), or every primitive on one line (the node
+            // has no area for the SAH to compare): a leaf, or halves.
             if (count <= kMaxLeafSize) return make_leaf(node, begin, end);
             middle = median_split(begin, end, axis);
         } else if (depth >= kMaxDepth) {
@@ -62,39 +86,40 @@ struct Builder {
             // cost(split) = C_trav + (A_left N_left + A_right N_right) / A, against cost(leaf) = N.
             std::array<Aabb, kBins> bin_box;
             std::array<std::uint32_t, kBins> bin_count{};
-            const Real scale = Real(kBins) / extent;
+            // (c − lo) / extent is in [0, 1] for every centroid c of the node: the bin is in [0, kBins).
             auto bin_of = [&](std::uint32_t p) {
-                return std::min(kBins - 1, int((centroids[p][axis] - lo) * scale));
+                const double t = (double(centroids[p][axis]) - lo) / extent * kBins;
+                return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
             };
             for (std::uint32_t i = begin; i < end; ++i) {
                 const int b = bin_of(indices[i]);
                 ++bin_count[b];
                 bin_box[b].extend(bounds[indices[i]]);
             }
-            std::array<Real, kBins - 1> left_cost{};
+            std::array<double, kBins - 1> left_cost{};
             Aabb left;
             std::uint32_t left_count = 0;
             for (int b = 0; b < kBins - 1; ++b) {
                 left.extend(bin_box[b]);
                 left_count += bin_count[b];
-                left_cost[b] = left_count > 0 ? left.half_area() * Real(left_count) : 0;
+                left_cost[b] = left_count > 0 ? half_area(left) * double(left_count) : 0;
             }
             Aabb right;
             std::uint32_t right_count = 0;
             int best = -1;
-            Real best_cost = kInfinity;
+            double best_cost = std::numeric_limits<double>::infinity();
             for (int b = kBins - 1; b > 0; --b) {
                 right.extend(bin_box[b]);
                 right_count += bin_count[b];
-                const Real cost =
-                    left_cost[b - 1] + (right_count > 0 ? right.half_area() * Real(right_count) : 0);
+                const double cost =
+                    left_cost[b - 1] + (right_count > 0 ? half_area(right) * double(right_count) : 0);
                 if (cost < best_cost) {
                     best_cost = cost;
                     best = b;  // bins [0, b) go left
                 }
             }
-            const Real split_cost = kTraversalCost + best_cost / box.half_area();
-            if (count <= kMaxLeafSize && !(split_cost < Real(count))) return make_leaf(node, begin, end);
+            const double split_cost = kTraversalCost + best_cost / node_area;
+            if (count <= kMaxLeafSize && !(split_cost < double(count))) return make_leaf(node, begin, end);
             middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
                                                   [&](std::uint32_t p) { return bin_of(p) < best; }) -
                                    indices.begin());
@@ -119,7 +144,7 @@ Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order) {
     if (bounds.empty()) return;
     Builder builder{bounds, {}, order, nodes_};
     builder.centroids.reserve(bounds.size());
-    for (const Aabb& b : bounds) builder.centroids.push_back(b.center());
+    for (const Aabb& b : bounds) builder.centroids.push_back(centroid_of(b));
     nodes_.reserve(bounds.size());
     nodes_.push_back({});
     builder.build(0, 0, std::uint32_t(bounds.size()), 0);

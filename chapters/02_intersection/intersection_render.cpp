@@ -6,6 +6,7 @@
 
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "rt/errors.hpp"
+#include "rt/interrupt.hpp"
 
 namespace rt {
 
@@ -57,10 +58,11 @@ RenderResult render_intersections(const World& world, const PinholeCamera& camer
     });
 }
 
-MeanTraversalCost mean_traversal_cost(const World& world, const PinholeCamera& camera) {
+std::optional<MeanTraversalCost> mean_traversal_cost(const World& world, const PinholeCamera& camera) {
     std::uint64_t nodes = 0, primitives = 0, rays = 0;
     for (int y = 0; y < camera.height; ++y) {
         for (int x = 0; x < camera.width; ++x) {
+            if (interrupt_requested()) return std::nullopt;
             TraversalStats stats;
             world.intersect(camera_ray(camera, Real(x) + Real(0.5), Real(y) + Real(0.5)), kInfinity, stats);
             nodes += stats.nodes;
@@ -68,7 +70,7 @@ MeanTraversalCost mean_traversal_cost(const World& world, const PinholeCamera& c
             ++rays;
         }
     }
-    return {double(nodes) / double(rays), double(primitives) / double(rays)};
+    return MeanTraversalCost{double(nodes) / double(rays), double(primitives) / double(rays)};
 }
 
 }  // namespace rt

@@ -2,6 +2,8 @@
 // it cost (boxes plus primitives tested, as a heat map).
 #pragma once
 
+#include <optional>
+
 #include <cstdint>
 #include <string_view>
 
@@ -34,6 +36,8 @@ struct MeanTraversalCost {
     double nodes = 0;
     double primitives = 0;
 };
-MeanTraversalCost mean_traversal_cost(const World& world, const PinholeCamera& camera);
+// Nothing when an interrupt (Ctrl-C) comes first: it is looked for before every ray, since without a BVH one
+// ray may test every primitive of a large mesh.
+std::optional<MeanTraversalCost> mean_traversal_cost(const World& world, const PinholeCamera& camera);
 
 }  // namespace rt

@@ -68,7 +68,9 @@ int main(int argc, char** argv) {
         const Real distance_scale = glm::length(context.scene.camera.at - context.scene.camera.from) / 2;
         const RenderResult result =
             render_intersections(world, camera, show_mode_from_string(show), distance_scale, settings);
-        const MeanTraversalCost cost = mean_traversal_cost(world, camera);
+        // Measured apart from the render, and not at all once it was interrupted.
+        const std::optional<MeanTraversalCost> cost =
+            result.interrupted ? std::nullopt : mean_traversal_cost(world, camera);
 
         ChapterRun run{result, {}, std::nullopt};
         const double camera_rays = double(result.rays[RayKind::kCamera]);
@@ -82,11 +84,12 @@ int main(int argc, char** argv) {
                                  : std::string(", no acceleration: every ray tests every primitive")));
         run.notes.push_back(
             "triangle test: " + triangle_test + ", acceleration: " + accel +
-            format(": %.1f ns per camera ray (render time x threads / rays); per ray %.1f boxes and "
-                   "%.1f primitives tested",
-                   camera_rays > 0 ? result.seconds * 1e9 * settings.threads / camera_rays : 0.0, cost.nodes,
-                   cost.primitives));
+            format(": %.1f ns per camera ray (render time x threads / rays); ",
+                   camera_rays > 0 ? result.seconds * 1e9 * settings.threads / camera_rays : 0.0) +
+            (cost ? format("per ray %.1f boxes and %.1f primitives tested", cost->nodes, cost->primitives)
+                  : std::string("boxes and primitives per ray not measured (interrupted)")));
         for (const Shape& shape : context.scene.shapes) {
+            if (!cost) break;  // interrupted: no leak probe either
             const auto* mesh = std::get_if<MeshShape>(&shape.geometry);
             if (!mesh) continue;
             if (!is_closed(*mesh)) {

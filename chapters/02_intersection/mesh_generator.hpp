@@ -21,7 +21,8 @@ MeshShape make_uv_sphere(int segments, int rings);
 // fixed seed: still closed, still star-shaped around the origin, no longer a convex polyhedron.
 void jitter_radii(MeshShape& mesh, Real amount, std::uint64_t seed);
 
-// Writes "v x y z" and "f i j k" lines (1-based indices), through a temporary file renamed at the end.
+// Writes "v x y z" and "f i j k" lines (1-based indices) under a staging name renamed into place when whole
+// (staged_file.hpp). Throws InputError when `path` cannot be written, std::runtime_error when a write fails.
 void write_obj(const MeshShape& mesh, const std::filesystem::path& path);
 
 }  // namespace rt

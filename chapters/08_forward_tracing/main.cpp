@@ -67,8 +67,15 @@ int main(int argc, char** argv) {
                        "How forward paths reach the camera: connect (every vertex to the pinhole) or "
                        "aperture (through a lens of radius --aperture)")
             ->check(CLI::IsMember({"connect", "aperture"}));
-        app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
-            ->check(CLI::PositiveNumber);
+        CLI::Option* aperture_flag =
+            app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
+                ->check(CLI::PositiveNumber);
+        app.parse_complete_callback([aperture_flag, &variant] {
+            if (aperture_flag->count() > 0 && variant != "aperture") {
+                throw CLI::ValidationError("--aperture", "is used only with --variant aperture, got --variant " +
+                                                             variant);
+            }
+        });
         app.add_flag("--caustics-only", caustics_only,
                      "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)");
         app.add_flag(

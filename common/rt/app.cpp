@@ -1,12 +1,11 @@
 #include "rt/app.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <set>
 #include <thread>
+#include <vector>
 
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
@@ -15,17 +14,16 @@
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/output_files.hpp"
+#include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
 #include "rt/scene_loader.hpp"
 #include "rt/split_render.hpp"
+#include "rt/strict_flags.hpp"
 
 namespace rt {
 namespace {
 
 namespace fs = std::filesystem;
-
-// 128 + SIGINT: what a shell reports for a program stopped by Ctrl-C.
-constexpr int kExitInterrupted = 130;
 
 void add_core_flags(CLI::App& app, CoreOptions& o) {
     app.add_option("--scene", o.scene, "Scene file (JSON); default: the chapter's scene");
@@ -33,13 +31,7 @@ void add_core_flags(CLI::App& app, CoreOptions& o) {
     app.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
-    // CLI11 would read -1 as 2^64 - 1 for an unsigned seed: refuse the sign instead.
-    const CLI::Validator non_negative(
-        [](std::string& text) {
-            return text.starts_with('-') ? "must be a whole number >= 0, got " + text : "";
-        },
-        "NONNEGATIVE");
-    app.add_option("--seed", o.seed, "Random seed")->check(non_negative);
+    app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
     app.add_option("--reference", o.reference, "Reference image (PFM) to measure the error against");
     app.add_flag("--quiet", o.quiet, "No progress bar");
@@ -81,6 +73,13 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
             "  interrupted: partial image with %.4g samples per pixel on average (every pixel has at least "
             "%d) of the %d asked for\n",
             taken / pixels, r.samples_per_pixel, samples_taken(s).size());
+        if (r.unsampled_pixels > 0) {
+            const PixelRect& u = r.unsampled_region;
+            std::printf(
+                "  interrupted in the first pass: %llu of %.0f pixels have no sample and are black, all within "
+                "x [%d, %d), y [%d, %d)\n",
+                static_cast<unsigned long long>(r.unsampled_pixels), pixels, u.x0, u.x1, u.y0, u.y1);
+        }
     }
     auto print_error = [&](const char* against, const Image& image) {
         const ErrorMetrics e = compare(r.image, image);
@@ -94,8 +93,18 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf("  wrote %s\n", written.c_str());
 }
 
+// Two paths name one file: the same path, or links to one file.
+bool same_file(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec) && !ec) return true;
+    return fs::equivalent(a, b, ec);
+}
+
 int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
         const ChapterRender& render, const MpiSession& mpi) {
+    // From the start: a signal during the checks makes the render stop at once (nothing written), and a
+    // second one removes any staging file of the output probes.
+    install_interrupt_handler();
     CLI::App app(chapter.description, chapter.executable);
     CoreOptions options;
     add_core_flags(app, options);
@@ -104,6 +113,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
     for (const CLI::Option* option : app.get_options()) core_flags.insert(option->get_name());
     if (add_flags) add_flags(app);
+    make_values_strict(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -128,21 +138,33 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
             ? options.threads
             : std::max(1, int(std::thread::hardware_concurrency()) / mpi.ranks_on_this_machine());
     settings.progress = options.quiet || !mpi.is_root() ? ProgressStyle::kNone : ProgressStyle::kAuto;
+    // The size that will be rendered, whichever of the flags and the scene gave each side.
     try {
         check_image_size(settings.width, settings.height);
     } catch (const InputError& e) {
-        const bool from_flags = options.width || options.height;
-        throw InputError((from_flags ? std::string("--width/--height") : scene_file.string() + ": image") +
-                         ": " + e.what());
+        const std::string from_scene = scene.file + ": image";
+        const std::string source = options.width && options.height ? "--width/--height"
+                                   : options.width                 ? "--width and " + from_scene + ".height"
+                                   : options.height                ? from_scene + ".width and --height"
+                                                                   : from_scene;
+        throw InputError(source + ": " + e.what());
     }
 
     const fs::path png =
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
-    if (png.extension() != ".png") throw InputError("--out: must end in .png, got " + png.string());
-    // Every file this run may write, finished or partial, is checked before the render starts.
-    for (const fs::path& path : {png, with_suffix(png, "", ".pfm"), with_suffix(png, "", ".film"),
-                                 with_suffix(png, ".partial", ".png"), with_suffix(png, ".partial", ".pfm"),
-                                 with_suffix(png, ".partial", ".film")}) {
+    const std::string png_name = png.filename().string();
+    if (!png_name.ends_with(".png") || png_name.size() == 4) {
+        throw InputError("--out: must name a file ending in .png, with a name before the .png, got " + shown(png));
+    }
+    const fs::path pfm = with_suffix(png, "", ".pfm");
+    const fs::path partial_png = with_suffix(png, ".partial", ".png");
+    const fs::path partial_pfm = with_suffix(png, ".partial", ".pfm");
+    // Every file this run may write, finished or partial, is probed before the render starts: its staging
+    // file is created and removed (staged_file.hpp).
+    // (x.film only when the run writes one: a piece of a render, or a resumed one.)
+    std::vector<fs::path> outputs{png, pfm, partial_png, partial_pfm, with_suffix(png, ".partial", ".film")};
+    if (!split.samples.empty() || !split.resume.empty()) outputs.push_back(with_suffix(png, "", ".film"));
+    for (const fs::path& path : outputs) {
         try {
             check_writable(path);
         } catch (const InputError& e) {
@@ -151,13 +173,20 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     std::optional<Image> reference;
     if (!options.reference.empty()) {
+        const fs::path reference_file = options.reference;
+        for (const fs::path& output : {pfm, partial_pfm}) {
+            if (same_file(reference_file, output)) {
+                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
+                                 shown(output) + "); give another --out or copy the reference");
+            }
+        }
         try {
-            reference = read_pfm(options.reference);
+            reference = read_pfm(reference_file, PfmPixels::kRadiance);
         } catch (const InputError& e) {
             throw InputError(std::string("--reference: ") + e.what());
         }
         if (reference->width() != settings.width || reference->height() != settings.height) {
-            throw InputError("--reference: " + options.reference + ": must be the size of the image, " +
+            throw InputError("--reference: " + shown(reference_file) + ": must be the size of the image, " +
                              std::to_string(settings.width) + "x" + std::to_string(settings.height) +
                              ", got " + std::to_string(reference->width()) + "x" +
                              std::to_string(reference->height()));
@@ -176,15 +205,15 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
 
     const EffectSet needed_effects = needed(scene);
     const RunContext context{scene, settings, needed_effects & chapter.supported};
-    install_interrupt_handler();
     std::optional<ChapterRun> result = render(context);
-    if (!result) return interrupt_requested() ? kExitInterrupted : kExitOk;
+    set_interrupt_phase(InterruptPhase::kWriting);
+    if (!result) return interrupt_requested() ? interrupted_exit_status() : kExitOk;
     mpi.gather(result->result);
-    if (!mpi.is_root()) return result->result.interrupted ? kExitInterrupted : kExitOk;
+    if (!mpi.is_root()) return result->result.interrupted ? interrupted_exit_status() : kExitOk;
     if (plan.writes_film) {
         result->notes.push_back("samples " + to_string(plan.whole) + " of the " +
                                 std::to_string(settings.samples_per_pixel) + "-sample render" +
-                                (plan.resumed ? ", resumed from " + split.resume : std::string()));
+                                (plan.resumed ? ", resumed from " + shown(split.resume) : std::string()));
     }
     if (mpi.size() > 1) {
         result->notes.push_back("split among " + std::to_string(mpi.size()) + " MPI ranks, samples " +
@@ -195,10 +224,10 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     if (r.interrupted && r.samples == 0) {
         std::fprintf(stderr, "%s: interrupted before any sample was taken; nothing written\n",
                      chapter.executable);
-        return kExitInterrupted;
+        return interrupted_exit_status();
     }
     check_finite(r.image);
-    const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
+    const fs::path png_out = r.interrupted ? partial_png : png;
     const std::optional<Film> film = film_of(plan, r, mpi);
     const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr);
     // The summary speaks of every rank's samples, not rank 0's share.
@@ -206,7 +235,12 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     all_ranks.samples = plan.whole;
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result, reference,
                   written);
-    return r.interrupted ? kExitInterrupted : kExitOk;
+    if (!r.interrupted && interrupt_requested()) {
+        // The signal came once the render was done: the complete image was written all the same.
+        std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
+                     chapter.executable);
+    }
+    return r.interrupted || interrupt_requested() ? interrupted_exit_status() : kExitOk;
 }
 
 }  // namespace
@@ -218,15 +252,23 @@ int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const Chapter
         mpi.emplace();
         return run(argc, argv, chapter, add_flags, render, *mpi);
     } catch (const InputError& e) {
-        // Every rank checks the same input and fails alike: rank 0 says why.
-        if (!mpi || mpi->is_root()) std::fprintf(stderr, "%s: %s\n", chapter.executable, e.what());
+        // Every rank checks the same input and fails alike: rank 0 says why. printable(): whatever the
+        // message quotes (a flag's value in CLI11's words), it stays one line.
+        if (!mpi || mpi->is_root()) std::fprintf(stderr, "%s: %s\n", chapter.executable, printable(e.what()).c_str());
         return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr,
+                     "%s: failed: out of memory (this machine's memory, or the limit set on this process, "
+                     "ulimit -v, is too small for this run)\n",
+                     chapter.executable);
+        return kExitFailure;
     } catch (const std::exception& e) {
         if (mpi && mpi->size() > 1) {
-            std::fprintf(stderr, "%s: rank %d failed: %s\n", chapter.executable, mpi->rank(), e.what());
+            std::fprintf(stderr, "%s: rank %d failed: %s\n", chapter.executable, mpi->rank(),
+                         printable(e.what()).c_str());
             mpi->abort(kExitFailure);
         }
-        std::fprintf(stderr, "%s: failed: %s\n", chapter.executable, e.what());
+        std::fprintf(stderr, "%s: failed: %s\n", chapter.executable, printable(e.what()).c_str());
         return kExitFailure;
     }
 }

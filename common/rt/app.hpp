@@ -1,6 +1,6 @@
 // What a chapter executable does around its render: the core flags of common/README.md, loading and checking
 // the scene, the output files, the summary, and exit statuses (0 done, 2 bad usage or input, 1 failure,
-// 130 interrupted with a partial image saved).
+// 130 interrupted by SIGINT, 143 by SIGTERM).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -18,6 +18,7 @@
 
 namespace rt {
 
+// A text flag given empty is refused (strict_flags.hpp): empty here means not given.
 struct CoreOptions {
     std::string scene;  // empty: the chapter's default scene
     std::string out;    // empty: <executable>.png in the current folder

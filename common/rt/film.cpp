@@ -5,7 +5,7 @@
 #include <fstream>
 #include <vector>
 
-#include "rt/atomic_file.hpp"
+#include "rt/staged_file.hpp"
 #include "rt/errors.hpp"
 #include "rt/fnv_hash.hpp"
 #include "rt/image_io.hpp"
@@ -106,7 +106,7 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
     return "";
 }
 
-void write_film(const Film& film, const fs::path& path) {
+bool encode_film(const Film& film, std::FILE* file) {
     const FilmIdentity& id = film.identity;
     Writer out;
     for (const char c : kMagic) out.put(c);
@@ -126,8 +126,13 @@ void write_film(const Film& film, const fs::path& path) {
         out.put(p.non_finite);
     }
     out.put(fnv1a(out.bytes().data(), out.bytes().size()));
-    write_atomically(
-        path, [&](std::FILE* file) { return write_bytes(file, out.bytes().data(), out.bytes().size()); });
+    return write_bytes(file, out.bytes().data(), out.bytes().size());
+}
+
+void write_film(const Film& film, const fs::path& path) {
+    StagedFile staged(path);
+    write_staged(staged, [&](std::FILE* file) { return encode_film(film, file); });
+    staged.commit();
 }
 
 Film read_film(const fs::path& path) {

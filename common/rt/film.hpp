@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -41,7 +42,9 @@ struct Film {
     bool complete() const { return sums.min_count() == std::uint32_t(range.size()); }
 };
 
-// Written all or nothing (atomic_file.hpp).
+// The film's bytes into an open file (false when a write failed), and the film written all or nothing
+// (staged_file.hpp).
+bool encode_film(const Film& film, std::FILE* file);
 void write_film(const Film& film, const std::filesystem::path& path);
 // Throws InputError naming the file and what is wrong: not a film, another version, truncated, corrupt (the
 // checksum), or values out of range.

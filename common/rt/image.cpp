@@ -1,5 +1,6 @@
 #include "rt/image.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -26,10 +27,20 @@ void check_image_size(long long width, long long height) {
                          " pixels a side");
     }
     const double needed = double(width) * double(height) * double(sizeof(Color) + sizeof(PixelSum));
+    // Half of this machine's memory, and half of what this process may use (ulimit -v): the tighter is named.
     const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    rlimit limit{};
+    const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
+    const double process = limited ? double(limit.rlim_cur) : 0;
+    const std::string needs = "image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of ";
+    if (limited && (!(memory > 0) || process < memory) && needed > process / 2) {
+        throw InputError(needs + "the " + gigabytes(process) + " this process may use (ulimit -v)");
+    }
     if (memory > 0 && needed > memory / 2) {
-        throw InputError("image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of " +
-                         "this machine's " + gigabytes(memory) + " of memory");
+        throw InputError(needs + "this machine's " + gigabytes(memory) + " of memory");
+    }
+    if (limited && needed > process / 2) {
+        throw InputError(needs + "the " + gigabytes(process) + " this process may use (ulimit -v)");
     }
 }
 

@@ -17,8 +17,10 @@
 #include <system_error>
 #include <vector>
 
-#include "rt/atomic_file.hpp"
 #include "rt/errors.hpp"
+#include "rt/input_file.hpp"
+#include "rt/printable.hpp"
+#include "rt/staged_file.hpp"
 
 namespace rt {
 namespace fs = std::filesystem;
@@ -35,20 +37,19 @@ std::uint8_t to_display_byte(Real linear) {
 }
 
 void check_writable(const fs::path& path) {
+    const StagedFile probe(path);  // the staging file a write would use, created here and removed
+    // The name it would be renamed to must be one the folder takes.
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    const std::string where = path.string() + ": cannot be written: ";
-    std::error_code ec;
-    if (!fs::exists(folder, ec)) throw InputError(where + "folder " + folder.string() + " does not exist");
-    if (!fs::is_directory(folder, ec)) {
-        throw InputError(where + folder.string() + " is a file, not a folder");
+    const long longest = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    const std::size_t length = path.filename().native().size();
+    if (longest > 0 && length > std::size_t(longest)) {
+        throw InputError(shown(path) + ": cannot be written: its name is " + std::to_string(length) +
+                         " bytes, longer than the " + std::to_string(longest) + " its folder takes");
     }
-    if (::access(folder.c_str(), W_OK) != 0) {
-        throw InputError(where + "folder " + folder.string() + " is not writable");
-    }
-    if (fs::is_directory(path, ec)) throw InputError(where + "it is a folder");
 }
 
-void write_png(const Image& image, const fs::path& path) {
+// The PNG's bytes, tone-mapped and sRGB-encoded, into `file`; false when a write failed.
+bool encode_png(const Image& image, std::FILE* file) {
     std::vector<std::uint8_t> bytes(image.pixel_count() * 3);
     std::size_t i = 0;
     for (const Color& c : image.pixels()) {
@@ -61,52 +62,68 @@ void write_png(const Image& image, const fs::path& path) {
         std::FILE* file;
         bool ok;
     };
-    write_atomically(path, [&](std::FILE* file) {
-        Sink sink{file, true};
-        const int encoded = stbi_write_png_to_func(
-            [](void* context, void* data, int size) {
-                auto* s = static_cast<Sink*>(context);
-                s->ok = s->ok && write_bytes(s->file, data, std::size_t(size));
-            },
-            &sink, image.width(), image.height(), 3, bytes.data(), image.width() * 3);
-        return encoded != 0 && sink.ok;
-    });
+    Sink sink{file, true};
+    const int encoded = stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            auto* s = static_cast<Sink*>(context);
+            s->ok = s->ok && write_bytes(s->file, data, std::size_t(size));
+        },
+        &sink, image.width(), image.height(), 3, bytes.data(), image.width() * 3);
+    return encoded != 0 && sink.ok;
 }
 
 // PFM: "PF\n<width> <height>\n<scale>\n" then float RGB rows from the bottom up; a negative scale is
 // little-endian.
-void write_pfm(const Image& image, const fs::path& path) {
+bool encode_pfm(const Image& image, std::FILE* file) {
     static_assert(std::endian::native == std::endian::little, "the PFM writer marks its data little-endian");
-    write_atomically(path, [&](std::FILE* file) {
-        const std::string header =
-            "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n-1.0\n";
-        bool ok = write_bytes(file, header.data(), header.size());
-        std::vector<float> row(std::size_t(image.width()) * 3);
-        for (int y = image.height() - 1; y >= 0 && ok; --y) {
-            for (int x = 0; x < image.width(); ++x) {
-                const Color& c = image.at(x, y);
-                row[3 * std::size_t(x)] = float(c.r);
-                row[3 * std::size_t(x) + 1] = float(c.g);
-                row[3 * std::size_t(x) + 2] = float(c.b);
-            }
-            ok = write_bytes(file, row.data(), row.size() * sizeof(float));
+    const std::string header =
+        "PF\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n-1.0\n";
+    bool ok = write_bytes(file, header.data(), header.size());
+    std::vector<float> row(std::size_t(image.width()) * 3);
+    for (int y = image.height() - 1; y >= 0 && ok; --y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const Color& c = image.at(x, y);
+            row[3 * std::size_t(x)] = float(c.r);
+            row[3 * std::size_t(x) + 1] = float(c.g);
+            row[3 * std::size_t(x) + 2] = float(c.b);
         }
-        return ok;
-    });
+        ok = write_bytes(file, row.data(), row.size() * sizeof(float));
+    }
+    return ok;
+}
+
+void write_png(const Image& image, const fs::path& path) {
+    StagedFile png(path);
+    write_staged(png, [&](std::FILE* file) { return encode_png(image, file); });
+    png.commit();
+}
+
+void write_pfm(const Image& image, const fs::path& path) {
+    StagedFile pfm(path);
+    write_staged(pfm, [&](std::FILE* file) { return encode_pfm(image, file); });
+    pfm.commit();
 }
 
 void check_regular_file(const fs::path& path, const std::string& kind) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        throw InputError(path.string() + ": must be " + kind + ", got " +
-                         (fs::exists(path, ec) ? "something else (a folder?)" : "no such file"));
+    if (const std::string problem = not_a_regular_file(path); !problem.empty()) {
+        throw InputError(shown(path) + ": must be " + kind + ", got " + problem);
     }
 }
 
-Image read_pfm(const fs::path& path) {
-    const std::string name = path.string();
-    check_regular_file(path, "a PFM file");
+namespace {
+
+std::string show_number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", x);
+    return text;
+}
+
+}  // namespace
+
+Image read_pfm(const fs::path& path, PfmPixels pixels) {
+    const std::string name = shown(path);
     std::error_code ec;
+    check_regular_file(path, "a PFM file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name + ": cannot be opened for reading");
     std::string magic;
@@ -123,9 +140,17 @@ Image read_pfm(const fs::path& path) {
         !std::isfinite(scale)) {
         throw InputError(name + ": PFM header must give a width and height in [1, " +
                          std::to_string(kMaxImageSide) + "] and a non-zero scale, got " +
-                         std::to_string(width) + " " + std::to_string(height) + " " + std::to_string(scale));
+                         std::to_string(width) + " " + std::to_string(height) + " " + show_number(scale));
     }
-    in.get();  // the single whitespace after the scale
+    // One whitespace byte ends the header; a CRLF line end would shift every pixel by a byte.
+    const int after_scale = in.get();
+    if (after_scale == '\r' && in.peek() == '\n') {
+        throw InputError(name + ": PFM header must end in one whitespace byte before the pixels, got \"\\r\\n\" "
+                         "(a Windows line end)");
+    }
+    if (!std::isspace(after_scale)) {
+        throw InputError(name + ": PFM header must end in one whitespace byte before the pixels");
+    }
     // The data must all be there before the image is allocated: a short file with a huge header is refused.
     const auto data_start = in.tellg();
     const auto file_size = fs::file_size(path, ec);
@@ -136,6 +161,11 @@ Image read_pfm(const fs::path& path) {
             "x" + std::to_string(height) + ", got " +
             std::to_string(ec || data_start < 0 ? 0 : file_size - (unsigned long long)(data_start)) +
             " (truncated)");
+    }
+    try {
+        check_image_size(width, height);  // within this machine's memory and this process's limit
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
     }
     const bool file_little_endian = scale < 0;
     const bool swap = file_little_endian != (std::endian::native == std::endian::little);
@@ -154,10 +184,11 @@ Image read_pfm(const fs::path& path) {
                 }
             }
             const Color c(rgb[0], rgb[1], rgb[2]);
-            if (!is_finite(c)) {
-                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                 ") must be finite, got " + std::to_string(c.r) + " " + std::to_string(c.g) +
-                                 " " + std::to_string(c.b));
+            const bool radiance = pixels == PfmPixels::kRadiance;
+            if (!is_finite(c) || (radiance && (c.r < 0 || c.g < 0 || c.b < 0))) {
+                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") must be " +
+                                 (radiance ? "finite radiance, >= 0" : "finite") + ", got " + show_number(c.r) +
+                                 " " + show_number(c.g) + " " + show_number(c.b));
             }
             image.at(x, y) = c;
         }

@@ -5,36 +5,63 @@
 #include <atomic>
 #include <csignal>
 
+#include "rt/staged_file.hpp"
+
 namespace rt {
 namespace {
 
-std::atomic<bool> g_interrupted{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the SIGINT handler may only touch lock-free atomics");
+std::atomic<int> g_signal{0};  // the first signal received, 0 before any
+std::atomic<InterruptPhase> g_phase{InterruptPhase::kRendering};
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<InterruptPhase>::is_always_lock_free,
+              "the signal handler may only touch lock-free atomics");
 
-// First SIGINT: ask the render loop to stop and say so (write(2) is async-signal-safe, printf is not).
-// Second SIGINT: exit at once with 130 (128 + SIGINT), as the shell reports a process killed by Ctrl-C.
-extern "C" void on_sigint(int) {
-    if (g_interrupted.exchange(true)) _exit(130);
-    const char message[] =
-        "\ninterrupted: finishing the tiles in progress, then saving the partial image (Ctrl-C again to quit "
-        "at once)\n";
-    [[maybe_unused]] auto written = write(STDERR_FILENO, message, sizeof message - 1);
+void say(const char* message, std::size_t size) {
+    [[maybe_unused]] auto written = write(STDERR_FILENO, message, size);
+}
+
+// First signal: ask the render loop to stop (or let the files being written finish) and say so (write(2) is
+// async-signal-safe, printf is not). A second one, of either kind: remove the staging files, exit at once.
+extern "C" void on_interrupt(int signal_number) {
+    int none = 0;
+    if (!g_signal.compare_exchange_strong(none, signal_number)) {
+        remove_staged_files_now();
+        _exit(128 + signal_number);
+    }
+    if (g_phase.load() == InterruptPhase::kRendering) {
+        const char message[] =
+            "\ninterrupted: stopping the samples in progress, then saving the partial image (interrupt again "
+            "to quit at once, saving nothing)\n";
+        say(message, sizeof message - 1);
+    } else {
+        const char message[] =
+            "\ninterrupted: finishing the files being written (interrupt again to quit at once, writing "
+            "nothing)\n";
+        say(message, sizeof message - 1);
+    }
 }
 
 }  // namespace
 
 void install_interrupt_handler() {
     struct sigaction action {};
-    action.sa_handler = on_sigint;
+    action.sa_handler = on_interrupt;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;  // a read or write in progress goes on rather than failing with EINTR
     sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+void set_interrupt_phase(InterruptPhase phase) {
+    g_phase.store(phase);
 }
 bool interrupt_requested() {
-    return g_interrupted.load(std::memory_order_relaxed);
+    return g_signal.load(std::memory_order_relaxed) != 0;
+}
+int interrupted_exit_status() {
+    const int s = g_signal.load();
+    return 128 + (s != 0 ? s : SIGINT);
 }
 void set_interrupt_requested(bool requested) {
-    g_interrupted.store(requested);
+    g_signal.store(requested ? SIGINT : 0);
 }
 
 }  // namespace rt

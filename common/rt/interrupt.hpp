@@ -1,11 +1,19 @@
-// Ctrl-C during a render: the first SIGINT asks the render loop to stop after the tile it is on (so the
-// image so far can be saved, marked partial); a second one exits at once.
+// Ctrl-C (SIGINT) or SIGTERM during a run. The first asks the render loop to stop after the sample each thread
+// is on (so the image so far can be saved, marked partial), or, once the render is over, lets the files being
+// written be finished; a second one removes every staging file and exits at once, writing nothing.
 #pragma once
 
 namespace rt {
 
+// What a first signal interrupts, for the message it prints.
+enum class InterruptPhase { kRendering, kWriting };
+
+// Installs the handler for SIGINT and SIGTERM.
 void install_interrupt_handler();
+void set_interrupt_phase(InterruptPhase phase);
 bool interrupt_requested();
+// 128 + the signal's number, as a shell reports a process ended by it: 130 for SIGINT, 143 for SIGTERM.
+int interrupted_exit_status();
 // For tests: as if the user had pressed Ctrl-C (or, with false, as if not).
 void set_interrupt_requested(bool requested);
 

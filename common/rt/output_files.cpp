@@ -1,14 +1,12 @@
 #include "rt/output_files.hpp"
 
-#include <pthread.h>
-#include <unistd.h>
-
-#include <csignal>
+#include <optional>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "rt/image_io.hpp"
+#include "rt/printable.hpp"
+#include "rt/staged_file.hpp"
 
 namespace rt {
 namespace fs = std::filesystem;
@@ -38,36 +36,19 @@ void check_finite(const Image& image) {
 
 std::string write_outputs(const Image& image, const fs::path& png, const Film* film) {
     const fs::path pfm = with_suffix(png, "", ".pfm"), film_path = with_suffix(png, "", ".film");
-    sigset_t sigint, previous;
-    sigemptyset(&sigint);
-    sigaddset(&sigint, SIGINT);
-    pthread_sigmask(SIG_BLOCK, &sigint, &previous);
-    const std::string stage = ".staged-" + std::to_string(::getpid());
-    std::vector<std::pair<fs::path, fs::path>> files{{png.string() + stage, png},
-                                                     {pfm.string() + stage, pfm}};
-    if (film) files.emplace_back(film_path.string() + stage, film_path);
-    std::error_code ec;
-    try {
-        write_png(image, files[0].first);
-        write_pfm(image, files[1].first);
-        if (film) write_film(*film, files[2].first);
-        for (auto it = files.rbegin(); it != files.rend(); ++it) fs::rename(it->first, it->second);
-    } catch (const std::exception& e) {
-        for (const auto& [staged, final_path] : files) fs::remove(staged, ec);
-        pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-        // The messages of the writers name the staging file; name the file the user asked for.
-        std::string what = e.what();
-        for (const auto& [staged, final_path] : files) {
-            for (auto at = what.find(staged.string()); at != std::string::npos;
-                 at = what.find(staged.string())) {
-                what.replace(at, staged.string().size(), final_path.string());
-            }
-        }
-        throw std::runtime_error(what);
+    // Every file is written whole under its staging name first; then the renames, all or none.
+    StagedFile png_file(png), pfm_file(pfm);
+    write_staged(png_file, [&](std::FILE* file) { return encode_png(image, file); });
+    write_staged(pfm_file, [&](std::FILE* file) { return encode_pfm(image, file); });
+    std::vector<StagedFile*> files{&pfm_file, &png_file};
+    std::optional<StagedFile> film_file;
+    if (film) {
+        film_file.emplace(film_path);
+        write_staged(*film_file, [&](std::FILE* file) { return encode_film(*film, file); });
+        files.insert(files.begin(), &*film_file);
     }
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-    return film ? png.string() + ", " + pfm.string() + " and " + film_path.string()
-                : png.string() + " and " + pfm.string();
+    commit_together(files);
+    return film ? shown(png) + ", " + shown(pfm) + " and " + shown(film_path) : shown(png) + " and " + shown(pfm);
 }
 
 }  // namespace rt

@@ -19,9 +19,9 @@ std::filesystem::path with_suffix(const std::filesystem::path& png, const std::s
 void check_finite(const Image& image);
 
 // Writes the PNG, the PFM beside it and, given `film`, the film beside them (x.png, x.pfm, x.film): each is
-// first written whole under a staging name, then all are renamed into place; SIGINT is held back meanwhile,
-// so a second Ctrl-C (which exits at once) cannot leave a staging file behind. Returns what it wrote, for the
-// summary: "x.png and x.pfm" or "x.png, x.pfm and x.film".
+// first written whole under its staging name (staged_file.hpp), then all are renamed into place together,
+// with SIGINT and SIGTERM held back. Returns what it wrote, for the summary: "x.png and x.pfm" or "x.png,
+// x.pfm and x.film" (names quoted where they need it).
 std::string write_outputs(const Image& image, const std::filesystem::path& png, const Film* film = nullptr);
 
 }  // namespace rt

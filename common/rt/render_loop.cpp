@@ -18,10 +18,9 @@
 namespace rt::detail {
 namespace {
 
-constexpr int kTileSize = 16;
-// Samples are taken in passes: first one sample per pixel (so an interrupted image covers every pixel), then
-// an eighth of the rest per pass, but at most kMaxPassSamples, so Ctrl-C is answered within a pass of 256 ×
-// 16 samples per tile, whatever the sample count.
+// Samples are taken in passes: first one sample per pixel (so an image interrupted after it covers every
+// pixel), then an eighth of the rest per pass, but at most kMaxPassSamples, so that the passes a tile keeps
+// stay even. An interrupt is answered within a sample (render_loop.hpp), whatever the pass.
 constexpr int kPasses = 8;
 constexpr int kMaxPassSamples = 16;
 
@@ -122,7 +121,7 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
                     const auto [x0, y0, x1, y1] = tile_bounds(tile);
                     const std::uint64_t taken = samples_in(x0, y0, x1, y1, first, end);
                     if (taken == 0) continue;
-                    render_tile(x0, y0, x1, y1, first, end, rays);
+                    if (!render_tile(x0, y0, x1, y1, first, end, rays)) break;
                     samples_done += taken;
                 }
             } catch (...) {
@@ -157,11 +156,27 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
     for (const RayCounts& r : rays_per_thread) result.rays += r;
     // Each pixel is the mean of the samples it has; after an interrupt, tiles may differ by one pass.
     result.samples_per_pixel = int(sums.min_count());
+    // Interrupted in the first pass: the pixels without a sample, and the rectangle that holds them.
+    PixelRect& unsampled = result.unsampled_region;
+    unsampled = {settings.width, settings.height, 0, 0};
+    for (int y = 0; y < settings.height; ++y) {
+        for (int x = 0; x < settings.width; ++x) {
+            if (sums.at(x, y).count > 0) continue;
+            ++result.unsampled_pixels;
+            unsampled = {std::min(unsampled.x0, x), std::min(unsampled.y0, y), std::max(unsampled.x1, x + 1),
+                         std::max(unsampled.y1, y + 1)};
+        }
+    }
+    if (result.unsampled_pixels == 0) unsampled = {};
     result.samples = samples_done.load();
     result.interrupted = result.samples_per_pixel < range.size();
     result.image = sums.mean_image();
     result.sums = std::move(sums);
     return result;
+}
+
+bool interrupted() {
+    return interrupt_requested();
 }
 
 }  // namespace rt::detail

@@ -1,11 +1,14 @@
 // The parallel render loop: every pixel gets `spp` samples; tiles of 16×16 pixels are handed to the threads.
 // Samples are taken in passes (all pixels get samples [a, b) before any gets sample b), so an interrupted
-// render still has an even image. Each sample gets its own random stream from (pixel, sample, seed) and a
-// pixel's samples are summed exactly (pixel_sums.hpp), so the image is bit-identical for any number of
-// threads, and for a render taken in pieces of its samples (settings.samples) or continued (settings.resume).
+// render still has an even image. An interrupt is looked for before every sample, so a render stops within
+// one sample per thread, however slow a sample is; the pass of a tile it cuts short is dropped, so every
+// pixel keeps whole passes. Each sample gets its own random stream from (pixel, sample, seed) and a pixel's
+// samples are summed exactly (pixel_sums.hpp), so the image is bit-identical for any number of threads, and
+// for a render taken in pieces of its samples (settings.samples) or continued (settings.resume).
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -39,14 +42,22 @@ inline SampleRange samples_taken(const RenderSettings& settings) {
     return settings.samples.value_or(SampleRange{0, std::max(settings.samples_per_pixel, 1)});
 }
 
+// Pixels x in [x0, x1), y in [y0, y1).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 struct RenderResult {
     Image image;     // each pixel the mean of its samples in `sums`
     PixelSums sums;  // empty for a render that splats (chapter 08's light paths) instead of sampling pixels
     RayCounts rays;
     double seconds = 0;
-    std::uint64_t samples = 0;     // samples actually taken
+    std::uint64_t samples = 0;     // samples actually taken (and kept)
     int samples_per_pixel = 0;     // samples every pixel has (fewer than asked when interrupted)
     bool interrupted = false;
+    // Interrupted in the first pass: the pixels left without a sample (black), and the rectangle holding them.
+    std::uint64_t unsampled_pixels = 0;
+    PixelRect unsampled_region;
 };
 
 // Where one sample is taken: pixel (x, y), sample number `index` of that pixel.
@@ -63,13 +74,16 @@ concept SampleFunction = requires(F f, const PixelSample& s, Pcg32& rng, RayCoun
 };
 
 namespace detail {
+inline constexpr int kTileSize = 16;
 // Runs `render_tile(x0, y0, x1, y1, first_sample, end_sample, rays)` over every tile and pass, adding into
-// `sums` (the resumed sums, or zeros), which the result then takes. If it throws on any thread, the other
-// threads stop after their tile and the first exception is rethrown here.
-using TileFunction = std::function<void(int, int, int, int, int, int, RayCounts&)>;
+// `sums` (the resumed sums, or zeros), which the result then takes; it returns false when an interrupt cut
+// the tile's pass short (and then left `sums` as they were). If it throws on any thread, the other threads
+// stop after their tile and the first exception is rethrown here.
+using TileFunction = std::function<bool(int, int, int, int, int, int, RayCounts&)>;
 RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const TileFunction& render_tile);
 // The sums a render starts from: settings.resume's, or zeros. Throws std::logic_error on a size mismatch.
 PixelSums starting_sums(const RenderSettings& settings);
+bool interrupted();  // interrupt_requested(), without interrupt.hpp in every chapter
 }  // namespace detail
 
 template <SampleFunction F>
@@ -79,16 +93,23 @@ RenderResult render(const RenderSettings& settings, F&& sample) {
     const std::uint64_t width = std::uint64_t(settings.width);
     return detail::render_tiles(
         settings, sums, [&](int x0, int y0, int x1, int y1, int first, int end, RayCounts& rays) {
+            // The pass is summed aside and kept only once whole.
+            std::array<PixelSum, std::size_t(detail::kTileSize * detail::kTileSize)> tile;
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
-                    PixelSum& sum = sums.at(x, y);
+                    PixelSum sum = sums.at(x, y);
                     for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
+                        if (detail::interrupted()) return false;
                         Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
                         sum.add(Color(sample(PixelSample{x, y, s}, rng, rays)));
                     }
+                    tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))] = sum;
                 }
             }
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) sums.at(x, y) = tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))];
+            return true;
         });
 }
 

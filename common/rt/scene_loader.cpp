@@ -1,8 +1,7 @@
 #include "rt/scene_loader.hpp"
 
-#include <tiny_obj_loader.h>
-
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -14,6 +13,10 @@
 #include "rt/did_you_mean.hpp"
 #include "rt/errors.hpp"
 #include "rt/image.hpp"
+#include "rt/input_file.hpp"
+#include "rt/json_reader.hpp"
+#include "rt/obj_parser.hpp"
+#include "rt/printable.hpp"
 
 namespace rt {
 namespace {
@@ -25,6 +28,7 @@ using Json = nlohmann::json;
 // product), and (2·1e9)³·3 ≈ 2.4e28 stays far below float's 3.4e38; a scene beyond 1e9 units could not hold
 // a unit-sized object in float anyway (the spacing of floats there is 64).
 constexpr double kLargestNumber = 1e9;
+constexpr const char* kRealName = sizeof(Real) == sizeof(float) ? "float" : "double";
 
 std::string show(double x) {
     std::ostringstream out;
@@ -32,28 +36,21 @@ std::string show(double x) {
     return out.str();
 }
 
-// A name from the file, made printable so a message stays one line: control bytes become \n, \xNN.
-std::string printable(std::string_view s) {
-    constexpr std::size_t kLongest = 64;
-    std::string out;
-    for (const char c : s.substr(0, kLongest)) {
-        const auto byte = static_cast<unsigned char>(c);
-        if (c == '\n') {
-            out += "\\n";
-        } else if (byte < 0x20 || byte == 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof hex, "\\x%02x", byte);
-            out += hex;
-        } else {
-            out += c;
-        }
-    }
-    if (s.size() > kLongest) out += "...";
-    return out;
+// A name from the file in a message: escaped so that the message stays one line (printable.hpp), and cut
+// after 64 bytes.
+std::string shown_name(std::string_view s) {
+    return printable(s, 64);
 }
 
 std::string quote(std::string_view s) {
-    return "\"" + printable(s) + "\"";
+    return "\"" + shown_name(s) + "\"";
+}
+
+// A number written with a fraction or an exponent, shown as one: 32.0 stays "32.0", not "32".
+std::string show_fraction(double x) {
+    std::string text = show(x);
+    if (text.find_first_of(".e") == std::string::npos) text += ".0";
+    return text;
 }
 
 std::string show(const Vec3& v) {
@@ -121,24 +118,27 @@ class Node {
         return x;
     }
     Real real() const { return Real(number()); }
+    // The range is checked on the value as it will be used, in Real: 179.99999999 is 180 in float, and 1e-50
+    // is 0.
     Real real_in(double low, double high, bool low_open, bool high_open) const {
         const double x = number();
-        if ((low_open ? x <= low : x < low) || (high_open ? x >= high : x > high)) {
+        const double r = double(Real(x));
+        if ((low_open ? r <= low : r < low) || (high_open ? r >= high : r > high)) {
             fail("must be in " + std::string(low_open ? "(" : "[") + show(low) + ", " + show(high) +
-                 (high_open ? ")" : "]") + ", got " + show(x));
+                 (high_open ? ")" : "]") + ", got " + as_used(x));
         }
         return Real(x);
     }
     Real positive() const {
         const double x = number();
-        if (!(x > 0)) fail("must be > 0, got " + show(x));
+        if (!(Real(x) > 0)) fail("must be > 0, got " + as_used(x));
         return Real(x);
     }
     int integer(long long low, long long high) const {
         const std::string range = "[" + std::to_string(low) + ", " + std::to_string(high) + "]";
         if (!value_.is_number_integer()) {
             fail("must be a whole number in " + range + ", got " +
-                 (value_.is_number() ? show(value_.get<double>()) : std::string(value_.type_name())));
+                 (value_.is_number() ? show_fraction(value_.get<double>()) : std::string(value_.type_name())));
         }
         if (value_.is_number_unsigned() &&
             value_.get<unsigned long long>() > static_cast<unsigned long long>(high)) {
@@ -173,8 +173,15 @@ class Node {
     }
 
   private:
+    // The value as given, and what Real makes of it when that differs: "1e-50, which is 0 in float".
+    static std::string as_used(double x) {
+        if (double(Real(x)) == x) return show(x);
+        char text[32];
+        const auto end = std::to_chars(text, text + sizeof text, x).ptr;  // the shortest exact form
+        return std::string(text, end) + ", which is " + show(double(Real(x))) + " in " + kRealName;
+    }
     std::string child_place(std::string_view key) const {
-        return place_.empty() ? printable(key) : place_ + "." + printable(key);
+        return place_.empty() ? shown_name(key) : place_ + "." + shown_name(key);
     }
 
     const Json& value_;
@@ -214,11 +221,8 @@ ImageDesc read_image(const Node& node) {
     if (node.has("width")) image.width = node["width"].integer(1, kMaxImageSide);
     if (node.has("height")) image.height = node["height"].integer(1, kMaxImageSide);
     if (node.has("spp")) image.spp = node["spp"].integer(1, kMaxSamplesPerPixel);
-    try {
-        check_image_size(image.width, image.height);
-    } catch (const InputError& e) {
-        node.fail(e.what());
-    }
+    // Whether width × height fits in memory is checked for the size that will be rendered, which --width and
+    // --height may change (app.cpp).
     return image;
 }
 
@@ -291,77 +295,53 @@ void check_within_limits(const Node& node, const std::string& what, const Vec3& 
     }
 }
 
-// An OBJ file's triangles: polygons are split into fans (0, k, k + 1) here, after every index is checked,
-// because tinyobjloader's own triangulation reads vertex positions before anyone has checked the indices.
+// An OBJ file's triangles, read strictly (obj_parser.hpp): polygons are split into fans (0, k, k + 1). A mesh
+// whose every face has no area after its transform (repeated or collinear vertices, or coordinates so small
+// that float's cross product underflows) is refused, as a lone triangle of no area is.
 MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     MeshShape mesh;
     const Node file = node["file"];
     mesh.file = file.string();
     if (node.has("transform")) mesh.transform = read_transform(node["transform"]);
     const fs::path path = scene_folder / mesh.file;
-    const std::string obj = printable(path.string());
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        file.fail("must name an OBJ file, got " + obj +
-                  (fs::exists(path, ec) ? " (not a file)" : " (no such file)"));
+    const std::string obj = shown(path);
+    if (const std::string problem = not_a_regular_file(path); !problem.empty()) {
+        file.fail("must name an OBJ file, got " + obj + " (" + problem + ")");
     }
-    // The text is read here and parsed with no material library: an OBJ's "mtllib" line cannot make the
-    // loader open another file (which could be a device that never ends).
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) file.fail("must name a readable OBJ file, got " + obj + " (it cannot be read)");
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text.str(), "", config)) {
-        std::string error = reader.Error();
-        if (const auto newline = error.find('\n'); newline != std::string::npos) error.resize(newline);
-        file.fail(obj + ": malformed OBJ: " + printable(error));
+    // The text is read here; an OBJ's "mtllib" line cannot make the loader open another file.
+    std::string text;
+    try {
+        text = read_whole_file(path);
+    } catch (const InputError& e) {
+        file.fail(obj + ": " + e.what());
     }
-    const auto& vertices = reader.GetAttrib().vertices;
-    const std::size_t vertex_count = vertices.size() / 3;
-    for (std::size_t i = 0; i < vertex_count; ++i) {
-        const Vec3 p(vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]);
-        const std::string vertex = "vertex " + std::to_string(i + 1);
-        if (!is_finite(p) || std::abs(p.x) > kLargestNumber || std::abs(p.y) > kLargestNumber ||
-            std::abs(p.z) > kLargestNumber) {
-            file.fail(obj + ": " + vertex + ": must be finite, of magnitude at most " + show(kLargestNumber) +
-                      ", got " + show(p));
+    ObjMesh parsed;
+    try {
+        parsed = parse_obj(text, kLargestNumber);
+    } catch (const InputError& e) {
+        file.fail(obj + ": " + e.what());
+    }
+    for (std::size_t i = 0; i < parsed.positions.size(); ++i) {
+        mesh.positions.push_back(mesh.transform.apply_to_point(parsed.positions[i]));
+        if (node.has("transform")) {
+            check_within_limits(node["transform"], "vertex " + std::to_string(i + 1), mesh.positions.back());
         }
-        mesh.positions.push_back(mesh.transform.apply_to_point(p));
-        if (node.has("transform")) check_within_limits(node["transform"], vertex, mesh.positions.back());
     }
-    std::size_t face_number = 0;
-    for (const auto& shape : reader.GetShapes()) {
-        const auto& indices = shape.mesh.indices;
-        std::size_t first = 0;
-        for (const unsigned int corners : shape.mesh.num_face_vertices) {
-            ++face_number;
-            const std::string face = obj + ": face " + std::to_string(face_number);
-            if (first + corners > indices.size())
-                file.fail(face + ": must list its vertices, got a truncated list");
-            if (corners < 3) {
-                file.fail(face + ": must have at least 3 vertices, got " + std::to_string(corners));
-            }
-            std::vector<std::uint32_t> polygon;
-            for (std::size_t k = 0; k < corners; ++k) {
-                const int index = indices[first + k].vertex_index;
-                if (index < 0 || std::size_t(index) >= vertex_count) {
-                    file.fail(face + ": vertex indices must be in [1, " + std::to_string(vertex_count) +
-                              "] (negative ones count back from the last vertex), got " +
-                              std::to_string(static_cast<long long>(index) + 1));
-                }
-                polygon.push_back(std::uint32_t(index));
-            }
-            for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
-                mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
-            }
-            first += corners;
+    std::size_t with_area = 0;
+    for (const ObjFace& face : parsed.faces) {
+        const auto& v = face.vertices;
+        for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+            mesh.triangles.push_back({v[0], v[k], v[k + 1]});
+            const Vec3 a = mesh.positions[v[0]], b = mesh.positions[v[k]], c = mesh.positions[v[k + 1]];
+            if (!zero_area(b - a, c - a)) ++with_area;
         }
     }
     if (mesh.triangles.empty()) file.fail(obj + ": must have at least one face, got none");
+    if (with_area == 0) {
+        file.fail(obj + ": must have at least one face with an area, got " + std::to_string(mesh.triangles.size()) +
+                  " triangle(s), each with repeated or collinear vertices" +
+                  (node.has("transform") ? " after the transform" : ""));
+    }
     return mesh;
 }
 
@@ -468,16 +448,12 @@ EffectSet read_effects(const Node& node) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const fs::path& file) {
-    const std::string name = file.string();
+    const std::string name = shown(file);
     Json root;
     try {
-        root = Json::parse(text);
-    } catch (const Json::exception& e) {  // a parse error, or a number too large for a double (1e400)
-        std::string what = e.what();
-        if (const auto at = what.find("] "); what.starts_with("[json.exception") && at != std::string::npos) {
-            what = what.substr(at + 2);
-        }
-        throw InputError(name + ": not valid JSON: " + printable(what));
+        root = parse_json_strictly(text);
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
     }
     const Node top(root, "", name);
     top.expect_object(kTopKeys);
@@ -495,7 +471,7 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
         if (!materials.json().is_object()) materials.fail("must be an object of named materials");
         for (const auto& [key, value] : root.at("materials").items()) {
             material_index[key] = int(scene.materials.size());
-            scene.materials.push_back(read_material(Node(value, "materials." + printable(key), name), key));
+            scene.materials.push_back(read_material(Node(value, "materials." + shown_name(key), name), key));
         }
         for (const Material& m : scene.materials) material_names.push_back(m.name);
     }
@@ -509,7 +485,7 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < used.size(); ++i) {
         if (!used[i]) {
-            Node(root, "materials." + printable(scene.materials[i].name), name)
+            Node(root, "materials." + shown_name(scene.materials[i].name), name)
                 .fail("defined but used by no shape (use it or remove it)");
         }
     }
@@ -522,16 +498,16 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
 }
 
 Scene load_scene(const fs::path& file) {
-    std::error_code ec;
-    if (!fs::is_regular_file(file, ec)) {
-        throw InputError(file.string() + ": must be a scene file (JSON), got " +
-                         (fs::exists(file, ec) ? "something else (a folder?)" : "no such file"));
+    if (const std::string problem = not_a_regular_file(file); !problem.empty()) {
+        throw InputError(shown(file) + ": must be a scene file (JSON), got " + problem);
     }
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(file.string() + ": cannot be opened for reading");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_scene(text.str(), file);
+    std::string text;
+    try {
+        text = read_whole_file(file);
+    } catch (const InputError& e) {
+        throw InputError(shown(file) + ": " + e.what());
+    }
+    return parse_scene(text, file);
 }
 
 }  // namespace rt

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # write_error.sh EXECUTABLE: a write that fails (a full disk, emulated by a file size limit: writes beyond it
 # fail with EFBIG) is reported in one line with exit status 1, and the earlier out.png and out.pfm are left
-# as they were, with no temporary file behind. Then, without the limit, the same run replaces both whole.
+# as they were, with no staging file behind (ls -A: staging names start with a dot). Then, without the limit,
+# the same run replaces both whole.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 exe=$1
@@ -21,12 +22,12 @@ echo "under an 8 KiB file size limit: exit status $status: $(cat stderr)"
 expected="$n: failed: out.png: could not write the file (File too large); an earlier file of that name is left as it was"
 [ "$(cat stderr)" = "$expected" ] || fail "message was: $(cat stderr) ... expected: $expected"
 [ "$(md5sum out.png out.pfm)" = "$before" ] || fail "the earlier out.png or out.pfm was changed"
-files=$(ls | grep -v -E '^(out\.png|out\.pfm|stdout|stderr)$')
+files=$(ls -A | grep -v -E '^(out\.png|out\.pfm|stdout|stderr)$')
 [ -z "$files" ] || fail "files left behind: $files"
 
 "$exe" --width 320 --height 180 --spp 1 --quiet --out out.png > stdout 2> stderr || fail "the run without a limit failed"
 [ "$(head -c 4 out.png | tail -c 3)" = "PNG" ] || fail "out.png was not replaced by a PNG"
 [ "$(head -c 2 out.pfm)" = "PF" ] || fail "out.pfm was not replaced by a PFM"
-files=$(ls | grep -v -E '^(out\.png|out\.pfm|stdout|stderr)$')
+files=$(ls -A | grep -v -E '^(out\.png|out\.pfm|stdout|stderr)$')
 [ -z "$files" ] || fail "files left behind: $files"
 finish

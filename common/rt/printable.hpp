@@ -1,0 +1,21 @@
+// Text from outside (a path, a key of a scene file, a library's message) made fit for a one-line message:
+// control bytes are escaped, so a newline or an escape sequence in a file name can neither split the message
+// nor reach the terminal.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace rt {
+
+// `s` with \n, \r, \t, and \xNN for every other control byte (and DEL);
+// cut after `longest` bytes with "..." when longer.
+std::string printable(std::string_view s, std::size_t longest = std::string_view::npos);
+
+// A path as a message shows it: as it is when it holds only letters, digits and . / _ - + , = : @ % ~;
+// otherwise (spaces, quotes, control bytes, other bytes, or empty) in double quotes, escaped, with \" for a quote.
+std::string shown(const std::filesystem::path& path);
+
+}  // namespace rt

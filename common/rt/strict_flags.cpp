@@ -1,0 +1,82 @@
+#include "rt/strict_flags.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "rt/printable.hpp"
+
+namespace rt {
+namespace {
+
+constexpr double kLargestFlagNumber = 1e30;
+
+std::string shown_value(const std::string& text) {
+    return "\"" + printable(text, 64) + "\"";
+}
+
+std::string check_whole(const std::string& text, bool is_signed) {
+    const char* first = text.data();
+    const char* last = text.data() + text.size();
+    const std::string expected = is_signed ? "a whole number (decimal digits, a '-' before them if negative)"
+                                           : "a whole number >= 0 (decimal digits only)";
+    if (is_signed && first != last && *first == '-') ++first;
+    if (first == last) return "must be " + expected + ", got " + shown_value(text);
+    for (const char* c = first; c != last; ++c) {
+        if (*c < '0' || *c > '9') return "must be " + expected + ", got " + shown_value(text);
+    }
+    // CLI11 would read a leading 0 as octal (010 as 8).
+    if (*first == '0' && last - first > 1) return "must be " + expected + " without a leading 0, got " + shown_value(text);
+
+    std::from_chars_result r{};
+    if (is_signed) {
+        std::int64_t value = 0;
+        r = std::from_chars(text.data(), last, value);
+    } else {
+        std::uint64_t value = 0;
+        r = std::from_chars(text.data(), last, value);
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+        return "must be " + expected + " that fits in 64 bits (at most " +
+               (is_signed ? std::to_string(INT64_MAX) : std::to_string(UINT64_MAX)) + "), got " + shown_value(text);
+    }
+    return r.ec == std::errc() && r.ptr == last ? "" : "must be " + expected + ", got " + shown_value(text);
+}
+
+std::string check_real(const std::string& text) {
+    const char* last = text.data() + text.size();
+    double value = 0;
+    const auto r = std::from_chars(text.data(), last, value, std::chars_format::general);
+    const std::string expected = "a finite decimal number of magnitude at most 1e30";
+    if (r.ec != std::errc() || r.ptr != last || text.empty()) {
+        return "must be " + expected + ", got " + shown_value(text);
+    }
+    if (!std::isfinite(value) || std::abs(value) > kLargestFlagNumber) {
+        return "must be " + expected + ", got " + shown_value(text);
+    }
+    return "";
+}
+
+}  // namespace
+
+void make_values_strict(CLI::App& app) {
+    for (CLI::Option* option : app.get_options()) {
+        if (option->get_type_size() == 0) continue;  // a flag without a value
+        const std::string type = option->get_type_name();
+        std::function<std::string(std::string&)> check;
+        if (type.starts_with("UINT")) {
+            check = [](std::string& text) { return check_whole(text, false); };
+        } else if (type.starts_with("INT")) {
+            check = [](std::string& text) { return check_whole(text, true); };
+        } else if (type.starts_with("FLOAT")) {
+            check = [](std::string& text) { return check_real(text); };
+        } else {
+            check = [](std::string& text) { return text.empty() ? std::string("must not be empty") : std::string(); };
+        }
+        option->transform(CLI::Validator(check, ""), "STRICT");
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,18 @@
+// Every flag value of every chapter read strictly, as the scene file's numbers are: CLI11 on its own reads
+// " -1" as 2^64 − 1 for an unsigned flag, 18446744073709551616 as 2^64 − 1, 0x10 as 16, 010 as 8, and "nan"
+// as a number inside any range (every comparison with NaN is false), and takes "" for a file name.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace rt {
+
+// Adds to every option of `app` the check of its kind, run before its other checks:
+//  - whole numbers (INT, UINT): decimal digits only, no leading 0, a leading '-' for signed ones, wholly
+//    consumed, within 64 bits (the option's own range check then applies);
+//  - real numbers (FLOAT): a decimal number wholly consumed, finite, of magnitude at most 1e30;
+//  - text (TEXT, a file name or a choice): not empty.
+// Call it once every option has been added, before parsing.
+void make_values_strict(CLI::App& app);
+
+}  // namespace rt
