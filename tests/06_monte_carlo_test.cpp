@@ -290,7 +290,8 @@ TEST_CASE("Directions to a quad, a triangle and a sphere light fit their pdfs, w
 TEST_CASE(
     "Every BRDF sampler passes the chi-square test for 5 outgoing directions up to 89 degrees, its pdf "
     "integrates to 1, to at most 1 above the surface",
-    "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]") {
+    "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]"
+          "[ex:ch04.power_cosine_pdf]") {
     std::uint64_t seed = 200;
     for (const auto& [name, owner] : sampled_brdfs()) {
         const Bsdf& brdf = *owner;
@@ -352,8 +353,8 @@ TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square te
 
 TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direction",
           "[statistical][ex:ch02.sphere_stable][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.retroreflective]"
-          "[ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
+          "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]"
+          "[ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
     Pcg32 rng(400, 1);
     for (const auto& [name, owner] : sampled_brdfs()) {
         const Bsdf& brdf = *owner;

@@ -341,14 +341,14 @@ void check_furnace(const char* file) {
 }
 
 TEST_CASE("Furnace: a glass sphere under a uniform environment of radiance 1 renders as 1 everywhere",
-          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+          "[ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_furnace("ch07_furnace_glass.json");
 }
 
 TEST_CASE("Furnace: an eta = 1 sphere renders as exactly 1 everywhere",
-          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+          "[ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_furnace("ch07_furnace_eta1.json");
 }
 
@@ -376,9 +376,8 @@ Scene glass_box(const std::string& effects) {
 
 TEST_CASE("A scene without a dielectric traces no refraction rays",
           "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer]") {
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -407,8 +406,9 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
 TEST_CASE(
     "Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
     "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-    "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -449,10 +449,10 @@ Scene sky_scene(const std::string& glass) {
 
 TEST_CASE(
     "An emissive plane lights a glass scene as it lights the same scene with the glass made diffuse",
-    "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-    "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-    "[ex:ch07.refract]") {
+    "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     const RenderSettings settings = small_settings(32, 64);
     const Scene glass = sky_scene(R"({"type": "dielectric", "ior": 1.5})");
     const Scene diffuse = sky_scene(R"({"type": "diffuse", "albedo": [0.73, 0.73, 0.73]})");
@@ -473,8 +473,8 @@ TEST_CASE(
 
 TEST_CASE("A glass scene without lights traces no shadow rays",
           "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
+          "[ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
     const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
@@ -487,9 +487,9 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
 // The default scene
 
 TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
     RenderSettings settings = small_settings(40, 8);
@@ -507,9 +507,9 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.beer_lambert]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     const RenderSettings settings = small_settings(32, 16);
@@ -532,9 +532,9 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
 }
 
 TEST_CASE("With and without next-event estimation the glass box converges to the same image",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");
     RenderSettings settings = small_settings(16, 512);
@@ -551,8 +551,8 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
 
 TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera inside sees 2.25",
           "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract]") {
+          "[ex:ch03.robust_offset][ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // The camera at the centre of a glass sphere under a uniform environment of radiance 1. What is conserved
     // across the interface is L / η², so the radiance inside is 1.5² = 2.25 in every direction; without the
     // 1 / η² factor of the BTDF every pixel would be 1.
@@ -886,9 +886,9 @@ TEST_CASE(
 TEST_CASE(
     "Furnace: a frosted sphere (roughness 0.3, ior 1.5) under a uniform sky of radiance 1 loses only "
     "what single-scattering microfacets lose",
-    "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-    "[ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.fresnel_exact]"
-    "[ex:ch07.refract]") {
+    "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Furnace f = render_furnace(0.3, 32, 256, 11);
     INFO("sphere pixels " << f.sphere_pixels << ", mean " << f.sphere_mean << " +- " << f.sphere_error
                           << ", image mean " << f.render.image.mean());
@@ -925,9 +925,9 @@ TEST_CASE(
 }
 
 TEST_CASE("Furnace: as the roughness goes to 0 the frosted sphere approaches the smooth one",
-          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Furnace smooth = render_furnace(0, 24, 128, 12);
     double previous_loss = 1;
     // The loss falls with the roughness, each step by more than 3 standard errors, and at roughness 0.02
@@ -949,7 +949,9 @@ TEST_CASE("Furnace: as the roughness goes to 0 the frosted sphere approaches the
 }
 
 TEST_CASE("A frosted sphere under a sky calls for direct and indirect light, and renders lit with them",
-          "[effects][furnace]") {
+          "[effects][furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // Rough glass is no delta: light sampling reaches it, so needed() must turn on what samples the sky.
     const Scene scene = frosted_sphere(0.3);
     const EffectSet effects = needed(scene);

@@ -242,8 +242,8 @@ TEST_CASE(
 TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind it from the light tracer",
           "[ch08][statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
           "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     Scene with = default_scene_with_glass([](Material& m) { m.ior = 1; });
     Scene without = with;
     without.shapes.pop_back();  // the sphere is the last shape
@@ -366,8 +366,8 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
 TEST_CASE("Light tracing counts its rays by kind and traces only the effects the scene calls for",
           "[ch08][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.mirror][ex:ch05.termination]"
-          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const Scene cornell = load_scene(scene_path("ch06_default.json"));
     SECTION("every path leaves its light once: one shadow-kind ray per path; no mirror, no reflection rays") {
         const StudyScene s(cornell, 8, 8);
@@ -432,9 +432,9 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
 
 TEST_CASE("The default scene renders finite, plausible and identical for 1, 2 and 3 threads",
           "[ch08][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch07.beer_lambert]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
+          "[ex:ch08.project_direction]") {
     const StudyScene s(load_scene(scene_path("ch08_default.json")), 24, 24);
     const ForwardTracer tracer_f(s, needed(s.scene));
     const LightTracer& tracer = tracer_f.tracer;
