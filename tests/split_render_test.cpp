@@ -16,7 +16,9 @@
 #include "rt/interrupt.hpp"
 #include "rt/pixel_sums.hpp"
 #include "rt/render_loop.hpp"
+#include "rt/mpi_split.hpp"
 #include "rt/sample_range.hpp"
+#include "rt/split_render.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -216,4 +218,28 @@ TEST_CASE("merge_films adds pieces given in any order, and names the piece that 
     CHECK(merged.sums == whole.sums);
     CHECK_THROWS_WITH(merge_films({piece("a", {0, 3}), piece("c", {6, 7})}),
                       "c: takes samples 6:7, but samples 3:6 are in no piece (the piece before is a, 0:3)");
+}
+
+TEST_CASE("A whole render in one process leaves the sample range unset, so a study can take another spp",
+          "[split]") {
+    const MpiSession mpi;  // not under mpirun: a session of one
+    const FilmIdentity identity{"ch07_bsdf_refraction", "cornell.json", 1, "", 4, 4, 64, 1};
+    RenderSettings settings;
+    settings.width = settings.height = 4;
+    settings.samples_per_pixel = 64;
+    plan_split(SplitOptions{}, identity, mpi, settings);
+    CHECK_FALSE(settings.samples.has_value());
+    // Chapter 07's depth study renders its reference with the run's settings at 4096 spp: all 4096 samples,
+    // not samples 0:64 of them (what a range left set from the run's 64 made it take).
+    settings.samples_per_pixel = 4096;
+    CHECK(samples_taken(settings).size() == 4096);
+    // A piece keeps its range.
+    RenderSettings piece = settings;
+    piece.samples_per_pixel = 64;
+    SplitOptions options;
+    options.samples = "8:24";
+    plan_split(options, identity, mpi, piece);
+    REQUIRE(piece.samples.has_value());
+    CHECK(piece.samples->first == 8);
+    CHECK(piece.samples->end == 24);
 }

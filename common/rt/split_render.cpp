@@ -54,7 +54,9 @@ SplitPlan plan_split(const SplitOptions& options, const FilmIdentity& identity, 
         settings.resume = &plan.resumed->sums;
     }
     plan.writes_film = !options.samples.empty() || !options.resume.empty();
-    settings.samples = split_range(plan.whole, mpi.size(), mpi.rank());
+    // A whole render in one process leaves the range unset, so a study that renders the scene again at
+    // another spp (chapter 04's shadow study, chapter 07's depth study) takes all of its own samples.
+    if (plan.writes_film || mpi.size() > 1) settings.samples = split_range(plan.whole, mpi.size(), mpi.rank());
     return plan;
 }
 
