@@ -1,5 +1,7 @@
 // A render split by sample range: exact per-pixel sums, the render loop's pieces and resumes, the film file,
 // the merge of pieces and the split among MPI ranks (the executables' side is tests/cli/split_render*.sh).
+#include "rt/split_render.hpp"
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -14,11 +16,10 @@
 #include "rt/film.hpp"
 #include "rt/film_merge.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/mpi_split.hpp"
 #include "rt/pixel_sums.hpp"
 #include "rt/render_loop.hpp"
-#include "rt/mpi_split.hpp"
 #include "rt/sample_range.hpp"
-#include "rt/split_render.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;

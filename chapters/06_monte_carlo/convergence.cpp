@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -203,6 +204,59 @@ bool plot_convergence(const fs::path& csv, const std::vector<SamplingStrategy>& 
     std::error_code ec;
     fs::remove(script, ec);
     return drawn;
+}
+
+void print_convergence_study(const RenderScene& prepared, const PathOptions& options,
+                             const PinholeCamera& camera, const RenderSettings& settings,
+                             const Reference& ref, int max_spp, const std::string& csv) {
+    const std::vector<SamplingStrategy> strategies(kAllStrategies.begin(), kAllStrategies.end());
+    const auto rows = convergence_study(prepared, options, camera, settings, ref, strategies, max_spp);
+    std::printf("%-8s %6s %12s %12s %12s %10s %10s\n", "strategy", "spp", "RMSE", "MSE-noise",
+                "rel.MSE-noise", "wall (s)", "cpu (s)");
+    for (const ConvergenceRow& r : rows) {
+        std::printf("%-8s %6d %12.4e %12.4e %12.4e %10.4f %10.4f\n", to_string(r.strategy).data(), r.spp,
+                    r.rmse, r.mse, r.relative_mse, r.seconds, r.cpu_seconds);
+    }
+    const auto table = efficiency_table(rows);
+    double uniform = 0, uniform_relative = 0;
+    for (const EfficiencyRow& e : table) {
+        if (e.strategy == SamplingStrategy::kUniform)
+            uniform = e.efficiency, uniform_relative = e.relative_efficiency;
+    }
+    std::printf(
+        "\nefficiency = 1 / (MSE x processor seconds) at %d spp, and the same with the relative MSE; "
+        "slope "
+        "of log RMSE against log spp\n",
+        max_spp);
+    std::printf("%-8s %8s %12s %12s %9s %12s %9s %12s %9s\n", "strategy", "slope", "MSE", "rel. MSE",
+                "cpu (s)", "efficiency", "x uniform", "rel. eff.", "x uniform");
+    for (const EfficiencyRow& e : table) {
+        std::printf("%-8s %8.3f %12.4e %12.4e %9.2f %12.4g %9.3g %12.4g %9.3g\n",
+                    to_string(e.strategy).data(), e.slope, e.mse, e.relative_mse, e.cpu_seconds, e.efficiency,
+                    uniform > 0 ? e.efficiency / uniform : 0.0, e.relative_efficiency,
+                    uniform_relative > 0 ? e.relative_efficiency / uniform_relative : 0.0);
+    }
+    for (const EfficiencyRow& e : table) {
+        if (!(e.mse > 0) || !(e.relative_mse > 0)) {
+            std::printf(
+                "note: an MSE at or below the reference's own noise (efficiency shown as 0): render "
+                "the "
+                "reference with more samples (--reference-spp)\n");
+            break;
+        }
+    }
+    write_convergence_csv(rows, csv);
+    std::filesystem::path stem = csv;
+    stem.replace_extension();
+    const std::string title = std::filesystem::path(prepared.scene.file).filename().string() + ", " +
+                              std::to_string(settings.width) + "x" + std::to_string(settings.height);
+    if (plot_convergence(csv, strategies, stem, title)) {
+        std::printf("wrote %s, %s_spp.png, %s_time.png and %s_relative.png\n", csv.c_str(), stem.c_str(),
+                    stem.c_str(), stem.c_str());
+    } else {
+        std::printf("wrote %s; gnuplot is not installed, so no plot (apt-get install gnuplot-nox)\n",
+                    csv.c_str());
+    }
 }
 
 }  // namespace rt

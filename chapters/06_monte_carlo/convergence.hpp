@@ -76,4 +76,10 @@ void write_convergence_csv(const std::vector<ConvergenceRow>& rows, const std::f
 bool plot_convergence(const std::filesystem::path& csv, const std::vector<SamplingStrategy>& strategies,
                       const std::filesystem::path& png_stem, const std::string& title);
 
+// The study of `--converge`: convergence_study for every strategy up to max_spp, its table, the efficiency
+// table (efficiency_table), the CSV `csv` and its plots (plot_convergence), printed as the lesson shows them.
+void print_convergence_study(const RenderScene& prepared, const PathOptions& options,
+                             const PinholeCamera& camera, const RenderSettings& settings,
+                             const Reference& ref, int max_spp, const std::string& csv);
+
 }  // namespace rt

@@ -84,8 +84,8 @@ double one_estimate(const IrradianceCase& c, SamplingStrategy strategy, Vec2 u, 
             double sum = 0;
             const Drawn d = light_sample(c, u);
             if (d.pdf > 0 && d.wi.z > 0) {
-                sum +=
-                    double(power_heuristic(d.pdf, cosine_hemisphere_pdf(d.wi.z)) * d.radiance * d.wi.z / d.pdf);
+                sum += double(power_heuristic(d.pdf, cosine_hemisphere_pdf(d.wi.z)) * d.radiance * d.wi.z /
+                              d.pdf);
             }
             const Vec3 wi = sample_cosine_hemisphere(v);
             const Real pdf = cosine_hemisphere_pdf(wi.z);

@@ -20,33 +20,6 @@ namespace {
 
 using namespace rt;
 
-// One line per case and strategy: σ of one sample, time per sample, the RMSE of N-sample estimates for
-// N = 16, 256, 4096 (independent points) and for N = 4096 stratified, and the efficiency 1 / (MSE × time) of
-// the 4096-sample estimates, both ways.
-void print_irradiance_study(int runs) {
-    const std::vector<int> counts{16, 256, 4096};
-    const auto rows = irradiance_study(counts, runs);
-    std::printf(
-        "E(p) = integral of L cos theta dw at p = 0, n = +z, against its closed form: %d runs of N samples "
-        "per figure; RMSE of one run's estimate\n",
-        runs);
-    std::printf("%-7s %-8s %10s %10s %9s %9s %10s %10s %10s %11s %10s %10s\n", "case", "strategy", "exact",
-                "mean", "sigma", "ns/sample", "RMSE N=16", "RMSE 256", "RMSE 4096", "strat. 4096",
-                "efficiency", "strat. eff.");
-    for (std::size_t i = 0; i + 5 < rows.size(); i += 6) {
-        // Rows come as (independent: 16, 256, 4096), (stratified: 16, 256, 4096) per case and strategy.
-        const IrradianceStudyRow* r = &rows[i];
-        std::printf("%-7s %-8s %10.6f %10.6f %9.3e %9.1f %10.3e %10.3e %10.3e %11.3e %10.3g %10.3g\n",
-                    r[0].case_name.c_str(), to_string(r[0].strategy).data(), r[0].exact, r[2].mean,
-                    r[2].sigma, r[2].seconds_per_sample * 1e9, r[0].rmse, r[1].rmse, r[2].rmse, r[5].rmse,
-                    r[2].efficiency, r[5].efficiency);
-    }
-    std::printf(
-        "brdf is cosine here (the BRDF of E is Lambert's). efficiency = 1 / (RMSE^2 x seconds per estimate) "
-        "at "
-        "N = 4096, independent and stratified points\n");
-}
-
 std::vector<std::string> light_notes(const Scene& scene) {
     std::vector<std::string> notes;
     if (!scene.point_lights.empty()) {
@@ -133,55 +106,7 @@ int main(int argc, char** argv) {
             std::printf("  %s %s; its own noise: MSE %.3e (RMSE %.3e)\n",
                         ref.cached ? "read" : "rendered and wrote", ref.file.string().c_str(), ref.noise_mse,
                         std::sqrt(ref.noise_mse));
-            const std::vector<SamplingStrategy> strategies(kAllStrategies.begin(), kAllStrategies.end());
-            const auto rows =
-                convergence_study(prepared, options, camera, settings, ref, strategies, max_spp);
-            std::printf("%-8s %6s %12s %12s %12s %10s %10s\n", "strategy", "spp", "RMSE", "MSE-noise",
-                        "rel.MSE-noise", "wall (s)", "cpu (s)");
-            for (const ConvergenceRow& r : rows) {
-                std::printf("%-8s %6d %12.4e %12.4e %12.4e %10.4f %10.4f\n", to_string(r.strategy).data(),
-                            r.spp, r.rmse, r.mse, r.relative_mse, r.seconds, r.cpu_seconds);
-            }
-            const auto table = efficiency_table(rows);
-            double uniform = 0, uniform_relative = 0;
-            for (const EfficiencyRow& e : table) {
-                if (e.strategy == SamplingStrategy::kUniform)
-                    uniform = e.efficiency, uniform_relative = e.relative_efficiency;
-            }
-            std::printf(
-                "\nefficiency = 1 / (MSE x processor seconds) at %d spp, and the same with the relative MSE; "
-                "slope "
-                "of log RMSE against log spp\n",
-                max_spp);
-            std::printf("%-8s %8s %12s %12s %9s %12s %9s %12s %9s\n", "strategy", "slope", "MSE", "rel. MSE",
-                        "cpu (s)", "efficiency", "x uniform", "rel. eff.", "x uniform");
-            for (const EfficiencyRow& e : table) {
-                std::printf("%-8s %8.3f %12.4e %12.4e %9.2f %12.4g %9.3g %12.4g %9.3g\n",
-                            to_string(e.strategy).data(), e.slope, e.mse, e.relative_mse, e.cpu_seconds,
-                            e.efficiency, uniform > 0 ? e.efficiency / uniform : 0.0, e.relative_efficiency,
-                            uniform_relative > 0 ? e.relative_efficiency / uniform_relative : 0.0);
-            }
-            for (const EfficiencyRow& e : table) {
-                if (!(e.mse > 0) || !(e.relative_mse > 0)) {
-                    std::printf(
-                        "note: an MSE at or below the reference's own noise (efficiency shown as 0): render "
-                        "the "
-                        "reference with more samples (--reference-spp)\n");
-                    break;
-                }
-            }
-            write_convergence_csv(rows, csv);
-            std::filesystem::path stem = csv;
-            stem.replace_extension();
-            const std::string title = std::filesystem::path(scene.file).filename().string() + ", " +
-                                      std::to_string(settings.width) + "x" + std::to_string(settings.height);
-            if (plot_convergence(csv, strategies, stem, title)) {
-                std::printf("wrote %s, %s_spp.png, %s_time.png and %s_relative.png\n", csv.c_str(),
-                            stem.c_str(), stem.c_str(), stem.c_str());
-            } else {
-                std::printf("wrote %s; gnuplot is not installed, so no plot (apt-get install gnuplot-nox)\n",
-                            csv.c_str());
-            }
+            print_convergence_study(prepared, options, camera, settings, ref, max_spp, csv);
             return std::nullopt;
         }
 

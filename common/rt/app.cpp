@@ -76,7 +76,8 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
         if (r.unsampled_pixels > 0) {
             const PixelRect& u = r.unsampled_region;
             std::printf(
-                "  interrupted in the first pass: %llu of %.0f pixels have no sample and are black, all within "
+                "  interrupted in the first pass: %llu of %.0f pixels have no sample and are black, all "
+                "within "
                 "x [%d, %d), y [%d, %d)\n",
                 static_cast<unsigned long long>(r.unsampled_pixels), pixels, u.x0, u.x1, u.y0, u.y1);
         }
@@ -154,7 +155,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
     const std::string png_name = png.filename().string();
     if (!png_name.ends_with(".png") || png_name.size() == 4) {
-        throw InputError("--out: must name a file ending in .png, with a name before the .png, got " + shown(png));
+        throw InputError("--out: must name a file ending in .png, with a name before the .png, got " +
+                         shown(png));
     }
     const fs::path pfm = with_suffix(png, "", ".pfm");
     const fs::path partial_png = with_suffix(png, ".partial", ".png");
@@ -233,8 +235,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // The summary speaks of every rank's samples, not rank 0's share.
     RenderSettings all_ranks = settings;
     all_ranks.samples = plan.whole;
-    print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result, reference,
-                  written);
+    print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
+                  reference, written);
     if (!r.interrupted && interrupt_requested()) {
         // The signal came once the render was done: the complete image was written all the same.
         std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
@@ -254,7 +256,8 @@ int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const Chapter
     } catch (const InputError& e) {
         // Every rank checks the same input and fails alike: rank 0 says why. printable(): whatever the
         // message quotes (a flag's value in CLI11's words), it stays one line.
-        if (!mpi || mpi->is_root()) std::fprintf(stderr, "%s: %s\n", chapter.executable, printable(e.what()).c_str());
+        if (!mpi || mpi->is_root())
+            std::fprintf(stderr, "%s: %s\n", chapter.executable, printable(e.what()).c_str());
         return kExitBadInput;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr,

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <vector>
 
-#include "rt/staged_file.hpp"
 #include "rt/errors.hpp"
 #include "rt/fnv_hash.hpp"
 #include "rt/image_io.hpp"
+#include "rt/staged_file.hpp"
 
 namespace rt {
 namespace fs = std::filesystem;

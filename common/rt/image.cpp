@@ -32,7 +32,8 @@ void check_image_size(long long width, long long height) {
     rlimit limit{};
     const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
     const double process = limited ? double(limit.rlim_cur) : 0;
-    const std::string needs = "image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of ";
+    const std::string needs =
+        "image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of ";
     if (limited && (!(memory > 0) || process < memory) && needed > process / 2) {
         throw InputError(needs + "the " + gigabytes(process) + " this process may use (ulimit -v)");
     }

@@ -145,7 +145,8 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
     // One whitespace byte ends the header; a CRLF line end would shift every pixel by a byte.
     const int after_scale = in.get();
     if (after_scale == '\r' && in.peek() == '\n') {
-        throw InputError(name + ": PFM header must end in one whitespace byte before the pixels, got \"\\r\\n\" "
+        throw InputError(name +
+                         ": PFM header must end in one whitespace byte before the pixels, got \"\\r\\n\" "
                          "(a Windows line end)");
     }
     if (!std::isspace(after_scale)) {
@@ -186,9 +187,9 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
             const Color c(rgb[0], rgb[1], rgb[2]);
             const bool radiance = pixels == PfmPixels::kRadiance;
             if (!is_finite(c) || (radiance && (c.r < 0 || c.g < 0 || c.b < 0))) {
-                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") must be " +
-                                 (radiance ? "finite radiance, >= 0" : "finite") + ", got " + show_number(c.r) +
-                                 " " + show_number(c.g) + " " + show_number(c.b));
+                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                 ") must be " + (radiance ? "finite radiance, >= 0" : "finite") + ", got " +
+                                 show_number(c.r) + " " + show_number(c.g) + " " + show_number(c.b));
             }
             image.at(x, y) = c;
         }

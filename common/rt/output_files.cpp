@@ -48,7 +48,8 @@ std::string write_outputs(const Image& image, const fs::path& png, const Film* f
         files.insert(files.begin(), &*film_file);
     }
     commit_together(files);
-    return film ? shown(png) + ", " + shown(pfm) + " and " + shown(film_path) : shown(png) + " and " + shown(pfm);
+    return film ? shown(png) + ", " + shown(pfm) + " and " + shown(film_path)
+                : shown(png) + " and " + shown(pfm);
 }
 
 }  // namespace rt

@@ -52,10 +52,11 @@ struct RenderResult {
     PixelSums sums;  // empty for a render that splats (chapter 08's light paths) instead of sampling pixels
     RayCounts rays;
     double seconds = 0;
-    std::uint64_t samples = 0;     // samples actually taken (and kept)
-    int samples_per_pixel = 0;     // samples every pixel has (fewer than asked when interrupted)
+    std::uint64_t samples = 0;  // samples actually taken (and kept)
+    int samples_per_pixel = 0;  // samples every pixel has (fewer than asked when interrupted)
     bool interrupted = false;
-    // Interrupted in the first pass: the pixels left without a sample (black), and the rectangle holding them.
+    // Interrupted in the first pass: the pixels left without a sample (black), and the rectangle holding
+    // them.
     std::uint64_t unsampled_pixels = 0;
     PixelRect unsampled_region;
 };
@@ -108,7 +109,8 @@ RenderResult render(const RenderSettings& settings, F&& sample) {
                 }
             }
             for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) sums.at(x, y) = tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))];
+                for (int x = x0; x < x1; ++x)
+                    sums.at(x, y) = tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))];
             return true;
         });
 }

@@ -56,7 +56,8 @@ SplitPlan plan_split(const SplitOptions& options, const FilmIdentity& identity, 
     plan.writes_film = !options.samples.empty() || !options.resume.empty();
     // A whole render in one process leaves the range unset, so a study that renders the scene again at
     // another spp (chapter 04's shadow study, chapter 07's depth study) takes all of its own samples.
-    if (plan.writes_film || mpi.size() > 1) settings.samples = split_range(plan.whole, mpi.size(), mpi.rank());
+    if (plan.writes_film || mpi.size() > 1)
+        settings.samples = split_range(plan.whole, mpi.size(), mpi.rank());
     return plan;
 }
 

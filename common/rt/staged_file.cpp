@@ -69,14 +69,15 @@ std::string folder_problem(const fs::path& folder) {
 StagedFile::StagedFile(fs::path target) : target_(std::move(target)) {
     const fs::path folder = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
     const std::string where = shown(target_) + ": cannot be written: ";
-    if (const std::string problem = folder_problem(folder); !problem.empty()) throw InputError(where + problem);
+    if (const std::string problem = folder_problem(folder); !problem.empty())
+        throw InputError(where + problem);
     std::error_code ec;
     if (fs::is_directory(target_, ec)) throw InputError(where + "it is a folder");
     // Exclusive creation: a name some other file already has is skipped, never opened.
     for (int attempt = 0; attempt < 100; ++attempt) {
         const fs::path candidate = target_.has_parent_path() ? folder / "" : fs::path();
-        staging_ = candidate.string() + ".rt-" + std::to_string(::getpid()) + "-" + std::to_string(g_counter++) +
-                   ".staging";
+        staging_ = candidate.string() + ".rt-" + std::to_string(::getpid()) + "-" +
+                   std::to_string(g_counter++) + ".staging";
         slot_ = claim_slot(staging_.string());
         if (slot_ < 0) throw std::runtime_error(where + "too many files staged at once");
         const int fd = ::open(staging_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);

@@ -2,8 +2,8 @@
 // name holds either the earlier file or the finished one, never half a file.
 //
 // A staging name is ".rt-<pid>-<n>.staging" in the target's folder: unique per process (the process id and a
-// counter; created exclusively, so no one else's file is ever opened or removed) and at most 40 bytes, however
-// long the target's own name. Each is removed by the destructor unless committed, and by
+// counter; created exclusively, so no one else's file is ever opened or removed) and at most 40 bytes,
+// however long the target's own name. Each is removed by the destructor unless committed, and by
 // remove_staged_files_now() (async-signal-safe) from a signal handler that ends the process.
 #pragma once
 
