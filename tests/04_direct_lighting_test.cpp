@@ -682,6 +682,70 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
     CHECK_FALSE(find_plane_under_quad(scene, materials));
 }
 
+TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hit, for every kind of emitter",
+          "[lights][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+          "[ex:ch02.triangle_watertight]") {
+    // Emitters of every kind among surfaces that emit nothing: a box (6 faces), a triangle, a sphere, a quad,
+    // and an emissive plane (no light: infinite area).
+    const Scene scene = parse_scene(R"({
+      "camera": {"from": [0, 0, 10], "at": [0, 0, 0]},
+      "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2]},
+                    "grey": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+      "shapes": [
+        {"type": "sphere", "center": [0, -5, 0], "radius": 0.5, "material": "grey"},
+        {"type": "box", "min": [-4, -1, -1], "max": [-2, 1, 1], "material": "lamp"},
+        {"type": "triangle", "vertices": [[2, -1, 0], [4, -1, 0], [3, 1, 0]], "material": "lamp"},
+        {"type": "quad", "origin": [10, 10, 10], "u": [1, 0, 0], "v": [0, 1, 0], "material": "grey"},
+        {"type": "sphere", "center": [0, 4, 0], "radius": 1, "material": "lamp"},
+        {"type": "quad", "origin": [-1, -8, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"},
+        {"type": "plane", "point": [0, 0, -50], "normal": [0, 0, 1], "material": "lamp"}
+      ]
+    })",
+                                    "lights.json");
+    const World world(scene);
+    const LightSet lights = collect_lights(scene);
+    REQUIRE(lights.quads.size() == 7);
+    REQUIRE(lights.triangles.size() == 1);
+    REQUIRE(lights.spheres.size() == 1);
+    REQUIRE(lights.by_hit.size() == 9);  // the 6 box faces, the triangle, the sphere, the quad
+    Pcg32 rng(90, 0);
+    int checked = 0;
+    auto aim_at = [&](const Vec3& target, LightRef::List list, std::uint32_t index) {
+        // From far outside the scene's emitters, along a line through the target, so the first hit is on
+        // the emitter the target lies on (or on something nearer, which the test then skips).
+        const Vec3 from = target + Real(30) * glm::normalize(Vec3(0.3f, 0.2f, 1));
+        const auto hit = world.intersect(Ray{from, glm::normalize(target - from)});
+        if (!hit || glm::length(hit->point - target) > 1e-3f) return;
+        REQUIRE(hit->light >= 0);
+        const LightRef ref = lights.by_hit[std::size_t(hit->light)];
+        CHECK(ref.list == list);
+        CHECK(ref.index == index);
+        ++checked;
+    };
+    for (int s = 0; s < 200; ++s) {
+        const Vec2 u = rng.next_vec2();
+        for (std::uint32_t i = 0; i < lights.quads.size(); ++i) {
+            const QuadLight& q = lights.quads[i];
+            aim_at(q.origin + u.x * q.u + u.y * q.v, LightRef::List::kQuads, i);
+        }
+        const TriangleLight& t = lights.triangles[0];
+        const Real b1 = 1 - std::sqrt(u.x), b2 = u.y * std::sqrt(u.x);
+        aim_at((1 - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2, LightRef::List::kTriangles, 0);
+        const SphereLight& sphere = lights.spheres[0];
+        aim_at(sphere.center +
+                   sphere.radius * glm::normalize(Vec3(0.3f, 0.2f, 1) + Real(0.5) * random_unit(rng)),
+               LightRef::List::kSpheres, 0);
+    }
+    CHECK(checked > 500);
+    // The emissive plane is no light, and a surface that emits nothing has none.
+    const auto plane_hit = world.intersect(Ray{{20, 20, 0}, {0, 0, -1}});
+    REQUIRE(plane_hit);
+    CHECK(plane_hit->light == -1);
+    const auto grey_hit = world.intersect(Ray{{0, -5, 10}, {0, 0, -1}});
+    REQUIRE(grey_hit);
+    CHECK(grey_hit->light == -1);
+}
+
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
           "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
           "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light]"
