@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/bsdf.hpp"
 #include "gi_render.hpp"
 
 namespace rt {
@@ -23,7 +23,7 @@ std::vector<std::string> material_notes(const Scene& scene, const MaterialTable&
         if (!used[i]) continue;
         const Bsdf& bsdf = materials.bsdf(int(i));
         const std::string name = "material '" + scene.materials[i].name + "'";
-        const bool lobe = !is_delta(bsdf) && !is_black(bsdf) && !dynamic_cast<const LambertBrdf*>(&bsdf);
+        const bool lobe = !is_delta(bsdf) && !is_black(bsdf) && !bsdf.flags().diffuse;
         if (lobe && simulated.contains(Effect::kIndirect)) {
             notes.push_back(name +
                             ": its lobe reflects direct light (chapter 04) and indirect light from uniform "

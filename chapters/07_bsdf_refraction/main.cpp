@@ -12,6 +12,7 @@
 #include "fresnel_study.hpp"
 #include "refraction_materials.hpp"
 #include "rt/app.hpp"
+#include "rt/effects.hpp"
 #include "rt/errors.hpp"
 
 namespace {
@@ -38,12 +39,10 @@ void print_fresnel_study(Real ior, const std::string& csv) {
     }
 }
 
-// The index of the scene's first dielectric, the one the material table made glass of (1.5 without one).
+// The index of the scene's first dielectric (1.5 without one).
 Real scene_ior(const Scene& scene) {
-    const MaterialTable materials(scene, EffectSet::all(), refraction_materials());
-    for (std::size_t i = 0; i < materials.size(); ++i) {
-        if (materials.bsdf(int(i)).flags().transmission) return scene.materials[i].ior;
-    }
+    for (const Material& m : scene.materials)
+        if (effect_of(m) == Effect::kRefraction) return m.ior;
     return Real(1.5);
 }
 
