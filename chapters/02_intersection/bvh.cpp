@@ -67,63 +67,67 @@ struct Builder {
         // Up to four primitives stay together: splitting them saves a few triangle tests but adds two nodes
         // (64 bytes) and a level to descend; at 10^6 triangles the memory traffic costs more than the tests.
         if (count <= kMinSplitCount) return make_leaf(node, begin, end);
-        const int axis = centroid_box.longest_axis();
-        // In double: a float extent may be subnormal (its inverse infinite) or overflow to infinity (centroids
-        // at -3e38 and 3e38), and a float area may underflow to zero or overflow; in double neither can.
-        const double lo = centroid_box.min[axis];
-        const double extent = double(centroid_box.max[axis]) - lo;
+        const int longest = centroid_box.longest_axis();
         const double node_area = half_area(box);
         std::uint32_t middle = 0;
-        if (!(extent > 0) || !(node_area > 0)) {
+        // In double: a float extent may be subnormal (its inverse infinite) or overflow to infinity (centroids
+        // at -3e38 and 3e38), and a float area may underflow to zero or overflow; in double neither can.
+        auto extent_of = [&](int axis) { return double(centroid_box.max[axis]) - double(centroid_box.min[axis]); };
+        if (!(extent_of(longest) > 0) || !(node_area > 0)) {
             // Every centroid in one point (no plane separates them), or every primitive on one line (the node
             // has no area for the SAH to compare): a leaf, or halves.
             if (count <= kMaxLeafSize) return make_leaf(node, begin, end);
-            middle = median_split(begin, end, axis);
+            middle = median_split(begin, end, longest);
         } else if (depth >= kMaxDepth) {
-            middle = median_split(begin, end, axis);
+            middle = median_split(begin, end, longest);
         } else {
-            // Bin the centroids into kBins slabs along the axis and evaluate the SAH at each bin boundary:
-            // cost(split) = C_trav + (A_left N_left + A_right N_right) / A, against cost(leaf) = N.
-            std::array<Aabb, kBins> bin_box;
-            std::array<std::uint32_t, kBins> bin_count{};
+            // Along each axis, bin the centroids into kBins slabs and evaluate the SAH at each bin boundary:
+            // cost(split) = C_trav + (A_left N_left + A_right N_right) / A, against cost(leaf) = N. The
+            // cheapest split of the three axes is taken.
             // (c − lo) / extent is in [0, 1] for every centroid c of the node: the bin is in [0, kBins).
-            auto bin_of = [&](std::uint32_t p) {
-                const double t = (double(centroids[p][axis]) - lo) / extent * kBins;
+            auto bin_of = [&](std::uint32_t p, int axis) {
+                const double t = (double(centroids[p][axis]) - double(centroid_box.min[axis])) / extent_of(axis) * kBins;
                 return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
             };
-            for (std::uint32_t i = begin; i < end; ++i) {
-                const int b = bin_of(indices[i]);
-                ++bin_count[b];
-                bin_box[b].extend(bounds[indices[i]]);
-            }
-            std::array<double, kBins - 1> left_cost{};
-            Aabb left;
-            std::uint32_t left_count = 0;
-            for (int b = 0; b < kBins - 1; ++b) {
-                left.extend(bin_box[b]);
-                left_count += bin_count[b];
-                left_cost[b] = left_count > 0 ? half_area(left) * double(left_count) : 0;
-            }
-            Aabb right;
-            std::uint32_t right_count = 0;
-            int best = -1;
+            int best_axis = longest, best = -1;
             double best_cost = std::numeric_limits<double>::infinity();
-            for (int b = kBins - 1; b > 0; --b) {
-                right.extend(bin_box[b]);
-                right_count += bin_count[b];
-                const double cost =
-                    left_cost[b - 1] + (right_count > 0 ? half_area(right) * double(right_count) : 0);
-                if (cost < best_cost) {
-                    best_cost = cost;
-                    best = b;  // bins [0, b) go left
+            for (int axis = 0; axis < 3; ++axis) {
+                if (!(extent_of(axis) > 0)) continue;
+                std::array<Aabb, kBins> bin_box;
+                std::array<std::uint32_t, kBins> bin_count{};
+                for (std::uint32_t i = begin; i < end; ++i) {
+                    const int b = bin_of(indices[i], axis);
+                    ++bin_count[b];
+                    bin_box[b].extend(bounds[indices[i]]);
+                }
+                std::array<double, kBins - 1> left_cost{};
+                Aabb left;
+                std::uint32_t left_count = 0;
+                for (int b = 0; b < kBins - 1; ++b) {
+                    left.extend(bin_box[b]);
+                    left_count += bin_count[b];
+                    left_cost[b] = left_count > 0 ? half_area(left) * double(left_count) : 0;
+                }
+                Aabb right;
+                std::uint32_t right_count = 0;
+                for (int b = kBins - 1; b > 0; --b) {
+                    right.extend(bin_box[b]);
+                    right_count += bin_count[b];
+                    const double cost =
+                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * double(right_count) : 0);
+                    if (cost < best_cost) {
+                        best_cost = cost;
+                        best = b;  // bins [0, b) go left
+                        best_axis = axis;
+                    }
                 }
             }
             const double split_cost = kTraversalCost + best_cost / node_area;
             if (count <= kMaxLeafSize && !(split_cost < double(count))) return make_leaf(node, begin, end);
             middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
-                                                  [&](std::uint32_t p) { return bin_of(p) < best; }) -
+                                                  [&](std::uint32_t p) { return bin_of(p, best_axis) < best; }) -
                                    indices.begin());
-            if (middle == begin || middle == end) middle = median_split(begin, end, axis);
+            if (middle == begin || middle == end) middle = median_split(begin, end, best_axis);
         }
         const std::uint32_t first = std::uint32_t(nodes.size());
         nodes.push_back({});

@@ -26,23 +26,29 @@ bool is_closed(const MeshShape& mesh) {
     return !mesh.triangles.empty();
 }
 
+std::vector<Ray> leak_probe_rays(const MeshShape& mesh) {
+    Vec3d sum{0};
+    for (const Vec3& p : mesh.positions) sum += Vec3d(p);
+    const Vec3 centroid{sum / double(mesh.positions.size())};
+    std::vector<Ray> rays;
+    auto aim = [&](const Vec3& target) { rays.push_back(Ray{centroid, glm::normalize(target - centroid)}); };
+    for (const Vec3& p : mesh.positions) aim(p);
+    for (const auto& [edge, count] : edge_uses(mesh)) {
+        const Vec3 a = mesh.positions[edge.first], b = mesh.positions[edge.second];
+        for (Real s : {Real(0.25), Real(0.5), Real(0.75)}) aim(a + s * (b - a));
+    }
+    return rays;
+}
+
 LeakProbe probe_leaks(const MeshShape& mesh, TriangleTest test) {
     Scene scene;
     scene.materials.push_back(Material{});
     scene.shapes.push_back(Shape{mesh, 0, "probe"});
     const World world(scene, {test, Acceleration::kBvh});
-    Vec3d sum{0};
-    for (const Vec3& p : mesh.positions) sum += Vec3d(p);
-    const Vec3 centroid{sum / double(mesh.positions.size())};
     LeakProbe probe;
-    auto shoot = [&](const Vec3& target) {
+    for (const Ray& ray : leak_probe_rays(mesh)) {
         ++probe.rays;
-        if (!world.intersect(Ray{centroid, glm::normalize(target - centroid)})) ++probe.escaped;
-    };
-    for (const Vec3& p : mesh.positions) shoot(p);
-    for (const auto& [edge, count] : edge_uses(mesh)) {
-        const Vec3 a = mesh.positions[edge.first], b = mesh.positions[edge.second];
-        for (Real s : {Real(0.25), Real(0.5), Real(0.75)}) shoot(a + s * (b - a));
+        if (!world.intersect(ray)) ++probe.escaped;
     }
     return probe;
 }

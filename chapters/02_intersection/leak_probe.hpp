@@ -4,7 +4,9 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
+#include "rt/ray.hpp"
 #include "rt/scene.hpp"
 #include "triangle.hpp"
 
@@ -18,8 +20,11 @@ struct LeakProbe {
     std::uint64_t escaped = 0;  // rays from inside that hit nothing
 };
 
-// Rays from the vertex centroid to every vertex and to the points at 1/4, 1/2 and 3/4 of every edge, each
-// intersected with the mesh alone (through a BVH) by the given triangle test.
+// The probe's rays: from the vertex centroid to every vertex and to the points at 1/4, 1/2 and 3/4 of every
+// edge.
+std::vector<Ray> leak_probe_rays(const MeshShape& mesh);
+
+// The probe's rays, each intersected with the mesh alone (through a BVH) by the given triangle test.
 LeakProbe probe_leaks(const MeshShape& mesh, TriangleTest test);
 
 }  // namespace rt

@@ -38,8 +38,10 @@ int main(int argc, char** argv) {
             ->check(CLI::IsMember({"normal", "distance", "cost"}));
         app.add_option("--triangle-test", triangle_test, "Ray–triangle test: watertight|moller")
             ->check(CLI::IsMember({"watertight", "moller"}));
-        app.add_option("--accel", accel, "Acceleration: bvh|none (test every primitive)")
-            ->check(CLI::IsMember({"bvh", "none"}));
+        app.add_option("--accel", accel,
+                       "Acceleration: bvh (4-wide, collapsed from the binary one)|binary (the binary BVH "
+                       "itself)|none (test every primitive)")
+            ->check(CLI::IsMember({"bvh", "binary", "none"}));
         app.add_option(
             "--write-mesh", mesh_out,
             "Write the default scene's mesh (icosphere, 3 subdivisions, radii jittered by 5%) as OBJ, "
@@ -56,7 +58,8 @@ int main(int argc, char** argv) {
         }
         const WorldOptions options{
             triangle_test == "moller" ? TriangleTest::kMollerTrumbore : TriangleTest::kWatertight,
-            accel == "none" ? Acceleration::kNone : Acceleration::kBvh};
+            accel == "none" ? Acceleration::kNone
+                            : (accel == "binary" ? Acceleration::kBinaryBvh : Acceleration::kBvh)};
         const auto build_start = std::chrono::steady_clock::now();
         const World world(context.scene, options);
         const double build_seconds =
@@ -77,10 +80,12 @@ int main(int argc, char** argv) {
         run.notes.push_back("showing " + show + "; materials are not shaded before chapter 03");
         run.notes.push_back(format("world: %.0f primitives (%.0f triangles)", double(world.primitive_count()),
                                    double(world.triangle_count())) +
-                            (options.acceleration == Acceleration::kBvh
-                                 ? format(", BVH of %.0f nodes (%.0f KiB) built in %.1f ms",
+                            (options.acceleration != Acceleration::kNone
+                                 ? format(", BVH of %.0f binary nodes and %.0f wide ones",
                                           double(world.bvh().nodes().size()),
-                                          double(world.bvh().bytes()) / 1024, build_seconds * 1e3)
+                                          double(world.wide_bvh().nodes().size())) +
+                                       format(" (%.0f KiB in all) built in %.1f ms",
+                                          double(world.acceleration_bytes()) / 1024, build_seconds * 1e3)
                                  : std::string(", no acceleration: every ray tests every primitive")));
         run.notes.push_back(
             "triangle test: " + triangle_test + ", acceleration: " + accel +

@@ -1,5 +1,6 @@
 #include "world.hpp"
 
+#include <algorithm>
 #include <type_traits>
 #include <variant>
 
@@ -11,12 +12,45 @@ namespace rt {
 World::World(const Scene& scene, WorldOptions options) : options_(options) {
     for (const Shape& shape : scene.shapes) add(shape, scene.material_of(shape).emissive());
     bounded_count_ = std::uint32_t(primitives_.size());
-    if (options_.acceleration == Acceleration::kBvh) {
+    if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
         std::vector<std::uint32_t> order;
         bvh_ = Bvh(all_bounds(), order);
         lay_out_in(order);
+        if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }
+}
+
+// The wide BVH over the binary one. Each binary leaf becomes a list of items: its triangles four at a time
+// in packets (watertight test only: the packet is its SIMD form), in leaf order, then its other primitives.
+void World::collapse_to_wide() {
+    const bool pack = options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
+    wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
+        const std::uint32_t first = std::uint32_t(leaf_items_.size());
+        std::vector<Triangle> triangles;
+        std::vector<std::uint32_t> slots;
+        for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
+            if (pack && primitives_[slot].kind == Kind::kTriangle) {
+                triangles.push_back(triangles_[primitives_[slot].index]);
+                slots.push_back(slot);
+            }
+        }
+        for (std::size_t at = 0; at < triangles.size(); at += kTriangleLanes) {
+            const std::size_t n = std::min<std::size_t>(kTriangleLanes, triangles.size() - at);
+            leaf_items_.push_back(kPacketItem | std::uint32_t(triangle_packets_.size()));
+            triangle_packets_.push_back(make_triangle_packet(std::span(triangles).subspan(at, n),
+                                                             std::span(slots).subspan(at, n)));
+        }
+        for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
+            if (!(pack && primitives_[slot].kind == Kind::kTriangle)) leaf_items_.push_back(slot);
+        }
+        return WideBvh::ItemRange{first, std::uint32_t(leaf_items_.size()) - first};
+    });
+}
+
+std::size_t World::acceleration_bytes() const {
+    return bvh_.bytes() + wide_.bytes() + triangle_packets_.size() * sizeof(TrianglePacket) +
+           leaf_items_.size() * sizeof(std::uint32_t);
 }
 
 std::vector<Aabb> World::all_bounds() const {
@@ -205,6 +239,27 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
     return false;
 }
 
+// The items of a wide leaf, in order: a triangle packet at once, any other primitive alone.
+bool World::test_items(const Ray& ray, const WatertightRay& sheared, std::uint32_t first, std::uint32_t count,
+                       Real& t_max, bool any_hit, Candidate& found) const {
+    bool hit = false;
+    for (std::uint32_t i = first; i < first + count; ++i) {
+        const std::uint32_t item = leaf_items_[i];
+        if (item & kPacketItem) {
+            const TrianglePacket& packet = triangle_packets_[item & ~kPacketItem];
+            const auto h = intersect_triangle_packet(ray, sheared, packet, t_max);
+            if (!h) continue;
+            found = {h->hit.t, packet.slot[std::size_t(h->lane)], h->hit.barycentrics};
+        } else if (!test(ray, sheared, item, t_max, found)) {
+            continue;
+        }
+        t_max = found.t;
+        hit = true;
+        if (any_hit) return true;
+    }
+    return hit;
+}
+
 bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const {
     bool hit = false;
     const std::uint32_t slots = std::uint32_t(primitives_.size());
@@ -227,6 +282,12 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
     // would only turn away the rays that miss the whole scene, at the price of three divisions and a slab
     // test each.
     if (options_.acceleration == Acceleration::kBvh && bvh_.nodes().size() > 1) {
+        auto test_leaf = [&](std::uint32_t first, std::uint32_t count, Real& limit) {
+            return test_items(ray, sheared, first, count, limit, any_hit, found);
+        };
+        return wide_.traverse(make_wide_ray(ray), t_max, any_hit, test_leaf, stats) || hit;
+    }
+    if (options_.acceleration == Acceleration::kBinaryBvh && bvh_.nodes().size() > 1) {
         return bvh_.traverse(ray, inverse_direction(ray.direction), t_max, any_hit, test_one, stats) || hit;
     }
     for (std::uint32_t i = 0; i < slots; ++i) {

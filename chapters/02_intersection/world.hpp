@@ -1,7 +1,9 @@
 // The world: every shape of a Scene as intersectable primitives — spheres, quads (a box becomes 6 quads,
 // transformed), triangles (a mesh becomes its triangles) — in a BVH, and unbounded planes tested outside it.
 // The nearest intersection is the smallest t in (0, t_max) over all primitives. With the BVH, neighbouring
-// quads are grouped four by four into packets (quad_packet.hpp), each one leaf entry tested at once.
+// quads are grouped four by four into packets (quad_packet.hpp), each one leaf entry tested at once. The
+// binary BVH is then collapsed into a 4-wide one (wide_bvh.hpp), which rays are traced through, and the
+// triangles of each leaf are tested four at a time (triangle_packet.hpp).
 #pragma once
 
 #include <cstdint>
@@ -17,14 +19,22 @@
 #include "rt/scene.hpp"
 #include "sphere.hpp"
 #include "triangle.hpp"
+#include "triangle_packet.hpp"
+#include "wide_bvh.hpp"
 
 namespace rt {
 
-enum class Acceleration { kBvh, kNone };
+// kBvh: the binary BVH collapsed into the wide one, traced through that (the default); kBinaryBvh: traced
+// through the binary BVH itself, one triangle at a time (Bvh::traverse, the chapter's first exercise);
+// kNone: every primitive tested.
+enum class Acceleration { kBvh, kBinaryBvh, kNone };
 
 struct WorldOptions {
     TriangleTest triangle_test = TriangleTest::kWatertight;
     Acceleration acceleration = Acceleration::kBvh;
+    // With kBvh and the watertight test: each leaf's triangles are tested four at a time (false: one by one,
+    // to measure what the packets buy).
+    bool triangle_packets = true;
 };
 
 class World {
@@ -40,8 +50,13 @@ class World {
 
     // Spheres, quads, triangles and planes (a packet counts as the quads it holds).
     std::size_t primitive_count() const;
-    // The hierarchy (empty with Acceleration::kNone).
+    // The binary hierarchy, as built (empty with Acceleration::kNone).
     const Bvh& bvh() const { return bvh_; }
+    // The wide one the rays are traced through (empty unless Acceleration::kBvh).
+    const WideBvh& wide_bvh() const { return wide_; }
+    // The memory the acceleration adds to the primitives: the nodes of both trees, the triangle packets and
+    // the wide leaves' item lists.
+    std::size_t acceleration_bytes() const;
     std::size_t triangle_count() const { return triangles_.size(); }
 
   private:
@@ -74,10 +89,13 @@ class World {
     void add_primitive(Kind kind, std::uint32_t index, int material, bool emissive);
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
+    void collapse_to_wide();
     std::vector<Aabb> all_bounds() const;
     Aabb bounds(const Primitive& p) const;
     bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
               Candidate& found) const;
+    bool test_items(const Ray& ray, const WatertightRay& sheared, std::uint32_t first, std::uint32_t count,
+                    Real& t_max, bool any_hit, Candidate& found) const;
     bool search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;
 
@@ -93,6 +111,11 @@ class World {
     std::uint32_t bounded_count_ = 0;               // spheres, quads and triangles
     std::vector<MaterialPlane> planes_;
     Bvh bvh_;
+    // The wide BVH's leaves list items: a primitive's slot, or kPacketItem | i for triangle packet i.
+    static constexpr std::uint32_t kPacketItem = 1u << 31;
+    std::vector<std::uint32_t> leaf_items_;
+    std::vector<TrianglePacket> triangle_packets_;
+    WideBvh wide_;
 };
 
 }  // namespace rt

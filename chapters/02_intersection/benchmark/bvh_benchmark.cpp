@@ -5,6 +5,11 @@
 // random points around the mesh to random points inside it: incoherent, every query a new path through the
 // tree and through memory). Each figure is the median of `--repeats` runs. It checks the lesson's three
 // targets.
+//
+// `--embree` instead traces identical rays through the course's BVH, step by step (the binary BVH; the wide
+// one, triangles one by one; the wide one with triangle packets), and through Embree 3 (default and robust),
+// on 1 and 2 threads, each figure the median of runs taken in turn, and counts the rays each lets escape from
+// the closed mesh. Built with Embree only when CMake finds it; otherwise `--embree` says so and stops.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -16,9 +21,13 @@
 #include <vector>
 
 #include "01_ray_generation/camera.hpp"
+#include "leak_probe.hpp"
 #include "mesh_generator.hpp"
 #include "rt/random.hpp"
 #include "world.hpp"
+#ifdef RT_HAVE_EMBREE
+#include "embree_mesh.hpp"
+#endif
 
 namespace {
 
@@ -121,6 +130,205 @@ Scene mesh_scene(MeshShape mesh) {
     return scene;
 }
 
+
+// Traces every ray with `query(ray)` (true: a hit), split over `threads`; returns how many hit.
+template <typename Query>
+std::size_t count_hits(const std::vector<Ray>& rays, int threads, const Query& query) {
+    std::vector<std::size_t> hits(std::size_t(threads), 0);
+    auto work = [&](int t) {
+        std::size_t n = 0;
+        for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) n += query(rays[i]) ? 1 : 0;
+        hits[std::size_t(t)] = n;
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& thread : pool) thread.join();
+    std::size_t total = 0;
+    for (std::size_t h : hits) total += h;
+    return total;
+}
+
+// Random unit directions and points in the ball of radius 0.5 around the origin, inside every mesh here
+// (a unit sphere, radii jittered by 5 %).
+struct InsideRays {
+    std::vector<Ray> nearest;  // from a point inside, in a random direction: each must hit the mesh
+    std::vector<Ray> shadow;   // from a point inside to a point at distance 3 outside: each is occluded
+    std::vector<Real> shadow_t_max;
+};
+InsideRays make_inside_rays(std::size_t count, std::uint64_t seed) {
+    Pcg32 rng(seed, 3);
+    auto in_ball = [&](Real radius) {
+        while (true) {
+            const Vec3 p = Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(2) - Real(1);
+            if (glm::dot(p, p) <= 1 && glm::dot(p, p) > Real(1e-4)) return p * radius;
+        }
+    };
+    InsideRays rays;
+    for (std::size_t i = 0; i < count; ++i) {
+        rays.nearest.push_back({in_ball(Real(0.5)), glm::normalize(in_ball(1))});
+        const Vec3 from = in_ball(Real(0.5)), to = glm::normalize(in_ball(1)) * Real(3);
+        rays.shadow.push_back({from, glm::normalize(to - from)});
+        rays.shadow_t_max.push_back(glm::length(to - from));
+    }
+    return rays;
+}
+
+#ifdef RT_HAVE_EMBREE
+// The course's three steps and Embree's two builds, traced on the same rays.
+struct Engines {
+    World binary, wide_single, wide;
+    EmbreeMesh embree, embree_robust;
+    explicit Engines(const Scene& scene, const MeshShape& mesh)
+        : binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh}),
+          wide_single(scene, {TriangleTest::kWatertight, Acceleration::kBvh, false}),
+          wide(scene),
+          embree(mesh, false),
+          embree_robust(mesh, true) {}
+};
+constexpr int kEngines = 5;
+const char* const kEngineNames[kEngines] = {"binary BVH", "wide BVH, triangles 1 by 1", "wide BVH + packets",
+                                           "Embree", "Embree robust"};
+
+// How many of `rays` engine `e` finds a hit for (nearest hit, or any hit before t_max[i] when given).
+std::size_t trace_engine(const Engines& en, int e, const std::vector<Ray>& rays, const std::vector<Real>* t_max,
+                         int threads) {
+    const Real* limit = t_max ? t_max->data() : nullptr;
+    auto index = [&](const Ray& r) { return std::size_t(&r - rays.data()); };
+    auto world_query = [&](const World& w) {
+        return [&, limit](const Ray& r) {
+            return limit ? w.occluded(r, limit[index(r)]) : w.intersect(r).has_value();
+        };
+    };
+    auto embree_query = [&](const EmbreeMesh& m) {
+        return [&, limit](const Ray& r) {
+            return limit ? m.occluded(r, limit[index(r)]) : m.intersect(r, kInfinity);
+        };
+    };
+    switch (e) {
+        case 0: return count_hits(rays, threads, world_query(en.binary));
+        case 1: return count_hits(rays, threads, world_query(en.wide_single));
+        case 2: return count_hits(rays, threads, world_query(en.wide));
+        case 3: return count_hits(rays, threads, embree_query(en.embree));
+        default: return count_hits(rays, threads, embree_query(en.embree_robust));
+    }
+}
+
+int compare_with_embree(int repeats, int ray_count, int max_exponent) {
+    const std::vector<Ray> camera_rays = make_camera_rays(512);
+    const InsideRays inside = make_inside_rays(std::size_t(ray_count), 11);
+    std::printf(
+        "Identical rays through the course's BVH and Embree %s, one ray at a time, on closed uv spheres of "
+        "n triangles (radii jittered by 5%%): %zu camera rays (nearest hit), %d rays from inside (nearest hit), "
+        "%d shadow rays from inside to outside (any hit). Mrays/s, the median of %d runs taken in turn "
+        "(engine after engine, run after run).\n\n",
+        embree_version(), camera_rays.size(), ray_count, ray_count,
+        repeats);
+    std::printf("| triangles | rays | threads |");
+    for (const char* name : kEngineNames) std::printf(" %s |", name);
+    std::printf(" course / Embree |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    struct Row {
+        double triangles, build_ms[kEngines], bytes[kEngines];
+        std::size_t escaped[3][kEngines], probe_rays;
+    };
+    std::vector<Row> rows;
+    double worst_ratio = kInfinity;
+    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
+        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
+        MeshShape mesh = make_uv_sphere(segments, segments / 2 + 1);
+        jitter_radii(mesh, Real(0.05), 5);
+        const Scene scene = mesh_scene(mesh);
+        const Engines engines(scene, mesh);
+        Row row{};
+        row.triangles = double(mesh.triangles.size());
+        // Build times, engine after engine, run after run.
+        std::vector<double> build[kEngines];
+        for (int r = 0; r < repeats; ++r) {
+            build[0].push_back(median_seconds(1, [&] { const World w(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh}); }));
+            build[1].push_back(median_seconds(1, [&] { const World w(scene, {TriangleTest::kWatertight, Acceleration::kBvh, false}); }));
+            build[2].push_back(median_seconds(1, [&] { const World w(scene); }));
+            build[3].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
+            build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
+        }
+        const World* worlds[3] = {&engines.binary, &engines.wide_single, &engines.wide};
+        for (int e = 0; e < kEngines; ++e) {
+            row.build_ms[e] = median(build[e]) * 1e3;
+            row.bytes[e] = double(e < 3 ? worlds[e]->acceleration_bytes()
+                                        : (e == 3 ? engines.embree : engines.embree_robust).bytes()) /
+                           row.triangles;
+        }
+        const std::vector<Ray> probe = leak_probe_rays(mesh);
+        row.probe_rays = probe.size();
+        for (int e = 0; e < kEngines; ++e) {
+            row.escaped[0][e] = inside.nearest.size() - trace_engine(engines, e, inside.nearest, nullptr, 1);
+            row.escaped[1][e] =
+                inside.shadow.size() - trace_engine(engines, e, inside.shadow, &inside.shadow_t_max, 1);
+            row.escaped[2][e] = probe.size() - trace_engine(engines, e, probe, nullptr, 1);
+        }
+        struct RaySet {
+            const char* name;
+            const std::vector<Ray>* rays;
+            const std::vector<Real>* t_max;
+        };
+        const RaySet sets[3] = {{"camera", &camera_rays, nullptr},
+                                {"from inside", &inside.nearest, nullptr},
+                                {"shadow (any hit)", &inside.shadow, &inside.shadow_t_max}};
+        for (const RaySet& set : sets) {
+            for (int threads : {1, 2}) {
+                std::vector<double> seconds[kEngines];
+                for (int r = 0; r < repeats; ++r) {
+                    for (int e = 0; e < kEngines; ++e) {
+                        seconds[e].push_back(
+                            median_seconds(1, [&] { trace_engine(engines, e, *set.rays, set.t_max, threads); }));
+                    }
+                }
+                std::printf("| %.0f | %s | %d |", row.triangles, set.name, threads);
+                double rate[kEngines];
+                for (int e = 0; e < kEngines; ++e) {
+                    rate[e] = double(set.rays->size()) / median(seconds[e]) * 1e-6;
+                    std::printf(" %.2f |", rate[e]);
+                }
+                std::printf(" %.2f |\n", rate[2] / rate[3]);
+                std::fflush(stdout);
+                worst_ratio = std::min(worst_ratio, rate[2] / rate[3]);
+            }
+        }
+        rows.push_back(row);
+    }
+    std::printf("\nBuild (ms, median of %d, in turn) and bytes per triangle (the course: its nodes, packets and leaf "
+                "lists, beside its triangles and their records; Embree: all it allocated)\n\n| triangles |",
+                repeats);
+    for (const char* name : kEngineNames) std::printf(" %s: build ms, bytes/tri |", name);
+    std::printf("\n|---:|---|---|---|---|---|\n");
+    for (const Row& row : rows) {
+        std::printf("| %.0f |", row.triangles);
+        for (int e = 0; e < kEngines; ++e) std::printf(" %.1f ms, %.1f B |", row.build_ms[e], row.bytes[e]);
+        std::printf("\n");
+    }
+    std::printf("\nRays that escaped the closed mesh (from inside: %d nearest-hit and %d shadow rays; the leak "
+                "probe's rays aimed from the centroid at every vertex and at 3 points of every edge)\n\n"
+                "| triangles | rays |",
+                ray_count, ray_count);
+    for (const char* name : kEngineNames) std::printf(" %s |", name);
+    std::printf("\n|---:|---|---:|---:|---:|---:|---:|\n");
+    bool watertight = true;
+    for (const Row& row : rows) {
+        const char* names[3] = {"from inside", "shadow (any hit)", "leak probe"};
+        for (int s = 0; s < 3; ++s) {
+            std::printf("| %.0f | %s%s |", row.triangles, names[s],
+                        s == 2 ? (" (" + std::to_string(row.probe_rays) + ")").c_str() : "");
+            for (int e = 0; e < kEngines; ++e) std::printf(" %zu |", row.escaped[s][e]);
+            std::printf("\n");
+            for (int e = 0; e < 3; ++e) watertight = watertight && row.escaped[s][e] == 0;
+        }
+    }
+    std::printf("\nTargets:\n  the course's Mrays/s / Embree's, worst over the table: %.2f (target >= 0.5): %s\n",
+                worst_ratio, worst_ratio >= 0.5 ? "met" : "NOT MET");
+    std::printf("  rays escaping the course's BVH: %s\n", watertight ? "none (met)" : "SOME (NOT MET)");
+    return worst_ratio >= 0.5 && watertight ? 0 : 1;
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -134,7 +342,19 @@ int main(int argc, char** argv) {
     app.add_option("--max-exponent", max_exponent, "Largest mesh: 10^N triangles")->check(CLI::Range(3, 7));
     std::string csv_path;
     app.add_option("--csv", csv_path, "Also write the table as CSV");
+    bool embree = false;
+    app.add_flag("--embree", embree,
+                 "Instead: the course's BVH, step by step, against Embree 3 on identical rays (when built with it)");
     CLI11_PARSE(app, argc, argv);
+    if (embree) {
+#ifdef RT_HAVE_EMBREE
+        return compare_with_embree(repeats, ray_count, max_exponent);
+#else
+        std::printf("ch02_benchmark --embree: skipped, built without Embree 3 (install libembree-dev and "
+                    "configure again: CMake then finds it)\n");
+        return 0;
+#endif
+    }
     std::ofstream csv;
     if (!csv_path.empty()) {
         csv.open(csv_path);

@@ -1,0 +1,76 @@
+#include "wide_bvh.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+WideRay make_wide_ray(const Ray& ray) {
+    WideRay r{ray, inverse_direction(ray.direction), {}, {}, true, {}};
+    for (int i = 0; i < 3; ++i) {
+        r.origin[std::size_t(i)] = ray.origin[i];
+        r.inverse[std::size_t(i)] = r.inverse_d[i];
+        r.finite = r.finite && std::abs(r.inverse_d[i]) < kInfinity;
+        r.negative[std::size_t(i)] = ray.direction[i] < 0;
+    }
+    return r;
+}
+
+WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
+    if (binary.nodes().empty()) return;
+    nodes_.reserve(binary.nodes().size() / 2 + 1);
+    collapse(binary, 0, leaf_items);
+    nodes_.shrink_to_fit();
+}
+
+// The wide node for binary node `binary_node` (a leaf becomes a node of one child), after which its
+// children's subtrees follow, depth first.
+std::uint32_t WideBvh::collapse(const Bvh& binary, std::uint32_t binary_node, const LeafItems& leaf_items) {
+    const std::vector<BvhNode>& tree = binary.nodes();
+    std::array<std::uint32_t, kWideBvhWidth> children{};
+    int count = 0;
+    if (tree[binary_node].leaf()) {
+        children[count++] = binary_node;
+    } else {
+        children[count++] = binary_node + 1;
+        children[count++] = tree[binary_node].offset;
+    }
+    while (count < kWideBvhWidth) {
+        // Open the interior child of largest surface area: the one a ray is likeliest to enter.
+        int widest = -1;
+        for (int k = 0; k < count; ++k) {
+            const BvhNode& c = tree[children[std::size_t(k)]];
+            if (!c.leaf() && (widest < 0 || c.box().half_area() >
+                                                tree[children[std::size_t(widest)]].box().half_area()))
+                widest = k;
+        }
+        if (widest < 0) break;
+        const std::uint32_t opened = children[std::size_t(widest)];
+        children[std::size_t(widest)] = opened + 1;
+        children[std::size_t(count++)] = tree[opened].offset;
+    }
+    const std::uint32_t index = std::uint32_t(nodes_.size());
+    WideBvhNode node;
+    for (int k = 0; k < kWideBvhWidth; ++k) {
+        const Aabb box = k < count ? tree[children[std::size_t(k)]].box() : Aabb{};
+        for (int axis = 0; axis < 3; ++axis) {
+            node.lower[std::size_t(axis)][std::size_t(k)] = box.min[axis];
+            node.upper[std::size_t(axis)][std::size_t(k)] = box.max[axis];
+        }
+        node.child[std::size_t(k)] = node.count[std::size_t(k)] = 0;
+    }
+    nodes_.push_back(node);
+    for (int k = 0; k < count; ++k) {
+        const BvhNode& c = tree[children[std::size_t(k)]];
+        if (c.leaf()) {
+            const ItemRange items = leaf_items ? leaf_items(c) : ItemRange{c.offset, c.count};
+            nodes_[index].child[std::size_t(k)] = items.first;
+            nodes_[index].count[std::size_t(k)] = items.count;
+        } else {
+            const std::uint32_t child = collapse(binary, children[std::size_t(k)], leaf_items);
+            nodes_[index].child[std::size_t(k)] = child;
+        }
+    }
+    return index;
+}
+
+}  // namespace rt

@@ -1,0 +1,164 @@
+// A wide BVH: the binary BVH (bvh.hpp) collapsed into a tree whose nodes hold the boxes of up to four
+// children, tested against the ray together in SIMD (std::experimental::simd). A binary tree tests two boxes
+// per node, one level per step; a 4-wide tree tests four per node and has half the levels, so a ray makes
+// half the steps and half the dependent loads from memory, and each step's four slab tests take the
+// instructions of one. The World traces through it; the binary BVH stays the one that is built (by the SAH)
+// and the one GPU code and the exercises start from.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <experimental/simd>
+#include <functional>
+#include <vector>
+
+#include "aabb.hpp"
+#include "bvh.hpp"
+
+namespace rt {
+
+inline constexpr int kWideBvhWidth = 4;
+// Four Reals in one SIMD register where the machine has one (SSE: four floats), as deduce_t picks.
+using BoxLanes = std::experimental::simd<Real, std::experimental::simd_abi::deduce_t<Real, kWideBvhWidth>>;
+
+// 128 bytes in float: two cache lines, aligned to them. lower[axis][k], upper[axis][k]: child k's box,
+// coordinate by coordinate, so one aligned load brings one coordinate of the four boxes. An unused child has
+// the empty box (+∞ below, −∞ above), which no ray enters.
+struct alignas(64) WideBvhNode {
+    using Coordinates = std::array<Real, kWideBvhWidth>;
+    alignas(BoxLanes::size() * sizeof(Real)) std::array<Coordinates, 3> lower, upper;
+    std::array<std::uint32_t, kWideBvhWidth> child;  // interior child: its node; leaf: its first item
+    std::array<std::uint32_t, kWideBvhWidth> count;  // leaf: its items (> 0); interior or unused: 0
+
+    Aabb box(int k) const {
+        return {{lower[0][k], lower[1][k], lower[2][k]}, {upper[0][k], upper[1][k], upper[2][k]}};
+    }
+};
+
+// What a ray needs for the four-box slab test, computed once per ray.
+struct WideRay {
+    Ray ray;
+    Vec3 inverse_d;
+    std::array<BoxLanes, 3> origin, inverse;  // o_i and 1 / d_i in every lane
+    bool finite;                              // every 1 / d_i finite: the SIMD test applies
+    std::array<bool, 3> negative;             // d_i < 0: the slab is entered at its upper face
+};
+
+WideRay make_wide_ray(const Ray& ray);
+
+// slab_entry (aabb.hpp) on the node's four boxes at once: each box's entry distance on [0, t_max], or +∞
+// where the ray misses it. With every 1 / d_i finite, the slab along i is entered at the lower face when
+// d_i > 0 and the upper one when d_i < 0 (ordering by the direction's sign replaces slab_entry's swap), and
+// each lane does slab_entry's operations in its order, with its conservative rounding (exit enlarged by
+// 1 + 2γ₃, entry shrunk by 1 − 2γ₃): the same distances, bit for bit. A ray with a zero or subnormal d_i
+// takes slab_entry itself, box by box.
+inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real t_max) {
+    namespace stdx = std::experimental;
+    if (!r.finite) {
+        BoxLanes t;
+        for (int k = 0; k < kWideBvhWidth; ++k) t[k] = slab_entry(node.box(k), r.ray, r.inverse_d, t_max);
+        return t;
+    }
+    constexpr Real kGamma3 = gamma_bound(3);
+    constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
+    BoxLanes t_enter = 0, t_exit = t_max;
+    for (int i = 0; i < 3; ++i) {
+        const auto& near = r.negative[i] ? node.upper[i] : node.lower[i];
+        const auto& far = r.negative[i] ? node.lower[i] : node.upper[i];
+        const BoxLanes t_near = (BoxLanes(near.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
+        const BoxLanes t_far = (BoxLanes(far.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
+        t_enter = stdx::max(t_enter, t_near * (1 - 2 * kGamma3) - kSmallest);
+        t_exit = stdx::min(t_exit, t_far * (1 + 2 * kGamma3) + kSmallest);
+    }
+    stdx::where(!(t_enter <= t_exit), t_enter) = kInfinity;
+    return t_enter;
+}
+
+class WideBvh {
+  public:
+    // What a leaf of the binary BVH becomes: its items, [first, first + count). By default its primitive
+    // slots themselves; the World maps each leaf to its packets and other primitives.
+    struct ItemRange {
+        std::uint32_t first;
+        std::uint32_t count;
+    };
+    using LeafItems = std::function<ItemRange(const BvhNode& leaf)>;
+
+    WideBvh() = default;
+    // Collapses `binary`: each wide node takes a binary node's two children and, while it has fewer than
+    // four, replaces its interior child of largest surface area by that child's two children.
+    explicit WideBvh(const Bvh& binary, const LeafItems& leaf_items = {});
+
+    const std::vector<WideBvhNode>& nodes() const { return nodes_; }
+    std::size_t bytes() const { return nodes_.size() * sizeof(WideBvhNode); }
+
+    // What Bvh::traverse does, four children at a time: visits, nearest box first, every leaf whose box the
+    // ray meets before t_max, calling `test(first, count, t_max)` for its items; it returns true on a hit
+    // and then lowers t_max. With any_hit, returns at the first hit. Returns whether anything was hit.
+    template <typename Test>
+    bool traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test,
+                  TraversalStats* stats = nullptr) const;
+
+  private:
+    std::uint32_t collapse(const Bvh& binary, std::uint32_t binary_node, const LeafItems& leaf_items);
+
+    std::vector<WideBvhNode> nodes_;
+};
+
+template <typename Test>
+bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test, TraversalStats* stats) const {
+    // EXERCISE(ch02.wide_bvh_traversal)
+    if (nodes_.empty()) return false;
+    // A child still to visit: a node (count 0) or a leaf's items, and the distance at which its box is entered.
+    struct Pending {
+        std::uint32_t child;
+        std::uint32_t count;
+        Real t_enter;
+    };
+    // Each level leaves at most three children pushed, and this tree is no deeper than the binary one: fewer
+    // than 70 levels (36 of SAH splits, then median halvings of at most 2^32 primitives).
+    Pending stack[3 * 70 + 1];
+    int top = 0;
+    Pending next{0, 0, 0};  // the root
+    bool hit = false;
+    while (true) {
+        if (!(next.t_enter > t_max)) {  // not entered beyond the nearest hit found since it was pushed
+            if (next.count > 0) {
+                if (stats) stats->primitives += next.count;
+                if (test(next.child, next.count, t_max)) {
+                    hit = true;
+                    if (any_hit) return true;
+                }
+            } else {
+                const WideBvhNode& node = nodes_[next.child];
+                alignas(BoxLanes::size() * sizeof(Real)) Real t[kWideBvhWidth];
+                entry_distances(node, ray, t_max).copy_to(t, std::experimental::vector_aligned);
+                if (stats) {
+                    for (int k = 0; k < kWideBvhWidth; ++k) stats->nodes += node.lower[0][k] <= node.upper[0][k];
+                }
+                // The children entered, sorted nearest first (the first of equal distances first); the
+                // nearest is visited next, the others pushed farthest first.
+                Pending entered[kWideBvhWidth];
+                int n = 0;
+                for (int k = 0; k < kWideBvhWidth; ++k) {
+                    if (!(t[k] < kInfinity)) continue;
+                    const Pending p{node.child[k], node.count[k], t[k]};
+                    int at = n++;
+                    for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
+                    entered[at] = p;
+                }
+                if (n > 0) {
+                    while (n > 1) stack[top++] = entered[--n];
+                    next = entered[0];
+                    continue;
+                }
+            }
+        }
+        if (top == 0) return hit;
+        next = stack[--top];
+    }
+    // END EXERCISE
+}
+
+}  // namespace rt
