@@ -12,6 +12,8 @@
 #include "02_intersection/leak_probe.hpp"
 #include "02_intersection/mesh_generator.hpp"
 #include "02_intersection/quad_packet.hpp"
+#include "02_intersection/triangle_packet.hpp"
+#include "02_intersection/wide_bvh.hpp"
 #include "02_intersection/world.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
@@ -213,6 +215,65 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
     const Bvh bvh(boxes, order);
     check_hierarchy(bvh, boxes, order);
     CHECK(bvh.bytes() <= boxes.size() * 64);  // the lesson's memory target: 64 bytes per primitive at most
+}
+
+TEST_CASE("The wide BVH holds every leaf of the binary one once, in the binary nodes' boxes", "[bvh]") {
+    Pcg32 rng(7, 2);
+    for (const int count : {1, 3, 5, 40, 3000}) {
+        INFO(count << " boxes");
+        std::vector<Aabb> boxes;
+        for (int i = 0; i < count; ++i) {
+            Aabb b;
+            const Vec3 c{rng.next_real() * 10, rng.next_real() * 10, rng.next_real() * 10};
+            b.extend(c);
+            b.extend(c + Vec3{rng.next_real(), rng.next_real(), rng.next_real()});
+            boxes.push_back(b);
+        }
+        std::vector<std::uint32_t> order;
+        const Bvh bvh(boxes, order);
+        const WideBvh wide(bvh);
+        // Every slot in exactly one leaf, whose box contains its primitives; every interior child's box
+        // contains its own children's; every node but the root is some node's child exactly once.
+        std::vector<int> seen(boxes.size(), 0), parents(wide.nodes().size(), 0);
+        std::size_t children = 0;
+        for (const WideBvhNode& node : wide.nodes()) {
+            for (int k = 0; k < kWideBvhWidth; ++k) {
+                const Aabb box = node.box(k);
+                if (!(box.min.x <= box.max.x)) {  // unused: the empty box, no child
+                    CHECK(node.count[std::size_t(k)] == 0);
+                    continue;
+                }
+                ++children;
+                auto contains = [&](const Aabb& inner) {
+                    return glm::all(glm::lessThanEqual(box.min, inner.min)) &&
+                           glm::all(glm::lessThanEqual(inner.max, box.max));
+                };
+                const std::uint32_t c = node.child[std::size_t(k)], n = node.count[std::size_t(k)];
+                if (n > 0) {
+                    for (std::uint32_t slot = c; slot < c + n; ++slot) {
+                        ++seen[order[slot]];
+                        CHECK(contains(boxes[order[slot]]));
+                    }
+                } else {
+                    REQUIRE(c < wide.nodes().size());
+                    ++parents[c];
+                    for (int j = 0; j < kWideBvhWidth; ++j) {
+                        const Aabb inner = wide.nodes()[c].box(j);
+                        if (inner.min.x <= inner.max.x) CHECK(contains(inner));
+                    }
+                }
+            }
+        }
+        for (int s : seen) CHECK(s == 1);
+        CHECK(parents[0] == 0);
+        for (std::size_t n = 1; n < parents.size(); ++n) CHECK(parents[n] == 1);
+        // Four children a node where the binary tree has them: fewer nodes than half the binary ones, plus one.
+        CHECK(wide.nodes().size() <= bvh.nodes().size() / 2 + 1);
+        // Every binary leaf is a wide leaf, and every wide node but the root is a child.
+        const auto binary_leaves = std::count_if(bvh.nodes().begin(), bvh.nodes().end(),
+                                                 [](const BvhNode& node) { return node.leaf(); });
+        CHECK(children == std::size_t(binary_leaves) + wide.nodes().size() - 1);
+    }
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
@@ -714,6 +775,76 @@ TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit thr
         }
         CHECK(check_soup(corners, rays_at(rng, Vec3d(0), 10 * scale, 3000)) > 300);
     }
+}
+
+TEST_CASE("A triangle packet gives the watertight test's nearest hit bit for bit, on hard cases too",
+          "[stability][triangle]") {
+    Pcg32 rng(5, 12);
+    auto random_vector = [&](Real size) {
+        return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * (2 * size) - size;
+    };
+    // Ordinary, degenerate (a repeated corner, three collinear corners), huge and tiny triangles, and fans
+    // around one corner that share their edges (a ray through an edge meets two of them at one distance).
+    auto random_triangles = [&](int count) {
+        std::vector<Triangle> triangles;
+        const Vec3 hub = random_vector(2);
+        Vec3 previous = hub + random_vector(1);
+        for (int i = 0; i < count; ++i) {
+            const Vec3 a = random_vector(2), b = random_vector(1);
+            switch (rng.next_uint() % 6) {
+                case 0: triangles.push_back({a, a, a + b}); break;
+                case 1: triangles.push_back({a, a + b, a + Real(2) * b}); break;
+                case 2: triangles.push_back({a * Real(1e4), a * Real(1e4) + random_vector(Real(1e5)),
+                                             a * Real(1e4) + random_vector(Real(1e5))}); break;
+                case 3: triangles.push_back({a, a + random_vector(Real(1e-4)), a + random_vector(Real(1e-4))});
+                    break;
+                default: {
+                    const Vec3 next = hub + random_vector(1);
+                    triangles.push_back({hub, previous, next});
+                    previous = next;
+                }
+            }
+        }
+        return triangles;
+    };
+    const Vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    int compared = 0, hit_packets = 0, mismatches = 0;
+    for (int trial = 0; trial < 200000; ++trial) {
+        const int count = 1 + int(rng.next_uint() % kTriangleLanes);  // partly filled packets too
+        const std::vector<Triangle> triangles = random_triangles(count);
+        std::vector<std::uint32_t> slots(triangles.size());
+        for (std::uint32_t i = 0; i < slots.size(); ++i) slots[i] = 10 + i;
+        const TrianglePacket packet = make_triangle_packet(triangles, slots);
+        // Rays from anywhere, along an axis, or aimed at a corner or an edge of the first triangle.
+        Ray ray{random_vector(4), glm::normalize(random_vector(1))};
+        const int aim = int(rng.next_uint() % 4);
+        if (aim == 1) ray.direction = axes[rng.next_uint() % 3] * (rng.next_uint() % 2 ? Real(1) : Real(-1));
+        if (aim >= 2) {
+            const Triangle& t = triangles[0];
+            const Vec3 target = aim == 2 ? t.p1 : t.p0 + rng.next_real() * (t.p1 - t.p0);
+            if (!(glm::length(target - ray.origin) > 0)) continue;
+            ray.direction = glm::normalize(target - ray.origin);
+        }
+        const Real t_max = rng.next_real() < Real(0.5) ? kInfinity : Real(8) * rng.next_real();
+        const WatertightRay sheared = make_watertight_ray(ray);
+        std::optional<TrianglePacketHit> expected;
+        for (int lane = 0; lane < count; ++lane) {
+            const auto h = intersect_triangle_watertight(ray, sheared, triangles[std::size_t(lane)], t_max);
+            if (h && (!expected || h->t < expected->hit.t)) expected = TrianglePacketHit{lane, *h};
+        }
+        const auto found = intersect_triangle_packet(ray, sheared, packet, t_max);
+        ++compared;
+        hit_packets += expected ? 1 : 0;
+        const bool same =
+            found.has_value() == expected.has_value() &&
+            (!found || (found->lane == expected->lane && found->hit.t == expected->hit.t &&
+                        found->hit.barycentrics == expected->hit.barycentrics &&
+                        packet.slot[std::size_t(found->lane)] == 10 + std::uint32_t(found->lane)));
+        if (!same) ++mismatches;
+    }
+    INFO(compared << " packets, " << hit_packets << " hit");
+    CHECK(hit_packets > compared / 10);
+    CHECK(mismatches == 0);
 }
 
 TEST_CASE("A quad packet gives intersect_quad's nearest hit bit for bit, on hard cases too",

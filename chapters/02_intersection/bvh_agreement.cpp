@@ -6,6 +6,7 @@
 #include "float_error.hpp"
 
 #include "bvh.hpp"
+#include "wide_bvh.hpp"
 #include "world.hpp"
 
 namespace rt {
@@ -65,6 +66,7 @@ std::string describe(const BvhQuery& q) {
 std::optional<std::string> first_box_disagreement(std::span<const Aabb> boxes, std::span<const BvhQuery> queries) {
     std::vector<std::uint32_t> order;
     const Bvh bvh(boxes, order);
+    const WideBvh wide(bvh);
     for (const BvhQuery& q : queries) {
         // A box is hit at its entry rounded to Real, when that is below t_max (and above 0: t = 0, a ray
         // starting inside, counts too).
@@ -73,30 +75,40 @@ std::optional<std::string> first_box_disagreement(std::span<const Aabb> boxes, s
             if (!t || !(Real(*t) < limit)) return std::nullopt;
             return Real(*t);
         };
-        Real brute = q.t_max;
-        for (std::uint32_t b = 0; b < boxes.size(); ++b) brute = hit_at(b, brute).value_or(brute);
-        Real found = q.t_max;
-        bvh.traverse(q.ray, inverse_direction(q.ray.direction), found, false, [&](std::uint32_t slot, Real& limit) {
+        auto test_slot = [&](std::uint32_t slot, Real& limit) {
             const auto t = hit_at(order[slot], limit);
             if (t) limit = *t;
             return t.has_value();
+        };
+        Real brute = q.t_max;
+        for (std::uint32_t b = 0; b < boxes.size(); ++b) brute = hit_at(b, brute).value_or(brute);
+        Real found = q.t_max;
+        bvh.traverse(q.ray, inverse_direction(q.ray.direction), found, false, test_slot);
+        Real found_wide = q.t_max;
+        wide.traverse(make_wide_ray(q.ray), found_wide, false, [&](std::uint32_t first, std::uint32_t count, Real& limit) {
+            bool hit = false;
+            for (std::uint32_t slot = first; slot < first + count; ++slot) hit = test_slot(slot, limit) || hit;
+            return hit;
         });
-        if (found == brute) continue;
+        if (found == brute && found_wide == brute) continue;
         std::ostringstream out;
         out.precision(9);
-        out << describe(q) << ": the BVH's nearest box at t " << found << ", every box's at t " << brute;
+        out << describe(q) << ": the BVH's nearest box at t " << found << ", the wide BVH's at t " << found_wide
+            << ", every box's at t " << brute;
         return out.str();
     }
     return std::nullopt;
 }
 
-std::optional<std::string> first_bvh_disagreement(const Scene& scene, std::span<const BvhQuery> queries) {
-    const World bvh(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
-    const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
+namespace {
+
+// The first query `accelerated` answers differently from `brute`, or nothing.
+std::optional<std::string> first_disagreement(const World& accelerated, const World& brute, const char* name,
+                                              std::span<const BvhQuery> queries) {
     for (const BvhQuery& q : queries) {
-        const auto a = bvh.intersect(q.ray, q.t_max);
+        const auto a = accelerated.intersect(q.ray, q.t_max);
         const auto b = brute.intersect(q.ray, q.t_max);
-        const bool occluded = bvh.occluded(q.ray, q.t_max);
+        const bool occluded = accelerated.occluded(q.ray, q.t_max);
         if (a.has_value() == b.has_value() && (!a || same_distance(*a, *b)) && occluded == b.has_value()) continue;
         // A hit found by one side alone is a tie with "no hit" when it lies within its rounding of t_max.
         const auto* only = a && !b ? &*a : (b && !a ? &*b : nullptr);
@@ -106,14 +118,24 @@ std::optional<std::string> first_bvh_disagreement(const Scene& scene, std::span<
         auto answer = [&](const std::optional<Hit>& h) {
             if (h) out << "hit at t " << h->t; else out << "missed";
         };
-        out << describe(q) << ": the BVH ";
+        out << describe(q) << ": the " << name << " ";
         answer(a);
         out << ", every primitive ";
         answer(b);
-        out << ", the BVH's occlusion " << (occluded ? "yes" : "no");
+        out << ", the " << name << "'s occlusion " << (occluded ? "yes" : "no");
         return out.str();
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> first_bvh_disagreement(const Scene& scene, std::span<const BvhQuery> queries) {
+    const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
+    const World wide(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
+    if (auto disagreement = first_disagreement(wide, brute, "wide BVH", queries)) return disagreement;
+    const World binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh});
+    return first_disagreement(binary, brute, "binary BVH", queries);
 }
 
 }  // namespace rt

@@ -19,16 +19,16 @@ struct BvhQuery {
 };
 
 // The BVH alone, over boxes as primitives, each hit at its exact entry distance (computed in double, then
-// rounded): what it returns must be exactly the brute-force minimum, at any scale, since only its culling
-// (the float slab test) can differ. The first query answered otherwise, in one line; nothing if none.
+// rounded): what it returns, and what the wide BVH collapsed from it returns, must be exactly the
+// brute-force minimum, at any scale, since only their culling (the float slab tests) can differ. The first query answered otherwise, in one line; nothing if none.
 std::optional<std::string> first_box_disagreement(std::span<const Aabb> boxes, std::span<const BvhQuery> queries);
 
 // A scene of one mesh: triangle i has corners corners[3i], corners[3i + 1], corners[3i + 2] (a trailing
 // one or two corners are left out). Nothing is checked: the soup may be degenerate, tiny or huge.
 Scene triangle_soup(std::span<const Vec3> corners);
 
-// The first query the BVH answers differently from the brute force, described in one line; nothing when
-// every query agrees. Only distances are compared (two primitives at one distance are a tie), and within the
+// The first query the World's BVH (the wide one, then the binary one alone) answers differently from the
+// brute force, described in one line; nothing when every query agrees. Only distances are compared (two primitives at one distance are a tie), and within the
 // rounding bound of each hit (its point_error): the nearest of overlapping coplanar triangles is decided by
 // rounding, in the BVH as in the brute force, which test the primitives in different orders.
 std::optional<std::string> first_bvh_disagreement(const Scene& scene, std::span<const BvhQuery> queries);
