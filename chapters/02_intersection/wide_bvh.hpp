@@ -56,8 +56,12 @@ WideRay make_wide_ray(const Ray& ray);
 inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real t_max) {
     namespace stdx = std::experimental;
     if (!r.finite) {
-        BoxLanes t;
-        for (int k = 0; k < kWideBvhWidth; ++k) t[k] = slab_entry(node.box(k), r.ray, r.inverse_d, t_max);
+        // An unused child is skipped: slab_entry's double-precision branch would order the empty box's
+        // infinite faces and enter it.
+        BoxLanes t = kInfinity;
+        for (int k = 0; k < kWideBvhWidth; ++k) {
+            if (node.lower[0][k] <= node.upper[0][k]) t[k] = slab_entry(node.box(k), r.ray, r.inverse_d, t_max);
+        }
         return t;
     }
     constexpr Real kGamma3 = gamma_bound(3);
