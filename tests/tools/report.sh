@@ -112,7 +112,7 @@ if have 02_intersection ch02_benchmark; then
              '' using 1:9 with linespoints title 'brute force, random rays'"
     lesson_copy ch02_bvh 02_intersection
     echo "method,triangle_test,ns_per_camera_ray,leak_probe_escaped,leak_probe_rays" > "$out/ch02_triangle_tests.csv"
-    for accel in bvh none; do
+    for accel in bvh binary none; do
         for test in watertight moller; do
             [ "$accel" = none ] && [ "$quick" = 1 ] && continue
             notes=$(cd "$out" && "$(exe 02_intersection ch02_intersection)" --quiet --accel "$accel" \

@@ -375,15 +375,15 @@ int main(int argc, char** argv) {
         "runs, %d cores; Mrays/s of nearest-hit queries unless marked any-hit\n\n",
         camera_rays.size(), ray_count, repeats, cores);
     std::printf(
-        "| triangles | build (ms) | build (s per 10^6) | BVH bytes/tri | camera, 1 thread | camera, %d "
+        "| triangles | build (ms) | build (s per 10^6) | BVH bytes/tri | with wide BVH and packets | camera, 1 thread | camera, %d "
         "threads | "
         "random, 1 thread | random, %d threads | random any-hit, 1 thread | random any-hit, %d threads | "
         "brute force, random, 1 thread | brute force, %d threads | brute force any-hit, 1 thread | "
         "BVH speed-up | boxes + primitives per random ray |\n",
         cores, cores, cores, cores);
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     double camera_smallest = 0, camera_largest = 0, random_smallest = 0, random_largest = 0;
-    double worst_build_per_million = 0, worst_bytes = 0;
+    double worst_build_per_million = 0, worst_bytes = 0, worst_all_bytes = 0;
     for (int exponent = 3; exponent <= max_exponent; ++exponent) {
         // A uv sphere with s segments and s/2 + 1 rings has s² triangles.
         const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
@@ -392,6 +392,7 @@ int main(int argc, char** argv) {
         const double build = median_seconds(repeats, [&] { const World world(scene); });
         const World world(scene);
         const double bytes = double(world.bvh().bytes()) / triangles;
+        const double all_bytes = double(world.acceleration_bytes()) / triangles;
         const double camera_1 = mrays_per_second(world, camera_rays, false, 1, repeats);
         const double camera_n = mrays_per_second(world, camera_rays, false, cores, repeats);
         const double random_1 = mrays_per_second(world, random_rays, false, 1, repeats);
@@ -409,10 +410,10 @@ int main(int argc, char** argv) {
         const double brute_any_1 = mrays_per_second(brute, few, true, 1, repeats);
         const MeanTests tests = mean_tests(world, random_rays);
         std::printf(
-            "| %.0f | %.1f | %.2f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | "
+            "| %.0f | %.1f | %.2f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | "
             "%.0f× | "
             "%.1f + %.1f |\n",
-            triangles, build * 1e3, build / triangles * 1e6, bytes, camera_1, camera_n, random_1, random_n,
+            triangles, build * 1e3, build / triangles * 1e6, bytes, all_bytes, camera_1, camera_n, random_1, random_n,
             any_1, any_n, brute_1, brute_n, brute_any_1, random_1 / brute_1, tests.boxes, tests.primitives);
         std::fflush(stdout);
         if (csv) {
@@ -430,6 +431,7 @@ int main(int argc, char** argv) {
         if (triangles >= 1e5)
             worst_build_per_million = std::max(worst_build_per_million, build / triangles * 1e6);
         worst_bytes = std::max(worst_bytes, bytes);
+        worst_all_bytes = std::max(worst_all_bytes, all_bytes);
     }
 
     // The cost of watertightness: the same BVH, the same rays, the two triangle tests.
@@ -454,7 +456,9 @@ int main(int argc, char** argv) {
                 random_growth);
     std::printf("  build time per million triangles (10^5 and more), one core: %.2f s (target < 1 s): %s\n",
                 worst_build_per_million, build_ok ? "met" : "NOT MET");
-    std::printf("  BVH bytes per triangle: %.1f (target <= 64): %s\n", worst_bytes,
+    std::printf("  BVH bytes per triangle, the binary tree as built: %.1f (target <= 64): %s\n", worst_bytes,
                 bytes_ok ? "met" : "NOT MET");
+    std::printf("  (with the wide tree, the triangle packets and the leaf lists it is traced through: %.1f)\n",
+                worst_all_bytes);
     return growth_ok && build_ok && bytes_ok ? 0 : 1;
 }
