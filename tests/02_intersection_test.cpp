@@ -349,8 +349,11 @@ TEST_CASE("Rays from inside a closed mesh never escape the watertight test",
 
     Scene scene = scene_of({Shape{mesh, 0, "mesh"}});
     const World watertight(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
+    // The binary BVH tests its triangles one by one (the wide one four at a time, in packets).
+    const World one_by_one(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh});
     const World moller(scene, {TriangleTest::kMollerTrumbore, Acceleration::kBvh});
     CHECK(escaped(watertight, rays) == 0);
+    CHECK(escaped(one_by_one, rays) == 0);
     const std::uint64_t moller_leaks = escaped(moller, rays);
     WARN("Möller–Trumbore: " << moller_leaks << " of " << rays.size() << " rays escaped the closed mesh");
     CHECK(moller_leaks > 0);  // the failure the watertight test exists to prevent
@@ -622,19 +625,23 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
     shapes.push_back({make_icosphere(3), 0, "mesh"});
     for (Vec3& p : std::get<MeshShape>(shapes.back().geometry).positions) p = p * Real(20);
     const Scene scene = scene_of(shapes);
+    // The wide BVH the World traces through by default, and the binary one it is collapsed from.
     const World bvh(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
+    const World binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh});
     const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
     int mismatches = 0, occlusion_mismatches = 0, hits = 0;
     for (int i = 0; i < 100000; ++i) {
         const Vec3 origin = random_point(80);
         const Ray ray{origin, glm::normalize(random_point(50) - origin)};
         const Real t_max = rng.next_real() < Real(0.5) ? kInfinity : Real(100) * rng.next_real();
-        const auto a = bvh.intersect(ray, t_max);
         const auto b = brute.intersect(ray, t_max);
-        if (a.has_value() != b.has_value() || (a && (a->t != b->t || a->primitive != b->primitive)))
-            ++mismatches;
-        if (bvh.occluded(ray, t_max) != b.has_value()) ++occlusion_mismatches;
-        hits += a ? 1 : 0;
+        for (const World* world : {&bvh, &binary}) {
+            const auto a = world->intersect(ray, t_max);
+            if (a.has_value() != b.has_value() || (a && (a->t != b->t || a->primitive != b->primitive)))
+                ++mismatches;
+            if (world->occluded(ray, t_max) != b.has_value()) ++occlusion_mismatches;
+        }
+        hits += b ? 1 : 0;
     }
     CHECK(hits > 10000);
     CHECK(mismatches == 0);
