@@ -277,8 +277,8 @@ TEST_CASE("The wide BVH holds every leaf of the binary one once, in the binary n
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
+          "[ex:ch02.wide_bvh_traversal]") {
     const Scene scene = load_scene(scene_path("ch02_default.json"));
     const World world(scene);
     RenderSettings settings{64, 36, 1, 1, 1, ProgressStyle::kNone};
@@ -327,8 +327,8 @@ std::uint64_t escaped(const World& world, const std::vector<Ray>& rays) {
 }  // namespace
 
 TEST_CASE("Rays from inside a closed mesh never escape the watertight test",
-          "[stability][triangle][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_moller][ex:ch02."
-          "triangle_watertight]") {
+          "[stability][triangle][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_moller]"
+          "[ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]") {
     const MeshShape mesh = jittered_closed_mesh(4);  // 5120 triangles, 2562 vertices, 7680 edges
     REQUIRE(is_closed(mesh));
     const Vec3 centre{10.3f, -5.1f, 2.9f};
@@ -601,8 +601,8 @@ TEST_CASE("The slab test handles zero direction components of either sign and fl
 }
 
 TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]["
-          "ex:ch02.triangle_watertight]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+          "[ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]") {
     Pcg32 rng(41, 7);
     std::vector<Shape> shapes;
     auto random_point = [&](Real size) {
@@ -695,7 +695,8 @@ int check_soup(const std::vector<Vec3>& corners, std::span<const BvhQuery> queri
 }  // namespace
 
 TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, on one line",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]"
+          "[ex:ch02.wide_bvh_traversal]") {
     Pcg32 rng(3, 14);
     const Vec3d center{0.5, -2, 7};
     std::vector<Vec3> point(3 * 600, Vec3(center));
@@ -717,7 +718,7 @@ TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, 
 }
 
 TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e30 and across them",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
     Pcg32 rng(5, 40);
     // `count` boxes near `center`, each of size 10^e for e drawn from [low, high].
     auto boxes_near = [&](const Vec3d& center, double spread, double low, double high, int count) {
@@ -771,7 +772,8 @@ TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e
 }
 
 TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit through the BVH",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]"
+          "[ex:ch02.wide_bvh_traversal]") {
     Pcg32 rng(6, 12);
     for (const double scale : {1e-12, 1e-6, 1.0, 1e6, 1e12}) {
         INFO("triangles of size " << scale << " in a cloud 10 times that");
@@ -785,7 +787,7 @@ TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit thr
 }
 
 TEST_CASE("A triangle packet gives the watertight test's nearest hit bit for bit, on hard cases too",
-          "[stability][triangle]") {
+          "[stability][triangle][ex:ch02.triangle_watertight]") {
     Pcg32 rng(5, 12);
     auto random_vector = [&](Real size) {
         return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * (2 * size) - size;
