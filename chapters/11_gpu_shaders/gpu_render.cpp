@@ -94,6 +94,7 @@ GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const Eff
                      " materials, " + std::to_string(gpu.lights.size()) + " lights (" +
                      std::to_string(gpu_bytes(gpu)) + " bytes)");
     for (const std::string& note : prepared.materials.notes()) notes_.push_back(note);
+    for (const std::string& note : gpu.notes) notes_.push_back(note);
 }
 
 GpuRenderer::~GpuRenderer() = default;

@@ -1,5 +1,6 @@
 #include "gpu_scene.hpp"
 
+#include <cstdio>
 #include <type_traits>
 #include <variant>
 
@@ -8,7 +9,7 @@
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
 #include "07_bsdf_refraction/dielectric.hpp"
-#include "rt/errors.hpp"
+#include "07_bsdf_refraction/rough_dielectric.hpp"
 
 namespace rt {
 namespace {
@@ -89,7 +90,8 @@ std::string named(const Material& m) {
 
 // What the table's BSDF for material i is, as the shader's record. The GPU cannot call a virtual function,
 // so each BSDF is asked its class here, once.
-GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std::size_t i, bool used) {
+GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std::size_t i, bool used,
+                            std::vector<std::string>& notes) {
     const Material& m = scene.materials[i];
     const int index = int(i);
     const Bsdf& outside = table.bsdf(index, true);
@@ -110,21 +112,30 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
         g.color = v4(retro->albedo, retro->exponent);
     } else if (const auto* glass = dynamic_cast<const SmoothDielectric*>(&outside)) {
         const auto* inside = dynamic_cast<const SmoothDielectric*>(&table.bsdf(index, false));
-        if (!inside || glass->transport != Transport::kRadiance) {
-            throw std::logic_error(named(m) + ": the shaders trace radiance through smooth glass only");
-        }
+        if (!inside || glass->transport != Transport::kRadiance)
+            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
         g.info.x = GpuMaterial::kSmoothDielectric;
         g.eta = {float(glass->eta), float(inside->eta), 0.0f, 0.0f};
-    } else if (used) {
-        throw InputError(named(m) + ": its BSDF (chapter 07's rough glass) is not in the shaders; chapter 07 "
-                         "renders it on the CPU");
+    } else if (const auto* rough = dynamic_cast<const RoughDielectric*>(&outside)) {
+        // Chapter 07's GGX glass is not in the shaders: the smooth interface of the same index stands in.
+        const auto* inside = dynamic_cast<const RoughDielectric*>(&table.bsdf(index, false));
+        if (!inside || rough->transport != Transport::kRadiance)
+            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
+        g.info.x = GpuMaterial::kSmoothDielectric;
+        g.eta = {float(rough->eta), float(inside->eta), 0.0f, 0.0f};
+        if (used) {
+            char ior[32];
+            std::snprintf(ior, sizeof ior, "%g", double(m.ior));
+            notes.push_back(named(m) + ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
+                            ior + " (chapter 07 renders it rough)");
+        }
     } else {
-        g.info = {GpuMaterial::kLambert, 1u, 0u, 0u};  // unused: never hit
+        throw std::logic_error(named(m) + ": a BSDF the shaders do not know");
     }
     if (const Medium* interior = table.interior(index)) {
         const auto* absorbing = dynamic_cast<const AbsorbingMedium*>(interior);
         if (!absorbing) {
-            if (used) throw InputError(named(m) + ": its medium is not in the shaders");
+            throw std::logic_error(named(m) + ": a medium the shaders do not know");
         } else {
             g.info.z = 1u;
             g.absorption = v4(absorbing->absorption);
@@ -185,7 +196,7 @@ GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const
     GpuScene gpu;
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < scene.materials.size(); ++i)
-        gpu.materials.push_back(material_record(scene, materials, i, used[i]));
+        gpu.materials.push_back(material_record(scene, materials, i, used[i], gpu.notes));
     gpu.lights = light_records(picker);
     gpu.light_total = float(picker.total_weight());
     if (lights.environment && !is_black(lights.environment->radiance)) gpu.environment = lights.environment->radiance;

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "02_intersection/bvh.hpp"
@@ -67,11 +68,12 @@ struct GpuScene {
     std::vector<GpuLight> lights;  // the picker's order; empty when no light emits any power
     float light_total = 0;         // LightPicker::total_weight
     std::optional<Color> environment;  // a uniform environment that is not black
+    std::vector<std::string> notes;    // what is shaded by a stand-in, for the run's summary
 };
 
-// Flattens `scene` with the render's material table and lights. Throws InputError naming the material when
-// a used one is something the shaders do not have (chapter 07's rough glass, a medium other than
-// Beer–Lambert's), or a BSDF for importance rather than radiance.
+// Flattens `scene` with the render's material table and lights. Chapter 07's rough glass becomes smooth glass
+// of its index, with a note. Throws std::logic_error for a BSDF or medium the shaders do not know (a later
+// chapter's), or one made for importance rather than radiance.
 GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const LightSet& lights,
                        const LightPicker& picker);
 
