@@ -99,6 +99,10 @@ GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const Eff
 
 GpuRenderer::~GpuRenderer() = default;
 
+void GpuRenderer::share_random_streams(bool shared) const {
+    state_->program.set("shared_streams", shared);
+}
+
 RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     const State& s = *state_;
     const GlProgram& p = s.program;

@@ -39,6 +39,10 @@ class GpuRenderer {
     // no exact sums (the GPU sums in float): a run cannot be split or resumed.
     RenderResult render(const RenderSettings& settings) const;
 
+    // The lesson's divergence experiment: every pixel takes pixel 0's random numbers, so neighbouring paths
+    // stay alike (a blotchy image, for timing only). Off by default.
+    void share_random_streams(bool shared) const;
+
     // The notes for the run's summary: the shader, the device, the buffers, the material stand-ins.
     const std::vector<std::string>& notes() const { return notes_; }
 

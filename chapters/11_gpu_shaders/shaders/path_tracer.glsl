@@ -18,6 +18,10 @@ uniform ivec2 image_size;
 uniform int strata;         // ⌊√spp⌋: chapter 01's stratified pixel sampler
 uniform int spp;            // of the whole render
 uniform uvec2 seed_bits;    // the 64-bit seed, low and high words
+// The lesson's divergence experiment (ch11_benchmark): every pixel draws pixel 0's random numbers, so the
+// paths of neighbouring pixels bounce alike and a SIMD group stays together. Its image is blotchy (the
+// pixels' errors are correlated): for timing only.
+uniform bool shared_streams;
 
 // Rays by kind, RayKind's order: camera, shadow, reflection, refraction, indirect; each invocation adds its
 // own counts once.
@@ -167,7 +171,7 @@ vec2 pixel_sample_point(ivec2 pixel, int index, vec2 u) {
 // One sample of pixel (x, y): the camera ray through its film point, what it sees, and nothing non-finite.
 vec3 render_sample(ivec2 pixel, int index) {
     const uint64_t number = uint64_t(pixel.y) * uint64_t(image_size.x) + uint64_t(pixel.x);
-    Pcg32 rng = pcg_for_sample(number, uint64_t(index), packUint2x32(seed_bits));
+    Pcg32 rng = pcg_for_sample(shared_streams ? 0UL : number, uint64_t(index), packUint2x32(seed_bits));
     const vec2 film = pixel_sample_point(pixel, index, pcg_next_vec2(rng));
     ++rays_traced[kCameraRay];
     const float a = (2.0 * film.x / float(image_size.x) - 1.0) * camera_half_size.x;
