@@ -58,7 +58,8 @@ GpuScene flattened(const Scene& scene) {
 
 // How many float steps apart a and b are (both finite, same sign).
 std::int64_t ulps_apart(float a, float b) {
-    return std::abs(std::int64_t(std::bit_cast<std::int32_t>(a)) - std::int64_t(std::bit_cast<std::int32_t>(b)));
+    return std::abs(std::int64_t(std::bit_cast<std::int32_t>(a)) -
+                    std::int64_t(std::bit_cast<std::int32_t>(b)));
 }
 
 // The GPU's nearest hits against chapter 02's World on the same rays: the same hit or miss, the same
@@ -99,12 +100,14 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit", "[
     queries.push_back({0, 0});
     queries.push_back({~std::uint64_t(0), (1u << 20) - 1});
     const ShaderProbe probe(gl(), flattened(scene_of({})));
-    for (const std::uint64_t seed : {std::uint64_t(0), std::uint64_t(1), std::uint64_t(0x8000000000000005ull)}) {
+    for (const std::uint64_t seed :
+         {std::uint64_t(0), std::uint64_t(1), std::uint64_t(0x8000000000000005ull)}) {
         const std::vector<ProbeRandom> gpu = probe.random_numbers(queries, seed);
         std::size_t words_differ = 0, reals_differ = 0;
         for (std::size_t i = 0; i < queries.size(); ++i) {
             Pcg32 cpu = Pcg32::for_sample(queries[i].pixel, queries[i].sample, seed);
-            for (int k = 0; k < 4; ++k) words_differ += cpu.next_uint() != gpu[i].words[std::size_t(k)] ? 1 : 0;
+            for (int k = 0; k < 4; ++k)
+                words_differ += cpu.next_uint() != gpu[i].words[std::size_t(k)] ? 1 : 0;
             for (int k = 0; k < 4; ++k) {
                 const float expected = float(cpu.next_real());
                 reals_differ += std::bit_cast<std::uint32_t>(expected) !=
@@ -119,7 +122,8 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit", "[
     }
 }
 
-TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets", "[gpu][stability]") {
+TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
+          "[gpu][stability][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
     MeshShape mesh = make_icosphere(3);  // 1280 triangles
     jitter_radii(mesh, Real(0.05), 11);
     for (Vec3& p : mesh.positions) p = p * Real(3.7) + Vec3{10.3f, -5.1f, 2.9f};
@@ -130,7 +134,8 @@ TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what cha
     for (const auto& t : mesh.triangles) {
         for (int e = 0; e < 3; ++e) {
             const Vec3 a = mesh.positions[t[std::size_t(e)]], b = mesh.positions[t[std::size_t((e + 1) % 3)]];
-            for (int k = 1; k < 4; ++k) rays.push_back({centre, glm::normalize(a + (Real(k) / 4) * (b - a) - centre)});
+            for (int k = 1; k < 4; ++k)
+                rays.push_back({centre, glm::normalize(a + (Real(k) / 4) * (b - a) - centre)});
         }
     }
     Pcg32 rng(5, 5);
@@ -144,23 +149,28 @@ TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what cha
     WARN("closed mesh: t of the shader and of chapter 02 at most " << largest << " ulps apart");
 }
 
-TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles", "[gpu][stability]") {
+TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles",
+          "[gpu][stability][ex:ch02.triangle_watertight]") {
     Pcg32 rng(17, 3);
-    std::vector<Shape> shapes;
     std::vector<Ray> rays;
-    auto random_point = [&] { return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(20) - Real(10); };
+    auto random_point = [&] {
+        return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(20) - Real(10);
+    };
     // One quad split along p0–p2 per scene, as chapter 02's test; rays aimed exactly at the diagonal.
     std::size_t misses = 0, total = 0;
     for (int quad = 0; quad < 20; ++quad) {
         const Vec3 p0 = random_point(), p2 = random_point(), side = random_point();
-        const Vec3 p1 = p0 + (p2 - p0) * Real(0.5) + side * Real(0.3), p3 = p0 + (p2 - p0) * Real(0.5) - side * Real(0.3);
+        const Vec3 p1 = p0 + (p2 - p0) * Real(0.5) + side * Real(0.3),
+                   p3 = p0 + (p2 - p0) * Real(0.5) - side * Real(0.3);
         const Vec3 normal = glm::cross(p1 - p0, p2 - p0);
         if (glm::length(normal) < Real(1e-3)) continue;
-        const Scene scene = scene_of({Shape{TriangleShape{{p0, p1, p2}}, 0, "a"}, Shape{TriangleShape{{p0, p2, p3}}, 0, "b"}});
+        const Scene scene = scene_of(
+            {Shape{TriangleShape{{p0, p1, p2}}, 0, "a"}, Shape{TriangleShape{{p0, p2, p3}}, 0, "b"}});
         std::vector<Ray> quad_rays;
         for (int i = 0; i < 200; ++i) {
             const Vec3 target = p0 + rng.next_real() * (p2 - p0);
-            const Vec3 origin = target + glm::normalize(normal) * (Real(1) + Real(30) * rng.next_real()) + random_point() * Real(0.5);
+            const Vec3 origin = target + glm::normalize(normal) * (Real(1) + Real(30) * rng.next_real()) +
+                                random_point() * Real(0.5);
             quad_rays.push_back({origin, glm::normalize(target - origin)});
         }
         const ShaderProbe probe(gl(), flattened(scene));
@@ -172,7 +182,8 @@ TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles
     CHECK(misses == 0);
 }
 
-TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hits them", "[gpu][stability]") {
+TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hits them",
+          "[gpu][stability][ex:ch02.sphere_stable]") {
     Pcg32 rng(23, 9);
     std::int64_t largest = 0;
     for (const Real radius : {Real(0.1), Real(0.01)}) {
@@ -183,10 +194,13 @@ TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hi
                 const Vec3 axis = random_unit(rng);
                 const Vec3 side = glm::normalize(glm::cross(axis, random_unit(rng)));
                 const Vec3 target = sphere.center + side * (Real(0.95) * radius * rng.next_real());
-                rays.push_back({sphere.center + axis * distance, glm::normalize(target - (sphere.center + axis * distance))});
+                rays.push_back({sphere.center + axis * distance,
+                                glm::normalize(target - (sphere.center + axis * distance))});
             }
             INFO("radius " << radius << ", distance " << distance);
-            largest = std::max(largest, check_against_world(scene_of({Shape{SphereShape{sphere.center, sphere.radius}, 0, "s"}}), rays, 4));
+            largest = std::max(
+                largest, check_against_world(
+                             scene_of({Shape{SphereShape{sphere.center, sphere.radius}, 0, "s"}}), rays, 4));
         }
     }
     // Origins 1e-3 outside a sphere of radius 1e4: the textbook quadratic's worst case.
@@ -195,19 +209,25 @@ TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hi
         const Vec3 axis = random_unit(rng);
         near.push_back({axis * (1e4f + 1e-3f), -axis});
     }
-    largest = std::max(largest, check_against_world(scene_of({Shape{SphereShape{{0, 0, 0}, 1e4f}, 0, "huge"}}), near, 4));
+    largest = std::max(
+        largest, check_against_world(scene_of({Shape{SphereShape{{0, 0, 0}, 1e4f}, 0, "huge"}}), near, 4));
     WARN("spheres: t of the shader and of chapter 02 at most " << largest << " ulps apart");
 }
 
 TEST_CASE("Shader rays parallel to triangles, and degenerate triangles, give no hit", "[gpu][stability]") {
-    const Scene flat = scene_of({Shape{TriangleShape{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}, 0, "flat"}});
+    const Scene flat =
+        scene_of({Shape{TriangleShape{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}, 0, "flat"}});
     const std::vector<Ray> parallel{{{-1, 0.2f, 0}, {1, 0, 0}}, {{-1, 0.2f, 0.5f}, {1, 0, 0}}};
-    for (const ProbeHit& h : ShaderProbe(gl(), flattened(flat)).nearest_hits(parallel, kInfinity)) CHECK_FALSE(h.hit);
-    const Scene degenerate = scene_of({Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{0, 0, -1}, Vec3{1, 1, -1}}}, 0, "repeated"},
-                                       Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{1, 1, -1}, Vec3{2, 2, -1}}}, 0, "collinear"},
-                                       Shape{TriangleShape{{Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}}}, 0, "point"}});
+    for (const ProbeHit& h : ShaderProbe(gl(), flattened(flat)).nearest_hits(parallel, kInfinity))
+        CHECK_FALSE(h.hit);
+    const Scene degenerate =
+        scene_of({Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{0, 0, -1}, Vec3{1, 1, -1}}}, 0, "repeated"},
+                  Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{1, 1, -1}, Vec3{2, 2, -1}}}, 0, "collinear"},
+                  Shape{TriangleShape{{Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}}}, 0,
+                        "point"}});
     const std::vector<Ray> down{{{0.5f, 0.5f, 0}, {0, 0, -1}}};
-    for (const ProbeHit& h : ShaderProbe(gl(), flattened(degenerate)).nearest_hits(down, kInfinity)) CHECK_FALSE(h.hit);
+    for (const ProbeHit& h : ShaderProbe(gl(), flattened(degenerate)).nearest_hits(down, kInfinity))
+        CHECK_FALSE(h.hit);
 }
 
 namespace {
@@ -250,7 +270,8 @@ Agreement agreement(const std::string& file, ShaderKind kind) {
 void check_agreement(const std::string& file, ShaderKind kind) {
     const Agreement a = agreement(file, kind);
     INFO(file << ", " << to_string(kind) << " shader: relative MSE GPU-CPU " << a.gpu_cpu << ", CPU-CPU "
-              << a.cpu_cpu << ", same seed " << a.same_seed << "; means " << a.mean_gpu << " and " << a.mean_cpu);
+              << a.cpu_cpu << ", same seed " << a.same_seed << "; means " << a.mean_gpu << " and "
+              << a.mean_cpu);
     // Two independent images of one estimator differ by σ²_GPU + σ²_CPU on average, a bias adds its square;
     // the estimate of a relative MSE from 48×48 pixels with the glass's fireflies varies by tens of percent.
     // A noiseless scene (an index-matched furnace) must agree to rounding.
@@ -267,20 +288,37 @@ void check_agreement(const std::string& file, ShaderKind kind) {
 
 }  // namespace
 
-TEST_CASE("The compute shader's glass Cornell box agrees with the CPU's within the noise", "[gpu][image]") {
+TEST_CASE("The compute shader's glass Cornell box agrees with the CPU's within the noise",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
+          "fresnel_exact][ex:ch07.refract]") {
     check_agreement("cornell.json", ShaderKind::kCompute);
 }
 
-TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within the noise", "[gpu][image]") {
+TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within the noise",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
+          "fresnel_exact][ex:ch07.refract]") {
     check_agreement("cornell.json", ShaderKind::kFragment);
 }
 
 // Chapter 07's other scenes: ch07_default.json is the glass Cornell box above; its furnaces are below.
-TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU does", "[gpu][image]") {
+TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU does",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07."
+          "dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_agreement("ch07_coloured_glass.json", ShaderKind::kCompute);
 }
 
-TEST_CASE("The compute shader renders chapter 07's glossy surfaces and glass as the CPU does", "[gpu][image]") {
+TEST_CASE(
+    "The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
+    "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:"
+    "ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:"
+    "ch04.power_cosine_pdf][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_"
+    "tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_agreement("ch07_glossy_glass.json", ShaderKind::kCompute);
 }
 

@@ -79,7 +79,8 @@ EglPlatform egl_platform_from_string(std::string_view name) {
     if (name == "auto") return EglPlatform::kAuto;
     if (name == "surfaceless") return EglPlatform::kSurfaceless;
     if (name == "device") return EglPlatform::kDevice;
-    throw InputError("--egl: unknown platform \"" + std::string(name) + "\"; expected auto, surfaceless or device");
+    throw InputError("--egl: unknown platform \"" + std::string(name) +
+                     "\"; expected auto, surfaceless or device");
 }
 
 GlContext::GlContext(EglPlatform platform) {
@@ -92,14 +93,20 @@ GlContext::GlContext(EglPlatform platform) {
         throw GlUnavailable("no OpenGL: EGL does not offer desktop OpenGL; " + std::string(kInstall));
     }
     // OpenGL 4.5 core: compute shaders, shader storage buffers, image load/store, direct state access.
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 4,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 5,
+                                 EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_NONE};
     EGLContext context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
         if (context != EGL_NO_CONTEXT) eglDestroyContext(display, context);
         eglTerminate(display);
         throw GlUnavailable("no OpenGL 4.5 core context on " + used +
-                            " (it needs EGL_KHR_no_config_context and EGL_KHR_surfaceless_context); " + kInstall);
+                            " (it needs EGL_KHR_no_config_context and EGL_KHR_surfaceless_context); " +
+                            kInstall);
     }
     context_ = context;
     const auto text = [](GLenum name) {
@@ -107,7 +114,8 @@ GlContext::GlContext(EglPlatform platform) {
         return std::string(s ? s : "?");
     };
     const std::string renderer = text(GL_RENDERER);
-    software_ = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+    software_ =
+        renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
     description_ = renderer + ", OpenGL " + text(GL_VERSION) + ", " + used;
 }
 

@@ -58,15 +58,27 @@ GlProgram::~GlProgram() {
     glDeleteProgram(id_);
 }
 
-void GlProgram::set(const char* name, int value) const { glProgramUniform1i(id_, location(name), value); }
-void GlProgram::set(const char* name, unsigned value) const { glProgramUniform1ui(id_, location(name), value); }
-void GlProgram::set(const char* name, float value) const { glProgramUniform1f(id_, location(name), value); }
-void GlProgram::set(const char* name, bool value) const { glProgramUniform1i(id_, location(name), value ? 1 : 0); }
-void GlProgram::set(const char* name, float x, float y) const { glProgramUniform2f(id_, location(name), x, y); }
+void GlProgram::set(const char* name, int value) const {
+    glProgramUniform1i(id_, location(name), value);
+}
+void GlProgram::set(const char* name, unsigned value) const {
+    glProgramUniform1ui(id_, location(name), value);
+}
+void GlProgram::set(const char* name, float value) const {
+    glProgramUniform1f(id_, location(name), value);
+}
+void GlProgram::set(const char* name, bool value) const {
+    glProgramUniform1i(id_, location(name), value ? 1 : 0);
+}
+void GlProgram::set(const char* name, float x, float y) const {
+    glProgramUniform2f(id_, location(name), x, y);
+}
 void GlProgram::set(const char* name, float x, float y, float z) const {
     glProgramUniform3f(id_, location(name), x, y, z);
 }
-void GlProgram::set(const char* name, int x, int y) const { glProgramUniform2i(id_, location(name), x, y); }
+void GlProgram::set(const char* name, int x, int y) const {
+    glProgramUniform2i(id_, location(name), x, y);
+}
 void GlProgram::set(const char* name, unsigned x, unsigned y) const {
     glProgramUniform2ui(id_, location(name), x, y);
 }

@@ -56,7 +56,9 @@ class GlBuffer {
     GlBuffer& operator=(const GlBuffer&) = delete;
 
     void bind(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id_); }
-    void read(void* data, std::size_t bytes) const { glGetNamedBufferSubData(id_, 0, GLsizeiptr(bytes), data); }
+    void read(void* data, std::size_t bytes) const {
+        glGetNamedBufferSubData(id_, 0, GLsizeiptr(bytes), data);
+    }
     void zero() const;
 
   private:

@@ -5,7 +5,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "04_direct_lighting/render_scene.hpp"
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/material_table.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "embedded_shaders.hpp"
 #include "gl_program.hpp"
@@ -71,9 +72,11 @@ struct GpuRenderer::State {
 
 GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const EffectSet& simulated,
                          ShaderKind kind) {
-    const RenderScene prepared(scene, simulated, refraction_materials());
-    const LightPicker picker(prepared.lights);
-    const GpuScene gpu = flatten_scene(scene, prepared.materials, prepared.lights, picker);
+    // What chapter 07's renderer builds, but its World: the GPU traces its own copy of the shapes.
+    const MaterialTable materials(scene, simulated, refraction_materials());
+    const LightSet lights = collect_lights(scene);
+    const LightPicker picker(lights);
+    const GpuScene gpu = flatten_scene(scene, materials, lights, picker);
     state_ = std::make_unique<State>(scene, gpu, kind);
     const GlProgram& p = state_->program;
     p.set("node_count", std::uint32_t(gpu.nodes.size()));
@@ -90,10 +93,11 @@ GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const Eff
     notes_.push_back("renderer: chapter 06's path loop with MIS as a " + std::string(to_string(kind)) +
                      " shader on " + context.description());
     notes_.push_back("GPU buffers: " + std::to_string(gpu.nodes.size()) + " BVH nodes, " +
-                     std::to_string(gpu.primitives.size()) + " primitives, " + std::to_string(gpu.materials.size()) +
-                     " materials, " + std::to_string(gpu.lights.size()) + " lights (" +
-                     std::to_string(gpu_bytes(gpu)) + " bytes)");
-    for (const std::string& note : prepared.materials.notes()) notes_.push_back(note);
+                     std::to_string(gpu.primitives.size()) + " primitives, " +
+                     std::to_string(gpu.materials.size()) + " materials, " +
+                     std::to_string(gpu.lights.size()) + " lights (" + std::to_string(gpu_bytes(gpu)) +
+                     " bytes)");
+    for (const std::string& note : materials.notes()) notes_.push_back(note);
     for (const std::string& note : gpu.notes) notes_.push_back(note);
 }
 
@@ -174,7 +178,8 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     const int per_pass = pass_samples(spp);
     for (int first = 0, end = 1; first < spp && !interrupt_requested();
          first = end, end = std::min(spp, end + per_pass)) {
-        glCopyImageSubData(total, GL_TEXTURE_2D, 0, 0, 0, 0, backup, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+        glCopyImageSubData(total, GL_TEXTURE_2D, 0, 0, 0, 0, backup, GL_TEXTURE_2D, 0, 0, 0, 0, width, height,
+                           1);
         bool cut = false;
         std::uint64_t pass_taken = 0;
         for (int y0 = 0; y0 < height;) {
@@ -197,7 +202,8 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
                           std::chrono::duration<double>(Clock::now() - start).count());
         }
         if (cut) {
-            glCopyImageSubData(backup, GL_TEXTURE_2D, 0, 0, 0, 0, total, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
+            glCopyImageSubData(backup, GL_TEXTURE_2D, 0, 0, 0, 0, total, GL_TEXTURE_2D, 0, 0, 0, 0, width,
+                               height, 1);
             break;
         }
         samples_kept += pass_taken;

@@ -27,9 +27,9 @@ std::string_view to_string(ShaderKind kind);
 
 class GpuRenderer {
   public:
-    // Flattens and uploads the scene and compiles the shader, on `context` (current on this thread, and
-    // outliving the renderer). The effects are chapter 06's: direct, indirect and shadows switch parts of
-    // the path loop; the material table holds the rest.
+    // Flattens and uploads the scene and compiles the shader, on `context` (current on this thread); the
+    // context and the scene must outlive the renderer. The effects are chapter 06's: direct, indirect and
+    // shadows switch parts of the path loop; the material table holds the rest.
     GpuRenderer(const GlContext& context, const Scene& scene, const EffectSet& simulated, ShaderKind kind);
     ~GpuRenderer();
     GpuRenderer(const GpuRenderer&) = delete;

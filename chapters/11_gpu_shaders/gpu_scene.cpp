@@ -126,7 +126,8 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
         if (used) {
             char ior[32];
             std::snprintf(ior, sizeof ior, "%g", double(m.ior));
-            notes.push_back(named(m) + ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
+            notes.push_back(named(m) +
+                            ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
                             ior + " (chapter 07 renders it rough)");
         }
     } else {
@@ -199,7 +200,8 @@ GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const
         gpu.materials.push_back(material_record(scene, materials, i, used[i], gpu.notes));
     gpu.lights = light_records(picker);
     gpu.light_total = float(picker.total_weight());
-    if (lights.environment && !is_black(lights.environment->radiance)) gpu.environment = lights.environment->radiance;
+    if (lights.environment && !is_black(lights.environment->radiance))
+        gpu.environment = lights.environment->radiance;
 
     // The shapes as chapter 02's World adds them, in scene order.
     PrimitiveList list(lights, picker);
@@ -224,7 +226,8 @@ GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const
                     planes.push_back(make_plane(g.point, g.normal));
                     plane_materials.push_back(material);
                 } else if constexpr (std::is_same_v<T, BoxShape>) {
-                    for (const Quad& face : box_faces(g)) list.add(quad_record(face, material), bounds_of(face), emissive);
+                    for (const Quad& face : box_faces(g))
+                        list.add(quad_record(face, material), bounds_of(face), emissive);
                 } else if constexpr (std::is_same_v<T, MeshShape>) {
                     for (const auto& tri : g.triangles) {
                         const Triangle t{g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]};

@@ -24,7 +24,7 @@
 
 namespace rt {
 
-using GpuVec4 = glm::vec4;    // float whatever Real is: the GPU computes in float
+using GpuVec4 = glm::vec4;  // float whatever Real is: the GPU computes in float
 using GpuUvec4 = glm::uvec4;
 
 // shaders/scene.glsl's Primitive: info = (kind, material, light, id), p[6] by kind.
@@ -38,7 +38,13 @@ static_assert(sizeof(GpuPrimitive) == 112);
 
 // shaders/materials.glsl's Material.
 struct GpuMaterial {
-    enum Kind : std::uint32_t { kLambert = 0, kMirror = 1, kGlossy = 2, kRetroreflective = 3, kSmoothDielectric = 4 };
+    enum Kind : std::uint32_t {
+        kLambert = 0,
+        kMirror = 1,
+        kGlossy = 2,
+        kRetroreflective = 3,
+        kSmoothDielectric = 4
+    };
     GpuUvec4 info{0};  // (kind, black, has interior, 0)
     GpuVec4 color{0};  // albedo or reflectance; w: Phong exponent
     GpuVec4 eta{1};    // (η from outside, η from inside)
@@ -65,8 +71,8 @@ struct GpuScene {
     std::uint32_t plane_first = 0;
     std::uint32_t plane_count = 0;
     std::vector<GpuMaterial> materials;
-    std::vector<GpuLight> lights;  // the picker's order; empty when no light emits any power
-    float light_total = 0;         // LightPicker::total_weight
+    std::vector<GpuLight> lights;      // the picker's order; empty when no light emits any power
+    float light_total = 0;             // LightPicker::total_weight
     std::optional<Color> environment;  // a uniform environment that is not black
     std::vector<std::string> notes;    // what is shaded by a stand-in, for the run's summary
 };

@@ -43,7 +43,8 @@ struct ShaderProbe::State {
 ShaderProbe::ShaderProbe(const GlContext&, const GpuScene& scene) : state_(std::make_unique<State>(scene)) {}
 ShaderProbe::~ShaderProbe() = default;
 
-std::vector<ProbeRandom> ShaderProbe::random_numbers(const std::vector<Query>& queries, std::uint64_t seed) const {
+std::vector<ProbeRandom> ShaderProbe::random_numbers(const std::vector<Query>& queries,
+                                                     std::uint64_t seed) const {
     state_->program.set("seed_bits", std::uint32_t(seed), std::uint32_t(seed >> 32u));
     std::vector<GpuUvec4> input;
     for (const Query& q : queries) {
@@ -64,8 +65,9 @@ std::vector<ProbeRandom> ShaderProbe::random_numbers(const std::vector<Query>& q
 std::vector<ProbeHit> ShaderProbe::nearest_hits(const std::vector<Ray>& rays, float t_max) const {
     std::vector<GpuUvec4> input;
     for (const Ray& r : rays) {
-        input.emplace_back(std::bit_cast<std::uint32_t>(float(r.origin.x)), std::bit_cast<std::uint32_t>(float(r.origin.y)),
-                           std::bit_cast<std::uint32_t>(float(r.origin.z)), std::bit_cast<std::uint32_t>(t_max));
+        input.emplace_back(
+            std::bit_cast<std::uint32_t>(float(r.origin.x)), std::bit_cast<std::uint32_t>(float(r.origin.y)),
+            std::bit_cast<std::uint32_t>(float(r.origin.z)), std::bit_cast<std::uint32_t>(t_max));
         input.emplace_back(std::bit_cast<std::uint32_t>(float(r.direction.x)),
                            std::bit_cast<std::uint32_t>(float(r.direction.y)),
                            std::bit_cast<std::uint32_t>(float(r.direction.z)), 0u);

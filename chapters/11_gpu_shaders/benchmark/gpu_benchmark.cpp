@@ -83,12 +83,12 @@ int main(int argc, char** argv) {
     try {
         const GlContext gl(egl_platform_from_string(egl));
         const char* lp_threads = std::getenv("LP_NUM_THREADS");
-        std::printf("OpenGL: %s%s%s\n", gl.description().c_str(),
-                    gl.software() ? "; LP_NUM_THREADS=" : "",
+        std::printf("OpenGL: %s%s%s\n", gl.description().c_str(), gl.software() ? "; LP_NUM_THREADS=" : "",
                     gl.software() ? (lp_threads ? lp_threads : "unset (one thread per core)") : "");
-        std::printf("CPU: chapter 07's path renderer on %d threads; %dx%d, %d spp, median of %d rounds, "
-                    "alternately\n\n",
-                    threads, width, height, spp, rounds);
+        std::printf(
+            "CPU: chapter 07's path renderer on %d threads; %dx%d, %d spp, median of %d rounds, "
+            "alternately\n\n",
+            threads, width, height, spp, rounds);
         RenderSettings settings;
         settings.width = width;
         settings.height = height;
@@ -103,8 +103,8 @@ int main(int argc, char** argv) {
             const Rates r = measure(gl, glass ? scene : without_glass(scene), settings, rounds);
             const double cpu = median(r.cpu), compute = median(r.compute), fragment = median(r.fragment);
             std::printf("%-28s %14.4g %14.4g %14.4g %12.3f %12.3f\n",
-                        glass ? "as given (glass)" : "glass made diffuse", cpu, compute, fragment, compute / cpu,
-                        fragment / cpu);
+                        glass ? "as given (glass)" : "glass made diffuse", cpu, compute, fragment,
+                        compute / cpu, fragment / cpu);
         }
         // Divergence: the compute shader with each pixel's own random numbers, and with every pixel taking
         // pixel 0's (neighbouring paths alike), alternately.
@@ -118,9 +118,10 @@ int main(int argc, char** argv) {
             compute.share_random_streams(true);
             shared.push_back(samples_per_second(compute.render(settings)));
         }
-        std::printf("\ncompute shader, divergence: %.4g samples/s with each pixel's own random numbers, %.4g "
-                    "with pixel 0's in every pixel (paths alike): %.3fx\n",
-                    median(own), median(shared), median(shared) / median(own));
+        std::printf(
+            "\ncompute shader, divergence: %.4g samples/s with each pixel's own random numbers, %.4g "
+            "with pixel 0's in every pixel (paths alike): %.3fx\n",
+            median(own), median(shared), median(shared) / median(own));
     } catch (const GlUnavailable& e) {
         std::fprintf(stderr, "ch11_benchmark: %s\n", e.what());
         return 2;
