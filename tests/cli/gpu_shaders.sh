@@ -4,6 +4,8 @@
 #     packages to install, nothing written.
 #  2. The image does not depend on how llvmpipe shares out the work: LP_NUM_THREADS 1, 2 and 3 give the same
 #     PFM bit for bit; and on llvmpipe the compute and the fragment shader give the same bits too.
+#  3. Ctrl-C during a long render: exit 130 within a few seconds, the complete image not written, the partial
+#     one (whole passes) written when a pass was done.
 # Exits 77 (skipped) after 1 when this machine has no OpenGL for 2.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
@@ -38,5 +40,19 @@ if grep -q llvmpipe probe.stdout; then
     why=$("$pfm_check" t1.pfm fragment.pfm 2>&1 > /dev/null) || fail "$name: compute and fragment shaders differ: $why"
 else
     echo "not llvmpipe ($(grep -o 'shader on [^,]*' probe.stdout)): the thread-count check is llvmpipe's"
+fi
+# 3. Ctrl-C: the renderer looks for it after every dispatch.
+"$exe" --width 32 --height 32 --spp 65536 --out long.png > long.stdout 2> long.stderr &
+pid=$!
+sleep 3
+kill -INT "$pid"
+started=$(date +%s)
+wait "$pid"
+status=$?
+[ "$status" -eq 130 ] || fail "$name interrupted: exit status $status, expected 130: $(tail -n 2 long.stderr)"
+[ $(( $(date +%s) - started )) -le 5 ] || fail "$name interrupted: took more than 5 s to stop"
+[ ! -e long.png ] || fail "$name interrupted: wrote the complete long.png"
+if [ -e long.partial.pfm ]; then
+    grep -q "interrupted: partial image" long.stdout || fail "$name interrupted: a partial image but no summary line"
 fi
 finish
