@@ -211,12 +211,15 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     }
     progress.clear();
 
-    std::vector<float> texels(std::size_t(width) * std::size_t(height) * 4);
-    glGetTextureImage(total, 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * sizeof(float)), texels.data());
+    // Read back a texel row at a time (a whole large image is more bytes than one call may name): texel row
+    // r is pixel row H − 1 − r; each pixel is its sums over its count.
     result.image = Image(width, height);
+    std::vector<float> row(std::size_t(width) * 4);
     for (int y = 0; y < height; ++y) {
+        glGetTextureSubImage(total, 0, 0, height - 1 - y, 0, width, 1, 1, GL_RGBA, GL_FLOAT,
+                             GLsizei(row.size() * sizeof(float)), row.data());
         for (int x = 0; x < width; ++x) {
-            const float* t = &texels[(std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)) * 4];
+            const float* t = &row[std::size_t(x) * 4];
             result.image.at(x, y) = t[3] > 0 ? Color(t[0], t[1], t[2]) / Real(t[3]) : Color(0);
         }
     }
