@@ -165,39 +165,43 @@ void World::add(const Shape& shape, bool emissive) {
         shape.geometry);
 }
 
-namespace {
+Aabb bounds_of(const Sphere& s) {
+    Aabb box;
+    box.extend(s.center - Vec3{s.radius});
+    box.extend(s.center + Vec3{s.radius});
+    return box;
+}
 
-Aabb quad_bounds(const Quad& q) {
+Aabb bounds_of(const Quad& q) {
     Aabb box;
     for (const Vec3& c : {q.origin, q.origin + q.u, q.origin + q.v, q.origin + q.u + q.v}) box.extend(c);
     return box;
 }
 
-}  // namespace
+Aabb bounds_of(const Triangle& t) {
+    Aabb box;
+    for (const Vec3& c : {t.p0, t.p1, t.p2}) box.extend(c);
+    return box;
+}
 
 Aabb World::bounds(const Primitive& p) const {
     Aabb box;
     switch (p.kind) {
-        case Kind::kSphere: {
-            const Sphere& s = spheres_[p.index];
-            box.extend(s.center - Vec3{s.radius});
-            box.extend(s.center + Vec3{s.radius});
+        case Kind::kSphere:
+            box = bounds_of(spheres_[p.index]);
             break;
-        }
         case Kind::kQuad:
-            box = quad_bounds(quads_[p.index]);
+            box = bounds_of(quads_[p.index]);
             break;
         case Kind::kQuadPacket: {
             const QuadPacket& packet = packets_[p.index];
             for (int lane = 0; lane < packet.lanes; ++lane)
-                box.extend(quad_bounds(quads_[packet.quad[std::size_t(lane)]]));
+                box.extend(bounds_of(quads_[packet.quad[std::size_t(lane)]]));
             break;
         }
-        case Kind::kTriangle: {
-            const Triangle& t = triangles_[p.index];
-            for (const Vec3& c : {t.p0, t.p1, t.p2}) box.extend(c);
+        case Kind::kTriangle:
+            box = bounds_of(triangles_[p.index]);
             break;
-        }
     }
     return box;
 }

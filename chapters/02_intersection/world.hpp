@@ -37,6 +37,11 @@ struct WorldOptions {
     bool triangle_packets = true;
 };
 
+// The box around a bounded primitive, as the BVH is built over (chapter 11 builds one over its own copy).
+Aabb bounds_of(const Sphere& sphere);
+Aabb bounds_of(const Quad& quad);
+Aabb bounds_of(const Triangle& triangle);
+
 class World {
   public:
     explicit World(const Scene& scene, WorldOptions options = {});

@@ -33,6 +33,8 @@ class LightPicker {
     std::size_t area_count() const { return quads_.size() + triangles_.size() + spheres_.size(); }
     // P(light): the probability of picking light `index` (quads, triangles, spheres, then points).
     Real probability(std::size_t index) const;
+    // The running sums of P(light), the last 1 (empty when none emits any power): what pick() searches.
+    const std::vector<Real>& cdf() const { return cdf_; }
     // The light u_pick in [0, 1) chooses: the first with cdf > u_pick (cdf = running sum of P).
     std::size_t pick(Real u_pick) const;
 

@@ -1,12 +1,9 @@
 #include "rt/render_loop.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <cstdio>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
@@ -14,53 +11,29 @@
 #include <vector>
 
 #include "rt/interrupt.hpp"
+#include "rt/progress.hpp"
 
-namespace rt::detail {
-namespace {
+namespace rt {
 
 // Samples are taken in passes: first one sample per pixel (so an image interrupted after it covers every
 // pixel), then an eighth of the rest per pass, but at most kMaxPassSamples, so that the passes a tile keeps
 // stay even. An interrupt is answered within a sample (render_loop.hpp), whatever the pass.
-constexpr int kPasses = 8;
-constexpr int kMaxPassSamples = 16;
+int pass_samples(int samples) {
+    constexpr int kPasses = 8;
+    constexpr int kMaxPassSamples = 16;
+    return std::clamp((samples + kPasses - 1) / kPasses, 1, kMaxPassSamples);
+}
+
+}  // namespace rt
+
+namespace rt::detail {
+namespace {
 
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
-
-class Progress {
-  public:
-    explicit Progress(ProgressStyle style) : style_(style) {}
-
-    void show(double fraction, double elapsed) {
-        const double remaining = fraction > 0 ? elapsed * (1 - fraction) / fraction : 0;
-        if (style_ == ProgressStyle::kBar) {
-            constexpr int kWidth = 30;
-            const int filled = std::clamp(int(fraction * kWidth), 0, kWidth);
-            std::fprintf(stderr, "\r[%.*s%*s] %3d%%  elapsed %.1fs  remaining %.1fs ", filled,
-                         "##############################", kWidth - filled, "", int(fraction * 100), elapsed,
-                         remaining);
-            std::fflush(stderr);
-        } else if (style_ == ProgressStyle::kLines) {
-            const int decile = int(fraction * 10);
-            if (decile > last_decile_ && decile < 10) {
-                std::fprintf(stderr, "progress: %d%% (elapsed %.1fs, remaining %.1fs)\n", decile * 10,
-                             elapsed, remaining);
-                last_decile_ = decile;
-            }
-        }
-    }
-    void clear() {
-        if (style_ == ProgressStyle::kBar) std::fprintf(stderr, "\r%*s\r", 72, "");
-    }
-    bool animated() const { return style_ == ProgressStyle::kBar; }
-
-  private:
-    ProgressStyle style_;
-    int last_decile_ = 0;
-};
 
 }  // namespace
 
@@ -75,10 +48,7 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
     const SampleRange range = samples_taken(settings);
     const int threads =
         settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    ProgressStyle style = settings.progress;
-    if (style == ProgressStyle::kAuto)
-        style = isatty(STDERR_FILENO) ? ProgressStyle::kBar : ProgressStyle::kLines;
-    Progress progress(style);
+    Progress progress(settings.progress);
 
     const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
     const int tiles_y = (settings.height + kTileSize - 1) / kTileSize;
@@ -108,7 +78,7 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
     std::exception_ptr failure;  // the first exception a sample threw, on any thread
     std::mutex failure_mutex;
     std::atomic<bool> failed{false};
-    const int per_pass = std::clamp((range.size() + kPasses - 1) / kPasses, 1, kMaxPassSamples);
+    const int per_pass = pass_samples(range.size());
     for (int first = range.first, end = range.first + 1; first < range.end && !interrupt_requested();
          first = end, end = std::min(range.end, end + per_pass)) {
         std::atomic<int> next_tile{0};

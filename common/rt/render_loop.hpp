@@ -42,6 +42,10 @@ inline SampleRange samples_taken(const RenderSettings& settings) {
     return settings.samples.value_or(SampleRange{0, std::max(settings.samples_per_pixel, 1)});
 }
 
+// The samples of each pass after the first (which takes one per pixel) for a render of `samples` samples:
+// ⌈samples / 8⌉, at most 16.
+int pass_samples(int samples);
+
 // Pixels x in [x0, x1), y in [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;

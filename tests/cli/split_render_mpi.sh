@@ -21,6 +21,14 @@ for exe in "$@"; do
     name=$(basename "$exe")
     args=("${size[@]}")
     dir="$scratch/$name" && mkdir -p "$dir" && cd "$dir" || exit 1
+    if [[ $name == ch11_* ]]; then
+        # Chapter 11's GPU sums in float, not exactly: it refuses to be split among ranks.
+        "$mpiexec" --oversubscribe -np 2 "$exe" "${size[@]}" --out split.png > stdout 2> stderr
+        status=$?
+        [ "$status" -eq 2 ] || fail "$name under mpirun -np 2: exit status $status, expected 2"
+        [ ! -e split.png ] || fail "$name under mpirun -np 2: wrote split.png"
+        continue
+    fi
     if [[ $name == ch08_* ]]; then
         "$mpiexec" --oversubscribe -np 2 "$exe" "${size[@]}" --out forward.png > stdout 2> stderr
         status=$?

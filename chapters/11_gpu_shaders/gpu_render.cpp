@@ -1,0 +1,246 @@
+#include "gpu_render.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/material_table.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "embedded_shaders.hpp"
+#include "gl_program.hpp"
+#include "rt/errors.hpp"
+#include "rt/interrupt.hpp"
+#include "rt/progress.hpp"
+
+namespace rt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A dispatch is kept between these durations by halving or doubling its rows.
+constexpr double kShortestDispatch = 0.010;
+constexpr double kLongestDispatch = 0.100;
+// The first band: this many pixels (at least one row).
+constexpr int kFirstBandPixels = 4096;
+
+std::vector<ShaderStage> stages_of(ShaderKind kind) {
+    if (kind == ShaderKind::kCompute) return {{GL_COMPUTE_SHADER, "trace.comp", shaders::k_trace_comp}};
+    return {{GL_VERTEX_SHADER, "fullscreen.vert", shaders::k_fullscreen_vert},
+            {GL_FRAGMENT_SHADER, "trace.frag", shaders::k_trace_frag}};
+}
+
+// An rgba32f texture of the image's size, zeroed.
+GLuint make_accumulation(int width, int height) {
+    GLuint texture = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+    glTextureStorage2D(texture, 1, GL_RGBA32F, width, height);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(texture, 0, GL_RGBA, GL_FLOAT, zero);
+    return texture;
+}
+
+}  // namespace
+
+ShaderKind shader_kind_from_string(std::string_view name) {
+    if (name == "compute") return ShaderKind::kCompute;
+    if (name == "fragment") return ShaderKind::kFragment;
+    throw InputError("--shader: unknown shader \"" + std::string(name) + "\"; expected compute or fragment");
+}
+
+std::string_view to_string(ShaderKind kind) {
+    return kind == ShaderKind::kCompute ? "compute" : "fragment";
+}
+
+struct GpuRenderer::State {
+    State(const Scene& scene_, const GpuScene& gpu, ShaderKind kind_)
+        : scene(scene_),
+          kind(kind_),
+          program(stages_of(kind_)),
+          nodes(gpu.nodes),
+          primitives(gpu.primitives),
+          materials(gpu.materials),
+          lights(gpu.lights),
+          counters(nullptr, 5 * sizeof(std::uint32_t)) {}
+
+    const Scene& scene;
+    ShaderKind kind;
+    GlProgram program;
+    GlBuffer nodes, primitives, materials, lights, counters;
+};
+
+GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const EffectSet& simulated,
+                         ShaderKind kind) {
+    // What chapter 07's renderer builds, but its World: the GPU traces its own copy of the shapes.
+    const MaterialTable materials(scene, simulated, refraction_materials());
+    const LightSet lights = collect_lights(scene);
+    const LightPicker picker(lights);
+    const GpuScene gpu = flatten_scene(scene, materials, lights, picker);
+    state_ = std::make_unique<State>(scene, gpu, kind);
+    const GlProgram& p = state_->program;
+    p.set("node_count", std::uint32_t(gpu.nodes.size()));
+    p.set("plane_first", gpu.plane_first);
+    p.set("plane_count", gpu.plane_count);
+    p.set("light_count", std::uint32_t(gpu.lights.size()));
+    p.set("light_total", gpu.light_total);
+    p.set("has_environment", gpu.environment.has_value());
+    const Color env = gpu.environment.value_or(Color(0));
+    p.set("environment_radiance", float(env.r), float(env.g), float(env.b));
+    p.set("simulate_direct", simulated.contains(Effect::kDirect));
+    p.set("simulate_indirect", simulated.contains(Effect::kIndirect));
+    p.set("simulate_shadows", simulated.contains(Effect::kShadows));
+    notes_.push_back("renderer: chapter 06's path loop with MIS as a " + std::string(to_string(kind)) +
+                     " shader on " + context.description());
+    notes_.push_back("GPU buffers: " + std::to_string(gpu.nodes.size()) + " BVH nodes, " +
+                     std::to_string(gpu.primitives.size()) + " primitives, " +
+                     std::to_string(gpu.materials.size()) + " materials, " +
+                     std::to_string(gpu.lights.size()) + " lights (" + std::to_string(gpu_bytes(gpu)) +
+                     " bytes)");
+    for (const std::string& note : materials.notes()) notes_.push_back(note);
+    for (const std::string& note : gpu.notes) notes_.push_back(note);
+}
+
+GpuRenderer::~GpuRenderer() = default;
+
+void GpuRenderer::share_random_streams(bool shared) const {
+    state_->program.set("shared_streams", shared);
+}
+
+RenderResult GpuRenderer::render(const RenderSettings& settings) const {
+    const State& s = *state_;
+    const GlProgram& p = s.program;
+    const int width = settings.width, height = settings.height, spp = settings.samples_per_pixel;
+    const PinholeCamera camera = make_pinhole_camera(s.scene.camera, width, height);
+    p.set("camera_eye", float(camera.eye.x), float(camera.eye.y), float(camera.eye.z));
+    p.set("camera_forward", float(camera.forward.x), float(camera.forward.y), float(camera.forward.z));
+    p.set("camera_right", float(camera.right.x), float(camera.right.y), float(camera.right.z));
+    p.set("camera_up", float(camera.up.x), float(camera.up.y), float(camera.up.z));
+    p.set("camera_half_size", float(camera.half_width), float(camera.half_height));
+    p.set("image_size", width, height);
+    p.set("spp", spp);
+    p.set("strata", int(std::sqrt(double(spp))));
+    p.set("seed_bits", std::uint32_t(settings.seed), std::uint32_t(settings.seed >> 32u));
+    s.nodes.bind(0);
+    s.primitives.bind(1);
+    s.materials.bind(2);
+    s.lights.bind(3);
+    s.counters.bind(4);
+    s.counters.zero();
+    p.use();
+
+    const GLuint total = make_accumulation(width, height);
+    const GLuint backup = make_accumulation(width, height);
+    GLuint framebuffer = 0, vertex_array = 0;
+    if (s.kind == ShaderKind::kCompute) {
+        glBindImageTexture(0, total, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    } else {
+        glCreateFramebuffers(1, &framebuffer);
+        glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, total, 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glCreateVertexArrays(1, &vertex_array);  // core profile draws need one, even with no attributes
+        glBindVertexArray(vertex_array);
+        glViewport(0, 0, width, height);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE);
+        glEnable(GL_SCISSOR_TEST);
+    }
+
+    // One band of rows [y0, y0 + rows) of the pass's samples [first, first + count).
+    const auto run_band = [&](int y0, int rows, int first, int count) {
+        p.set("first_sample", first);
+        p.set("pass_samples", count);
+        if (s.kind == ShaderKind::kCompute) {
+            p.set("band_first_row", y0);
+            p.set("band_rows", rows);
+            glDispatchCompute(GLuint((width + 7) / 8), GLuint((rows + 7) / 8), 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        } else {
+            glScissor(0, height - (y0 + rows), width, rows);  // the texel rows of pixel rows y0 …
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        }
+        glFinish();
+    };
+
+    // The driver compiles the shader to machine code at its first use (llvmpipe: about 2 s): a band of no
+    // samples does it before the clock starts.
+    run_band(0, 1, 0, 0);
+
+    RenderResult result;
+    Progress progress(settings.progress);
+    const auto start = Clock::now();
+    const double total_samples = double(width) * double(height) * double(spp);
+    std::uint64_t samples_kept = 0;
+    int samples_per_pixel = 0;
+    int rows = std::clamp(kFirstBandPixels / width, 1, height);
+    std::array<std::uint32_t, 5> counts{};
+    const int per_pass = pass_samples(spp);
+    for (int first = 0, end = 1; first < spp && !interrupt_requested();
+         first = end, end = std::min(spp, end + per_pass)) {
+        glCopyImageSubData(total, GL_TEXTURE_2D, 0, 0, 0, 0, backup, GL_TEXTURE_2D, 0, 0, 0, 0, width, height,
+                           1);
+        bool cut = false;
+        std::uint64_t pass_taken = 0;
+        for (int y0 = 0; y0 < height;) {
+            if (interrupt_requested()) {
+                cut = true;
+                break;
+            }
+            const int band = std::min(rows, height - y0);
+            const auto band_start = Clock::now();
+            run_band(y0, band, first, end - first);
+            const double seconds = std::chrono::duration<double>(Clock::now() - band_start).count();
+            s.counters.read(counts.data(), sizeof counts);
+            s.counters.zero();
+            for (std::size_t k = 0; k < counts.size(); ++k) result.rays.add(RayKind(k), counts[k]);
+            if (seconds < kShortestDispatch) rows = std::min(2 * rows, height);
+            if (seconds > kLongestDispatch) rows = std::max(1, rows / 2);
+            y0 += band;
+            pass_taken += std::uint64_t(band) * std::uint64_t(width) * std::uint64_t(end - first);
+            progress.show(double(samples_kept + pass_taken) / total_samples,
+                          std::chrono::duration<double>(Clock::now() - start).count());
+        }
+        if (cut) {
+            glCopyImageSubData(backup, GL_TEXTURE_2D, 0, 0, 0, 0, total, GL_TEXTURE_2D, 0, 0, 0, 0, width,
+                               height, 1);
+            break;
+        }
+        samples_kept += pass_taken;
+        samples_per_pixel = end;
+    }
+    progress.clear();
+
+    // Read back a texel row at a time (a whole large image is more bytes than one call may name): texel row
+    // r is pixel row H − 1 − r; each pixel is its sums over its count.
+    result.image = Image(width, height);
+    std::vector<float> row(std::size_t(width) * 4);
+    for (int y = 0; y < height; ++y) {
+        glGetTextureSubImage(total, 0, 0, height - 1 - y, 0, width, 1, 1, GL_RGBA, GL_FLOAT,
+                             GLsizei(row.size() * sizeof(float)), row.data());
+        for (int x = 0; x < width; ++x) {
+            const float* t = &row[std::size_t(x) * 4];
+            result.image.at(x, y) = t[3] > 0 ? Color(t[0], t[1], t[2]) / Real(t[3]) : Color(0);
+        }
+    }
+    if (framebuffer) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glDeleteFramebuffers(1, &framebuffer);
+        glDeleteVertexArrays(1, &vertex_array);
+        glDisable(GL_BLEND);
+        glDisable(GL_SCISSOR_TEST);
+    }
+    glDeleteTextures(1, &total);
+    glDeleteTextures(1, &backup);
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    result.samples = samples_kept;
+    result.samples_per_pixel = samples_per_pixel;
+    result.interrupted = samples_per_pixel < spp;
+    if (samples_per_pixel == 0) {
+        result.unsampled_pixels = std::uint64_t(width) * std::uint64_t(height);
+        result.unsampled_region = {0, 0, width, height};
+    }
+    return result;
+}
+
+}  // namespace rt

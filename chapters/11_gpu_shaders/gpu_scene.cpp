@@ -1,0 +1,268 @@
+#include "gpu_scene.hpp"
+
+#include <cstdio>
+#include <type_traits>
+#include <variant>
+
+#include "02_intersection/box.hpp"
+#include "02_intersection/plane.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/brdf.hpp"
+#include "07_bsdf_refraction/dielectric.hpp"
+#include "07_bsdf_refraction/rough_dielectric.hpp"
+
+namespace rt {
+namespace {
+
+GpuVec4 v4(const Vec3& v, Real w = 0) {
+    return {float(v.x), float(v.y), float(v.z), float(w)};
+}
+
+// The primitives of the scene in scene order, each with its light: the k-th emissive bounded primitive is
+// Hit::light k (chapter 02's numbering), which LightSet::by_hit maps to a list of the picker.
+class PrimitiveList {
+  public:
+    PrimitiveList(const LightSet& lights, const LightPicker& picker) : lights_(lights), picker_(picker) {}
+
+    void add(GpuPrimitive p, const Aabb& box, bool emissive) {
+        p.info.z = emissive ? light_of(next_light_++) : GpuPrimitive::kNoLight;
+        p.info.w = std::uint32_t(bounded.size());
+        bounded.push_back(p);
+        bounds.push_back(box);
+    }
+
+    std::vector<GpuPrimitive> bounded;
+    std::vector<Aabb> bounds;
+
+  private:
+    std::uint32_t light_of(std::size_t k) const {
+        if (picker_.empty() || k >= lights_.by_hit.size()) return GpuPrimitive::kNoLight;
+        const LightRef ref = lights_.by_hit[k];
+        switch (ref.list) {
+            case LightRef::List::kQuads:
+                return ref.index;
+            case LightRef::List::kTriangles:
+                return std::uint32_t(picker_.quads().size()) + ref.index;
+            case LightRef::List::kSpheres:
+                return std::uint32_t(picker_.quads().size() + picker_.triangles().size()) + ref.index;
+            case LightRef::List::kNone:
+                break;
+        }
+        return GpuPrimitive::kNoLight;
+    }
+
+    const LightSet& lights_;
+    const LightPicker& picker_;
+    std::size_t next_light_ = 0;
+};
+
+GpuPrimitive sphere_record(const Sphere& s, int material) {
+    GpuPrimitive p;
+    p.info = {GpuPrimitive::kSphere, std::uint32_t(material), 0, 0};
+    p.p[0] = v4(s.center, s.radius);
+    return p;
+}
+
+GpuPrimitive quad_record(const Quad& q, int material) {
+    GpuPrimitive p;
+    p.info = {GpuPrimitive::kQuad, std::uint32_t(material), 0, 0};
+    p.p[0] = v4(q.origin);
+    p.p[1] = v4(q.u);
+    p.p[2] = v4(q.v);
+    p.p[3] = v4(q.normal);
+    p.p[4] = v4(q.a_axis);
+    p.p[5] = v4(q.b_axis);
+    return p;
+}
+
+GpuPrimitive triangle_record(const Triangle& t, int material) {
+    GpuPrimitive p;
+    p.info = {GpuPrimitive::kTriangle, std::uint32_t(material), 0, 0};
+    p.p[0] = v4(t.p0);
+    p.p[1] = v4(t.p1);
+    p.p[2] = v4(t.p2);
+    return p;
+}
+
+std::string named(const Material& m) {
+    return std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name + "'";
+}
+
+// What the table's BSDF for material i is, as the shader's record. The GPU cannot call a virtual function,
+// so each BSDF is asked its class here, once.
+GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std::size_t i, bool used,
+                            std::vector<std::string>& notes) {
+    const Material& m = scene.materials[i];
+    const int index = int(i);
+    const Bsdf& outside = table.bsdf(index, true);
+    GpuMaterial g;
+    g.emission = v4(table.emission(index, true));
+    g.info.y = outside.flags().black ? 1u : 0u;
+    if (const auto* lambert = dynamic_cast<const LambertBrdf*>(&outside)) {
+        g.info.x = GpuMaterial::kLambert;
+        g.color = v4(lambert->albedo);
+    } else if (const auto* mirror = dynamic_cast<const MirrorBrdf*>(&outside)) {
+        g.info.x = GpuMaterial::kMirror;
+        g.color = v4(mirror->reflectance);
+    } else if (const auto* glossy = dynamic_cast<const GlossyBrdf*>(&outside)) {
+        g.info.x = GpuMaterial::kGlossy;
+        g.color = v4(glossy->albedo, glossy->exponent);
+    } else if (const auto* retro = dynamic_cast<const RetroreflectiveBrdf*>(&outside)) {
+        g.info.x = GpuMaterial::kRetroreflective;
+        g.color = v4(retro->albedo, retro->exponent);
+    } else if (const auto* glass = dynamic_cast<const SmoothDielectric*>(&outside)) {
+        const auto* inside = dynamic_cast<const SmoothDielectric*>(&table.bsdf(index, false));
+        if (!inside || glass->transport != Transport::kRadiance)
+            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
+        g.info.x = GpuMaterial::kSmoothDielectric;
+        g.eta = {float(glass->eta), float(inside->eta), 0.0f, 0.0f};
+    } else if (const auto* rough = dynamic_cast<const RoughDielectric*>(&outside)) {
+        // Chapter 07's GGX glass is not in the shaders: the smooth interface of the same index stands in.
+        const auto* inside = dynamic_cast<const RoughDielectric*>(&table.bsdf(index, false));
+        if (!inside || rough->transport != Transport::kRadiance)
+            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
+        g.info.x = GpuMaterial::kSmoothDielectric;
+        g.eta = {float(rough->eta), float(inside->eta), 0.0f, 0.0f};
+        if (used) {
+            char ior[32];
+            std::snprintf(ior, sizeof ior, "%g", double(m.ior));
+            notes.push_back(named(m) +
+                            ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
+                            ior + " (chapter 07 renders it rough)");
+        }
+    } else {
+        throw std::logic_error(named(m) + ": a BSDF the shaders do not know");
+    }
+    if (const Medium* interior = table.interior(index)) {
+        const auto* absorbing = dynamic_cast<const AbsorbingMedium*>(interior);
+        if (!absorbing) {
+            throw std::logic_error(named(m) + ": a medium the shaders do not know");
+        } else {
+            g.info.z = 1u;
+            g.absorption = v4(absorbing->absorption);
+        }
+    }
+    return g;
+}
+
+// The picker's lights in its order (quads, triangles, spheres, points) with P(light) and the cdf.
+std::vector<GpuLight> light_records(const LightPicker& picker) {
+    std::vector<GpuLight> out;
+    if (picker.empty()) return out;
+    for (const QuadLight& q : picker.quads()) {
+        GpuLight l;
+        l.info.x = GpuLight::kQuad;
+        l.a = v4(q.origin);
+        l.b = v4(q.u);
+        l.c = v4(q.v, q.area);
+        l.normal = v4(q.normal);
+        l.radiance = v4(q.radiance);
+        out.push_back(l);
+    }
+    for (const TriangleLight& t : picker.triangles()) {
+        GpuLight l;
+        l.info.x = GpuLight::kTriangle;
+        l.a = v4(t.p0);
+        l.b = v4(t.p1);
+        l.c = v4(t.p2, t.area);
+        l.normal = v4(t.normal);
+        l.radiance = v4(t.radiance);
+        out.push_back(l);
+    }
+    for (const SphereLight& s : picker.spheres()) {
+        GpuLight l;
+        l.info.x = GpuLight::kSphere;
+        l.a = v4(s.center, s.radius);
+        l.radiance = v4(s.radiance);
+        out.push_back(l);
+    }
+    for (const PointLight& p : picker.points()) {
+        GpuLight l;
+        l.info.x = GpuLight::kPoint;
+        l.a = v4(p.position);
+        l.radiance = v4(p.intensity);
+        out.push_back(l);
+    }
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        out[i].normal.w = float(picker.probability(i));
+        out[i].radiance.w = float(picker.cdf()[i]);
+    }
+    return out;
+}
+
+}  // namespace
+
+GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const LightSet& lights,
+                       const LightPicker& picker) {
+    GpuScene gpu;
+    const std::vector<bool> used = scene.used_materials();
+    for (std::size_t i = 0; i < scene.materials.size(); ++i)
+        gpu.materials.push_back(material_record(scene, materials, i, used[i], gpu.notes));
+    gpu.lights = light_records(picker);
+    gpu.light_total = float(picker.total_weight());
+    if (lights.environment && !is_black(lights.environment->radiance))
+        gpu.environment = lights.environment->radiance;
+
+    // The shapes as chapter 02's World adds them, in scene order.
+    PrimitiveList list(lights, picker);
+    std::vector<Plane> planes;
+    std::vector<int> plane_materials;
+    for (const Shape& shape : scene.shapes) {
+        const int material = shape.material;
+        const bool emissive = scene.material_of(shape).emissive();
+        std::visit(
+            [&](const auto& g) {
+                using T = std::decay_t<decltype(g)>;
+                if constexpr (std::is_same_v<T, SphereShape>) {
+                    const Sphere s{g.center, g.radius};
+                    list.add(sphere_record(s, material), bounds_of(s), emissive);
+                } else if constexpr (std::is_same_v<T, QuadShape>) {
+                    const Quad q = make_quad(g.origin, g.u, g.v);
+                    list.add(quad_record(q, material), bounds_of(q), emissive);
+                } else if constexpr (std::is_same_v<T, TriangleShape>) {
+                    const Triangle t{g.vertices[0], g.vertices[1], g.vertices[2]};
+                    list.add(triangle_record(t, material), bounds_of(t), emissive);
+                } else if constexpr (std::is_same_v<T, PlaneShape>) {
+                    planes.push_back(make_plane(g.point, g.normal));
+                    plane_materials.push_back(material);
+                } else if constexpr (std::is_same_v<T, BoxShape>) {
+                    for (const Quad& face : box_faces(g))
+                        list.add(quad_record(face, material), bounds_of(face), emissive);
+                } else if constexpr (std::is_same_v<T, MeshShape>) {
+                    for (const auto& tri : g.triangles) {
+                        const Triangle t{g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]};
+                        list.add(triangle_record(t, material), bounds_of(t), emissive);
+                    }
+                }
+            },
+            shape.geometry);
+    }
+    // Chapter 02's BVH over them (one primitive a slot: the GPU's SIMD is across rays, not across the quads
+    // of a packet), and the primitives laid out in its leaf order.
+    if (!list.bounded.empty()) {
+        std::vector<std::uint32_t> order;
+        const Bvh bvh(list.bounds, order);
+        gpu.nodes = bvh.nodes();
+        for (std::uint32_t primitive : order) gpu.primitives.push_back(list.bounded[primitive]);
+    }
+    gpu.plane_first = std::uint32_t(gpu.primitives.size());
+    gpu.plane_count = std::uint32_t(planes.size());
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+        GpuPrimitive p;
+        p.info = {GpuPrimitive::kPlane, std::uint32_t(plane_materials[i]), GpuPrimitive::kNoLight,
+                  std::uint32_t(list.bounded.size() + i)};
+        p.p[0] = v4(planes[i].point);
+        p.p[1] = v4(planes[i].normal);
+        p.p[2] = v4(planes[i].tangent);
+        p.p[3] = v4(planes[i].bitangent);
+        gpu.primitives.push_back(p);
+    }
+    return gpu;
+}
+
+std::size_t gpu_bytes(const GpuScene& scene) {
+    return scene.nodes.size() * sizeof(BvhNode) + scene.primitives.size() * sizeof(GpuPrimitive) +
+           scene.materials.size() * sizeof(GpuMaterial) + scene.lights.size() * sizeof(GpuLight);
+}
+
+}  // namespace rt

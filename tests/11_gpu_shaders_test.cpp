@@ -1,0 +1,339 @@
+// Chapter 11: the path tracer as a shader. The shader's random numbers against the C++ generator (bit for
+// bit), its intersections against chapter 02's on the hard cases of chapter 02's [stability] tests, and its
+// images against chapter 07's CPU renderer. Every test here needs OpenGL: without a usable context it prints
+// why and exits 77, which CTest reports as skipped (SKIP_RETURN_CODE).
+#include <bit>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+#include "02_intersection/mesh_generator.hpp"
+#include "02_intersection/world.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "gl_context.hpp"
+#include "gpu_render.hpp"
+#include "random_unit.hpp"
+#include "rt/assets.hpp"
+#include "rt/effects.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/random.hpp"
+#include "rt/scene_loader.hpp"
+#include "shader_probe.hpp"
+
+using namespace rt;
+
+namespace {
+
+constexpr int kSkipped = 77;
+
+// The one context of this test process, or exit 77 (skipped) saying why there is none.
+const GlContext& gl() {
+    static std::optional<GlContext> context;
+    if (!context) {
+        try {
+            context.emplace();
+        } catch (const GlUnavailable& e) {
+            std::printf("skipped: %s\n", e.what());
+            std::fflush(stdout);
+            std::exit(kSkipped);
+        }
+    }
+    return *context;
+}
+
+Scene scene_of(std::vector<Shape> shapes) {
+    Scene scene;
+    scene.materials.push_back(Material{});
+    scene.shapes = std::move(shapes);
+    return scene;
+}
+
+GpuScene flattened(const Scene& scene) {
+    const RenderScene prepared(scene, EffectSet::all());
+    return flatten_scene(scene, prepared.materials, prepared.lights, LightPicker(prepared.lights));
+}
+
+// How many float steps apart a and b are (both finite, same sign).
+std::int64_t ulps_apart(float a, float b) {
+    return std::abs(std::int64_t(std::bit_cast<std::int32_t>(a)) -
+                    std::int64_t(std::bit_cast<std::int32_t>(b)));
+}
+
+// The GPU's nearest hits against chapter 02's World on the same rays: the same hit or miss, the same
+// primitive, and t within `max_ulps`. Returns the largest distance in ulps.
+std::int64_t check_against_world(const Scene& scene, const std::vector<Ray>& rays, std::int64_t max_ulps) {
+    const World world(scene);
+    const ShaderProbe probe(gl(), flattened(scene));
+    const std::vector<ProbeHit> gpu = probe.nearest_hits(rays, kInfinity);
+    std::int64_t largest = 0;
+    std::uint64_t hit_mismatches = 0, primitive_mismatches = 0, far = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const auto cpu = world.intersect(rays[i]);
+        if (bool(cpu) != gpu[i].hit) {
+            ++hit_mismatches;
+            continue;
+        }
+        if (!cpu) continue;
+        if (cpu->primitive != gpu[i].primitive) ++primitive_mismatches;
+        const std::int64_t apart = ulps_apart(float(cpu->t), gpu[i].t);
+        largest = std::max(largest, apart);
+        if (apart > max_ulps) ++far;
+    }
+    CHECK(hit_mismatches == 0);
+    CHECK(primitive_mismatches == 0);
+    CHECK(far == 0);
+    return largest;
+}
+
+}  // namespace
+
+TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit", "[gpu][random]") {
+    std::vector<ShaderProbe::Query> queries;
+    Pcg32 pick(99, 1);
+    for (int i = 0; i < 2000; ++i) {
+        const std::uint64_t pixel = (std::uint64_t(pick.next_uint()) << (i % 33)) ^ pick.next_uint();
+        queries.push_back({pixel, std::uint64_t(pick.next_uint() >> (i % 32))});
+    }
+    queries.push_back({0, 0});
+    queries.push_back({~std::uint64_t(0), (1u << 20) - 1});
+    const ShaderProbe probe(gl(), flattened(scene_of({})));
+    for (const std::uint64_t seed :
+         {std::uint64_t(0), std::uint64_t(1), std::uint64_t(0x8000000000000005ull)}) {
+        const std::vector<ProbeRandom> gpu = probe.random_numbers(queries, seed);
+        std::size_t words_differ = 0, reals_differ = 0;
+        for (std::size_t i = 0; i < queries.size(); ++i) {
+            Pcg32 cpu = Pcg32::for_sample(queries[i].pixel, queries[i].sample, seed);
+            for (int k = 0; k < 4; ++k)
+                words_differ += cpu.next_uint() != gpu[i].words[std::size_t(k)] ? 1 : 0;
+            for (int k = 0; k < 4; ++k) {
+                const float expected = float(cpu.next_real());
+                reals_differ += std::bit_cast<std::uint32_t>(expected) !=
+                                        std::bit_cast<std::uint32_t>(gpu[i].reals[std::size_t(k)])
+                                    ? 1
+                                    : 0;
+            }
+        }
+        INFO("seed " << seed);
+        CHECK(words_differ == 0);
+        CHECK(reals_differ == 0);
+    }
+}
+
+TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
+          "[gpu][stability][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]") {
+    MeshShape mesh = make_icosphere(3);  // 1280 triangles
+    jitter_radii(mesh, Real(0.05), 11);
+    for (Vec3& p : mesh.positions) p = p * Real(3.7) + Vec3{10.3f, -5.1f, 2.9f};
+    const Vec3 centre{10.3f, -5.1f, 2.9f};
+    std::vector<Ray> rays;
+    // Aimed exactly at every vertex and at 1/4, 2/4, 3/4 of every edge, where triangles meet; then random.
+    for (const Vec3& p : mesh.positions) rays.push_back({centre, glm::normalize(p - centre)});
+    for (const auto& t : mesh.triangles) {
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 a = mesh.positions[t[std::size_t(e)]], b = mesh.positions[t[std::size_t((e + 1) % 3)]];
+            for (int k = 1; k < 4; ++k)
+                rays.push_back({centre, glm::normalize(a + (Real(k) / 4) * (b - a) - centre)});
+        }
+    }
+    Pcg32 rng(5, 5);
+    while (rays.size() < 20000) rays.push_back({centre, random_unit(rng)});
+    const Scene scene = scene_of({Shape{mesh, 0, "mesh"}});
+    const ShaderProbe probe(gl(), flattened(scene));
+    std::size_t escaped = 0;
+    for (const ProbeHit& h : probe.nearest_hits(rays, kInfinity)) escaped += h.hit ? 0 : 1;
+    CHECK(escaped == 0);
+    const std::int64_t largest = check_against_world(scene, rays, 4);
+    WARN("closed mesh: t of the shader and of chapter 02 at most " << largest << " ulps apart");
+}
+
+TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles",
+          "[gpu][stability][ex:ch02.triangle_watertight]") {
+    Pcg32 rng(17, 3);
+    std::vector<Ray> rays;
+    auto random_point = [&] {
+        return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(20) - Real(10);
+    };
+    // One quad split along p0–p2 per scene, as chapter 02's test; rays aimed exactly at the diagonal.
+    std::size_t misses = 0, total = 0;
+    for (int quad = 0; quad < 20; ++quad) {
+        const Vec3 p0 = random_point(), p2 = random_point(), side = random_point();
+        const Vec3 p1 = p0 + (p2 - p0) * Real(0.5) + side * Real(0.3),
+                   p3 = p0 + (p2 - p0) * Real(0.5) - side * Real(0.3);
+        const Vec3 normal = glm::cross(p1 - p0, p2 - p0);
+        if (glm::length(normal) < Real(1e-3)) continue;
+        const Scene scene = scene_of(
+            {Shape{TriangleShape{{p0, p1, p2}}, 0, "a"}, Shape{TriangleShape{{p0, p2, p3}}, 0, "b"}});
+        std::vector<Ray> quad_rays;
+        for (int i = 0; i < 200; ++i) {
+            const Vec3 target = p0 + rng.next_real() * (p2 - p0);
+            const Vec3 origin = target + glm::normalize(normal) * (Real(1) + Real(30) * rng.next_real()) +
+                                random_point() * Real(0.5);
+            quad_rays.push_back({origin, glm::normalize(target - origin)});
+        }
+        const ShaderProbe probe(gl(), flattened(scene));
+        for (const ProbeHit& h : probe.nearest_hits(quad_rays, kInfinity)) misses += h.hit ? 0 : 1;
+        total += quad_rays.size();
+        check_against_world(scene, quad_rays, 4);
+    }
+    CHECK(total > 3000);
+    CHECK(misses == 0);
+}
+
+TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hits them",
+          "[gpu][stability][ex:ch02.sphere_stable]") {
+    Pcg32 rng(23, 9);
+    std::int64_t largest = 0;
+    for (const Real radius : {Real(0.1), Real(0.01)}) {
+        for (const Real distance : {Real(10), Real(400), Real(1e3), Real(1e4)}) {
+            const Sphere sphere{{0.3f, -0.2f, 0.1f}, radius};
+            std::vector<Ray> rays;
+            for (int i = 0; i < 500; ++i) {
+                const Vec3 axis = random_unit(rng);
+                const Vec3 side = glm::normalize(glm::cross(axis, random_unit(rng)));
+                const Vec3 target = sphere.center + side * (Real(0.95) * radius * rng.next_real());
+                rays.push_back({sphere.center + axis * distance,
+                                glm::normalize(target - (sphere.center + axis * distance))});
+            }
+            INFO("radius " << radius << ", distance " << distance);
+            largest = std::max(
+                largest, check_against_world(
+                             scene_of({Shape{SphereShape{sphere.center, sphere.radius}, 0, "s"}}), rays, 4));
+        }
+    }
+    // Origins 1e-3 outside a sphere of radius 1e4: the textbook quadratic's worst case.
+    std::vector<Ray> near;
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 axis = random_unit(rng);
+        near.push_back({axis * (1e4f + 1e-3f), -axis});
+    }
+    largest = std::max(
+        largest, check_against_world(scene_of({Shape{SphereShape{{0, 0, 0}, 1e4f}, 0, "huge"}}), near, 4));
+    WARN("spheres: t of the shader and of chapter 02 at most " << largest << " ulps apart");
+}
+
+TEST_CASE("Shader rays parallel to triangles, and degenerate triangles, give no hit", "[gpu][stability]") {
+    const Scene flat =
+        scene_of({Shape{TriangleShape{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}, 0, "flat"}});
+    const std::vector<Ray> parallel{{{-1, 0.2f, 0}, {1, 0, 0}}, {{-1, 0.2f, 0.5f}, {1, 0, 0}}};
+    for (const ProbeHit& h : ShaderProbe(gl(), flattened(flat)).nearest_hits(parallel, kInfinity))
+        CHECK_FALSE(h.hit);
+    const Scene degenerate =
+        scene_of({Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{0, 0, -1}, Vec3{1, 1, -1}}}, 0, "repeated"},
+                  Shape{TriangleShape{{Vec3{0, 0, -1}, Vec3{1, 1, -1}, Vec3{2, 2, -1}}}, 0, "collinear"},
+                  Shape{TriangleShape{{Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}, Vec3{0.5f, 0.5f, -1}}}, 0,
+                        "point"}});
+    const std::vector<Ray> down{{{0.5f, 0.5f, 0}, {0, 0, -1}}};
+    for (const ProbeHit& h : ShaderProbe(gl(), flattened(degenerate)).nearest_hits(down, kInfinity))
+        CHECK_FALSE(h.hit);
+}
+
+namespace {
+
+struct Agreement {
+    double gpu_cpu;    // relative MSE between GPU and CPU images of different seeds (mean of two pairs)
+    double cpu_cpu;    // the same between CPU images of different seeds: σ²_CPU + σ²_CPU
+    double same_seed;  // between the GPU's and the CPU's image of one seed: the same paths, rounding apart
+    double mean_gpu, mean_cpu;  // of that one seed's images
+};
+
+Image cpu_image(const Scene& scene, RenderSettings settings, std::uint64_t seed) {
+    settings.seed = seed;
+    return render_with(Renderer::kPaths, scene, needed(scene), settings).image;
+}
+
+// The scene at 48×48 pixels, 64 spp, with chapter 07's path renderer on the CPU (seeds 1, 2, 3) and with
+// the shader of `kind` (seeds 1, 4, 5).
+Agreement agreement(const std::string& file, ShaderKind kind) {
+    const Scene scene = load_scene(scene_path(file.c_str()));
+    RenderSettings settings;
+    settings.width = 48;
+    settings.height = 48;
+    settings.samples_per_pixel = 64;
+    settings.threads = 2;
+    settings.progress = ProgressStyle::kNone;
+    const Image cpu1 = cpu_image(scene, settings, 1), cpu2 = cpu_image(scene, settings, 2),
+                cpu3 = cpu_image(scene, settings, 3);
+    const GpuRenderer renderer(gl(), scene, needed(scene), kind);
+    auto gpu_image = [&](std::uint64_t seed) {
+        settings.seed = seed;
+        return renderer.render(settings).image;
+    };
+    const Image gpu1 = gpu_image(1), gpu4 = gpu_image(4), gpu5 = gpu_image(5);
+    return {(compare(gpu4, cpu1).relative_mse + compare(gpu5, cpu2).relative_mse) / 2,
+            (compare(cpu3, cpu1).relative_mse + compare(cpu3, cpu2).relative_mse) / 2,
+            compare(gpu1, cpu1).relative_mse, gpu1.mean(), cpu1.mean()};
+}
+
+void check_agreement(const std::string& file, ShaderKind kind) {
+    const Agreement a = agreement(file, kind);
+    INFO(file << ", " << to_string(kind) << " shader: relative MSE GPU-CPU " << a.gpu_cpu << ", CPU-CPU "
+              << a.cpu_cpu << ", same seed " << a.same_seed << "; means " << a.mean_gpu << " and "
+              << a.mean_cpu);
+    // Two independent images of one estimator differ by σ²_GPU + σ²_CPU on average, a bias adds its square;
+    // the estimate of a relative MSE from 48×48 pixels with the glass's fireflies varies by tens of percent.
+    // A noiseless scene (an index-matched furnace) must agree to rounding.
+    if (a.cpu_cpu > 1e-12) {
+        CHECK(a.gpu_cpu < 2 * a.cpu_cpu);
+        CHECK(a.gpu_cpu > 0.5 * a.cpu_cpu);
+    } else {
+        CHECK(a.gpu_cpu < 1e-12);
+    }
+    // One seed: the same random numbers drive the same paths.
+    CHECK(a.same_seed <= 1e-3 * std::max(a.cpu_cpu, 1e-12));
+    CHECK(std::abs(a.mean_gpu - a.mean_cpu) < 0.01 * a.mean_cpu);
+}
+
+}  // namespace
+
+TEST_CASE("The compute shader's glass Cornell box agrees with the CPU's within the noise",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
+          "fresnel_exact][ex:ch07.refract]") {
+    check_agreement("cornell.json", ShaderKind::kCompute);
+}
+
+TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within the noise",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
+          "fresnel_exact][ex:ch07.refract]") {
+    check_agreement("cornell.json", ShaderKind::kFragment);
+}
+
+// Chapter 07's other scenes: ch07_default.json is the glass Cornell box above; its furnaces are below.
+TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU does",
+          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07."
+          "dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    check_agreement("ch07_coloured_glass.json", ShaderKind::kCompute);
+}
+
+TEST_CASE(
+    "The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
+    "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:"
+    "ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:"
+    "ch04.power_cosine_pdf][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_"
+    "tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    check_agreement("ch07_glossy_glass.json", ShaderKind::kCompute);
+}
+
+TEST_CASE("The shader's white furnaces of glass return the light of the sky", "[gpu][image]") {
+    // A glass sphere under a uniform sky of radiance 1, in nothing else: every path returns 1 (chapter 07).
+    for (const char* file : {"ch07_furnace_glass.json", "ch07_furnace_eta1.json"}) {
+        const Scene scene = load_scene(scene_path(file));
+        RenderSettings settings;
+        settings.width = 32;
+        settings.height = 32;
+        settings.samples_per_pixel = 64;
+        settings.seed = 7;
+        settings.progress = ProgressStyle::kNone;
+        const RenderResult r = GpuRenderer(gl(), scene, needed(scene), ShaderKind::kCompute).render(settings);
+        INFO(file);
+        CHECK(r.image.mean() == Approx(1).epsilon(1e-3));
+    }
+}

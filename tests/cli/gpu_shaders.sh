@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# gpu_shaders.sh CH11_EXECUTABLE PFM_CHECK: chapter 11 through the real program.
+#  1. No usable OpenGL (GLVND pointed at no EGL driver): exit 2, one line naming what is missing and the
+#     packages to install, nothing written.
+#  2. The image does not depend on how llvmpipe shares out the work: LP_NUM_THREADS 1, 2 and 3 give the same
+#     PFM bit for bit; and on llvmpipe the compute and the fragment shader give the same bits too.
+#  3. Ctrl-C during a long render: exit 130 within a few seconds, the complete image not written, the partial
+#     one (whole passes) written when a pass was done.
+# Exits 77 (skipped) after 1 when this machine has no OpenGL for 2.
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/lib.sh"
+exe=$1
+pfm_check=$2
+name=$(basename "$exe")
+size=(--width 24 --height 16 --spp 6 --quiet)
+
+__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/egl_vendor.json \
+    expect_bad_input "$name without an EGL driver" "$name: no OpenGL: " 1 -- "$exe" "${size[@]}" --out out.png
+grep -q "apt-get install libegl-mesa0 libgl1-mesa-dri" "$scratch/stderr" ||
+    fail "$name without an EGL driver: the message does not say what to install: $(cat "$scratch/stderr")"
+
+mkdir -p "$work" && cd "$work" || exit 1
+if ! "$exe" "${size[@]}" --out probe.png > probe.stdout 2> probe.stderr; then
+    if grep -q "no OpenGL" probe.stderr; then
+        echo "skipped: $(cat probe.stderr)"
+        [ "$failures" -eq 0 ] && exit 77
+    fi
+    fail "$name: exit status $?: $(cat probe.stderr)"
+fi
+if grep -q llvmpipe probe.stdout; then
+    for threads in 1 2 3; do
+        LP_NUM_THREADS=$threads "$exe" "${size[@]}" --out "t$threads.png" > /dev/null 2> stderr ||
+            fail "$name with LP_NUM_THREADS=$threads: $(tail -n 2 stderr)"
+    done
+    for threads in 2 3; do
+        why=$("$pfm_check" t1.pfm "t$threads.pfm" 2>&1 > /dev/null) ||
+            fail "$name: LP_NUM_THREADS 1 and $threads differ: $why"
+    done
+    "$exe" "${size[@]}" --shader fragment --out fragment.png > /dev/null 2> stderr || fail "$name --shader fragment: $(tail -n 2 stderr)"
+    why=$("$pfm_check" t1.pfm fragment.pfm 2>&1 > /dev/null) || fail "$name: compute and fragment shaders differ: $why"
+else
+    echo "not llvmpipe ($(grep -o 'shader on [^,]*' probe.stdout)): the thread-count check is llvmpipe's"
+fi
+# 3. Ctrl-C: the renderer looks for it after every dispatch.
+"$exe" --width 32 --height 32 --spp 65536 --out long.png > long.stdout 2> long.stderr &
+pid=$!
+sleep 3
+kill -INT "$pid"
+started=$(date +%s)
+wait "$pid"
+status=$?
+[ "$status" -eq 130 ] || fail "$name interrupted: exit status $status, expected 130: $(tail -n 2 long.stderr)"
+[ $(( $(date +%s) - started )) -le 5 ] || fail "$name interrupted: took more than 5 s to stop"
+[ ! -e long.png ] || fail "$name interrupted: wrote the complete long.png"
+if [ -e long.partial.pfm ]; then
+    grep -q "interrupted: partial image" long.stdout || fail "$name interrupted: a partial image but no summary line"
+fi
+finish
