@@ -69,7 +69,7 @@ std::int64_t check_against_world(const Scene& scene, const std::vector<Ray>& ray
     const ShaderProbe probe(gl(), flattened(scene));
     const std::vector<ProbeHit> gpu = probe.nearest_hits(rays, kInfinity);
     std::int64_t largest = 0;
-    std::uint64_t hit_mismatches = 0, primitive_mismatches = 0, far = 0;
+    std::uint64_t hit_mismatches = 0, primitive_mismatches = 0, ties = 0, far = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const auto cpu = world.intersect(rays[i]);
         if (bool(cpu) != gpu[i].hit) {
@@ -77,14 +77,23 @@ std::int64_t check_against_world(const Scene& scene, const std::vector<Ray>& ray
             continue;
         }
         if (!cpu) continue;
-        if (cpu->primitive != gpu[i].primitive) ++primitive_mismatches;
         const std::int64_t apart = ulps_apart(float(cpu->t), gpu[i].t);
+        // Where triangles meet, two primitives can be hit at the same t: both are the nearest hit, and which
+        // one a traversal reports depends on the order it visits them (chapter 02's 4-wide tree and the
+        // shader's binary one visit in different orders). A different primitive at a different t is a miss.
+        if (cpu->primitive != gpu[i].primitive) {
+            if (apart == 0)
+                ++ties;
+            else
+                ++primitive_mismatches;
+        }
         largest = std::max(largest, apart);
         if (apart > max_ulps) ++far;
     }
     CHECK(hit_mismatches == 0);
     CHECK(primitive_mismatches == 0);
     CHECK(far == 0);
+    if (ties > 0) WARN(ties << " rays met two primitives at the same t (a tie where triangles meet)");
     return largest;
 }
 
