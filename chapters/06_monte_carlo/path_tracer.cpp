@@ -148,14 +148,27 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
     Real previous_pdf = 0;  // the BSDF-sampling density of the ray's direction, for MIS
     Vec3 previous_point(0), previous_normal(0);  // normal 0: the previous vertex was in a medium
     int bounces = 0;        // non-delta bounces so far
-    int medium_events = 0;  // scattering events in media so far (chapter 09)
+    // Chapter 09's media: the events of the path's walks so far (scattering, and reflections at a walk's
+    // boundary), the colour channel whose density draws its free flights (chosen when the path first meets a
+    // medium that scatters), and the densities of the path under each channel's sampling, relative to the
+    // chosen one's and kept at mean 1 (spectral MIS over the whole path: β is divided by their mean).
+    int medium_events = 0;
+    int channel = -1;
+    Color spectral_pdf(1);
     for (int depth = 0;;) {
         const auto hit = world_.intersect(ray);
         // The segment runs through what fills the space it crosses, if anything: a medium that only absorbs
         // attenuates it (chapter 07); one that scatters may end it early at a scattering event (chapter 09).
         if (const Medium* medium = medium_along(hit)) {
-            const FreeFlight flight = medium->sample_free_flight(hit ? hit->t : kInfinity, rng);
+            if (channel < 0 && medium->phase()) channel = pick_channel(rng.next_real());
+            const FreeFlight flight = medium->sample_free_flight(hit ? hit->t : kInfinity, channel, rng);
             beta *= flight.weight;
+            if (flight.pdf_ratio != Color(1)) {
+                spectral_pdf *= flight.pdf_ratio;
+                const Real mean = (spectral_pdf.r + spectral_pdf.g + spectral_pdf.b) / 3;
+                beta /= mean;
+                spectral_pdf /= mean;
+            }
             if (flight.scattered) {
                 // A vertex in the volume at p: the phase function in the place of a BSDF, no surface.
                 if ((!indirect && bounces >= 1) || ++medium_events > options_.walk.max_events) break;
@@ -249,7 +262,14 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         previous_pdf = flags.delta ? kInfinity : s.pdf;
         previous_point = hit->point;
         previous_normal = n;
-        if (!continue_path(options_.termination, ++depth, beta, rng.next_real())) break;
+        // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
+        // refractions belong to the walk, which ends by the walk's rules, not by the bounces of `termination`.
+        const Medium* inside = hit->front_face ? nullptr : materials_.interior(hit->material);
+        if (inside && inside->phase()) {
+            if (++medium_events > options_.walk.max_events) break;
+        } else if (!continue_path(options_.termination, ++depth, beta, rng.next_real())) {
+            break;
+        }
         ray = spawn_ray(*hit, s.wi, options_.offset);
         rays.add(ray_kind(flags, s.transmitted));
     }

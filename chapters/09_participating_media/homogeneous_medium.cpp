@@ -7,22 +7,19 @@
 
 namespace rt {
 
-FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, Real u_channel, Real u,
-                              ChannelPdf weighting) {
+FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, int channel, Real u) {
     // EXERCISE(ch09.free_flight)
-    const int c = std::min(2, int(u_channel * 3));
     // t = −ln(1 − u) / σ_c: exponentially distributed; a channel that does not interact never stops.
-    const Real t = sigma_t[c] > 0 ? -std::log1p(-u) / sigma_t[c] : kInfinity;
+    const Real sigma = sigma_t[channel];
+    const Real t = sigma > 0 ? -std::log1p(-u) / sigma : kInfinity;
     if (t < t_max) {
         const Color T = beer_lambert(sigma_t, t);
         const Color p = sigma_t * T;  // each channel's density p_k(t) = σ_k e^(−σ_k t)
-        const Real pdf = weighting == ChannelPdf::kAverage ? (p.r + p.g + p.b) / 3 : p[c];
-        return {true, t, sigma_s * T / pdf};
+        return {true, t, sigma_s * T / p[channel], p / p[channel]};
     }
     // Past t_max: each channel's probability of flying that far is its transmittance.
     const Color T = beer_lambert(sigma_t, t_max);
-    const Real probability = weighting == ChannelPdf::kAverage ? (T.r + T.g + T.b) / 3 : T[c];
-    return {false, t_max, T / probability};
+    return {false, t_max, T / T[channel], T / T[channel]};
     // END EXERCISE
 }
 
@@ -36,9 +33,8 @@ Color HomogeneousMedium::transmittance(Real distance) const {
     // END EXERCISE
 }
 
-FreeFlight HomogeneousMedium::sample_free_flight(Real t_max, Pcg32& rng) const {
-    const Real u_channel = rng.next_real();
-    return rt::sample_free_flight(sigma_t, sigma_s, t_max, u_channel, rng.next_real());
+FreeFlight HomogeneousMedium::sample_free_flight(Real t_max, int channel, Pcg32& rng) const {
+    return rt::sample_free_flight(sigma_t, sigma_s, t_max, channel, rng.next_real());
 }
 
 }  // namespace rt

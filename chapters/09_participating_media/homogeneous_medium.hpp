@@ -10,9 +10,11 @@
 //
 // Chromatic media (σ_t differing per channel) have one such density per channel. Single-sample spectral MIS
 // (pbrt-v4's): choose a channel c uniformly, draw t from p_c, and weight every channel by the average density
-// p̄(t) = (1/3) Σ_c p_c(t) — the balance heuristic over the three channels' samplers. Every weight is then at
-// most 3 ω. The naive choice (weight by the chosen channel's own p_c) is unbiased too, but where one channel
-// is much denser than another its weight grows without bound, e^((σ_c − σ_k) t), and its variance is infinite.
+// p̄(t) = (1/3) Σ_k p_k(t) — the balance heuristic over the three channels' samplers: weight / mean(pdf_ratio)
+// below, at most 3 ω. The path loop applies it to the whole path (the product of the densities along it), so
+// a long walk's weight stays bounded too. The naive choice (weight by the chosen channel's own p_c, `weight`
+// alone) is unbiased too, but where one channel is much denser than another its weight grows without bound,
+// e^((σ_c − σ_k) t), and its variance is infinite.
 #pragma once
 
 #include "04_direct_lighting/medium.hpp"
@@ -22,21 +24,16 @@
 
 namespace rt {
 
-// Which density weighs a chromatic free flight: the average over the channels (spectral MIS) or the chosen
-// channel's own (naive; for the lesson's comparison only).
-enum class ChannelPdf { kAverage, kChosen };
-
-// One free flight over [0, t_max) of a medium of extinction σ_t and scattering σ_s: u_channel picks the
-// channel, u the distance.
-FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, Real u_channel, Real u,
-                              ChannelPdf weighting = ChannelPdf::kAverage);
+// One free flight over [0, t_max) of a medium of extinction σ_t and scattering σ_s, its distance drawn with
+// channel c's density from u.
+FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, int channel, Real u);
 
 class HomogeneousMedium final : public Medium {
   public:
     explicit HomogeneousMedium(const MediumDesc& desc);
     Color transmittance(Real distance) const override;
     const PhaseFunction* phase() const override { return &phase_; }
-    FreeFlight sample_free_flight(Real t_max, Pcg32& rng) const override;
+    FreeFlight sample_free_flight(Real t_max, int channel, Pcg32& rng) const override;
 
     Color sigma_a, sigma_s, sigma_t;
 

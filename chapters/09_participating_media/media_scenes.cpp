@@ -18,10 +18,10 @@ Scene medium_sphere_scene(const MediumDesc& medium, Real ior, Real sky) {
     return scene;
 }
 
-Scene medium_slab_scene(const MediumDesc& medium, Real thickness, bool black_below, bool black_above) {
+Scene medium_slab_scene(const MediumDesc& medium, Real thickness) {
     Scene scene;
     scene.file = "medium slab";
-    scene.camera = {{0, thickness + 2, 0}, {0, 0, 0}, {0, 0, 1}, 1};
+    scene.camera = {{0, thickness + 1, 0}, {0, 0, 0}, {0, 0, 1}, 1};
     Material slab;
     slab.name = "slab";
     slab.type = MaterialType::kDielectric;
@@ -34,8 +34,7 @@ Scene medium_slab_scene(const MediumDesc& medium, Real thickness, bool black_bel
     scene.materials = {slab, black};
     const Real w = 1e4;
     scene.shapes.push_back({BoxShape{{-w, 0, -w}, {w, thickness, w}, {}}, 0, "shapes[0]"});
-    if (black_below) scene.shapes.push_back({PlaneShape{{0, -1, 0}, {0, 1, 0}}, 1, "shapes[1]"});
-    if (black_above) scene.shapes.push_back({PlaneShape{{0, thickness + 1, 0}, {0, -1, 0}}, 1, "shapes[2]"});
+    scene.shapes.push_back({PlaneShape{{0, -2, 0}, {0, 1, 0}}, 1, "shapes[1]"});
     scene.environment = EnvironmentLight{Color(1)};
     return scene;
 }

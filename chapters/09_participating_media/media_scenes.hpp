@@ -10,10 +10,10 @@ namespace rt {
 // radiance `sky`; the camera 4 units away on +z looks at its centre.
 Scene medium_sphere_scene(const MediumDesc& medium, Real ior = 1, Real sky = 1);
 
-// A slab 0 ≤ y ≤ thickness (index-matched, 2·10⁴ wide: infinite for light that travels less than 10⁴),
-// holding `medium`, under a uniform sky of radiance 1. With `black_below` a black floor under it at
-// y = −1 (only reflected light reaches a point above); with `black_above` a black ceiling at y = thickness +
-// 1 (only transmitted light reaches a point below).
-Scene medium_slab_scene(const MediumDesc& medium, Real thickness, bool black_below, bool black_above);
+// A slab 0 ≤ y ≤ thickness (index-matched, 2·10⁴ wide: infinite for light that travels less than 10⁴ in it),
+// holding `medium`, over a black floor at y = −2, under a uniform sky of radiance 1. Seen straight down from
+// above, it shows what it reflects (what passes through is lost in the floor); straight up from between it
+// and the floor, the sky through it and what it transmits.
+Scene medium_slab_scene(const MediumDesc& medium, Real thickness);
 
 }  // namespace rt

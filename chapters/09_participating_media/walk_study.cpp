@@ -73,17 +73,21 @@ std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max, c
     std::vector<FreeFlightRow> rows;
     for (int n : samples) {
         FreeFlightRow row{n, 0, 0, 0, 0};
-        for (ChannelPdf weighting : {ChannelPdf::kAverage, ChannelPdf::kChosen}) {
+        // Spectral MIS divides the weight by the mean of the channels' densities relative to the chosen one's;
+        // the naive estimate keeps the weight as it is.
+        for (bool mis : {true, false}) {
             double squared = 0, max_weight = 0;
             for (int trial = 0; trial < trials; ++trial) {
                 Pcg32 rng = Pcg32::for_sample(std::uint64_t(trial), std::uint64_t(n), seed);
                 Color sum(0);
                 for (int i = 0; i < n; ++i) {
-                    const Real u_channel = rng.next_real();
-                    const FreeFlight f = sample_free_flight(sigma_t, sigma_t, t_max, u_channel, rng.next_real(), weighting);
+                    const int channel = pick_channel(rng.next_real());
+                    const FreeFlight f = sample_free_flight(sigma_t, sigma_t, t_max, channel, rng.next_real());
                     if (!f.scattered) continue;
-                    sum += f.weight;
-                    max_weight = std::max(max_weight, double(std::max({f.weight.r, f.weight.g, f.weight.b})));
+                    const Real mean = (f.pdf_ratio.r + f.pdf_ratio.g + f.pdf_ratio.b) / 3;
+                    const Color w = mis ? f.weight / mean : f.weight;
+                    sum += w;
+                    max_weight = std::max(max_weight, double(std::max({w.r, w.g, w.b})));
                 }
                 for (int c = 0; c < 3; ++c) {
                     const double relative = (double(sum[c]) / n - exact[c]) / exact[c];
@@ -91,7 +95,7 @@ std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max, c
                 }
             }
             const double rms = std::sqrt(squared / trials);
-            if (weighting == ChannelPdf::kAverage) {
+            if (mis) {
                 row.rms_error_average = rms;
                 row.max_weight_average = max_weight;
             } else {
