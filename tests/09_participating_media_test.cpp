@@ -35,8 +35,8 @@ namespace {
 constexpr double kPiD = std::numbers::pi;
 
 // 2π ∫ p(cos θ) k(cos θ) d cos θ by the trapezoidal rule on nodes dense where p peaks (cos θ = 1 for g ≥ 0,
-// −1 for g < 0): x = 1 ∓ cos θ from 10⁻¹⁴ to 2 evenly in ln x (the peak is (1 − |g|)² wide), each node rounded
-// to the float the function takes, so the rule integrates what it evaluates.
+// −1 for g < 0): x = 1 ∓ cos θ from 10⁻¹⁴ to 2 evenly in ln x (the peak is (1 − |g|)² wide), each node
+// rounded to the float the function takes, so the rule integrates what it evaluates.
 template <class K>
 double hg_moment(double g, K k) {
     std::vector<double> nodes{g >= 0 ? 1.0 : -1.0};
@@ -74,7 +74,8 @@ Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint
 
 struct Prepared {
     explicit Prepared(const Scene& s, PathOptions options = {})
-        : scene(s), render(scene, EffectSet::all(), media_materials()),
+        : scene(s),
+          render(scene, EffectSet::all(), media_materials()),
           tracer(render.world, render.materials, render.lights, options) {}
     Scene scene;
     RenderScene render;
@@ -168,8 +169,8 @@ Scene scene_from(const std::string& json) {
 // ---------------------------------------------------------------------------------------------------------
 // Henyey–Greenstein
 
-// Up to |g| = 0.99: at 0.999 the peak is 5·10⁻⁷ wide in cos θ, 8 floats, too few for any rule to integrate the
-// function of a float argument to 10⁻⁵ (its peak value is checked below instead).
+// Up to |g| = 0.99: at 0.999 the peak is 5·10⁻⁷ wide in cos θ, 8 floats, too few for any rule to integrate
+// the function of a float argument to 10⁻⁵ (its peak value is checked below instead).
 TEST_CASE("Henyey-Greenstein integrates to 1 and its mean cosine is g, for g from -0.99 to 0.99", "") {
     for (double g : {-0.99, -0.7, -0.3, 0.0, 0.3, 0.7, 0.9, 0.99}) {
         INFO("g = " << g);
@@ -244,9 +245,10 @@ TEST_CASE("Henyey-Greenstein at g = +-0.999: no NaN, unit directions, finite pos
 // ---------------------------------------------------------------------------------------------------------
 // Free flight and transmittance
 
-TEST_CASE("Transmittance is exp(-sigma_t d) with sigma_t = sigma_a + sigma_s, and 1 at any distance where "
-          "sigma_t is 0",
-          "[ex:ch09.transmittance]") {
+TEST_CASE(
+    "Transmittance is exp(-sigma_t d) with sigma_t = sigma_a + sigma_s, and 1 at any distance where "
+    "sigma_t is 0",
+    "[ex:ch09.transmittance]") {
     const HomogeneousMedium m({Color(0.1f, 0, 0.5f), Color(0.2f, 0, 1.5f), 0.3f});
     for (Real d : {Real(0), Real(0.5), Real(3), Real(40)}) {
         const Color T = m.transmittance(d);
@@ -257,9 +259,10 @@ TEST_CASE("Transmittance is exp(-sigma_t d) with sigma_t = sigma_a + sigma_s, an
     CHECK(m.transmittance(kInfinity) == Color(0, 1, 0));
 }
 
-TEST_CASE("Free flight: distances are exponential with mean 1 / sigma_t, scattering weighs albedo, passing "
-          "weighs 1",
-          "[statistical][ex:ch09.free_flight]") {
+TEST_CASE(
+    "Free flight: distances are exponential with mean 1 / sigma_t, scattering weighs albedo, passing "
+    "weighs 1",
+    "[statistical][ex:ch09.free_flight]") {
     const Color sigma_t(2), sigma_s(1.5f);
     Pcg32 rng(5, 1);
     const int n = 100000;
@@ -277,7 +280,8 @@ TEST_CASE("Free flight: distances are exponential with mean 1 / sigma_t, scatter
             REQUIRE(f.t == 1);
             REQUIRE(f.weight.g == Approx(1).epsilon(1e-6));
         }
-        const FreeFlight unbounded = sample_free_flight(sigma_t, sigma_s, kInfinity, channel, rng.next_real());
+        const FreeFlight unbounded =
+            sample_free_flight(sigma_t, sigma_s, kInfinity, channel, rng.next_real());
         REQUIRE(unbounded.scattered);
         sum += double(unbounded.t);
         sum2 += double(unbounded.t) * double(unbounded.t);
@@ -289,9 +293,10 @@ TEST_CASE("Free flight: distances are exponential with mean 1 / sigma_t, scatter
     CHECK(std::abs(double(passed) / n - p) < 5 * p_error);
 }
 
-TEST_CASE("Chromatic free flight: spectral MIS keeps every weight at most 3 and estimates the scattering "
-          "probability; the naive per-channel density gives unbounded weights",
-          "[statistical][ex:ch09.free_flight]") {
+TEST_CASE(
+    "Chromatic free flight: spectral MIS keeps every weight at most 3 and estimates the scattering "
+    "probability; the naive per-channel density gives unbounded weights",
+    "[statistical][ex:ch09.free_flight]") {
     const Color sigma_t(0.25f, 1, 4);
     for (bool mis : {true, false}) {
         Pcg32 rng(6, 2);
@@ -320,8 +325,8 @@ TEST_CASE("Chromatic free flight: spectral MIS keeps every weight at most 3 and 
                 CHECK(std::abs(mean - exact) < 5 * error);
             }
         } else {
-            // (σ_r / σ_b) e^((σ_b − σ_r) t): the blue channel's samples weigh red by e^(3.75 t) / 16, about 10³
-            // at the largest t of 200000 samples, and without bound as t_max grows.
+            // (σ_r / σ_b) e^((σ_b − σ_r) t): the blue channel's samples weigh red by e^(3.75 t) / 16, about
+            // 10³ at the largest t of 200000 samples, and without bound as t_max grows.
             CHECK(largest > 300);
         }
     }
@@ -360,8 +365,8 @@ TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera
 
 TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to camera rays and shadow rays",
           "[ex:ch09.transmittance]") {
-    // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing fog
-    // (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
+    // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing
+    // fog (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
     // boundaries.
     const Scene scene = scene_from(R"({
       "camera": {"from": [0, 10, 0], "at": [0, 0, 0], "up": [0, 0, 1]},
@@ -391,9 +396,10 @@ TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to 
 // ---------------------------------------------------------------------------------------------------------
 // White furnaces and energy
 
-TEST_CASE("Furnace: an index-matched sphere of albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 "
-          "and 0.7",
-          "[statistical]") {
+TEST_CASE(
+    "Furnace: an index-matched sphere of albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 "
+    "and 0.7",
+    "[statistical]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -404,9 +410,10 @@ TEST_CASE("Furnace: an index-matched sphere of albedo 1 under a sky of radiance 
     }
 }
 
-TEST_CASE("Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 and "
-          "0.7",
-          "[statistical]") {
+TEST_CASE(
+    "Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 and "
+    "0.7",
+    "[statistical]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1.5f, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -417,11 +424,12 @@ TEST_CASE("Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 r
     }
 }
 
-TEST_CASE("Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel", "[statistical]") {
+TEST_CASE("Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
+          "[statistical]") {
     for (int channel = 0; channel < 3; ++channel) {
         const FurnaceCheck f = furnace({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000, channel);
-        INFO("channel " << channel << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
-                        << f.largest_error << ", mean " << f.mean);
+        INFO("channel " << channel << ": worst pixel " << f.worst_sigmas
+                        << " standard errors off, largest error " << f.largest_error << ", mean " << f.mean);
         CHECK(f.worst_sigmas < 4.5);
         CHECK(f.largest_error < 0.04);
         CHECK(f.mean == Approx(1).margin(0.02));
@@ -446,9 +454,10 @@ TEST_CASE("Energy: a medium of albedo 0.8 never returns more than the furnace gi
 // ---------------------------------------------------------------------------------------------------------
 // Slabs: single scattering, and all orders in a semi-infinite medium
 
-TEST_CASE("Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
-          "and T1 = 0.10617, by quadrature and by the walk cut after one event",
-          "[statistical]") {
+TEST_CASE(
+    "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
+    "and T1 = 0.10617, by quadrature and by the walk cut after one event",
+    "[statistical]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
     gauss_legendre(200, mu, w);
@@ -474,9 +483,10 @@ TEST_CASE("Single scattering in a slab of optical thickness 1 (albedo 1, isotrop
     CHECK(T.error < 2e-3);
 }
 
-TEST_CASE("Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
-          "0.5, 0.9 and 0.99",
-          "[statistical]") {
+TEST_CASE(
+    "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
+    "0.5, 0.9 and 0.99",
+    "[statistical]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
     for (double omega : {0.5, 0.9, 0.99}) {
@@ -505,9 +515,9 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6", "[s
         Real ior;
     };
     const std::vector<Case> cases = {
-        {{Color(0), Color(2), 0.999f}, 1.5f},         {{Color(0), Color(2), -0.999f}, 1},
-        {{Color(1e-6f), Color(1e-6f), 0.5f}, 1.5f},   {{Color(0), Color(1e-6f, 1, 1e6f), 0}, 1},
-        {{Color(1e6f), Color(1e6f), -0.5f}, 1.5f},    {{Color(0), Color(1e6f), 0.9f}, 1},
+        {{Color(0), Color(2), 0.999f}, 1.5f},       {{Color(0), Color(2), -0.999f}, 1},
+        {{Color(1e-6f), Color(1e-6f), 0.5f}, 1.5f}, {{Color(0), Color(1e-6f, 1, 1e6f), 0}, 1},
+        {{Color(1e6f), Color(1e6f), -0.5f}, 1.5f},  {{Color(0), Color(1e6f), 0.9f}, 1},
     };
     RenderSettings settings;
     settings.width = settings.height = 8;
@@ -527,7 +537,8 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6", "[s
     }
 }
 
-TEST_CASE("Scene format: media inside dielectrics and between the shapes, what they call for, and refusals", "") {
+TEST_CASE("Scene format: media inside dielectrics and between the shapes, what they call for, and refusals",
+          "") {
     const std::string camera = R"("camera": {"from": [0, 0, 4], "at": [0, 0, 0]},)";
     const Scene milk = scene_from("{" + camera + R"(
       "materials": {"milk": {"type": "dielectric", "ior": 1.3, "medium": {"sigma_a": [0.1, 0.2, 0.3], "sigma_s": [1, 2, 3], "g": 0.5}}},
@@ -545,9 +556,11 @@ TEST_CASE("Scene format: media inside dielectrics and between the shapes, what t
       "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "white"}]})");
     REQUIRE(fog.medium);
     CHECK(needed(fog).contains(Effect::kMedia));
-    const auto refused = [&](const std::string& materials, const std::string& top, const std::string& message) {
-        const std::string json = "{" + camera + top + R"("materials": {"m": )" + materials +
-                                 R"(}, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
+    const auto refused = [&](const std::string& materials, const std::string& top,
+                             const std::string& message) {
+        const std::string json =
+            "{" + camera + top + R"("materials": {"m": )" + materials +
+            R"(}, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
         CHECK_THROWS_WITH(scene_from(json), message);
     };
     refused(R"({"type": "dielectric", "medium": {"sigma_s": [1, -1, 1]}})", "",
@@ -555,7 +568,8 @@ TEST_CASE("Scene format: media inside dielectrics and between the shapes, what t
     refused(R"({"type": "dielectric", "medium": {"g": 1}})", "",
             "test.json: materials.m.medium.g: must be in (-1, 1), got 1");
     refused(R"({"type": "diffuse", "medium": {"sigma_s": [1, 1, 1]}})", "",
-            "test.json: materials.m.medium: only a dielectric material holds a medium (its shapes' inside), got a "
+            "test.json: materials.m.medium: only a dielectric material holds a medium (its shapes' inside), "
+            "got a "
             "diffuse material");
     refused(R"({"type": "dielectric", "absorption": [1, 1, 1], "medium": {"sigma_s": [1, 1, 1]}})", "",
             "test.json: materials.m.medium: give either absorption or medium (a medium's sigma_a is its "
@@ -566,9 +580,10 @@ TEST_CASE("Scene format: media inside dielectrics and between the shapes, what t
             "test.json: medium.g: must be in (-1, 1), got -1.5");
 }
 
-TEST_CASE("Without media a scattering medium is Beer-Lambert absorption by sigma_a + sigma_s, with its note, and "
-          "fog is empty space",
-          "") {
+TEST_CASE(
+    "Without media a scattering medium is Beer-Lambert absorption by sigma_a + sigma_s, with its note, and "
+    "fog is empty space",
+    "") {
     const Scene scene = scene_from(R"({
       "camera": {"from": [0, 0, 4], "at": [0, 0, 0]},
       "medium": {"sigma_s": [0.5, 0.5, 0.5]},
@@ -583,10 +598,12 @@ TEST_CASE("Without media a scattering medium is Beer-Lambert absorption by sigma
     CHECK(table.exterior() == nullptr);
     REQUIRE(table.notes().size() == 2);
     CHECK(table.notes()[0] ==
-          "dielectric material 'milk': its medium: media is not simulated in this run (chapter 09 adds it); treated "
+          "dielectric material 'milk': its medium: media is not simulated in this run (chapter 09 adds it); "
+          "treated "
           "as Beer-Lambert absorption by sigma_a + sigma_s");
     CHECK(table.notes()[1] ==
-          "medium between the shapes: media is not simulated in this run (chapter 09 adds it); treated as empty "
+          "medium between the shapes: media is not simulated in this run (chapter 09 adds it); treated as "
+          "empty "
           "space");
     // With media: the homogeneous medium inside and between the shapes, no notes.
     const MaterialTable with(scene, EffectSet::all(), media_materials());

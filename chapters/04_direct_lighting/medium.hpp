@@ -1,11 +1,11 @@
 // What fills a shape (or the space between the shapes): a participating medium, the volume counterpart of
-// the Bsdf. The material table hands one out for each dielectric that is not clear, and the path loop (chapter
-// 06) asks it three things along every segment it traces through it:
+// the Bsdf. The material table hands one out for each dielectric that is not clear, and the path loop
+// (chapter 06) asks it three things along every segment it traces through it:
 //   transmittance(d):            T(d), the fraction of radiance left after a distance d (chapter 07's
 //                                Beer–Lambert glass answers only this);
 //   sample_free_flight(t_max, c): where the path's next interaction is: a scattering event at t < t_max, or
-//                                none before the surface at t_max, drawn with the density of colour channel c,
-//                                with the weight that keeps the estimate unbiased;
+//                                none before the surface at t_max, drawn with the density of colour channel
+//                                c, with the weight that keeps the estimate unbiased;
 //   phase():                     the phase function that scatters it there (null: it only absorbs).
 // Chapter 09 implements them for scattering media. As with Bsdf, an interface (not a variant) lets the later
 // chapter add its media without this chapter naming them.
@@ -35,7 +35,8 @@ class PhaseFunction {
 // One free flight along a segment of length t_max (kInfinity when no surface is ahead), drawn with the
 // density p_c of the path's colour channel c.
 struct FreeFlight {
-    bool scattered = false;  // true: a scattering event at distance t < t_max; false: the flight reached t_max
+    bool scattered =
+        false;  // true: a scattering event at distance t < t_max; false: the flight reached t_max
     Real t = 0;
     // The factor the path's throughput takes, per channel k: T_k(t) σ_s,k / p_c(t) at an event,
     // T_k(t_max) / P_c(no event) otherwise.
@@ -57,10 +58,10 @@ class Medium {
     virtual Color transmittance(Real distance) const = 0;
     // The phase function of its scattering events; null for a medium that only absorbs.
     virtual const PhaseFunction* phase() const { return nullptr; }
-    // `channel` (0, 1, 2: red, green, blue) is the one colour channel whose density draws the distance, chosen
-    // once per path (a medium of the same σ_t in every channel draws the same either way). A medium that only
-    // absorbs: the flight always reaches t_max, weighted by T(t_max), and draws no random number (so chapter
-    // 07's images do not depend on this hook).
+    // `channel` (0, 1, 2: red, green, blue) is the one colour channel whose density draws the distance,
+    // chosen once per path (a medium of the same σ_t in every channel draws the same either way). A medium
+    // that only absorbs: the flight always reaches t_max, weighted by T(t_max), and draws no random number
+    // (so chapter 07's images do not depend on this hook).
     virtual FreeFlight sample_free_flight(Real t_max, int /*channel*/, Pcg32&) const {
         return {false, t_max, transmittance(t_max), Color(1)};
     }

@@ -66,10 +66,12 @@ Color PathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const Phas
         const Vec2 u = rng.next_vec2();
         if (const auto s = picker_.sample(p, u_pick, u); s && s->pdf > 0) {
             const Real f = phase.eval(wo, s->wi);
-            const Color T =
-                f > 0 && shadows ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays) : Color(1);
+            const Color T = f > 0 && shadows
+                                ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
+                                : Color(1);
             if (f > 0 && !is_black(T)) {
-                const Real w = mis && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
+                const Real w =
+                    mis && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
                 sum += T * s->radiance * (f * w / s->pdf);
             }
         }
@@ -147,7 +149,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
     bool specular = true;   // the camera ray, or a delta bounce: what it hits counts in full
     Real previous_pdf = 0;  // the BSDF-sampling density of the ray's direction, for MIS
     Vec3 previous_point(0), previous_normal(0);  // normal 0: the previous vertex was in a medium
-    int bounces = 0;        // non-delta bounces so far
+    int bounces = 0;                             // non-delta bounces so far
     // Chapter 09's media: the events of the path's walks so far (scattering, and reflections at a walk's
     // boundary), the colour channel whose density draws its free flights (chosen when the path first meets a
     // medium that scatters), and the densities of the path under each channel's sampling, relative to the
@@ -200,11 +202,12 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
             if (environment_ && (specular || direct)) {
                 Real w = 1;
                 if (!specular && nee) {
-                    // What next_event (cosine-weighted about the normal) or next_event_in_medium (uniform over
-                    // the sphere) would have drawn this direction with.
-                    const Real pdf_light = previous_normal == Vec3(0)
-                                               ? kUniformSpherePdf
-                                               : cosine_hemisphere_pdf(glm::dot(ray.direction, previous_normal));
+                    // What next_event (cosine-weighted about the normal) or next_event_in_medium (uniform
+                    // over the sphere) would have drawn this direction with.
+                    const Real pdf_light =
+                        previous_normal == Vec3(0)
+                            ? kUniformSpherePdf
+                            : cosine_hemisphere_pdf(glm::dot(ray.direction, previous_normal));
                     w = mis ? power_heuristic(previous_pdf, pdf_light) : Real(0);
                 }
                 L += beta * environment_->radiance * w;
@@ -263,7 +266,8 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         previous_point = hit->point;
         previous_normal = n;
         // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
-        // refractions belong to the walk, which ends by the walk's rules, not by the bounces of `termination`.
+        // refractions belong to the walk, which ends by the walk's rules, not by the bounces of
+        // `termination`.
         const Medium* inside = hit->front_face ? nullptr : materials_.interior(hit->material);
         if (inside && inside->phase()) {
             if (++medium_events > options_.walk.max_events) break;

@@ -35,9 +35,9 @@ namespace rt {
 // How a path that scatters in a medium (chapter 09) ends. Its scattering events are not the bounces that
 // `termination` counts (a walk in milk makes hundreds of them): they have their own two knobs.
 struct MediumWalk {
-    int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a walk's
-                             // boundary): a bias when a path meets it
-    bool roulette = true;    // Russian roulette at every event: go on with q = min(1, max β), then β /= q
+    int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a
+                             // walk's boundary): a bias when a path meets it
+    bool roulette = true;  // Russian roulette at every event: go on with q = min(1, max β), then β /= q
 };
 
 // Effects read: "direct" (light arriving from emitters at surfaces), "shadows" (shadow rays; without it every

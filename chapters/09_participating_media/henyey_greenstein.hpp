@@ -11,8 +11,8 @@
 
 namespace rt {
 
-// p(cos θ) for asymmetry g. The denominator is written (1 − g)² + 2 g (1 − cos θ), in double: at g = 0.999 and
-// cos θ = 1 the textbook 1 + g² − 2 g cos θ loses every digit to cancellation.
+// p(cos θ) for asymmetry g. The denominator is written (1 − g)² + 2 g (1 − cos θ), in double: at g = 0.999
+// and cos θ = 1 the textbook 1 + g² − 2 g cos θ loses every digit to cancellation.
 Real henyey_greenstein(Real cos_theta, Real g);
 
 // cos θ drawn with density 2π p(cos θ) from u in [0, 1): for |g| < 1e-3 the isotropic 1 − 2u, else

@@ -20,13 +20,15 @@ using namespace rt;
 
 void print_walk_study(int paths, std::uint64_t seed) {
     const auto rows = walk_lengths({1, 0.1, 0.01}, {0.5, 0.9, 0.99, 0.999}, paths, seed);
-    std::printf("Random walks in a sphere of radius 1 (index-matched, g = 0, uniform sky of radiance 1), %d paths "
-                "each\n", paths);
-    std::printf("%10s %8s %16s %10s %14s %10s\n", "mfp", "albedo", "events per path", "longest", "ns per path",
-                "radiance");
+    std::printf(
+        "Random walks in a sphere of radius 1 (index-matched, g = 0, uniform sky of radiance 1), %d paths "
+        "each\n",
+        paths);
+    std::printf("%10s %8s %16s %10s %14s %10s\n", "mfp", "albedo", "events per path", "longest",
+                "ns per path", "radiance");
     for (const WalkLengthRow& r : rows) {
-        std::printf("%10.3g %8.3f %16.2f %10llu %14.0f %10.4f\n", r.mean_free_path, r.albedo, r.events_per_path,
-                    static_cast<unsigned long long>(r.longest), r.ns_per_path, r.radiance);
+        std::printf("%10.3g %8.3f %16.2f %10llu %14.0f %10.4f\n", r.mean_free_path, r.albedo,
+                    r.events_per_path, static_cast<unsigned long long>(r.longest), r.ns_per_path, r.radiance);
     }
 }
 
@@ -34,8 +36,9 @@ void print_free_flight_study(std::uint64_t seed) {
     const Color sigma_t(0.25f, 1, 4);
     const Real t_max = 4;
     const auto rows = free_flight_study(sigma_t, t_max, {100, 1000, 10000, 100000}, 20, seed);
-    std::printf("Free flight in a chromatic medium, sigma_t = (0.25, 1, 4), albedo 1, t_max = 4: the estimate "
-                "of P(scatter before t_max), 20 trials\n");
+    std::printf(
+        "Free flight in a chromatic medium, sigma_t = (0.25, 1, 4), albedo 1, t_max = 4: the estimate "
+        "of P(scatter before t_max), 20 trials\n");
     std::printf("%8s %22s %22s %18s %18s\n", "samples", "rel. RMS error (MIS)", "rel. RMS error (naive)",
                 "max weight (MIS)", "max weight (naive)");
     for (const FreeFlightRow& r : rows) {
@@ -62,17 +65,22 @@ int main(int argc, char** argv) {
     auto flags = [&](CLI::App& app) {
         app.add_option("--max-events", max_events, "End a path after this many scattering events in media")
             ->check(CLI::Range(1, 1 << 30));
-        app.add_flag("--no-medium-roulette", no_roulette, "No Russian roulette at scattering events in media");
+        app.add_flag("--no-medium-roulette", no_roulette,
+                     "No Russian roulette at scattering events in media");
         app.add_option("--sampling", sampling,
                        "How chapter 06's loop draws directions: uniform|cosine|brdf|light|mis")
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
-        app.add_flag("--walk-study", walk_study,
-                     "Walk lengths and time against the mean free path and the albedo (a sphere of radius 1)");
-        app.add_option("--study-paths", study_paths, "With --walk-study: paths per row")->check(CLI::Range(1, 1 << 24));
-        app.add_flag("--knob-study", knob_study,
-                     "The scene's error (against an uncapped reference) and time for each --caps, roulette on "
-                     "and off");
-        app.add_option("--caps", caps, "With --knob-study: the caps on scattering events")->check(CLI::Range(1, 1 << 30));
+        app.add_flag(
+            "--walk-study", walk_study,
+            "Walk lengths and time against the mean free path and the albedo (a sphere of radius 1)");
+        app.add_option("--study-paths", study_paths, "With --walk-study: paths per row")
+            ->check(CLI::Range(1, 1 << 24));
+        app.add_flag(
+            "--knob-study", knob_study,
+            "The scene's error (against an uncapped reference) and time for each --caps, roulette on "
+            "and off");
+        app.add_option("--caps", caps, "With --knob-study: the caps on scattering events")
+            ->check(CLI::Range(1, 1 << 30));
         app.add_option("--reference-spp", reference_spp, "With --knob-study: spp of the reference")
             ->check(CLI::Range(1, 1 << 20));
         app.add_flag("--free-flight-study", flight_study,
@@ -103,9 +111,10 @@ int main(int argc, char** argv) {
                         context.settings.height);
             std::fflush(stdout);
             const Image reference =
-                render_with(Renderer::kPaths, scene, context.simulated, reference_settings, uncapped, hooks).image;
-            std::printf("%10s %9s %5s %12s %13s %10s\n", "max events", "roulette", "spp", "RMSE", "mean error",
-                        "time (s)");
+                render_with(Renderer::kPaths, scene, context.simulated, reference_settings, uncapped, hooks)
+                    .image;
+            std::printf("%10s %9s %5s %12s %13s %10s\n", "max events", "roulette", "spp", "RMSE",
+                        "mean error", "time (s)");
             for (const WalkKnobRow& r : walk_knobs(scene, context.settings, options, reference, caps)) {
                 std::printf("%10d %9s %5d %12.4e %+13.4e %10.3f\n", r.max_events, r.roulette ? "on" : "off",
                             context.settings.samples_per_pixel, r.rmse, r.mean_error, r.seconds);
@@ -114,10 +123,12 @@ int main(int argc, char** argv) {
         }
         const Renderer renderer = choose_renderer(context.simulated);
         ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options, hooks),
-                       {}, std::nullopt};
-        run.notes.push_back(renderer == Renderer::kDirect
-                                ? std::string(to_string(renderer))
-                                : "renderer: paths (chapter 06's loop, chapter 07's BSDFs, chapter 09's media)");
+                       {},
+                       std::nullopt};
+        run.notes.push_back(
+            renderer == Renderer::kDirect
+                ? std::string(to_string(renderer))
+                : "renderer: paths (chapter 06's loop, chapter 07's BSDFs, chapter 09's media)");
         const MaterialTable materials(scene, context.simulated, hooks);
         for (const std::string& note : materials.notes()) run.notes.push_back(note);
         run.notes.push_back("sampling: " + sampling + ", walk: at most " + std::to_string(max_events) +

@@ -19,7 +19,8 @@ std::vector<WalkLengthRow> walk_lengths(const std::vector<double>& mean_free_pat
     for (double mfp : mean_free_paths) {
         for (double albedo : albedos) {
             const Real sigma_t = Real(1 / mfp);
-            const Scene scene = medium_sphere_scene({Color(sigma_t * Real(1 - albedo)), Color(sigma_t * Real(albedo)), 0});
+            const Scene scene =
+                medium_sphere_scene({Color(sigma_t * Real(1 - albedo)), Color(sigma_t * Real(albedo)), 0});
             const RenderScene prepared(scene, EffectSet::all(), media_materials());
             PathOptions options;
             options.walk.max_events = 1 << 30;
@@ -39,7 +40,8 @@ std::vector<WalkLengthRow> walk_lengths(const std::vector<double>& mean_free_pat
                 events += double(rays[RayKind::kIndirect]);
                 row.longest = std::max(row.longest, rays[RayKind::kIndirect]);
             }
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             row.events_per_path = events / paths;
             row.ns_per_path = seconds * 1e9 / paths;
             row.radiance = radiance / paths;
@@ -66,15 +68,16 @@ std::vector<WalkKnobRow> walk_knobs(const Scene& scene, const RenderSettings& se
     return rows;
 }
 
-std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max, const std::vector<int>& samples,
-                                             int trials, std::uint64_t seed) {
+std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max,
+                                             const std::vector<int>& samples, int trials,
+                                             std::uint64_t seed) {
     Color exact;
     for (int c = 0; c < 3; ++c) exact[c] = 1 - std::exp(-sigma_t[c] * t_max);
     std::vector<FreeFlightRow> rows;
     for (int n : samples) {
         FreeFlightRow row{n, 0, 0, 0, 0};
-        // Spectral MIS divides the weight by the mean of the channels' densities relative to the chosen one's;
-        // the naive estimate keeps the weight as it is.
+        // Spectral MIS divides the weight by the mean of the channels' densities relative to the chosen
+        // one's; the naive estimate keeps the weight as it is.
         for (bool mis : {true, false}) {
             double squared = 0, max_weight = 0;
             for (int trial = 0; trial < trials; ++trial) {
@@ -82,7 +85,8 @@ std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max, c
                 Color sum(0);
                 for (int i = 0; i < n; ++i) {
                     const int channel = pick_channel(rng.next_real());
-                    const FreeFlight f = sample_free_flight(sigma_t, sigma_t, t_max, channel, rng.next_real());
+                    const FreeFlight f =
+                        sample_free_flight(sigma_t, sigma_t, t_max, channel, rng.next_real());
                     if (!f.scattered) continue;
                     const Real mean = (f.pdf_ratio.r + f.pdf_ratio.g + f.pdf_ratio.b) / 3;
                     const Color w = mis ? f.weight / mean : f.weight;

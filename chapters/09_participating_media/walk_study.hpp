@@ -43,7 +43,7 @@ struct FreeFlightRow {
 };
 // Estimates of the probability of scattering before t_max (exactly 1 − e^(−σ_c t_max) in each channel) in a
 // medium of albedo 1 and σ_t = `sigma_t`, by both weightings, `trials` times at each sample count.
-std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max, const std::vector<int>& samples,
-                                             int trials, std::uint64_t seed);
+std::vector<FreeFlightRow> free_flight_study(const Color& sigma_t, Real t_max,
+                                             const std::vector<int>& samples, int trials, std::uint64_t seed);
 
 }  // namespace rt

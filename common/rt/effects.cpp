@@ -55,7 +55,8 @@ EffectSet needed(const Scene& scene) {
 }
 
 std::string chapter_that_adds(Effect effect) {
-    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05", "04", "05", "07", "09"};
+    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05",
+                                                                "04", "05", "07", "09"};
     return std::string("chapter ") + kChapter[std::size_t(effect)];
 }
 
