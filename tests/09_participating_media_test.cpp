@@ -54,22 +54,31 @@ double hg_moment(double g, K k) {
     return 2 * kPiD * sum;
 }
 
-// The radiance a PathTracer on `scene` (chapter 09's material table, every effect) returns along `ray`:
-// the mean and standard error of `paths` paths.
+// The radiance a PathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
+// (the green channel unless asked).
 struct Estimate {
-    double mean = 0, error = 0;
+    double means[3] = {0, 0, 0}, errors[3] = {0, 0, 0};
+    double mean = 0, error = 0;  // of the green channel
 };
-Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed, int channel = 1) {
-    double sum = 0, sum2 = 0;
+Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed) {
+    double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
     RayCounts rays;
     for (int i = 0; i < paths; ++i) {
         Pcg32 rng = Pcg32::for_sample(seed, std::uint64_t(i), 91);
-        const double v = double(tracer.radiance(ray, rng, rays)[channel]);
-        sum += v;
-        sum2 += v * v;
+        const Color L = tracer.radiance(ray, rng, rays);
+        for (int c = 0; c < 3; ++c) {
+            sum[c] += double(L[c]);
+            sum2[c] += double(L[c]) * double(L[c]);
+        }
     }
-    const double mean = sum / paths;
-    return {mean, std::sqrt(std::max(0.0, sum2 / paths - mean * mean) / (paths - 1))};
+    Estimate e;
+    for (int c = 0; c < 3; ++c) {
+        e.means[c] = sum[c] / paths;
+        e.errors[c] = std::sqrt(std::max(0.0, sum2[c] / paths - e.means[c] * e.means[c]) / (paths - 1));
+    }
+    e.mean = e.means[1];
+    e.error = e.errors[1];
+    return e;
 }
 
 struct Prepared {
@@ -87,20 +96,27 @@ struct Prepared {
 struct FurnaceCheck {
     double worst_sigmas = 0, largest_error = 0, mean = 0;
 };
-FurnaceCheck furnace(const MediumDesc& medium, Real ior, int paths, int channel = 1) {
+// Each channel's check, from one render of the 36 pixels.
+std::vector<FurnaceCheck> furnace_channels(const MediumDesc& medium, Real ior, int paths) {
     const Prepared p(medium_sphere_scene(medium, ior));
     const PinholeCamera camera = make_pinhole_camera(p.scene.camera, 6, 6);
-    FurnaceCheck f;
+    std::vector<FurnaceCheck> f(3);
     for (int y = 0; y < 6; ++y) {
         for (int x = 0; x < 6; ++x) {
             const Ray ray = camera_ray(camera, Real(x) + 0.5f, Real(y) + 0.5f);
-            const Estimate e = estimate(p.tracer, ray, paths, std::uint64_t(y * 6 + x), channel);
-            f.worst_sigmas = std::max(f.worst_sigmas, std::abs(e.mean - 1) / std::max(e.error, 1e-7));
-            f.largest_error = std::max(f.largest_error, e.error);
-            f.mean += e.mean / 36;
+            const Estimate e = estimate(p.tracer, ray, paths, std::uint64_t(y * 6 + x));
+            for (std::size_t c = 0; c < 3; ++c) {
+                const double deviation = std::abs(e.means[c] - 1) / std::max(e.errors[c], 1e-7);
+                f[c].worst_sigmas = std::max(f[c].worst_sigmas, deviation);
+                f[c].largest_error = std::max(f[c].largest_error, e.errors[c]);
+                f[c].mean += e.means[c] / 36;
+            }
         }
     }
     return f;
+}
+FurnaceCheck furnace(const MediumDesc& medium, Real ior, int paths) {
+    return furnace_channels(medium, ior, paths)[1];
 }
 
 // Gauss–Legendre nodes and weights on [0, 1] (Newton's method on P_n from the Chebyshev guesses).
@@ -426,8 +442,9 @@ TEST_CASE(
 
 TEST_CASE("Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
           "[statistical]") {
+    const std::vector<FurnaceCheck> channels = furnace_channels({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000);
     for (int channel = 0; channel < 3; ++channel) {
-        const FurnaceCheck f = furnace({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000, channel);
+        const FurnaceCheck& f = channels[std::size_t(channel)];
         INFO("channel " << channel << ": worst pixel " << f.worst_sigmas
                         << " standard errors off, largest error " << f.largest_error << ", mean " << f.mean);
         CHECK(f.worst_sigmas < 4.5);
@@ -474,8 +491,8 @@ TEST_CASE(
     const Prepared p(medium_slab_scene({Color(0), Color(1), 0}, 1), one_event);
     // Straight down from above (what the slab reflects; the black floor takes what passes), and straight up
     // from below it (the sky seen through it, e^−τ unscattered, and what it scatters down once).
-    const Estimate R = estimate(p.tracer, {{0, 2, 0}, {0, -1, 0}}, 100000, 1);
-    const Estimate T = estimate(p.tracer, {{0, -1, 0}, {0, 1, 0}}, 100000, 2);
+    const Estimate R = estimate(p.tracer, {{0, 2, 0}, {0, -1, 0}}, 50000, 1);
+    const Estimate T = estimate(p.tracer, {{0, -1, 0}, {0, 1, 0}}, 50000, 2);
     INFO("R " << R.mean << " +- " << R.error << ", T " << T.mean << " +- " << T.error);
     CHECK(std::abs(R.mean - R1) < 4.5 * R.error);
     CHECK(std::abs(T.mean - (std::exp(-tau) + T1)) < 4.5 * T.error);
@@ -498,10 +515,10 @@ TEST_CASE(
         // A slab of optical thickness 40 over a black floor: by reciprocity the radiance seen straight down
         // under a sky of radiance 1 is the plane albedo at normal incidence.
         const Prepared p(medium_slab_scene({Color(Real(1 - omega)), Color(Real(omega)), 0}, 40));
-        const Estimate e = estimate(p.tracer, {{0, 41, 0}, {0, -1, 0}}, 20000, 3 + std::uint64_t(k));
+        const Estimate e = estimate(p.tracer, {{0, 41, 0}, {0, -1, 0}}, 8000, 3 + std::uint64_t(k));
         INFO("walk " << e.mean << " +- " << e.error << ", A(1) " << A);
         CHECK(std::abs(e.mean - A) < 4.5 * e.error);
-        CHECK(e.error < 0.006);
+        CHECK(e.error < 0.01);
         ++k;
     }
 }
