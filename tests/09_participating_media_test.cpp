@@ -264,7 +264,7 @@ TEST_CASE("Henyey-Greenstein at g = +-0.999: no NaN, unit directions, finite pos
 TEST_CASE(
     "Transmittance is exp(-sigma_t d) with sigma_t = sigma_a + sigma_s, and 1 at any distance where "
     "sigma_t is 0",
-    "[ex:ch09.transmittance]") {
+    "[ex:ch07.beer_lambert][ex:ch09.transmittance]") {
     const HomogeneousMedium m({Color(0.1f, 0, 0.5f), Color(0.2f, 0, 1.5f), 0.3f});
     for (Real d : {Real(0), Real(0.5), Real(3), Real(40)}) {
         const Color T = m.transmittance(d);
@@ -278,7 +278,7 @@ TEST_CASE(
 TEST_CASE(
     "Free flight: distances are exponential with mean 1 / sigma_t, scattering weighs albedo, passing "
     "weighs 1",
-    "[statistical][ex:ch09.free_flight]") {
+    "[statistical][ex:ch07.beer_lambert][ex:ch09.free_flight]") {
     const Color sigma_t(2), sigma_s(1.5f);
     Pcg32 rng(5, 1);
     const int n = 100000;
@@ -311,8 +311,8 @@ TEST_CASE(
 
 TEST_CASE(
     "Chromatic free flight: spectral MIS keeps every weight at most 3 and estimates the scattering "
-    "probability; the naive per-channel density gives unbounded weights",
-    "[statistical][ex:ch09.free_flight]") {
+    "probability, and the naive per-channel density gives unbounded weights",
+    "[statistical][ex:ch07.beer_lambert][ex:ch09.free_flight]") {
     const Color sigma_t(0.25f, 1, 4);
     for (bool mis : {true, false}) {
         Pcg32 rng(6, 2);
@@ -349,7 +349,8 @@ TEST_CASE(
 }
 
 TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera rays and shadow rays",
-          "[ex:ch09.transmittance]") {
+          "[ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04."
+          "lambert][ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
     // An emitter of radiance 1 at z = −5 facing the camera at the origin; fog of σ_a = 0.3 everywhere.
     const Scene seen = scene_from(R"({
       "camera": {"from": [0, 0, 0], "at": [0, 0, -1]},
@@ -380,7 +381,8 @@ TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera
 }
 
 TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to camera rays and shadow rays",
-          "[ex:ch09.transmittance]") {
+          "[ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04."
+          "lambert][ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
     // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing
     // fog (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
     // boundaries.
@@ -415,7 +417,9 @@ TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to 
 TEST_CASE(
     "Furnace: an index-matched sphere of albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 "
     "and 0.7",
-    "[statistical]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:"
+    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample]["
+    "ex:ch09.transmittance]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -429,7 +433,9 @@ TEST_CASE(
 TEST_CASE(
     "Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 and "
     "0.7",
-    "[statistical]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
+    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1.5f, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -440,9 +446,13 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
-          "[statistical]") {
-    const std::vector<FurnaceCheck> channels = furnace_channels({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000);
+TEST_CASE(
+    "Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
+    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+    const std::vector<FurnaceCheck> channels =
+        furnace_channels({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000);
     for (int channel = 0; channel < 3; ++channel) {
         const FurnaceCheck& f = channels[std::size_t(channel)];
         INFO("channel " << channel << ": worst pixel " << f.worst_sigmas
@@ -453,7 +463,11 @@ TEST_CASE("Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1
     }
 }
 
-TEST_CASE("Energy: a medium of albedo 0.8 never returns more than the furnace gives in", "[statistical]") {
+TEST_CASE(
+    "Energy: a medium of albedo 0.8 never returns more than the furnace gives in",
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
+    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const Prepared p(medium_sphere_scene({Color(0.4f), Color(1.6f), 0.5f}, 1.5f));
     const PinholeCamera camera = make_pinhole_camera(p.scene.camera, 6, 6);
     for (int y = 0; y < 6; ++y) {
@@ -474,7 +488,8 @@ TEST_CASE("Energy: a medium of albedo 0.8 never returns more than the furnace gi
 TEST_CASE(
     "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
     "and T1 = 0.10617, by quadrature and by the walk cut after one event",
-    "[statistical]") {
+    "[statistical][ex:ch02.plane][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06."
+    "uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
     gauss_legendre(200, mu, w);
@@ -503,7 +518,8 @@ TEST_CASE(
 TEST_CASE(
     "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
     "0.5, 0.9 and 0.99",
-    "[statistical]") {
+    "[statistical][ex:ch02.plane][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06."
+    "uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
     for (double omega : {0.5, 0.9, 0.99}) {
@@ -526,7 +542,11 @@ TEST_CASE(
 // ---------------------------------------------------------------------------------------------------------
 // Extremes, scenes, effects
 
-TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6", "[stability]") {
+TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
+          "[stability][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "offset][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:"
+          "ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09."
+          "free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     struct Case {
         MediumDesc medium;
         Real ior;
@@ -600,7 +620,7 @@ TEST_CASE("Scene format: media inside dielectrics and between the shapes, what t
 TEST_CASE(
     "Without media a scattering medium is Beer-Lambert absorption by sigma_a + sigma_s, with its note, and "
     "fog is empty space",
-    "") {
+    "[ex:ch07.beer_lambert]") {
     const Scene scene = scene_from(R"({
       "camera": {"from": [0, 0, 4], "at": [0, 0, 0]},
       "medium": {"sigma_s": [0.5, 0.5, 0.5]},
@@ -634,7 +654,12 @@ TEST_CASE(
     CHECK(ch07.exterior() == nullptr);
 }
 
-TEST_CASE("The default scene renders finite and calls for media", "") {
+TEST_CASE(
+    "The default scene renders finite and calls for media",
+    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_"
+    "ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:"
+    "ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_"
+    "exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const Scene scene = load_scene(scene_path("ch09_default.json"));
     CHECK(needed(scene).contains(Effect::kMedia));
     RenderSettings settings;
