@@ -1,7 +1,8 @@
 // The random walk's cost and its knobs, measured.
 //  - walk_lengths: how many scattering events a path makes inside a sphere of a medium (radius 1, index
 //    matched, under a uniform sky), against the mean free path 1 / σ_t and the albedo ω: high albedo and a
-//    short mean free path make long walks (events per path ≈ (R σ_t)² / (1 − ω)-limited: the lesson).
+//    short mean free path make long walks (absorption ends one after about 1 / (1 − ω) events, crossing a body
+//    of optical radius R σ_t takes about (R σ_t)²: the lesson measures both together).
 //  - walk_knobs: the error (against an uncapped reference) and the time of a render with a cap on scattering
 //    events, with and without Russian roulette in the medium.
 //  - free_flight_study: spectral MIS against the naive per-channel density on a chromatic medium.
