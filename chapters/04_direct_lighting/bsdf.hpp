@@ -21,10 +21,12 @@ namespace rt {
 
 struct BsdfFlags {
     bool delta = false;  // every value a Dirac delta (mirror, smooth glass): light samples never meet it
-    bool transmission = false;  // light passes through too: sample() reads u_lobe to choose reflection or
-                                // transmission, and may return a wi on the far side of n
-    bool diffuse = false;       // scatters diffusely (Lambert): its bounces are counted as indirect rays
-    bool black = false;         // scatters nothing: no shadow ray, no bounce
+    bool transmission = false;   // light passes through too: sample() reads u_lobe to choose reflection or
+                                 // transmission, and may return a wi on the far side of n
+    bool diffuse = false;        // scatters diffusely (Lambert): its bounces are counted as indirect rays
+    bool black = false;          // scatters nothing: no shadow ray, no bounce
+    bool index_matched = false;  // passes every ray straight on, unchanged (smooth glass of η = 1): a
+                                 // boundary between media that a shadow ray may cross (chapter 09)
 };
 
 struct BsdfSample {

@@ -25,6 +25,7 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                              Transport transport) {
     const std::vector<bool> used = scene.used_materials();
     const bool refraction = simulated.contains(Effect::kRefraction) && hooks.dielectric;
+    const bool media = simulated.contains(Effect::kMedia) && hooks.medium;
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         const Material& m = scene.materials[i];
         emission_.push_back(m.emission);
@@ -61,7 +62,15 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                 if (refraction) {
                     outside = hooks.dielectric(m, true, transport);
                     inside = hooks.dielectric(m, false, transport);
-                    if (hooks.dielectric_interior) interior = hooks.dielectric_interior(m);
+                    if (m.medium && media) {
+                        interior = hooks.medium(*m.medium);
+                    } else if (hooks.dielectric_interior) {
+                        interior = hooks.dielectric_interior(m);
+                        if (m.medium && m.medium->scatters()) {
+                            note = "its medium: " + skipped(Effect::kMedia) +
+                                   "; treated as Beer-Lambert absorption by sigma_a + sigma_s";
+                        }
+                    }
                 } else {
                     lambert_stand_in(skipped(Effect::kRefraction));
                 }
@@ -77,6 +86,14 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
         if (used[i] && !note.empty()) {
             notes_.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
                              "': " + note);
+        }
+    }
+    if (scene.medium) {
+        if (media) {
+            exterior_ = hooks.medium(*scene.medium);
+        } else {
+            notes_.push_back("medium between the shapes: " + skipped(Effect::kMedia) +
+                             "; treated as empty space");
         }
     }
 }

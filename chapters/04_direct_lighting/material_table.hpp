@@ -3,11 +3,15 @@
 //   - its Bsdf seen from each side: outside (the side its shape's outward normal points to) and inside, so a
 //     dielectric seen from inside has η = 1 / ior, and the path loops never ask which side they are on;
 //   - its emission (one-sided: from the outside only);
-//   - what fills the inside of its shapes (a Medium: chapter 07's Beer–Lambert absorption), if anything.
+//   - what fills the inside of its shapes (a Medium: chapter 07's Beer–Lambert absorption, chapter 09's
+//     scattering media), if anything;
+// and what fills the space between the shapes, where the camera is (chapter 09's fog), if anything.
 // What a chapter cannot simulate gets a stand-in here, and only here, with a note for the run's summary:
 //   a dielectric without refraction:     Lambert of Material::stand_in_albedo() (0.73);
 //   a glossy lobe without "glossy":      Lambert of its albedo;
-//   a mirror without "reflection":       black (it shows only its emission).
+//   a mirror without "reflection":       black (it shows only its emission);
+//   a medium without "media":            inside a dielectric, the Beer–Lambert absorption of σ_a + σ_s (what
+//                                        chapter 07's hook makes of it); between the shapes, empty space.
 // Chapter 04 knows the four BRDFs; a later chapter adds what it simulates through MaterialHooks, so the table
 // grows without this chapter including the later one.
 #pragma once
@@ -18,18 +22,11 @@
 #include <vector>
 
 #include "bsdf.hpp"
+#include "medium.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/scene.hpp"
 
 namespace rt {
-
-// What fills the inside of a shape. Chapter 07 has absorbing glass; chapter 09 adds scattering media.
-class Medium {
-  public:
-    virtual ~Medium() = default;
-    // The fraction of radiance left after `distance` inside it, per colour channel.
-    virtual Color transmittance(Real distance) const = 0;
-};
 
 // What a path carries: radiance (from the camera, chapters 04–07) or importance (from the lights, chapter
 // 08). A BSDF that refracts treats them differently: radiance crossing an interface scales by 1 / η², power
@@ -42,6 +39,9 @@ struct MaterialHooks {
     // it (null for clear glass).
     std::function<std::unique_ptr<Bsdf>(const Material&, bool outside, Transport)> dielectric;
     std::function<std::unique_ptr<Medium>(const Material&)> dielectric_interior;
+    // With media simulated (chapter 09): the medium a scene's "medium" describes, inside a dielectric or
+    // between the shapes.
+    std::function<std::unique_ptr<Medium>(const MediumDesc&)> medium;
 };
 
 class MaterialTable {
@@ -59,6 +59,8 @@ class MaterialTable {
     }
     // The medium inside material m's shapes (null: nothing there, the ray travels unattenuated).
     const Medium* interior(int material) const { return interiors_[std::size_t(material)].get(); }
+    // The medium between the shapes (null: empty space).
+    const Medium* exterior() const { return exterior_.get(); }
     // One line per used material shaded by a stand-in: what it is shaded as, and the chapter that adds it.
     const std::vector<std::string>& notes() const { return notes_; }
     std::size_t size() const { return emission_.size(); }
@@ -68,6 +70,7 @@ class MaterialTable {
     std::vector<const Bsdf*> sides_;  // 2 per material: outside, inside
     std::vector<Color> emission_;
     std::vector<std::unique_ptr<Medium>> interiors_;
+    std::unique_ptr<Medium> exterior_;
     std::vector<std::string> notes_;
 };
 

@@ -9,6 +9,11 @@
 // without a fork: a BSDF with transmission sends the path through the surface (chapter 07's glass), a delta
 // BSDF is followed like a mirror (what it meets next counts in full), and a segment that ends on the inside
 // of a shape whose material has a Medium is attenuated by its transmittance (chapter 07's Beer–Lambert).
+// A medium that scatters (chapter 09, through the Medium interface of chapter 04's medium.hpp) makes the loop
+// volumetric: along each segment the medium samples a free flight, and where it scatters the loop makes a
+// vertex in the volume, with the phase function in the place of the BSDF (next-event estimation whose shadow
+// rays carry transmittance through media and index-matched boundaries, MIS of phase and light sampling, a
+// direction drawn from the phase function). A scene without media draws the random numbers it always drew.
 #pragma once
 
 #include "01_ray_generation/camera.hpp"
@@ -27,6 +32,14 @@
 
 namespace rt {
 
+// How a path that scatters in a medium (chapter 09) ends. Its scattering events are not the bounces that
+// `termination` counts (a walk in milk makes hundreds of them): they have their own two knobs.
+struct MediumWalk {
+    int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a
+                             // walk's boundary): a bias when a path meets it
+    bool roulette = true;  // Russian roulette at every event: go on with q = min(1, max β), then β /= q
+};
+
 // Effects read: "direct" (light arriving from emitters at surfaces), "shadows" (shadow rays; without it every
 // light sample counts as visible), "indirect" (light after more than one diffuse or glossy bounce). The
 // material table holds what "glossy", "reflection" and "refraction" change.
@@ -34,6 +47,7 @@ struct PathOptions : TraceOptions {
     SamplingStrategy strategy = SamplingStrategy::kMis;
     // Chapter 05's Russian roulette from bounce 3, under its safety cap of 64 bounces (a cap, not a bias).
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
+    MediumWalk walk;
 };
 
 class PathTracer {
@@ -55,11 +69,27 @@ class PathTracer {
     // ray.
     Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;
 
+    // Chapter 09's media. The medium a segment runs through, judged at its end: the inside of a shape when
+    // it ends on the back of a surface that lets light through, the medium between the shapes otherwise.
+    const Medium* medium_along(const std::optional<Hit>& end) const;
+    // The transmittance from ray.origin to ray.at(t_max) (a shadow ray): through media, across
+    // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
+    Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;
+    // What a light sample from `hit` sees of `target`: 0 or 1 (chapter 03's visibility) in a scene without
+    // media, the transmittance with them.
+    Color seen(const Hit& hit, const Vec3& target, RayCounts& rays) const;
+    // The next-event estimate at a scattering event at p in a medium: as next_event, with the phase function
+    // for the BSDF, no cosine, and the environment sampled over the whole sphere.
+    Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Pcg32& rng,
+                               RayCounts& rays) const;
+
     const World& world_;
     const MaterialTable& materials_;
     LightPicker picker_;
     std::optional<EnvironmentLight> environment_;
     bool has_unsampled_emitters_;  // an emissive plane: only paths that hit it see it
+    const Medium* exterior_;       // the medium between the shapes (null: empty space)
+    bool media_;                   // a medium between the shapes, or one that scatters inside a shape
     PathOptions options_;
 };
 

@@ -18,8 +18,8 @@ Renderer choose_renderer(const EffectSet& simulated) {
 }
 
 RenderResult render_with(Renderer renderer, const Scene& scene, const EffectSet& simulated,
-                         const RenderSettings& settings, PathOptions options) {
-    const RenderScene prepared(scene, simulated, refraction_materials());
+                         const RenderSettings& settings, PathOptions options, const MaterialHooks& hooks) {
+    const RenderScene prepared(scene, simulated, hooks);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
     options.simulated = simulated;
     if (renderer == Renderer::kDirect) {

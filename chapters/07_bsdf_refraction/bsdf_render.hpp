@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "06_monte_carlo/path_tracer.hpp"
+#include "refraction_materials.hpp"
 #include "rt/effect_set.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
@@ -27,8 +28,10 @@ inline constexpr EffectSet kDirectRendererEffects{Effect::kCameraRays, Effect::k
 
 Renderer choose_renderer(const EffectSet& simulated);
 
-// Renders `scene` with `renderer`, the path loop with `options` (its effects set to `simulated`).
+// Renders `scene` with `renderer`, the path loop with `options` (its effects set to `simulated`), on the
+// material table `hooks` make (this chapter's dielectrics; chapter 09 hands in its media too).
 RenderResult render_with(Renderer renderer, const Scene& scene, const EffectSet& simulated,
-                         const RenderSettings& settings, PathOptions options = {});
+                         const RenderSettings& settings, PathOptions options = {},
+                         const MaterialHooks& hooks = refraction_materials());
 
 }  // namespace rt

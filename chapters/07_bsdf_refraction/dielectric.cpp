@@ -23,7 +23,9 @@ DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real
 }
 
 SmoothDielectric::SmoothDielectric(Real eta_, Transport transport_)
-    : Bsdf({.delta = true, .transmission = true}), eta(eta_), transport(transport_) {}
+    : Bsdf({.delta = true, .transmission = true, .index_matched = eta_ == 1}),
+      eta(eta_),
+      transport(transport_) {}
 
 BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_lobe) const {
     const DielectricSample d = sample_dielectric(wo, n, eta, u_lobe);

@@ -15,8 +15,10 @@ MaterialHooks refraction_materials() {
         return std::make_unique<SmoothDielectric>(eta, transport);
     };
     hooks.dielectric_interior = [](const Material& m) -> std::unique_ptr<Medium> {
-        if (is_black(m.absorption)) return nullptr;
-        return std::make_unique<AbsorbingMedium>(m.absorption);
+        // A scattering medium without chapter 09: what it takes out of a ray (σ_a + σ_s), as absorption.
+        const Color absorption = m.medium ? m.medium->sigma_t() : m.absorption;
+        if (is_black(absorption)) return nullptr;
+        return std::make_unique<AbsorbingMedium>(absorption);
     };
     return hooks;
 }

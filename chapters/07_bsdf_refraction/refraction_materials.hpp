@@ -1,6 +1,7 @@
 // What chapter 07 adds to chapter 04's material table: with refraction simulated, a dielectric is glass — the
 // smooth dielectric of dielectric.hpp, or, when its "roughness" is above 0, the rough one of
-// rough_dielectric.hpp — and absorbing glass is filled with Beer–Lambert's medium.
+// rough_dielectric.hpp — and absorbing glass is filled with Beer–Lambert's medium (a scattering "medium",
+// which chapter 09 simulates, with the absorption of its σ_a + σ_s).
 #pragma once
 
 #include "04_direct_lighting/material_table.hpp"

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     const ChapterInfo chapter{"ch11_gpu_shaders",
                               "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
                               "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
-                              "ch07_default.json", EffectSet::all()};
+                              "ch07_default.json", EffectSet::all().without({Effect::kMedia})};
     auto flags = [&](CLI::App& app) {
         app.add_option("--shader", shader, "Which shader traces the paths: compute|fragment")
             ->check(CLI::IsMember({"compute", "fragment"}));

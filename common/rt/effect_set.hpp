@@ -17,10 +17,11 @@ enum class Effect {
     kGlossy,      // glossy and retro-reflective lobes
     kIndirect,    // light that has bounced off other surfaces (diffuse interreflection)
     kRefraction,  // light passing through dielectrics
+    kMedia,       // light scattered inside participating media (fog, milk, wax): chapter 09
 };
-inline constexpr int kEffectCount = 7;
+inline constexpr int kEffectCount = 8;
 inline constexpr std::array<std::string_view, kEffectCount> kEffectNames = {
-    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction"};
+    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction", "media"};
 
 class EffectSet {
 public:

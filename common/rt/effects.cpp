@@ -41,7 +41,11 @@ EffectSet needed(const Scene& scene) {
         if (const auto effect = effect_of(m)) content.insert(*effect);
         // Glass reflects too (Fresnel): reflection rays.
         if (effect_of(m) == Effect::kRefraction) content.insert(Effect::kReflection);
+        if (m.medium && m.medium->scatters()) content.insert(Effect::kMedia);
     }
+    // No chapter before 09 has anything between the shapes: a medium there, even one that only absorbs,
+    // calls for media.
+    if (scene.medium) content.insert(Effect::kMedia);
     if (lights && diffuse) {
         content.insert(Effect::kShadows);
         content.insert(Effect::kDirect);
@@ -51,7 +55,8 @@ EffectSet needed(const Scene& scene) {
 }
 
 std::string chapter_that_adds(Effect effect) {
-    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05", "04", "05", "07"};
+    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05",
+                                                                "04", "05", "07", "09"};
     return std::string("chapter ") + kChapter[std::size_t(effect)];
 }
 

@@ -11,7 +11,8 @@ namespace rt {
 
 // What the scene's content calls for (lights → shadows and direct light; mirrors → reflection; glossy or
 // retro-reflective materials → glossy; lights and diffusely reflecting surfaces → indirect; dielectrics →
-// refraction, and reflection), narrowed by the scene's "effects" list when it has one.
+// refraction, and reflection; a medium that scatters inside a dielectric, or any medium between the shapes →
+// media), narrowed by the scene's "effects" list when it has one.
 EffectSet needed(const Scene& scene);
 
 // The effect that shades material `m` as what it is rather than as a Lambert surface: reflection for a

@@ -33,6 +33,18 @@ enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielect
 inline constexpr std::array<std::string_view, 5> kMaterialTypeNames = {"diffuse", "mirror", "glossy",
                                                                        "retroreflective", "dielectric"};
 
+// A homogeneous participating medium (chapter 09): per unit of length, light is absorbed at the rate sigma_a
+// and scattered at the rate sigma_s, per colour channel; g is the Henyey–Greenstein asymmetry of the
+// scattering (0 isotropic, > 0 forward, < 0 backward), in (−1, 1).
+struct MediumDesc {
+    Color sigma_a{0};
+    Color sigma_s{0};
+    Real g = 0;
+
+    Color sigma_t() const { return sigma_a + sigma_s; }  // extinction
+    bool scatters() const { return sigma_s.r > 0 || sigma_s.g > 0 || sigma_s.b > 0; }
+};
+
 struct Material {
     std::string name;
     MaterialType type = MaterialType::kDiffuse;
@@ -43,6 +55,7 @@ struct Material {
                               // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
     Real ior = 1.5f;          // dielectric: index of refraction
     Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
+    std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:
@@ -117,6 +130,7 @@ struct Scene {
     std::vector<Shape> shapes;
     std::vector<PointLight> point_lights;
     std::optional<EnvironmentLight> environment;
+    std::optional<MediumDesc> medium;  // what fills the space outside every shape, where the camera is (fog)
     std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
 
     const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }

@@ -189,8 +189,9 @@ class Node {
     const std::string& file_;
 };
 
-constexpr std::string_view kTopKeys[] = {"description", "camera", "image",  "materials",
-                                         "shapes",      "lights", "effects"};
+constexpr std::string_view kTopKeys[] = {"description", "camera", "image",   "materials",
+                                         "shapes",      "lights", "medium", "effects"};
+constexpr std::string_view kMediumKeys[] = {"sigma_a", "sigma_s", "g"};
 constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
 constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
@@ -226,9 +227,23 @@ ImageDesc read_image(const Node& node) {
     return image;
 }
 
+// A participating medium (chapter 09): coefficients >= 0 per unit of length, |g| < 1.
+MediumDesc read_medium(const Node& node) {
+    node.expect_object(kMediumKeys, "a medium");
+    MediumDesc medium;
+    if (node.has("sigma_a")) medium.sigma_a = node["sigma_a"].color_in(kLargestNumber);
+    if (node.has("sigma_s")) medium.sigma_s = node["sigma_s"].color_in(kLargestNumber);
+    if (node.has("g")) medium.g = node["g"].real_in(-1, 1, true, true);
+    return medium;
+}
+
 Material read_material(const Node& node, const std::string& name) {
     if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
     const std::string type = node["type"].string();
+    if (type != "dielectric" && node.has("medium")) {
+        node["medium"].fail("only a dielectric material holds a medium (its shapes' inside), got a " +
+                            shown_name(type) + " material");
+    }
     Material m;
     m.name = name;
     if (type == "diffuse") {
@@ -246,8 +261,11 @@ Material read_material(const Node& node, const std::string& name) {
     } else if (type == "dielectric") {
         m.type = MaterialType::kDielectric;
         m.roughness = 0;  // smooth unless the file says otherwise
-        node.expect_object(std::array<std::string_view, 4>{"type", "ior", "absorption", "roughness"},
+        node.expect_object(std::array<std::string_view, 5>{"type", "ior", "absorption", "roughness", "medium"},
                            "a dielectric material");
+        if (node.has("absorption") && node.has("medium")) {
+            node["medium"].fail("give either absorption or medium (a medium's sigma_a is its absorption)");
+        }
     } else {
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
                           "; expected diffuse, mirror, glossy, retroreflective or dielectric");
@@ -258,6 +276,7 @@ Material read_material(const Node& node, const std::string& name) {
     if (node.has("roughness")) m.roughness = node["roughness"].real_in(0, 1, true, false);
     if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
     if (node.has("absorption")) m.absorption = node["absorption"].color_in(kLargestNumber);
+    if (node.has("medium")) m.medium = read_medium(node["medium"]);
     return m;
 }
 
@@ -493,6 +512,7 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
         const Node lights = top["lights"];
         for (std::size_t i = 0; i < lights.array_size(); ++i) read_light(lights.element(i), scene);
     }
+    if (top.has("medium")) scene.medium = read_medium(top["medium"]);
     if (top.has("effects")) scene.effects = read_effects(top["effects"]);
     return scene;
 }

@@ -367,6 +367,56 @@ else
     echo "Chapter 08 is not built: left out." >> "$page"
 fi
 
+if have 09_participating_media ch09_participating_media; then
+    log "chapter 09: walk lengths, free flight, the walk's knobs, the cost of the volume hooks"
+    ch09=$(exe 09_participating_media ch09_participating_media)
+    milk="$source_dir/assets/scenes/ch09_milk_matched.json"
+    if [ "$quick" = 1 ]; then walk=(--study-paths 1000); knob=(--width 32 --height 32 --spp 16 --reference-spp 256);
+        bench=(3 100 4);
+    else walk=(--study-paths 8000); knob=(--width 48 --height 48 --spp 32 --reference-spp 2048); bench=(9 160 8); fi
+    (cd "$out" && "$ch09" --walk-study --quiet "${walk[@]}" > ch09_walk.txt)
+    (cd "$out" && "$ch09" --free-flight-study --quiet > ch09_free_flight.txt)
+    (cd "$out" && "$ch09" --knob-study --quiet --scene "$milk" "${knob[@]}" \
+        --caps 1 2 4 8 16 32 64 256 10000 > ch09_knobs.txt)
+    (cd "$out" && "$(dirname "$ch09")/ch09_benchmark" "${bench[@]}" > ch09_benchmark.txt)
+    (cd "$out" && "$ch09" --quiet --scene "$milk" --out ch09.png > /dev/null)
+    cat >> "$page" <<EOF
+## Chapter 09 — participating media
+
+<img src="ch09.png" width="320">
+
+\`\`\`
+$(cat "$out/ch09_walk.txt")
+\`\`\`
+
+Random walks in a sphere of a medium: the scattering events a path makes against the mean free path and the
+albedo, and what a path costs.
+
+\`\`\`
+$(cat "$out/ch09_free_flight.txt")
+\`\`\`
+
+Free flight in a chromatic medium: spectral MIS (the average density over the channels) against the naive
+density of the channel that drew the distance.
+
+\`\`\`
+$(cat "$out/ch09_knobs.txt")
+\`\`\`
+
+The walk's knobs on the index-matched milk box: a cap on scattering events (a bias) and Russian roulette in
+the medium, error against an uncapped reference and time.
+
+\`\`\`
+$(cat "$out/ch09_benchmark.txt")
+\`\`\`
+
+What the volume hooks cost a scene without media: chapter 09 against chapter 07 on cornell.json.
+
+EOF
+else
+    echo "Chapter 09 is not built: left out." >> "$page"
+fi
+
 find "$out" -maxdepth 1 -name "*.pfm" -delete
 echo "_The report took $(( $(date +%s) - start )) s._" >> "$page"
 log "wrote $page in $(( $(date +%s) - start )) s"

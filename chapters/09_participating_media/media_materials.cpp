@@ -1,0 +1,19 @@
+#include "media_materials.hpp"
+
+#include "07_bsdf_refraction/dielectric.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "homogeneous_medium.hpp"
+
+namespace rt {
+
+MaterialHooks media_materials() {
+    MaterialHooks hooks = refraction_materials();
+    hooks.medium = [](const MediumDesc& medium) -> std::unique_ptr<Medium> {
+        if (medium.scatters()) return std::make_unique<HomogeneousMedium>(medium);
+        if (is_black(medium.sigma_a)) return nullptr;
+        return std::make_unique<AbsorbingMedium>(medium.sigma_a);
+    };
+    return hooks;
+}
+
+}  // namespace rt

@@ -1,0 +1,13 @@
+// What chapter 09 adds to the material table: chapter 07's dielectrics, and with media simulated the medium a
+// scene's "medium" describes — inside a dielectric's shapes or between the shapes — as a HomogeneousMedium
+// when it scatters (chapter 07's Beer–Lambert AbsorbingMedium when it only absorbs, nothing when it is
+// empty).
+#pragma once
+
+#include "04_direct_lighting/material_table.hpp"
+
+namespace rt {
+
+MaterialHooks media_materials();
+
+}  // namespace rt
