@@ -68,7 +68,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, P
     return sum;
 }
 
-Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) const {
+Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, PathFeatures* features) const {
     // EXERCISE(ch06.path_tracer)
     const SamplingStrategy strategy = options_.strategy;
     const bool direct = options_.simulates(Effect::kDirect);
@@ -81,6 +81,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
     Real previous_pdf = 0;  // the BSDF-sampling density of the ray's direction, for MIS
     Vec3 previous_point(0), previous_normal(0);
     int bounces = 0;  // non-delta bounces so far
+    Real length = 0;  // of the path so far, for `features`
     for (int depth = 0;; ++depth) {
         const auto hit = world_.intersect(ray);
         // Light the path meets: counted in full without next-event estimation, weighted by MIS with it, and
@@ -115,6 +116,9 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         if (!indirect && bounces >= 1) break;
         const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
         const BsdfFlags& flags = bsdf.flags();
+        length += hit->t;
+        const bool records = features && !features->recorded && !flags.delta;
+        if (records) *features = {Color(0), hit->normal, length, true};  // the albedo once the bounce is drawn
         if (flags.black) break;
         const Vec3 wo = -ray.direction;
         const Vec3& n = hit->normal;
@@ -139,6 +143,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         }
         const Real cos_i = scattering_cosine(s.wi, n, s.transmitted);
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
+        if (records) features->albedo = beta * s.f * (cos_i / s.pdf);
         beta *= s.f * (cos_i / s.pdf);
         if (!flags.delta) ++bounces;
         specular = flags.delta;
