@@ -17,14 +17,17 @@ GuidePixel atrous_pixel(const std::vector<GuidePixel>& level, int width, int hei
             if (weights) weights[j * 5 + k] = 0;
             if (qx < 0 || qx >= width || qy < 0 || qy >= height) continue;
             const GuidePixel& q = level[std::size_t(qy) * std::size_t(width) + std::size_t(qx)];
-            const Real w = kB3Taps[std::size_t(j)] * kB3Taps[std::size_t(k)] * edge_stopping_weight(p, q, edges);
+            // h(q) relative to the centre tap's (3/8)², which the normalisation cancels: the centre then weighs
+            // exactly 1, so a pixel that no neighbour may join keeps its colour to the bit.
+            const Real h = kB3Taps[std::size_t(j)] * kB3Taps[std::size_t(k)] / (kB3Taps[2] * kB3Taps[2]);
+            const Real w = h * edge_stopping_weight(p, q, edges);
             if (weights) weights[j * 5 + k] = w;
             sum += w * q.colour;
             total += w;
             variance += w * w * q.variance;
         }
     }
-    // total > 0: the centre tap weighs (3/8)² · 1.
+    // total ≥ 1: the centre tap weighs 1.
     GuidePixel out = p;
     out.colour = sum / total;
     out.variance = variance / (total * total);

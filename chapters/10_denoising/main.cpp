@@ -14,7 +14,7 @@
 #include "feature_buffers.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
-#include "rt/split_render.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
 
 namespace {
 
@@ -75,14 +75,27 @@ int main(int argc, char** argv) {
         app.add_flag("--sweeps", study_options.sweeps, "With --study: also sweep the filters' parameters");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
-        require_whole_render(context.settings,
-                             "chapter 10 denoises the whole image, which pieces of it cannot be: no --samples, "
-                             "--resume or several MPI ranks");
         denoise_settings.bilateral.edges = edges;
         denoise_settings.atrous.edges = edges;
         denoise_settings.threads = context.settings.threads;
         PathOptions options;
         options.simulated = context.simulated;
+        const Denoiser denoiser = denoiser_from_string(denoiser_name);
+        // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same image
+        // as the noisy one of a whole render, without the features, to be merged by rt_merge.
+        const RenderSettings& settings = context.settings;
+        const SampleRange all{0, settings.samples_per_pixel};
+        if (settings.resume || (settings.samples && *settings.samples != all)) {
+            if (denoiser != Denoiser::kNone || study) {
+                throw InputError(
+                    "--samples: chapter 10 denoises the whole image, which a piece of it is not: --samples, "
+                    "--resume and several MPI ranks only with --denoiser none");
+            }
+            return ChapterRun{render_with(Renderer::kPaths, context.scene, context.simulated, settings, options),
+                              {"renderer: chapter 06's path loop with chapter 07's BSDFs; a piece of the render: "
+                               "no features, not denoised"},
+                              std::nullopt};
+        }
         if (study) {
             if (!std::filesystem::is_directory(study_options.cache))
                 throw InputError("--cache: " + study_options.cache + ": not a folder");
@@ -91,7 +104,6 @@ int main(int argc, char** argv) {
             run_denoise_study(context.scene, context.settings, options, denoise_settings, study_options);
             return std::nullopt;
         }
-        const Denoiser denoiser = denoiser_from_string(denoiser_name);
         FeatureRender rendered = render_features(context.scene, context.settings, options);
         ChapterRun run{rendered.result, {"renderer: chapter 06's path loop with chapter 07's BSDFs, recording "
                                        "albedo, normal and depth at the first non-delta vertex"},
