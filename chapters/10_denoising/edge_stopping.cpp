@@ -5,10 +5,10 @@
 
 namespace rt {
 
-Real range_weight(Real d2, Real s2) {
-    if (d2 == 0 || std::isinf(s2)) return 1;
-    if (!(s2 > 0)) return 0;
-    return std::exp(-d2 / s2);
+Real range_exponent(Real d2, Real s2) {
+    if (d2 == 0 || std::isinf(s2)) return 0;
+    if (!(s2 > 0)) return kInfinity;
+    return d2 / s2;
 }
 
 namespace {
@@ -27,9 +27,10 @@ Real edge_stopping_weight(const GuidePixel& p, const GuidePixel& q, const EdgeSt
     const Color da = p.albedo - q.albedo;
     const Real dz = p.depth - q.depth;
     const Real z = std::max(p.depth, q.depth);
-    return range_weight(glm::dot(dc, dc), spread(sigma.colour, p.variance + q.variance)) *
-           range_weight(glm::dot(dn, dn), spread(sigma.normal, 1)) *
-           range_weight(dz * dz, spread(sigma.depth, z * z)) * range_weight(glm::dot(da, da), spread(sigma.albedo, 1));
+    return std::exp(-(range_exponent(glm::dot(dc, dc), spread(sigma.colour, p.variance + q.variance)) +
+                      range_exponent(glm::dot(dn, dn), spread(sigma.normal, 1)) +
+                      range_exponent(dz * dz, spread(sigma.depth, z * z)) +
+                      range_exponent(glm::dot(da, da), spread(sigma.albedo, 1))));
     // END EXERCISE
 }
 

@@ -36,10 +36,10 @@ struct GuidePixel {
     Color albedo{0};
 };
 
-// exp(−d² / s²), with d² = 0 → 1, s² = ∞ → 1, s² = 0 → 0 otherwise.
-Real range_weight(Real d2, Real s2);
+// d² / s², with d² = 0 → 0, s² = ∞ → 0, and s² = 0 → ∞ otherwise: one guide's term of the exponent.
+Real range_exponent(Real d2, Real s2);
 
-// w(p, q) above.
+// w(p, q) above, as one exponential: exp(−Σ d² / s²).
 Real edge_stopping_weight(const GuidePixel& p, const GuidePixel& q, const EdgeStopping& sigma);
 
 // Every pixel's guides, row by row from the top left (the colour and variance from buffers.colour and
