@@ -318,7 +318,8 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
     auto sweep_edges = [&](Denoiser d, const char* name, Real EdgeStopping::*member, std::initializer_list<Real> values) {
         for (Real v : values) {
             DenoiseSettings s = denoise_settings;
-            (d == Denoiser::kAtrous ? s.atrous.edges : s.bilateral.edges).*member = v;
+            EdgeStopping& edges = d == Denoiser::kAtrous ? s.atrous.edges : s.bilateral.edges;
+            edges.*member = v;
             const Denoised out = denoise(render.buffers, d, s);
             print_sweep_row(name, number(v), out.image, out.seconds, reference);
         }
