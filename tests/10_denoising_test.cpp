@@ -48,13 +48,13 @@ FeatureBuffers flat_buffers(int width, int height, Colour&& colour, Real varianc
 // Buffers whose every guide varies from pixel to pixel (random), seeded.
 FeatureBuffers random_buffers(int width, int height, std::uint64_t seed) {
     Pcg32 rng(seed, 7);
-    FeatureBuffers b = flat_buffers(width, height, [&](int, int) {
-        return Color(rng.next_real(), rng.next_real(), rng.next_real());
-    });
+    FeatureBuffers b = flat_buffers(
+        width, height, [&](int, int) { return Color(rng.next_real(), rng.next_real(), rng.next_real()); });
     for (std::size_t i = 0; i < b.colour.pixel_count(); ++i) {
         b.colour_variance.pixels()[i] = Color(rng.next_real() * Real(0.05));
         b.albedo.pixels()[i] = Color(rng.next_real(), rng.next_real(), rng.next_real());
-        b.normal.pixels()[i] = Color(glm::normalize(Vec3(rng.next_real() - Real(0.5), rng.next_real() - Real(0.5), 1)));
+        b.normal.pixels()[i] =
+            Color(glm::normalize(Vec3(rng.next_real() - Real(0.5), rng.next_real() - Real(0.5), 1)));
         b.depth.pixels()[i] = Color(5 + rng.next_real());
     }
     return b;
@@ -96,7 +96,8 @@ TEST_CASE("A constant image comes out of either filter unchanged, whatever the g
     FeatureBuffers b = random_buffers(40, 30, 3);
     for (Color& c : b.colour.pixels()) c = Color(Real(0.25), Real(0.5), Real(2));
     const EdgeStopping edges;
-    for (const Image& out : {bilateral_filter(b, bilateral_with(edges), 2), atrous_filter(b, atrous_with(edges, 5), 2)}) {
+    for (const Image& out :
+         {bilateral_filter(b, bilateral_with(edges), 2), atrous_filter(b, atrous_with(edges, 5), 2)}) {
         for (const Color& c : out.pixels()) {
             REQUIRE(c.r == Approx(0.25).epsilon(1e-6));
             REQUIRE(c.g == Approx(0.5).epsilon(1e-6));
@@ -105,7 +106,8 @@ TEST_CASE("A constant image comes out of either filter unchanged, whatever the g
     }
 }
 
-TEST_CASE("The weights of every pixel sum to 1, borders and corners included", "[filters][ex:ch10.atrous_pixel]") {
+TEST_CASE("The weights of every pixel sum to 1, borders and corners included",
+          "[filters][ex:ch10.atrous_pixel]") {
     const FeatureBuffers b = random_buffers(24, 20, 5);
     const std::vector<GuidePixel> guides = guide_pixels(b);
     const EdgeStopping edges;
@@ -133,9 +135,10 @@ TEST_CASE("Range parameters at 0 give the input back, to the bit", "[filters]") 
     REQUIRE(atrous.pixels() == b.colour.pixels());
 }
 
-TEST_CASE("On a flat noisy patch the variance falls by the sum of the squared weights", "[filters][statistical]") {
-    // Uniform noise in [0, 1): variance 1/12. With every guide equal and the colour's switched off, each filter
-    // is a fixed linear kernel k, and the output's variance is Σ k² / 12.
+TEST_CASE("On a flat noisy patch the variance falls by the sum of the squared weights",
+          "[filters][statistical]") {
+    // Uniform noise in [0, 1): variance 1/12. With every guide equal and the colour's switched off, each
+    // filter is a fixed linear kernel k, and the output's variance is Σ k² / 12.
     const int size = 256;
     Pcg32 rng(11, 3);
     const FeatureBuffers b = flat_buffers(size, size, [&](int, int) { return Color(rng.next_real()); });
@@ -191,8 +194,10 @@ TEST_CASE("A step edge in the albedo guide stays sharp", "[filters][ex:ch10.edge
     };
     const int left = w / 2 - 1, right = w / 2;
     for (bool atrous : {false, true}) {
-        const Image sharp = atrous ? atrous_filter(b, atrous_with(guided), 2) : bilateral_filter(b, bilateral_with(guided), 2);
-        const Image blurred = atrous ? atrous_filter(b, atrous_with(kOff), 2) : bilateral_filter(b, bilateral_with(kOff), 2);
+        const Image sharp = atrous ? atrous_filter(b, atrous_with(guided), 2)
+                                   : bilateral_filter(b, bilateral_with(guided), 2);
+        const Image blurred =
+            atrous ? atrous_filter(b, atrous_with(kOff), 2) : bilateral_filter(b, bilateral_with(kOff), 2);
         CHECK(column_mean(sharp, left) == Approx(0.2).margin(0.01));
         CHECK(column_mean(sharp, right) == Approx(0.8).margin(0.01));
         // Without the guide the edge columns mix toward 0.5.
@@ -203,7 +208,8 @@ TEST_CASE("A step edge in the albedo guide stays sharp", "[filters][ex:ch10.edge
 
 TEST_CASE("Zero variance, zero albedo, zero normal and zero depth give no NaN", "[filters]") {
     Pcg32 rng(17, 2);
-    FeatureBuffers b = flat_buffers(20, 16, [&](int, int) { return Color(rng.next_real() * 4); }, 0);
+    FeatureBuffers b = flat_buffers(
+        20, 16, [&](int, int) { return Color(rng.next_real() * 4); }, 0);
     for (std::size_t i = 0; i < b.colour.pixel_count(); ++i) {
         b.albedo.pixels()[i] = Color(0);
         b.normal.pixels()[i] = Color(0);
@@ -267,7 +273,8 @@ TEST_CASE("Layered sums estimate the variance of a pixel's mean without bias", "
     // image: Var[mean] = 1/96. The estimate, averaged over 64x64 pixels, and the scatter of the pixels' means
     // both come out at 1/96.
     RenderSettings s;
-    s.width = 64, s.height = 64, s.samples_per_pixel = 8, s.seed = 3, s.threads = 2, s.progress = ProgressStyle::kNone;
+    s.width = 64, s.height = 64, s.samples_per_pixel = 8, s.seed = 3, s.threads = 2,
+    s.progress = ProgressStyle::kNone;
     std::array<PixelSums, 1> squares;
     const RenderResult r = render_layers(s, squares, [](const PixelSample&, Pcg32& rng, RayCounts&) {
         const Color u(rng.next_real());
@@ -280,10 +287,12 @@ TEST_CASE("Layered sums estimate the variance of a pixel's mean without bias", "
     CHECK(channel_variance(r.image, 0, 0, 64, 64) == Approx(1.0 / 96).epsilon(0.05));
 }
 
-TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07's to the bit", "[features]") {
+TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07's to the bit",
+          "[features]") {
     const Scene scene = load_scene(scene_path("cornell.json"));
     RenderSettings s;
-    s.width = 40, s.height = 40, s.samples_per_pixel = 3, s.seed = 4, s.threads = 2, s.progress = ProgressStyle::kNone;
+    s.width = 40, s.height = 40, s.samples_per_pixel = 3, s.seed = 4, s.threads = 2,
+    s.progress = ProgressStyle::kNone;
     PathOptions options;
     options.simulated = needed(scene);
     const FeatureRender features = render_features(scene, s, options);
@@ -293,11 +302,13 @@ TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07
 }
 
 TEST_CASE("The features of the back wall and of the glass sphere", "[features]") {
-    // cornell.json, 61x61: pixel (30, 20) sees the back wall (white, 0.73) over the tall box, at (278, 440, 555),
-    // 1364.6 from the eye; a pixel on the glass sphere sees through it to what lies behind, farther than the sphere's front.
+    // cornell.json, 61x61: pixel (30, 20) sees the back wall (white, 0.73) over the tall box, at (278, 440,
+    // 555), 1364.6 from the eye; a pixel on the glass sphere sees through it to what lies behind, farther
+    // than the sphere's front.
     const Scene scene = load_scene(scene_path("cornell.json"));
     RenderSettings s;
-    s.width = 61, s.height = 61, s.samples_per_pixel = 16, s.seed = 1, s.threads = 2, s.progress = ProgressStyle::kNone;
+    s.width = 61, s.height = 61, s.samples_per_pixel = 16, s.seed = 1, s.threads = 2,
+    s.progress = ProgressStyle::kNone;
     PathOptions options;
     options.simulated = needed(scene);
     const FeatureBuffers b = render_features(scene, s, options).buffers;
@@ -306,8 +317,8 @@ TEST_CASE("The features of the back wall and of the glass sphere", "[features]")
     CHECK(b.albedo_variance.at(30, 20).r == Approx(0).margin(1e-9));
     CHECK(b.normal.at(30, 20).b == Approx(-1).epsilon(1e-5));
     CHECK(b.depth.at(30, 20).r == Approx(1364.6).epsilon(2e-3));
-    // The sphere (centre (190, 90, 190), radius 90) is at pixel (38, 46), its centre 1009 from the eye: through
-    // it, along the line from the eye, lies the back wall, 1371 away; the ray leaves the glass nearly
+    // The sphere (centre (190, 90, 190), radius 90) is at pixel (38, 46), its centre 1009 from the eye:
+    // through it, along the line from the eye, lies the back wall, 1371 away; the ray leaves the glass nearly
     // undeviated there, so the features are mostly the wall's (the 4 % reflected off the front are not).
     CHECK(b.depth.at(38, 46).r > 1200);
     CHECK(b.normal.at(38, 46).b < -0.8);

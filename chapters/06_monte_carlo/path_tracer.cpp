@@ -118,7 +118,9 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
         const BsdfFlags& flags = bsdf.flags();
         length += hit->t;
         const bool records = features && !features->recorded && !flags.delta;
-        if (records) *features = {Color(0), hit->normal, length, true};  // the albedo once the bounce is drawn
+        // Chapter 10's features, at the first vertex that is not a delta bounce (the albedo once the bounce
+        // is drawn).
+        if (records) *features = {Color(0), hit->normal, length, true};
         if (flags.black) break;
         const Vec3 wo = -ray.direction;
         const Vec3& n = hit->normal;

@@ -36,8 +36,8 @@ struct PathOptions : TraceOptions {
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
 };
 
-// What the camera ray's path meets at its first vertex that is not a delta bounce, having followed mirrors and
-// glass the way it goes on: chapter 10's feature buffers (a denoiser's guides). Left as it is (zeros, not
+// What the camera ray's path meets at its first vertex that is not a delta bounce, having followed mirrors
+// and glass the way it goes on: chapter 10's feature buffers (a denoiser's guides). Left as it is (zeros, not
 // recorded) by a path that leaves the scene first.
 struct PathFeatures {
     Color albedo{0};  // the bounce's weight there, f |cos θ_i| / pdf, times the delta chain's β before it:

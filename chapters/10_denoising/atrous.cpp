@@ -17,8 +17,8 @@ GuidePixel atrous_pixel(const std::vector<GuidePixel>& level, int width, int hei
             if (weights) weights[j * 5 + k] = 0;
             if (qx < 0 || qx >= width || qy < 0 || qy >= height) continue;
             const GuidePixel& q = level[std::size_t(qy) * std::size_t(width) + std::size_t(qx)];
-            // h(q) relative to the centre tap's (3/8)², which the normalisation cancels: the centre then weighs
-            // exactly 1, so a pixel that no neighbour may join keeps its colour to the bit.
+            // h(q) relative to the centre tap's (3/8)², which the normalisation cancels: the centre then
+            // weighs exactly 1, so a pixel that no neighbour may join keeps its colour to the bit.
             const Real h = kB3Taps[std::size_t(j)] * kB3Taps[std::size_t(k)] / (kB3Taps[2] * kB3Taps[2]);
             const Real w = h * edge_stopping_weight(p, q, edges);
             if (weights) weights[j * 5 + k] = w;

@@ -39,8 +39,8 @@ int bilateral_radius(const BilateralSettings& settings) {
     return int(std::ceil(2 * settings.spatial));
 }
 
-std::vector<Real> bilateral_weights(const std::vector<GuidePixel>& guides, int width, int height, int x, int y,
-                                    const BilateralSettings& settings) {
+std::vector<Real> bilateral_weights(const std::vector<GuidePixel>& guides, int width, int height, int x,
+                                    int y, const BilateralSettings& settings) {
     const int r = bilateral_radius(settings);
     std::vector<Real> weights(std::size_t((2 * r + 1) * (2 * r + 1)), 0);
     const Real total = visit_window(guides, width, height, x, y, settings,
@@ -56,8 +56,9 @@ Image bilateral_filter(const FeatureBuffers& buffers, const BilateralSettings& s
     for_each_row(height, threads, [&](int y) {
         for (int x = 0; x < width; ++x) {
             Color sum(0);
-            const Real total = visit_window(guides, width, height, x, y, settings,
-                                            [&](std::size_t, std::size_t q, Real w) { sum += w * guides[q].colour; });
+            const Real total =
+                visit_window(guides, width, height, x, y, settings,
+                             [&](std::size_t, std::size_t q, Real w) { sum += w * guides[q].colour; });
             out.at(x, y) = sum / total;
         }
     });

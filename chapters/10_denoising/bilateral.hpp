@@ -24,8 +24,8 @@ int bilateral_radius(const BilateralSettings& settings);
 
 // Pixel (x, y)'s normalised weights w(p, q) / Σ w, row by row over its window of (2r + 1)² pixels (0 outside
 // the image).
-std::vector<Real> bilateral_weights(const std::vector<GuidePixel>& guides, int width, int height, int x, int y,
-                                    const BilateralSettings& settings);
+std::vector<Real> bilateral_weights(const std::vector<GuidePixel>& guides, int width, int height, int x,
+                                    int y, const BilateralSettings& settings);
 
 // The filtered image, on `threads` threads (0: one per core); the same bits for any count.
 Image bilateral_filter(const FeatureBuffers& buffers, const BilateralSettings& settings, int threads);

@@ -45,8 +45,8 @@ struct PlainPoint {
     Image image;
 };
 
-PlainPoint plain_point(const Scene& scene, const RenderSettings& settings, const PathOptions& options, int spp,
-                       const Image& reference) {
+PlainPoint plain_point(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                       int spp, const Image& reference) {
     const RenderResult r =
         render_with(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed), options);
     return {spp, compare(r.image, reference).relative_mse, r.seconds, r.image};
@@ -67,7 +67,8 @@ EqualError equal_error(const std::vector<PlainPoint>& points, double target) {
         if (b.relative_mse > target) continue;
         const double t = (std::log(target) - std::log(a.relative_mse)) /
                          (std::log(b.relative_mse) - std::log(a.relative_mse));
-        const double spp = std::exp(std::log(double(a.spp)) + t * (std::log(double(b.spp)) - std::log(double(a.spp))));
+        const double spp =
+            std::exp(std::log(double(a.spp)) + t * (std::log(double(b.spp)) - std::log(double(a.spp))));
         const double seconds = a.seconds + (spp - a.spp) * (b.seconds - a.seconds) / double(b.spp - a.spp);
         return {spp, seconds, false, false};
     }
@@ -116,7 +117,8 @@ Image half_size(const Image& image) {
             Color sum(0);
             for (int j = 0; j < 2; ++j)
                 for (int i = 0; i < 2; ++i)
-                    sum += image.at(std::min(2 * x + i, image.width() - 1), std::min(2 * y + j, image.height() - 1));
+                    sum += image.at(std::min(2 * x + i, image.width() - 1),
+                                    std::min(2 * y + j, image.height() - 1));
             out.at(x, y) = sum / Real(4);
         }
     }
@@ -147,17 +149,25 @@ Image side_by_side(const std::vector<Image>& images) {
 std::string slug(const char* name) {
     std::string s;
     for (const char* c = name; *c; ++c) {
-        if (std::isalnum(static_cast<unsigned char>(*c))) s += *c;
-        else if (!s.empty() && s.back() != '_') s += '_';
+        if (std::isalnum(static_cast<unsigned char>(*c)))
+            s += *c;
+        else if (!s.empty() && s.back() != '_')
+            s += '_';
     }
     while (!s.empty() && s.back() == '_') s.pop_back();
     return s;
 }
 
+// A row of the sweeps: the whole image's relative MSE and SSIM, and the relative MSE of two regions where the
+// guides matter (the rods, the caustic).
 void print_sweep_row(const char* parameter, const std::string& value, const Image& image, double seconds,
                      const Image& reference) {
-    std::printf("  %-16s %-8s %12.4e %8.4f %9.3f\n", parameter, value.c_str(), compare(image, reference).relative_mse,
-                ssim(image, reference), seconds);
+    const int w = reference.width(), h = reference.height();
+    const std::vector<StudyRegion>& regions = cornell_regions();
+    std::printf("  %-17s %-6s %12.4e %8.4f %12.4e %12.4e %9.3f\n", parameter, value.c_str(),
+                compare(image, reference).relative_mse, ssim(image, reference),
+                compare(image, reference, pixels_of(regions[3], w, h)).relative_mse,
+                compare(image, reference, pixels_of(regions[0], w, h)).relative_mse, seconds);
 }
 
 std::string number(Real v) {
@@ -197,30 +207,47 @@ Image crop(const Image& image, const PixelRect& rect) {
 void run_denoise_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        const DenoiseSettings& denoise_settings, const StudyOptions& study) {
     const int spp = settings.samples_per_pixel;
-    std::printf("denoising study: %s, %dx%d, %d spp, seed %llu, %d threads\n", scene.file.c_str(), settings.width,
-                settings.height, spp, static_cast<unsigned long long>(settings.seed), settings.threads);
+    std::printf("denoising study: %s, %dx%d, %d spp, seed %llu, %d threads\n", scene.file.c_str(),
+                settings.width, settings.height, spp, static_cast<unsigned long long>(settings.seed),
+                settings.threads);
     std::printf("reference: %d spp, chapter 07's renderer, seed %llu ...\n", study.reference_spp,
                 static_cast<unsigned long long>(settings.seed + 1000));
     std::fflush(stdout);
     bool cached = false;
-    const Image reference =
-        glass_depth_reference(scene, with(settings, spp, settings.seed), options, study.reference_spp, study.cache, cached);
+    const Image reference = glass_depth_reference(scene, with(settings, spp, settings.seed), options,
+                                                  study.reference_spp, study.cache, cached);
     std::printf("  %s\n\n", cached ? "read from the cache" : "rendered and cached");
 
     // 1. Each denoiser at the run's spp.
-    const FeatureRender render = render_features(scene, with(settings, spp, settings.seed), options);
+    // The times of a render with features and of plain path tracing at the run's spp, measured alternately
+    // (three of each, medians), so that the machine's load falls on both alike.
+    std::vector<double> feature_times, plain_times;
+    FeatureRender render;
+    for (int i = 0; i < 3; ++i) {
+        render = render_features(scene, with(settings, spp, settings.seed), options);
+        feature_times.push_back(render.result.seconds);
+        plain_times.push_back(render_with(Renderer::kPaths, scene, options.simulated,
+                                          with(settings, spp, settings.seed), options)
+                                  .seconds);
+    }
+    std::sort(feature_times.begin(), feature_times.end());
+    std::sort(plain_times.begin(), plain_times.end());
+    const double render_seconds = feature_times[1], plain_seconds = plain_times[1];
     std::vector<Denoised> denoised;
     for (Denoiser d : kDenoisers) denoised.push_back(timed_denoise(render.buffers, d, denoise_settings));
     const double noisy_error = compare(render.buffers.colour, reference).relative_mse;
-    std::printf("1. the denoisers at %d spp (render %.3f s with the features; filter: median of 3)\n", spp,
-                render.result.seconds);
-    std::printf("  %-10s %12s %12s %8s %13s %9s %9s %14s\n", "denoiser", "rel. MSE", "RMSE", "SSIM", "mean error",
-                "filter s", "total s", "x closer");
+    std::printf(
+        "1. the denoisers at %d spp (render %.3f s with the features, %.3f s without: medians of 3, taken "
+        "alternately; filter: median of 3)\n",
+        spp, render_seconds, plain_seconds);
+    std::printf("  %-10s %12s %12s %8s %13s %9s %9s %14s\n", "denoiser", "rel. MSE", "RMSE", "SSIM",
+                "mean error", "filter s", "total s", "x closer");
     for (std::size_t i = 0; i < denoised.size(); ++i) {
         const ErrorMetrics e = compare(denoised[i].image, reference);
-        std::printf("  %-10s %12.4e %12.4e %8.4f %+13.4e %9.3f %9.3f %14.2f\n", to_string(kDenoisers[i]).data(),
-                    e.relative_mse, e.rmse, ssim(denoised[i].image, reference), e.mean_error, denoised[i].seconds,
-                    render.result.seconds + denoised[i].seconds, noisy_error / e.relative_mse);
+        std::printf("  %-10s %12.4e %12.4e %8.4f %+13.4e %9.3f %9.3f %14.2f\n",
+                    to_string(kDenoisers[i]).data(), e.relative_mse, e.rmse,
+                    ssim(denoised[i].image, reference), e.mean_error, denoised[i].seconds,
+                    render_seconds + denoised[i].seconds, noisy_error / e.relative_mse);
     }
     std::printf("\n");
     std::fflush(stdout);
@@ -236,61 +263,69 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
     std::printf("2. equal error: plain path tracing (no features, no filter) at doubling spp\n");
     std::printf("  %8s %12s %9s\n", "spp", "rel. MSE", "time s");
     for (const PlainPoint& p : points) std::printf("  %8d %12.4e %9.3f\n", p.spp, p.relative_mse, p.seconds);
-    std::printf("  %-10s %12s %14s %14s %14s\n", "denoiser", "rel. MSE", "plain spp", "plain time s", "x sooner");
+    std::printf("  %-10s %12s %14s %14s %14s %14s\n", "denoiser", "rel. MSE", "plain spp", "measured s",
+                "linear s", "x sooner");
     for (std::size_t i = 1; i < denoised.size(); ++i) {
         const double target = compare(denoised[i].image, reference).relative_mse;
         const EqualError eq = equal_error(points, target);
-        const double total = render.result.seconds + denoised[i].seconds;
+        const double total = render_seconds + denoised[i].seconds;
+        // Path tracing's time is linear in spp: the plain render's median at the run's spp, scaled.
+        const double linear = plain_seconds * eq.spp / spp;
         if (eq.below_first) {
-            std::printf("  %-10s %12.4e %14s %14s %14s\n", to_string(kDenoisers[i]).data(), target, "< run's",
-                        "-", "loses");
+            std::printf("  %-10s %12.4e %14s %14s %14s %14s\n", to_string(kDenoisers[i]).data(), target,
+                        "< run's", "-", "-", "loses");
             continue;
         }
-        std::printf("  %-10s %12.4e %13.0f%s %14.3f %14.2f\n", to_string(kDenoisers[i]).data(), target, eq.spp,
-                    eq.extrapolated ? "*" : " ", eq.seconds, eq.seconds / total);
+        std::printf("  %-10s %12.4e %13.0f%s %14.3f %14.3f %14.2f\n", to_string(kDenoisers[i]).data(), target,
+                    eq.spp, eq.extrapolated ? "*" : " ", eq.seconds, linear, linear / total);
     }
-    std::printf("  (* past the last render: the 1/N law from it; x sooner = plain time / (render + filter))\n\n");
+    std::printf(
+        "  (* past the last render: the 1/N law from it; measured: interpolated between the renders above;\n"
+        "   linear: the plain median at %d spp times plain spp / %d; x sooner = linear / (render with "
+        "features "
+        "+ filter))\n\n",
+        spp, spp);
     std::fflush(stdout);
 
     // 3. The bias over independent runs.
     std::vector<std::vector<Image>> runs(std::size(kDenoisers));
     for (int k = 0; k < study.runs; ++k) {
-        const FeatureRender r = render_features(scene, with(settings, spp, settings.seed + 1 + std::uint64_t(k)), options);
+        const FeatureRender r =
+            render_features(scene, with(settings, spp, settings.seed + 1 + std::uint64_t(k)), options);
         for (std::size_t i = 0; i < std::size(kDenoisers); ++i)
             runs[i].push_back(denoise(r.buffers, kDenoisers[i], denoise_settings).image);
     }
-    std::printf("3. bias: %d independent runs at %d spp; relative terms (each over r^2 + 0.01), MSE = bias^2 + "
-                "variance\n",
-                study.runs, spp);
+    std::printf(
+        "3. bias: %d independent runs at %d spp; relative terms (each over r^2 + 0.01), MSE = bias^2 + "
+        "variance\n",
+        study.runs, spp);
     std::printf("  %-10s %12s %12s %12s %10s\n", "denoiser", "rel. MSE", "variance", "bias^2", "bias share");
     const PixelRect whole{0, 0, reference.width(), reference.height()};
     for (std::size_t i = 0; i < std::size(kDenoisers); ++i) {
         const BiasSplit b = bias_split(runs[i], reference, whole);
-        std::printf("  %-10s %12.4e %12.4e %12.4e %9.1f%%\n", to_string(kDenoisers[i]).data(), b.mse, b.variance,
-                    b.mse - b.variance, 100.0 * (b.mse - b.variance) / b.mse);
+        std::printf("  %-10s %12.4e %12.4e %12.4e %9.1f%%\n", to_string(kDenoisers[i]).data(), b.mse,
+                    b.variance, b.mse - b.variance, 100.0 * (b.mse - b.variance) / b.mse);
     }
     std::printf("\n");
 
     // 4. The failure regions, against plain path tracing at the spp that matches the best filter overall.
-    const double best = compare(denoised[2].image, reference).relative_mse;
-    const PlainPoint* matched = &points.back();
-    for (const PlainPoint& p : points) {
-        if (p.relative_mse <= best) {
-            matched = &p;
-            break;
-        }
-    }
-    std::printf("4. regions: relative MSE of each; plain path tracing at %d spp, the first to reach atrous's error on "
-                "the whole image;\n   SSIM; atrous's bias share over the runs. Where atrous is worse than the plain "
-                "render, it does worse there than its average\n",
-                matched->spp);
-    std::printf("  %-31s %11s %11s %11s %11s %8s %8s %7s\n", "region", "noisy", "bilateral", "atrous", "plain",
-                "SSIM at.", "SSIM pl.", "bias");
+    const EqualError matched_error = equal_error(points, compare(denoised[2].image, reference).relative_mse);
+    const int matched_spp = std::max(1, int(std::lround(matched_error.spp)));
+    const PlainPoint matched_point = plain_point(scene, settings, options, matched_spp, reference);
+    const PlainPoint* matched = &matched_point;
+    std::printf(
+        "4. regions: relative MSE of each; plain path tracing at %d spp, which reaches atrous's error on the "
+        "whole image;\n   SSIM; atrous's bias share over the runs. Where atrous is worse than the plain "
+        "render, it does worse there than its average\n",
+        matched->spp);
+    std::printf("  %-31s %11s %11s %11s %11s %8s %8s %7s\n", "region", "noisy", "bilateral", "atrous",
+                "plain", "SSIM at.", "SSIM pl.", "bias");
     for (const StudyRegion& region : cornell_regions()) {
         const PixelRect rect = pixels_of(region, reference.width(), reference.height());
         const Image ref = crop(reference, rect);
         std::printf("  %-31s", region.name);
-        for (const Denoised& d : denoised) std::printf(" %11.4e", compare(d.image, reference, rect).relative_mse);
+        for (const Denoised& d : denoised)
+            std::printf(" %11.4e", compare(d.image, reference, rect).relative_mse);
         std::printf(" %11.4e", compare(matched->image, reference, rect).relative_mse);
         const BiasSplit b = bias_split(runs[2], reference, rect);
         std::printf(" %8.4f %8.4f %6.0f%%\n", ssim(crop(denoised[2].image, rect), ref),
@@ -298,24 +333,29 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
         if (!study.crops.empty()) {
             std::vector<Image> strip{upscale(ref, 2)};
             for (const Denoised& d : denoised) strip.push_back(upscale(crop(d.image, rect), 2));
-            write_png(side_by_side(strip), std::filesystem::path(study.crops) / ("ch10_" + slug(region.name) + ".png"));
+            write_png(side_by_side(strip),
+                      std::filesystem::path(study.crops) / ("ch10_" + slug(region.name) + ".png"));
         }
     }
     if (!study.crops.empty()) {
         std::vector<Image> strip{half_size(reference)};
         for (const Denoised& d : denoised) strip.push_back(half_size(d.image));
         write_png(side_by_side(strip), std::filesystem::path(study.crops) / "ch10_whole.png");
-        std::printf("  wrote the strips (reference | noisy | bilateral | atrous; the regions at twice their size, the "
-                    "whole image at half) into %s\n",
-                    study.crops.c_str());
+        std::printf(
+            "  wrote the strips (reference | noisy | bilateral | atrous; the regions at twice their size, "
+            "the "
+            "whole image at half) into %s\n",
+            study.crops.c_str());
     }
     std::printf("\n");
     if (!study.sweeps) return;
 
     // 5. Sweeps, one parameter at a time from the settings given.
     std::printf("5. sweeps at %d spp, one parameter at a time\n", spp);
-    std::printf("  %-16s %-8s %12s %8s %9s\n", "parameter", "value", "rel. MSE", "SSIM", "filter s");
-    auto sweep_edges = [&](Denoiser d, const char* name, Real EdgeStopping::*member, std::initializer_list<Real> values) {
+    std::printf("  %-17s %-6s %12s %8s %12s %12s %9s\n", "parameter", "value", "rel. MSE", "SSIM", "rods",
+                "caustic", "filter s");
+    auto sweep_edges = [&](Denoiser d, const char* name, Real EdgeStopping::*member,
+                           std::initializer_list<Real> values) {
         for (Real v : values) {
             DenoiseSettings s = denoise_settings;
             EdgeStopping& edges = d == Denoiser::kAtrous ? s.atrous.edges : s.bilateral.edges;

@@ -1,7 +1,8 @@
 // What a denoiser buys, measured fairly against a converged reference (chapter 07's cached reference, an
 // independent seed):
 //   1. each denoiser at the run's spp: relative MSE, RMSE, SSIM, signed mean error, render and filter time;
-//   2. equal error: the spp plain path tracing needs to reach each denoiser's relative MSE (renders at doubling
+//   2. equal error: the spp plain path tracing needs to reach each denoiser's relative MSE (renders at
+//   doubling
 //      spp, interpolated log-log between the two that bracket it) and its time, against the render plus the
 //      filter: how many times sooner the denoised image gets there;
 //   3. the bias: over independent runs (seeds), MSE = bias² + variance per pixel, so bias² ≈ MSE − variance

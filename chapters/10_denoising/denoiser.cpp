@@ -8,9 +8,12 @@ namespace rt {
 
 std::string_view to_string(Denoiser denoiser) {
     switch (denoiser) {
-        case Denoiser::kNone: return "none";
-        case Denoiser::kBilateral: return "bilateral";
-        case Denoiser::kAtrous: return "atrous";
+        case Denoiser::kNone:
+            return "none";
+        case Denoiser::kBilateral:
+            return "bilateral";
+        case Denoiser::kAtrous:
+            return "atrous";
     }
     return "?";
 }
@@ -25,9 +28,15 @@ Denoised denoise(const FeatureBuffers& buffers, Denoiser denoiser, const Denoise
     const auto start = std::chrono::steady_clock::now();
     Denoised out;
     switch (denoiser) {
-        case Denoiser::kNone: out.image = buffers.colour; break;
-        case Denoiser::kBilateral: out.image = bilateral_filter(buffers, settings.bilateral, settings.threads); break;
-        case Denoiser::kAtrous: out.image = atrous_filter(buffers, settings.atrous, settings.threads); break;
+        case Denoiser::kNone:
+            out.image = buffers.colour;
+            break;
+        case Denoiser::kBilateral:
+            out.image = bilateral_filter(buffers, settings.bilateral, settings.threads);
+            break;
+        case Denoiser::kAtrous:
+            out.image = atrous_filter(buffers, settings.atrous, settings.threads);
+            break;
     }
     out.seconds = denoiser == Denoiser::kNone
                       ? 0

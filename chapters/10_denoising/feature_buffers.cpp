@@ -17,8 +17,8 @@ FeatureRender render_features(const Scene& scene, const RenderSettings& settings
     FeatureRender out;
     out.result = render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
         PathFeatures f;
-        const Color L = finite_or_black(
-            tracer.radiance(camera_ray_of(camera, PixelSampler::kStratified, s, count, rng, rays), rng, rays, &f));
+        const Color L = finite_or_black(tracer.radiance(
+            camera_ray_of(camera, PixelSampler::kStratified, s, count, rng, rays), rng, rays, &f));
         const Color n(f.normal), d(f.depth);
         return std::array<Color, 8>{L, L * L, f.albedo, f.albedo * f.albedo, n, n * n, d, d * d};
     });

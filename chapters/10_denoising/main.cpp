@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "07_bsdf_refraction/bsdf_render.hpp"
 #include "denoise_study.hpp"
 #include "denoiser.hpp"
 #include "feature_buffers.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
-#include "07_bsdf_refraction/bsdf_render.hpp"
 
 namespace {
 
@@ -50,7 +50,8 @@ int main(int argc, char** argv) {
                               EffectSet::all(),
                               {".noisy", ".albedo", ".normal"}};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--denoiser", denoiser_name, "none|bilateral|atrous (default atrous: the best measured)")
+        app.add_option("--denoiser", denoiser_name,
+                       "none|bilateral|atrous (default atrous: the best measured)")
             ->check(CLI::IsMember({"none", "bilateral", "atrous"}));
         app.add_option("--levels", denoise_settings.atrous.levels, "atrous: levels (taps 1, 2, 4, ... apart)")
             ->check(CLI::Range(1, 12));
@@ -58,13 +59,16 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(0.5, 32.0));
         app.add_option("--sigma-colour", edges.colour, "Edge stopping on colour, in standard deviations")
             ->check(CLI::Range(0.0, 1e30));
-        app.add_option("--sigma-normal", edges.normal, "Edge stopping on the normal")->check(CLI::Range(0.0, 1e30));
+        app.add_option("--sigma-normal", edges.normal, "Edge stopping on the normal")
+            ->check(CLI::Range(0.0, 1e30));
         app.add_option("--sigma-depth", edges.depth, "Edge stopping on depth, a fraction of it")
             ->check(CLI::Range(0.0, 1e30));
-        app.add_option("--sigma-albedo", edges.albedo, "Edge stopping on the albedo")->check(CLI::Range(0.0, 1e30));
-        app.add_flag("--study", study,
-                     "Measure the denoisers against a converged reference (error, SSIM, time, equal-error spp, "
-                     "bias, failure regions) instead of rendering an image");
+        app.add_option("--sigma-albedo", edges.albedo, "Edge stopping on the albedo")
+            ->check(CLI::Range(0.0, 1e30));
+        app.add_flag(
+            "--study", study,
+            "Measure the denoisers against a converged reference (error, SSIM, time, equal-error spp, "
+            "bias, failure regions) instead of rendering an image");
         app.add_option("--reference-spp", study_options.reference_spp, "With --study: spp of the reference")
             ->check(CLI::Range(1, 1 << 20));
         app.add_option("--cache", study_options.cache, "With --study: folder of the cached reference PFM");
@@ -81,8 +85,8 @@ int main(int argc, char** argv) {
         PathOptions options;
         options.simulated = context.simulated;
         const Denoiser denoiser = denoiser_from_string(denoiser_name);
-        // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same image
-        // as the noisy one of a whole render, without the features, to be merged by rt_merge.
+        // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same
+        // image as the noisy one of a whole render, without the features, to be merged by rt_merge.
         const RenderSettings& settings = context.settings;
         const SampleRange all{0, settings.samples_per_pixel};
         if (settings.resume || (settings.samples && *settings.samples != all)) {
@@ -91,11 +95,14 @@ int main(int argc, char** argv) {
                     "--samples: chapter 10 denoises the whole image, which a piece of it is not: --samples, "
                     "--resume and several MPI ranks only with --denoiser none");
             }
-            return ChapterRun{render_with(Renderer::kPaths, context.scene, context.simulated, settings, options),
-                              {"renderer: chapter 06's path loop with chapter 07's BSDFs; a piece of the render: "
-                               "no features, not denoised"},
-                              std::nullopt};
+            return ChapterRun{
+                render_with(Renderer::kPaths, context.scene, context.simulated, settings, options),
+                {"renderer: chapter 06's path loop with chapter 07's BSDFs; a piece of the render: "
+                 "no features, not denoised"},
+                std::nullopt};
         }
+        if (!study && study_options.sweeps) throw InputError("--sweeps: only with --study");
+        if (!study && !study_options.crops.empty()) throw InputError("--crops: only with --study");
         if (study) {
             if (!std::filesystem::is_directory(study_options.cache))
                 throw InputError("--cache: " + study_options.cache + ": not a folder");
@@ -105,8 +112,9 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         FeatureRender rendered = render_features(context.scene, context.settings, options);
-        ChapterRun run{rendered.result, {"renderer: chapter 06's path loop with chapter 07's BSDFs, recording "
-                                       "albedo, normal and depth at the first non-delta vertex"},
+        ChapterRun run{rendered.result,
+                       {"renderer: chapter 06's path loop with chapter 07's BSDFs, recording "
+                        "albedo, normal and depth at the first non-delta vertex"},
                        std::nullopt};
         if (rendered.result.interrupted) {
             run.notes.push_back("interrupted: the partial image is written as it is, not denoised");
@@ -115,8 +123,9 @@ int main(int argc, char** argv) {
         const Denoised denoised = denoise(rendered.buffers, denoiser, denoise_settings);
         run.result.image = denoised.image;
         char time[160];
-        std::snprintf(time, sizeof time, "filter time %.3f s (the render %.3f s: %.1f%% more)", denoised.seconds,
-                      rendered.result.seconds, 100.0 * denoised.seconds / std::max(rendered.result.seconds, 1e-9));
+        std::snprintf(time, sizeof time, "filter time %.3f s (the render %.3f s: %.1f%% more)",
+                      denoised.seconds, rendered.result.seconds,
+                      100.0 * denoised.seconds / std::max(rendered.result.seconds, 1e-9));
         run.notes.push_back("denoiser " + describe(denoiser, denoise_settings));
         run.notes.push_back(time);
         run.extra_images = {{".noisy", rendered.buffers.colour, true},

@@ -10,8 +10,8 @@
 namespace rt {
 
 void for_each_row(int height, int threads, const std::function<void(int)>& row) {
-    const int count = std::clamp(threads > 0 ? threads : int(std::thread::hardware_concurrency()), 1,
-                                 std::max(height, 1));
+    const int count =
+        std::clamp(threads > 0 ? threads : int(std::thread::hardware_concurrency()), 1, std::max(height, 1));
     std::atomic<int> next{0};
     std::exception_ptr failure;
     std::mutex failure_mutex;

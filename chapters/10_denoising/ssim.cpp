@@ -27,12 +27,14 @@ std::vector<double> display_channel(const Image& image, int c) {
 
 double ssim(const Image& a, const Image& b) {
     if (a.width() != b.width() || a.height() != b.height()) {
-        throw InputError("ssim: the images are " + std::to_string(a.width()) + "x" + std::to_string(a.height()) +
-                         " and " + std::to_string(b.width()) + "x" + std::to_string(b.height()));
+        throw InputError("ssim: the images are " + std::to_string(a.width()) + "x" +
+                         std::to_string(a.height()) + " and " + std::to_string(b.width()) + "x" +
+                         std::to_string(b.height()));
     }
     const int w = a.width(), h = a.height();
     std::array<double, 2 * kRadius + 1> g{};
-    for (int i = -kRadius; i <= kRadius; ++i) g[std::size_t(i + kRadius)] = std::exp(-i * i / (2 * 1.5 * 1.5));
+    for (int i = -kRadius; i <= kRadius; ++i)
+        g[std::size_t(i + kRadius)] = std::exp(-i * i / (2 * 1.5 * 1.5));
     double sum = 0;
     for (int c = 0; c < 3; ++c) {
         const std::vector<double> x = display_channel(a, c), y = display_channel(b, c);

@@ -90,9 +90,9 @@ concept LayeredSampleFunction = requires(F f, const PixelSample& s, Pcg32& rng, 
     { f(s, rng, rays) } -> std::convertible_to<std::array<Color, Layers>>;
 };
 
-// render() with `Extra` layers beside the image: sample() returns 1 + Extra colours, and layer k + 1 is summed
-// into extra[k] (resized to the image), with the same passes, interrupts and dropped partial passes as the
-// image. A render with layers takes all its samples from zero: settings.resume must be empty.
+// render() with `Extra` layers beside the image: sample() returns 1 + Extra colours, and layer k + 1 is
+// summed into extra[k] (resized to the image), with the same passes, interrupts and dropped partial passes as
+// the image. A render with layers takes all its samples from zero: settings.resume must be empty.
 template <std::size_t Extra, LayeredSampleFunction<1 + Extra> F>
 RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums, Extra>& extra, F&& sample) {
     PixelSums sums = detail::starting_sums(settings);
