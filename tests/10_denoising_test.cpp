@@ -1,9 +1,9 @@
 // Chapter 10: denoising. The filters on images made for the purpose (a constant image stays, weights sum to
 // 1, range parameters at 0 give the input back, a flat noisy patch loses the variance the kernel predicts,
 // an albedo step stays sharp, zero variance or albedo gives no NaN, any thread count the same bits), SSIM
-// (1 for identical images, symmetric), the variance of a pixel's mean from exact sums, and the feature
-// buffers the path loop records (the noisy image is chapter 07's to the bit; a wall's albedo, normal and
-// depth; the depth through the glass sphere).
+// (1 for identical images, symmetric), and the feature buffers the path loop records (the noisy image is
+// chapter 07's to the bit; a wall's albedo, normal and depth; the depth through the glass sphere). The
+// variance of a pixel's mean from exact sums is common's (tests/common_test.cpp).
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -92,7 +92,8 @@ double channel_variance(const Image& image, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
-TEST_CASE("A constant image comes out of either filter unchanged, whatever the guides", "[filters]") {
+TEST_CASE("A constant image comes out of either filter unchanged, whatever the guides",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     FeatureBuffers b = random_buffers(40, 30, 3);
     for (Color& c : b.colour.pixels()) c = Color(Real(0.25), Real(0.5), Real(2));
     const EdgeStopping edges;
@@ -107,7 +108,7 @@ TEST_CASE("A constant image comes out of either filter unchanged, whatever the g
 }
 
 TEST_CASE("The weights of every pixel sum to 1, borders and corners included",
-          "[filters][ex:ch10.atrous_pixel]") {
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     const FeatureBuffers b = random_buffers(24, 20, 5);
     const std::vector<GuidePixel> guides = guide_pixels(b);
     const EdgeStopping edges;
@@ -127,7 +128,8 @@ TEST_CASE("The weights of every pixel sum to 1, borders and corners included",
     }
 }
 
-TEST_CASE("Range parameters at 0 give the input back, to the bit", "[filters]") {
+TEST_CASE("Range parameters at 0 give the input back, to the bit",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     const FeatureBuffers b = random_buffers(32, 24, 9);
     const Image bilateral = bilateral_filter(b, bilateral_with(kAllZero), 2);
     const Image atrous = atrous_filter(b, atrous_with(kAllZero, 5), 2);
@@ -136,7 +138,7 @@ TEST_CASE("Range parameters at 0 give the input back, to the bit", "[filters]") 
 }
 
 TEST_CASE("On a flat noisy patch the variance falls by the sum of the squared weights",
-          "[filters][statistical]") {
+          "[filters][statistical][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     // Uniform noise in [0, 1): variance 1/12. With every guide equal and the colour's switched off, each
     // filter is a fixed linear kernel k, and the output's variance is Σ k² / 12.
     const int size = 256;
@@ -175,7 +177,8 @@ TEST_CASE("On a flat noisy patch the variance falls by the sum of the squared we
     }
 }
 
-TEST_CASE("A step edge in the albedo guide stays sharp", "[filters][ex:ch10.edge_stopping]") {
+TEST_CASE("A step edge in the albedo guide stays sharp",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     // Left half 0.2, right half 0.8, plus noise; the albedo guide steps at the same column. With the colour
     // guide off, only the albedo keeps the halves apart.
     const int w = 64, h = 48;
@@ -206,7 +209,8 @@ TEST_CASE("A step edge in the albedo guide stays sharp", "[filters][ex:ch10.edge
     }
 }
 
-TEST_CASE("Zero variance, zero albedo, zero normal and zero depth give no NaN", "[filters]") {
+TEST_CASE("Zero variance, zero albedo, zero normal and zero depth give no NaN",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     Pcg32 rng(17, 2);
     FeatureBuffers b = flat_buffers(
         20, 16, [&](int, int) { return Color(rng.next_real() * 4); }, 0);
@@ -230,7 +234,8 @@ TEST_CASE("Zero variance, zero albedo, zero normal and zero depth give no NaN", 
     }
 }
 
-TEST_CASE("Either filter gives the same bits on 1, 2 and 5 threads", "[filters]") {
+TEST_CASE("Either filter gives the same bits on 1, 2 and 5 threads",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     const FeatureBuffers b = random_buffers(37, 29, 21);
     const EdgeStopping edges;
     const Image bilateral = bilateral_filter(b, bilateral_with(edges), 1);
@@ -254,41 +259,12 @@ TEST_CASE("SSIM: identical images give 1, it is symmetric, and noise lowers it",
     CHECK_THROWS(ssim(a.colour, Image(20, 30)));
 }
 
-TEST_CASE("The variance of a pixel's mean from exact sums: samples 1, 2, 3, 4 give 5/12", "[variance]") {
-    PixelSum sum, squares;
-    for (int i = 1; i <= 4; ++i) {
-        sum.add(Color(Real(i)));
-        squares.add(Color(Real(i * i)));
-    }
-    // s² = (30 − 100/4) / 3 = 5/3, and Var[mean] = s² / 4.
-    CHECK(variance_of_mean(sum, squares).r == Approx(5.0 / 12));
-    PixelSum one, one_square;
-    one.add(Color(3));
-    one_square.add(Color(9));
-    CHECK(variance_of_mean(one, one_square) == Color(0));
-}
-
-TEST_CASE("Layered sums estimate the variance of a pixel's mean without bias", "[variance][statistical]") {
-    // Each sample uniform in [0, 1) (variance 1/12), 8 a pixel, summed with its square as a layer beside the
-    // image: Var[mean] = 1/96. The estimate, averaged over 64x64 pixels, and the scatter of the pixels' means
-    // both come out at 1/96.
-    RenderSettings s;
-    s.width = 64, s.height = 64, s.samples_per_pixel = 8, s.seed = 3, s.threads = 2,
-    s.progress = ProgressStyle::kNone;
-    std::array<PixelSums, 1> squares;
-    const RenderResult r = render_layers(s, squares, [](const PixelSample&, Pcg32& rng, RayCounts&) {
-        const Color u(rng.next_real());
-        return std::array<Color, 2>{u, u * u};
-    });
-    const Image variance = variance_image(r.sums, squares[0]);
-    double estimated = 0;
-    for (const Color& v : variance.pixels()) estimated += double(v.r) / double(variance.pixel_count());
-    CHECK(estimated == Approx(1.0 / 96).epsilon(0.03));
-    CHECK(channel_variance(r.image, 0, 0, 64, 64) == Approx(1.0 / 96).epsilon(0.05));
-}
-
 TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07's to the bit",
-          "[features]") {
+          "[features]"
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("cornell.json"));
     RenderSettings s;
     s.width = 40, s.height = 40, s.samples_per_pixel = 3, s.seed = 4, s.threads = 2,
@@ -301,7 +277,12 @@ TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07
     REQUIRE(features.result.rays.total() == plain.rays.total());
 }
 
-TEST_CASE("The features of the back wall and of the glass sphere", "[features]") {
+TEST_CASE("The features of the back wall and of the glass sphere",
+          "[features]"
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // cornell.json, 61x61: pixel (30, 20) sees the back wall (white, 0.73) over the tall box, at (278, 440,
     // 555), 1364.6 from the eye; a pixel on the glass sphere sees through it to what lies behind, farther
     // than the sphere's front.
