@@ -2,6 +2,7 @@
 #include <stb_image.h>
 #include <unistd.h>
 
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -359,4 +360,64 @@ TEST_CASE("needed(scene) follows the content, narrowed by the scene's effects li
 
     const Scene cornell = load_scene(scene_path("cornell.json"));
     CHECK(needed(cornell) == EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia}));
+}
+
+TEST_CASE("The variance of a pixel's mean from exact sums: samples 1, 2, 3, 4 give 5/12", "[variance]") {
+    PixelSum sum, squares;
+    for (int i = 1; i <= 4; ++i) {
+        sum.add(Color(Real(i)));
+        squares.add(Color(Real(i * i)));
+    }
+    // s² = (30 − 100/4) / 3 = 5/3, and Var[mean] = s² / 4.
+    CHECK(variance_of_mean(sum, squares).r == Approx(5.0 / 12));
+    PixelSum one, one_square;
+    one.add(Color(3));
+    one_square.add(Color(9));
+    CHECK(variance_of_mean(one, one_square) == Color(0));
+}
+
+TEST_CASE("Layered sums estimate the variance of a pixel's mean without bias", "[variance][statistical]") {
+    // Each sample uniform in [0, 1) (variance 1/12), 8 a pixel, summed with its square as a layer beside the
+    // image: Var[mean] = 1/96. The estimate, averaged over 64x64 pixels, and the scatter of the pixels' means
+    // both come out at 1/96.
+    RenderSettings s;
+    s.width = 64, s.height = 64, s.samples_per_pixel = 8, s.seed = 3, s.threads = 2,
+    s.progress = ProgressStyle::kNone;
+    std::array<PixelSums, 1> squares;
+    const RenderResult r = render_layers(s, squares, [](const PixelSample&, Pcg32& rng, RayCounts&) {
+        const Color u(rng.next_real());
+        return std::array<Color, 2>{u, u * u};
+    });
+    const Image variance = variance_image(r.sums, squares[0]);
+    double estimated = 0;
+    for (const Color& v : variance.pixels()) estimated += double(v.r) / double(variance.pixel_count());
+    CHECK(estimated == Approx(1.0 / 96).epsilon(0.03));
+    double sum = 0, sum_of_squares = 0;
+    for (const Color& v : r.image.pixels()) {
+        sum += v.r;
+        sum_of_squares += double(v.r) * v.r;
+    }
+    const double n = double(r.image.pixel_count());
+    CHECK((sum_of_squares - sum * sum / n) / (n - 1) == Approx(1.0 / 96).epsilon(0.05));
+}
+
+TEST_CASE("The error over a region is the error of the crop", "[metrics]") {
+    Image image(6, 5), reference(6, 5), crop_image(3, 2), crop_reference(3, 2);
+    Pcg32 rng(2, 9);
+    for (int y = 0; y < 5; ++y) {
+        for (int x = 0; x < 6; ++x) {
+            image.at(x, y) = Color(rng.next_real(), rng.next_real(), rng.next_real());
+            reference.at(x, y) = Color(rng.next_real(), rng.next_real(), rng.next_real());
+            if (x >= 2 && x < 5 && y >= 1 && y < 3) {
+                crop_image.at(x - 2, y - 1) = image.at(x, y);
+                crop_reference.at(x - 2, y - 1) = reference.at(x, y);
+            }
+        }
+    }
+    const ErrorMetrics region = compare(image, reference, PixelRect{2, 1, 5, 3});
+    const ErrorMetrics cropped = compare(crop_image, crop_reference);
+    CHECK(region.rmse == cropped.rmse);
+    CHECK(region.relative_mse == cropped.relative_mse);
+    CHECK(region.mean_error == cropped.mean_error);
+    CHECK_THROWS(compare(image, reference, PixelRect{2, 1, 7, 3}));
 }

@@ -9,17 +9,26 @@
 
 namespace rt {
 
+// The camera ray of sample `s` (of `count` per pixel), counted.
+inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
+                         Pcg32& rng, RayCounts& rays) {
+    const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
+    rays.add(RayKind::kCamera);
+    return camera_ray(camera, film.x, film.y);
+}
+
+// A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here rather than
+// spread over the pixel; the tests check that none occurs on the course's scenes.
+inline Color finite_or_black(const Color& L) {
+    return is_finite(L) ? L : Color(0);
+}
+
 template <typename Radiance>
 RenderResult render_camera_rays(const PinholeCamera& camera, PixelSampler sampler,
                                 const RenderSettings& settings, Radiance&& radiance) {
     const int count = settings.samples_per_pixel;
     return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
-        rays.add(RayKind::kCamera);
-        const Color L = radiance(camera_ray(camera, film.x, film.y), rng, rays);
-        // A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here
-        // rather than spread over the pixel; the tests check that none occurs on the course's scenes.
-        return is_finite(L) ? L : Color(0);
+        return finite_or_black(radiance(camera_ray_of(camera, sampler, s, count, rng, rays), rng, rays));
     });
 }
 

@@ -137,7 +137,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, P
     return sum;
 }
 
-Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) const {
+Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, PathFeatures* features) const {
     // EXERCISE(ch06.path_tracer)
     const SamplingStrategy strategy = options_.strategy;
     const bool direct = options_.simulates(Effect::kDirect);
@@ -150,6 +150,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
     Real previous_pdf = 0;  // the BSDF-sampling density of the ray's direction, for MIS
     Vec3 previous_point(0), previous_normal(0);  // normal 0: the previous vertex was in a medium
     int bounces = 0;                             // non-delta bounces so far
+    Real length = 0;                             // of the path so far, for `features`
     // Chapter 09's media: the events of the path's walks so far (scattering, and reflections at a walk's
     // boundary), the colour channel whose density draws its free flights (chosen when the path first meets a
     // medium that scatters), and the densities of the path under each channel's sampling, relative to the
@@ -228,6 +229,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         if (!indirect && bounces >= 1) break;
         const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
         const BsdfFlags& flags = bsdf.flags();
+        length += hit->t;
         // With media, shadow rays cross an index-matched boundary (transmittance()), so light sampling sees
         // what lies beyond it: a path crossing one makes no vertex there and goes straight on.
         if (media_ && flags.index_matched) {
@@ -235,6 +237,10 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
             rays.add(RayKind::kRefraction);
             continue;
         }
+        const bool records = features && !features->recorded && !flags.delta;
+        // Chapter 10's features, at the first vertex that is not a delta bounce (the albedo once the bounce
+        // is drawn).
+        if (records) *features = {Color(0), hit->normal, length, true};
         if (flags.black) break;
         const Vec3 wo = -ray.direction;
         const Vec3& n = hit->normal;
@@ -259,6 +265,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays) c
         }
         const Real cos_i = scattering_cosine(s.wi, n, s.transmitted);
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
+        if (records) features->albedo = beta * s.f * (cos_i / s.pdf);
         beta *= s.f * (cos_i / s.pdf);
         if (!flags.delta) ++bounces;
         specular = flags.delta;

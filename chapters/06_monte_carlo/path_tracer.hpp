@@ -50,14 +50,26 @@ struct PathOptions : TraceOptions {
     MediumWalk walk;
 };
 
+// What the camera ray's path meets at its first vertex that is not a delta bounce, having followed mirrors
+// and glass the way it goes on: chapter 10's feature buffers (a denoiser's guides). Left as it is (zeros, not
+// recorded) by a path that leaves the scene first.
+struct PathFeatures {
+    Color albedo{0};  // the bounce's weight there, f |cos θ_i| / pdf, times the delta chain's β before it:
+                      // an estimate of the surface's albedo ρ(wo) as seen through the chain (0 on a light)
+    Vec3 normal{0};   // the shading normal there, on the side the path came from
+    Real depth = 0;   // the path's length from the camera to there, through the chain
+    bool recorded = false;
+};
+
 class PathTracer {
   public:
     // `world` and `materials` must outlive it.
     PathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
                PathOptions options);
 
-    // The radiance arriving along `ray` (a camera ray): one path, its estimate of L.
-    Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) const;
+    // The radiance arriving along `ray` (a camera ray): one path, its estimate of L. Given `features`, it
+    // records them there too (the path and its random numbers are the same with or without).
+    Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays, PathFeatures* features = nullptr) const;
 
     const PathOptions& options() const { return options_; }
     const MaterialTable& materials() const { return materials_; }

@@ -89,6 +89,12 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     };
     if (run.exact) print_error("the exact image", *run.exact);
     if (reference) print_error("the reference", *reference);
+    for (const ExtraImage& extra : run.extra_images) {
+        if (!reference || !extra.radiance) continue;
+        const ErrorMetrics e = compare(extra.image, *reference);
+        std::printf("  error of the %s image against the reference: RMSE %.5g, relative MSE %.5g, mean error %+.5g\n",
+                    extra.suffix.substr(1).c_str(), e.rmse, e.relative_mse, e.mean_error);
+    }
     std::printf("  image mean %.5g, all pixels finite: %s\n", r.image.mean(),
                 r.image.all_finite() ? "yes" : "NO");
     std::printf("  wrote %s\n", written.c_str());
@@ -166,6 +172,12 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // (x.film only when the run writes one: a piece of a render, or a resumed one.)
     std::vector<fs::path> outputs{png, pfm, partial_png, partial_pfm, with_suffix(png, ".partial", ".film")};
     if (!split.samples.empty() || !split.resume.empty()) outputs.push_back(with_suffix(png, "", ".film"));
+    std::vector<fs::path> pfms{pfm, partial_pfm};
+    for (const std::string& suffix : chapter.extra_images) {
+        pfms.push_back(with_suffix(png, suffix, ".pfm"));
+        pfms.push_back(with_suffix(png, ".partial" + suffix, ".pfm"));
+        outputs.insert(outputs.end(), pfms.end() - 2, pfms.end());
+    }
     for (const fs::path& path : outputs) {
         try {
             check_writable(path);
@@ -176,7 +188,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     std::optional<Image> reference;
     if (!options.reference.empty()) {
         const fs::path reference_file = options.reference;
-        for (const fs::path& output : {pfm, partial_pfm}) {
+        for (const fs::path& output : pfms) {
             if (same_file(reference_file, output)) {
                 throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
                                  shown(output) + "); give another --out or copy the reference");
@@ -231,7 +243,13 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     check_finite(r.image);
     const fs::path png_out = r.interrupted ? partial_png : png;
     const std::optional<Film> film = film_of(plan, r, mpi);
-    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr);
+    if (result->extra_images.size() != 0 && result->extra_images.size() != chapter.extra_images.size())
+        throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
+    for (std::size_t i = 0; i < result->extra_images.size(); ++i) {
+        if (result->extra_images[i].suffix != chapter.extra_images[i])
+            throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
+    }
+    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr, result->extra_images);
     // The summary speaks of every rank's samples, not rank 0's share.
     RenderSettings all_ranks = settings;
     all_ranks.samples = plan.whole;

@@ -13,6 +13,7 @@
 
 #include "rt/effect_set.hpp"
 #include "rt/image.hpp"
+#include "rt/output_files.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
 
@@ -34,6 +35,9 @@ struct ChapterInfo {
     const char* description;    // one line for --help
     const char* default_scene;  // file name in assets/scenes
     EffectSet supported;
+    // The suffixes of the further PFMs its runs write beside the image (x.SUFFIX.pfm), in the order of
+    // ChapterRun::extra_images; probed before the render like the image's own files.
+    std::vector<std::string> extra_images = {};
 };
 
 // What a chapter's render is given: the scene, the settings from it and the flags, and what to simulate.
@@ -43,12 +47,14 @@ struct RunContext {
     EffectSet simulated;
 };
 
-// What it gives back: the render, notes for the summary ("dielectric material 'glass': ..."), and an exact
-// image when the chapter knows one analytically.
+// What it gives back: the render, notes for the summary ("dielectric material 'glass': ..."), an exact
+// image when the chapter knows one analytically, and the further images of ChapterInfo::extra_images (none,
+// or one for each suffix).
 struct ChapterRun {
     RenderResult result;
     std::vector<std::string> notes;
     std::optional<Image> exact;
+    std::vector<ExtraImage> extra_images = {};
 };
 
 using ChapterFlags = std::function<void(CLI::App&)>;

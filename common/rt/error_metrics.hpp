@@ -13,5 +13,7 @@ struct ErrorMetrics {
 
 // Throws InputError when the sizes differ.
 ErrorMetrics compare(const Image& image, const Image& reference);
+// The same over the pixels of `region` only (a crop: the caustic under a glass sphere, a lamp's edge).
+ErrorMetrics compare(const Image& image, const Image& reference, const PixelRect& region);
 
 }  // namespace rt

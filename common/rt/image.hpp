@@ -44,4 +44,9 @@ private:
     std::vector<Color> pixels_;
 };
 
+// Pixels x in [x0, x1), y in [y0, y1).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 }  // namespace rt

@@ -1,5 +1,6 @@
 #include "rt/output_files.hpp"
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -34,22 +35,35 @@ void check_finite(const Image& image) {
     }
 }
 
-std::string write_outputs(const Image& image, const fs::path& png, const Film* film) {
+std::string write_outputs(const Image& image, const fs::path& png, const Film* film,
+                          const std::vector<ExtraImage>& extra) {
     const fs::path pfm = with_suffix(png, "", ".pfm"), film_path = with_suffix(png, "", ".film");
+    for (const ExtraImage& e : extra) check_finite(e.image);
     // Every file is written whole under its staging name first; then the renames, all or none.
     StagedFile png_file(png), pfm_file(pfm);
     write_staged(png_file, [&](std::FILE* file) { return encode_png(image, file); });
     write_staged(pfm_file, [&](std::FILE* file) { return encode_pfm(image, file); });
     std::vector<StagedFile*> files{&pfm_file, &png_file};
+    std::vector<fs::path> names{png, pfm};
+    std::vector<std::unique_ptr<StagedFile>> extra_files;
+    for (const ExtraImage& e : extra) {
+        names.push_back(with_suffix(png, e.suffix, ".pfm"));
+        extra_files.push_back(std::make_unique<StagedFile>(names.back()));
+        write_staged(*extra_files.back(), [&](std::FILE* file) { return encode_pfm(e.image, file); });
+        files.insert(files.begin(), extra_files.back().get());
+    }
     std::optional<StagedFile> film_file;
     if (film) {
         film_file.emplace(film_path);
         write_staged(*film_file, [&](std::FILE* file) { return encode_film(*film, file); });
         files.insert(files.begin(), &*film_file);
+        names.push_back(film_path);
     }
     commit_together(files);
-    return film ? shown(png) + ", " + shown(pfm) + " and " + shown(film_path)
-                : shown(png) + " and " + shown(pfm);
+    std::string written;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        written += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + shown(names[i]);
+    return written;
 }
 
 }  // namespace rt

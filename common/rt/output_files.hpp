@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "rt/film.hpp"
 #include "rt/image.hpp"
@@ -18,10 +19,18 @@ std::filesystem::path with_suffix(const std::filesystem::path& png, const std::s
 // (std::runtime_error, exit 1).
 void check_finite(const Image& image);
 
-// Writes the PNG, the PFM beside it and, given `film`, the film beside them (x.png, x.pfm, x.film): each is
-// first written whole under its staging name (staged_file.hpp), then all are renamed into place together,
-// with SIGINT and SIGTERM held back. Returns what it wrote, for the summary: "x.png and x.pfm" or "x.png,
-// x.pfm and x.film" (names quoted where they need it).
-std::string write_outputs(const Image& image, const std::filesystem::path& png, const Film* film = nullptr);
+// A further image a run writes beside its own, as x.SUFFIX.pfm (chapter 10's x.noisy.pfm, x.albedo.pfm).
+struct ExtraImage {
+    std::string suffix;  // ".noisy"
+    Image image;
+    bool radiance = false;  // an estimate of the same radiance: the summary measures it against --reference
+};
+
+// Writes the PNG, the PFM beside it, the `extra` PFMs and, given `film`, the film beside them (x.png, x.pfm,
+// x.SUFFIX.pfm, x.film): each is first written whole under its staging name (staged_file.hpp), then all are
+// renamed into place together, with SIGINT and SIGTERM held back. Returns what it wrote, for the summary:
+// "x.png and x.pfm" or "x.png, x.pfm and x.film" (names quoted where they need it).
+std::string write_outputs(const Image& image, const std::filesystem::path& png, const Film* film = nullptr,
+                          const std::vector<ExtraImage>& extra = {});
 
 }  // namespace rt

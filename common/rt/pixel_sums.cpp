@@ -1,5 +1,6 @@
 #include "rt/pixel_sums.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -49,6 +50,28 @@ std::uint64_t PixelSums::total_count() const {
     std::uint64_t total = 0;
     for (const PixelSum& p : pixels_) total += p.count;
     return total;
+}
+
+Color variance_of_mean(const PixelSum& sum, const PixelSum& squares) {
+    const double n = double(sum.count);
+    if (sum.count < 2) return Color(0);
+    Color variance;
+    for (std::size_t c = 0; c < 3; ++c) {
+        const double total = double(sum.channels[c]) * 0x1p-56;
+        const double total_squares = double(squares.channels[c]) * 0x1p-56;
+        const double s2 = (total_squares - total * total / n) / (n - 1);
+        variance[int(c)] = Real(std::max(s2, 0.0) / n);
+    }
+    return variance;
+}
+
+Image variance_image(const PixelSums& sums, const PixelSums& squares) {
+    if (squares.width() != sums.width() || squares.height() != sums.height())
+        throw std::logic_error("variance_image: the sums are of different sizes");
+    Image image(sums.width(), sums.height());
+    for (std::size_t i = 0; i < sums.pixels().size(); ++i)
+        image.pixels()[i] = variance_of_mean(sums.pixels()[i], squares.pixels()[i]);
+    return image;
 }
 
 }  // namespace rt

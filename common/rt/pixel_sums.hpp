@@ -99,4 +99,12 @@ class PixelSums {
     std::vector<PixelSum> pixels_;
 };
 
+// The variance of a pixel's mean, from the exact sums of its n samples x and of their squares x² (a layer of
+// squared samples beside the image, render_layers in render_loop.hpp), per channel:
+//   s² = (Σx² − (Σx)²/n) / (n − 1)   (the unbiased sample variance),   Var[mean] = s² / n;
+// 0 for fewer than two samples, and never below 0 (the sums are exact; the subtraction is in double).
+Color variance_of_mean(const PixelSum& sum, const PixelSum& squares);
+// Every pixel's variance of its mean.
+Image variance_image(const PixelSums& sums, const PixelSums& squares);
+
 }  // namespace rt

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 
 #include "rt/image.hpp"
 #include "rt/pixel_sums.hpp"
@@ -45,11 +46,6 @@ inline SampleRange samples_taken(const RenderSettings& settings) {
 // The samples of each pass after the first (which takes one per pixel) for a render of `samples` samples:
 // ⌈samples / 8⌉, at most 16.
 int pass_samples(int samples);
-
-// Pixels x in [x0, x1), y in [y0, y1).
-struct PixelRect {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
 
 struct RenderResult {
     Image image;     // each pixel the mean of its samples in `sums`
@@ -91,32 +87,64 @@ PixelSums starting_sums(const RenderSettings& settings);
 bool interrupted();  // interrupt_requested(), without interrupt.hpp in every chapter
 }  // namespace detail
 
-template <SampleFunction F>
-RenderResult render(const RenderSettings& settings, F&& sample) {
+// A sample that gives more than the image: layer 0 is its colour, the layers after it are summed beside the
+// image, each exactly into its own PixelSums (chapter 10's feature buffers and squared colours).
+template <typename F, std::size_t Layers>
+concept LayeredSampleFunction = requires(F f, const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+    { f(s, rng, rays) } -> std::convertible_to<std::array<Color, Layers>>;
+};
+
+// render() with `Extra` layers beside the image: sample() returns 1 + Extra colours, and layer k + 1 is
+// summed into extra[k] (resized to the image), with the same passes, interrupts and dropped partial passes as
+// the image. A render with layers takes all its samples from zero: settings.resume must be empty.
+template <std::size_t Extra, LayeredSampleFunction<1 + Extra> F>
+RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums, Extra>& extra, F&& sample) {
     PixelSums sums = detail::starting_sums(settings);
+    if constexpr (Extra > 0) {
+        if (settings.resume) throw std::logic_error("render_layers: a render with layers cannot be resumed");
+        for (PixelSums& layer : extra) layer = PixelSums(settings.width, settings.height);
+    }
     const int range_first = samples_taken(settings).first;
     const std::uint64_t width = std::uint64_t(settings.width);
     return detail::render_tiles(
         settings, sums, [&](int x0, int y0, int x1, int y1, int first, int end, RayCounts& rays) {
             // The pass is summed aside and kept only once whole.
-            std::array<PixelSum, std::size_t(detail::kTileSize * detail::kTileSize)> tile;
+            constexpr std::size_t kTilePixels = std::size_t(detail::kTileSize * detail::kTileSize);
+            std::array<PixelSum, kTilePixels> tile;
+            std::array<std::array<PixelSum, Extra>, kTilePixels> tile_extra;
+            auto in_tile = [&](int x, int y) { return std::size_t((y - y0) * detail::kTileSize + (x - x0)); };
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
                     PixelSum sum = sums.at(x, y);
+                    std::array<PixelSum, Extra>& layers = tile_extra[in_tile(x, y)];
+                    for (std::size_t k = 0; k < Extra; ++k) layers[k] = extra[k].at(x, y);
                     for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
                         if (detail::interrupted()) return false;
                         Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
-                        sum.add(Color(sample(PixelSample{x, y, s}, rng, rays)));
+                        const std::array<Color, 1 + Extra> values = sample(PixelSample{x, y, s}, rng, rays);
+                        sum.add(values[0]);
+                        for (std::size_t k = 0; k < Extra; ++k) layers[k].add(values[k + 1]);
                     }
-                    tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))] = sum;
+                    tile[in_tile(x, y)] = sum;
                 }
             }
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x)
-                    sums.at(x, y) = tile[std::size_t((y - y0) * detail::kTileSize + (x - x0))];
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    sums.at(x, y) = tile[in_tile(x, y)];
+                    for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = tile_extra[in_tile(x, y)][k];
+                }
+            }
             return true;
         });
+}
+
+template <SampleFunction F>
+RenderResult render(const RenderSettings& settings, F&& sample) {
+    std::array<PixelSums, 0> no_layers;
+    return render_layers(settings, no_layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        return std::array<Color, 1>{Color(sample(s, rng, rays))};
+    });
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 # Each piece's PNG and PFM are its own image; rt_merge writes PNG, PFM and film. Chapter 08's forward
 # tracer splats light paths, so it refuses --samples with one line (exit 2); its --tracer reverse is split.
 # Chapter 11 (the GPU) sums in float and refuses --samples too.
+# Chapter 10 denoises the whole image: it refuses --samples too, and --denoiser none (its noisy image) is split.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 pfm_check=$1
@@ -47,6 +48,11 @@ for exe in "$@"; do
         expect_bad_input "$name --samples" "$name: --samples: the GPU sums" 1 -- \
             "$exe" "${size[@]}" --samples 0:2 --out out.png
         continue
+    fi
+    if [[ $name == ch10_* ]]; then
+        expect_bad_input "$name denoised --samples" "$name: --samples: chapter 10 denoises the whole image" 1 -- \
+            "$exe" "${size[@]}" --samples 0:2 --out out.png
+        args+=(--denoiser none)
     fi
     dir="$scratch/$name" && mkdir -p "$dir" && cd "$dir" || exit 1
     render "$name whole" "$exe" "${args[@]}" --out whole.png

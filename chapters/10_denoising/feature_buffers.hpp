@@ -1,0 +1,33 @@
+// The feature buffers (AOVs) of a render: beside the noisy image, what each pixel's paths met at their first
+// vertex that is not a delta bounce (chapter 06's PathFeatures, recorded by the one path loop): the albedo,
+// the shading normal and the depth, having followed mirrors and glass as production renderers do. Each is the
+// mean over the pixel's samples, with the variance of that mean, from exact sums of the samples and of their
+// squares (rt/pixel_sums.hpp's variance_of_mean):
+//   Var[mean] = (Σx² − (Σx)²/n) / (n (n − 1)).
+// A denoiser is guided by them; an external one (Open Image Denoise, OptiX) can take them as they are.
+#pragma once
+
+#include "06_monte_carlo/path_tracer.hpp"
+#include "rt/image.hpp"
+#include "rt/render_loop.hpp"
+#include "rt/scene.hpp"
+
+namespace rt {
+
+struct FeatureBuffers {
+    Image colour, colour_variance;  // the noisy image and the variance of each pixel's mean, per channel
+    Image albedo, albedo_variance;
+    Image normal, normal_variance;  // the mean of unit normals (shorter where a pixel sees several)
+    Image depth, depth_variance;    // the same value in all three channels; 0 where every path left the scene
+};
+
+struct FeatureRender {
+    RenderResult result;  // its image is buffers.colour
+    FeatureBuffers buffers;
+};
+
+// Renders `scene` through chapter 06's path loop on chapter 07's material table (as ch07_bsdf_refraction does
+// when it traces paths), recording the features of every sample. Refuses (std::logic_error) a resumed render.
+FeatureRender render_features(const Scene& scene, const RenderSettings& settings, PathOptions options);
+
+}  // namespace rt

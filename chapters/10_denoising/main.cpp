@@ -1,0 +1,138 @@
+// Chapter 10: denoising. The path tracer of chapters 06 and 07 records feature buffers (albedo, normal,
+// depth at the first vertex that is not a delta bounce) and the variance of every pixel; a joint bilateral
+// filter or the edge-avoiding à-trous wavelet filter then smooths the noise within surfaces and keeps their
+// edges. `--out d.png` writes d.png and d.pfm (denoised), d.noisy.pfm, d.albedo.pfm and d.normal.pfm.
+// `--study` measures what the filters buy against a converged reference: error, SSIM, time, the samples plain
+// path tracing needs for the same error, the bias, and where denoising loses.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "09_participating_media/media_materials.hpp"
+#include "denoise_study.hpp"
+#include "denoiser.hpp"
+#include "feature_buffers.hpp"
+#include "rt/app.hpp"
+#include "rt/errors.hpp"
+
+namespace {
+
+using namespace rt;
+
+std::string describe(Denoiser denoiser, const DenoiseSettings& s) {
+    if (denoiser == Denoiser::kNone) return "none";
+    char text[200];
+    const EdgeStopping& e = denoiser == Denoiser::kBilateral ? s.bilateral.edges : s.atrous.edges;
+    if (denoiser == Denoiser::kAtrous) {
+        std::snprintf(text, sizeof text, "atrous (%d levels", s.atrous.levels);
+    } else {
+        std::snprintf(text, sizeof text, "bilateral (sigma_s %g px", double(s.bilateral.spatial));
+    }
+    std::string out = text;
+    std::snprintf(text, sizeof text, ", sigma colour %g, normal %g, depth %g, albedo %g)", double(e.colour),
+                  double(e.normal), double(e.depth), double(e.albedo));
+    return out + text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string denoiser_name = "atrous";
+    DenoiseSettings denoise_settings;
+    EdgeStopping edges;
+    bool study = false;
+    StudyOptions study_options;
+    const ChapterInfo chapter{"ch10_denoising",
+                              "Chapter 10: denoising: feature buffers and per-pixel variance from the path "
+                              "tracer, a joint bilateral and the edge-avoiding a-trous filter, measured",
+                              "ch10_default.json",
+                              EffectSet::all(),
+                              {".noisy", ".albedo", ".normal"}};
+    auto flags = [&](CLI::App& app) {
+        app.add_option("--denoiser", denoiser_name,
+                       "none|bilateral|atrous (default atrous: the best measured)")
+            ->check(CLI::IsMember({"none", "bilateral", "atrous"}));
+        app.add_option("--levels", denoise_settings.atrous.levels, "atrous: levels (taps 1, 2, 4, ... apart)")
+            ->check(CLI::Range(1, 12));
+        app.add_option("--sigma-spatial", denoise_settings.bilateral.spatial, "bilateral: sigma_s in pixels")
+            ->check(CLI::Range(0.5, 32.0));
+        app.add_option("--sigma-colour", edges.colour, "Edge stopping on colour, in standard deviations")
+            ->check(CLI::Range(0.0, 1e30));
+        app.add_option("--sigma-normal", edges.normal, "Edge stopping on the normal")
+            ->check(CLI::Range(0.0, 1e30));
+        app.add_option("--sigma-depth", edges.depth, "Edge stopping on depth, a fraction of it")
+            ->check(CLI::Range(0.0, 1e30));
+        app.add_option("--sigma-albedo", edges.albedo, "Edge stopping on the albedo")
+            ->check(CLI::Range(0.0, 1e30));
+        app.add_flag(
+            "--study", study,
+            "Measure the denoisers against a converged reference (error, SSIM, time, equal-error spp, "
+            "bias, failure regions) instead of rendering an image");
+        app.add_option("--reference-spp", study_options.reference_spp, "With --study: spp of the reference")
+            ->check(CLI::Range(1, 1 << 20));
+        app.add_option("--cache", study_options.cache, "With --study: folder of the cached reference PFM");
+        app.add_option("--runs", study_options.runs, "With --study: independent runs for the bias")
+            ->check(CLI::Range(2, 64));
+        app.add_option("--crops", study_options.crops,
+                       "With --study: write PNG crops of the failure regions into this folder");
+        app.add_flag("--sweeps", study_options.sweeps, "With --study: also sweep the filters' parameters");
+    };
+    auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
+        denoise_settings.bilateral.edges = edges;
+        denoise_settings.atrous.edges = edges;
+        denoise_settings.threads = context.settings.threads;
+        PathOptions options;
+        options.simulated = context.simulated;
+        const Denoiser denoiser = denoiser_from_string(denoiser_name);
+        // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same
+        // image as the noisy one of a whole render, without the features, to be merged by rt_merge.
+        const RenderSettings& settings = context.settings;
+        const SampleRange all{0, settings.samples_per_pixel};
+        if (settings.resume || (settings.samples && *settings.samples != all)) {
+            if (denoiser != Denoiser::kNone || study) {
+                throw InputError(
+                    "--samples: chapter 10 denoises the whole image, which a piece of it is not: --samples, "
+                    "--resume and several MPI ranks only with --denoiser none");
+            }
+            return ChapterRun{
+                render_with(Renderer::kPaths, context.scene, context.simulated, settings, options, media_materials()),
+                {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media; a piece of the render: "
+                 "no features, not denoised"},
+                std::nullopt};
+        }
+        if (!study && study_options.sweeps) throw InputError("--sweeps: only with --study");
+        if (!study && !study_options.crops.empty()) throw InputError("--crops: only with --study");
+        if (study) {
+            if (!std::filesystem::is_directory(study_options.cache))
+                throw InputError("--cache: " + study_options.cache + ": not a folder");
+            if (!study_options.crops.empty() && !std::filesystem::is_directory(study_options.crops))
+                throw InputError("--crops: " + study_options.crops + ": not a folder");
+            run_denoise_study(context.scene, context.settings, options, denoise_settings, study_options);
+            return std::nullopt;
+        }
+        FeatureRender rendered = render_features(context.scene, context.settings, options);
+        ChapterRun run{rendered.result,
+                       {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media, recording "
+                        "albedo, normal and depth at the first non-delta vertex"},
+                       std::nullopt};
+        if (rendered.result.interrupted) {
+            run.notes.push_back("interrupted: the partial image is written as it is, not denoised");
+            return run;
+        }
+        const Denoised denoised = denoise(rendered.buffers, denoiser, denoise_settings);
+        run.result.image = denoised.image;
+        char time[160];
+        std::snprintf(time, sizeof time, "filter time %.3f s (the render %.3f s: %.1f%% more)",
+                      denoised.seconds, rendered.result.seconds,
+                      100.0 * denoised.seconds / std::max(rendered.result.seconds, 1e-9));
+        run.notes.push_back("denoiser " + describe(denoiser, denoise_settings));
+        run.notes.push_back(time);
+        run.extra_images = {{".noisy", rendered.buffers.colour, true},
+                            {".albedo", rendered.buffers.albedo, false},
+                            {".normal", rendered.buffers.normal, false}};
+        return run;
+    };
+    return run_chapter(argc, argv, chapter, flags, render);
+}
