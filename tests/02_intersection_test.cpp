@@ -717,7 +717,7 @@ TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit thr
 }
 
 TEST_CASE("A quad packet gives intersect_quad's nearest hit bit for bit, on hard cases too",
-          "[stability][quad][ex:ch02.quad]") {
+          "[stability][quad][ex:ch02.quad][ex:ch02.quad_packet]") {
     Pcg32 rng(5, 11);
     auto random_vector = [&](Real size) {
         return Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * (2 * size) - size;
