@@ -322,7 +322,7 @@ TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square te
     CHECK(r.p_value > kAlphaPerTest);
 }
 
-TEST_CASE("A narrow cone and a sharp lobe keep sin theta: directions off their axis, inside the cone",
+TEST_CASE("A narrow cone and a sharp lobe keep sin theta, and a narrow cone tells inside from outside",
           "[stability][ex:ch04.power_cosine][ex:ch04.uniform_cone][ex:ch04.uniform_cone_pdf]") {
     // A cone of half-angle 1e-3 (1 − cos θmax = 5e-7, a few ulps of 1 in float) and a lobe of exponent 10⁷:
     // sin θ must come from 1 − cos θ, exactly as the lesson derives it, never from 1 − cos² θ in float.
@@ -344,9 +344,20 @@ TEST_CASE("A narrow cone and a sharp lobe keep sin theta: directions off their a
         CHECK(std::hypot(double(lobe.x), double(lobe.y)) ==
               Approx(std::sqrt(lobe_v * (2 - lobe_v))).epsilon(1e-3).margin(1e-12));
     }
-    // Just outside the cone, by 1 % of its half-angle: no density.
-    const double outside = 1.01 * half_angle;
-    CHECK(uniform_cone_pdf(Vec3(Real(std::sin(outside)), 0, Real(std::cos(outside))), one_minus_cos_max) == 0);
+    // Directions inside and outside cones of half-angle 1e-3 and 3e-4 (1 − cos θmax = 4.5e-8, under one ulp of
+    // 1: 1 − z in float is 0 or 6e-8 there, and only sin²θ / (1 + z) tells inside from outside).
+    for (const double cone : {1e-3, 3e-4}) {
+        const Real max = Real(2 * std::sin(cone / 2) * std::sin(cone / 2));
+        for (const double fraction : {0.5, 0.9, 0.99, 1.01, 1.1}) {
+            for (const double phi : {0.0, 1.0, 2.5}) {
+                const double theta = fraction * cone;
+                const Vec3 w(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                             Real(std::cos(theta)));
+                INFO("cone " << cone << ", at " << fraction << " of it, phi " << phi);
+                CHECK((uniform_cone_pdf(w, max) > 0) == (fraction < 1));
+            }
+        }
+    }
 }
 
 TEST_CASE("The frame of every normal is orthonormal, also near minus z", "[stability]") {
