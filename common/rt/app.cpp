@@ -25,12 +25,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void add_core_flags(CLI::App& app, CoreOptions& o) {
-    app.add_option("--scene", o.scene, "Scene file (JSON); default: the chapter's scene");
-    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm");
-    app.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, kMaxImageSide));
-    app.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, kMaxImageSide));
-    app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
+void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
+    const std::string executable = chapter.executable;
+    app.add_option("--scene", o.scene,
+                   "Scene file (JSON), or the name of one in assets/scenes/; default: " + std::string(chapter.default_scene));
+    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm; default: " +
+                   executable + ".png in the current folder");
+    app.add_option("--width", o.width, "Image width in pixels; default: the scene's image.width")
+        ->check(CLI::Range(1, kMaxImageSide));
+    app.add_option("--height", o.height, "Image height in pixels; default: the scene's image.height")
+        ->check(CLI::Range(1, kMaxImageSide));
+    app.add_option("--spp", o.spp, "Samples per pixel; default: the scene's image.spp")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
     app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
     app.add_option("--reference", o.reference, "Reference image (PFM) to measure the error against");
@@ -107,8 +113,9 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // second one removes any staging file of the output probes.
     install_interrupt_handler();
     CLI::App app(chapter.description, chapter.executable);
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default value
     CoreOptions options;
-    add_core_flags(app, options);
+    add_core_flags(app, options, chapter);
     SplitOptions split;
     add_split_flags(app, split);
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
@@ -126,7 +133,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
 
     const fs::path scene_file =
-        options.scene.empty() ? scene_path(chapter.default_scene) : fs::path(options.scene);
+        options.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(options.scene);
     const Scene scene = load_scene(scene_file);
     RenderSettings settings;
     settings.width = options.width.value_or(scene.image.width);
