@@ -14,6 +14,7 @@
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/output_files.hpp"
+#include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
 #include "rt/scene_loader.hpp"
@@ -39,12 +40,15 @@ void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
     app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
-    app.add_option("--reference", o.reference, "Reference image (PFM) to measure the error against");
+    app.add_option("--reference", o.reference,
+                   "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
+                   "picture (the image's picture is compared with it, and where they differ is shown)");
     app.add_flag("--quiet", o.quiet, "No progress bar");
 }
 
 void print_summary(const ChapterInfo& chapter, const RunContext& context, const EffectSet& needed,
-                   const ChapterRun& run, const std::optional<Image>& reference, const std::string& written) {
+                   const ChapterRun& run, const std::optional<Image>& reference,
+                   const std::optional<Picture>& reference_picture, const std::string& written) {
     const RenderResult& r = run.result;
     const RenderSettings& s = context.settings;
     std::printf("%s: %s, %dx%d, %d spp, seed %llu, %d threads\n", chapter.executable,
@@ -95,6 +99,11 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     };
     if (run.exact) print_error("the exact image", *run.exact);
     if (reference) print_error("the reference", *reference);
+    if (reference_picture) {
+        // A PNG reference holds what a PNG shows: the image's own picture is compared with it, level by level.
+        const PictureDifference d = compare_pictures(to_picture(r.image), *reference_picture, 0);
+        std::printf("  picture against the reference picture:\n%s", describe(d, "    ").c_str());
+    }
     std::printf("  image mean %.5g, all pixels finite: %s\n", r.image.mean(),
                 r.image.all_finite() ? "yes" : "NO");
     std::printf("  wrote %s\n", written.c_str());
@@ -181,6 +190,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         }
     }
     std::optional<Image> reference;
+    std::optional<Picture> reference_picture;  // a PNG reference
     if (!options.reference.empty()) {
         const fs::path reference_file = options.reference;
         for (const fs::path& output : {pfm, partial_pfm}) {
@@ -189,16 +199,31 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                  shown(output) + "); give another --out or copy the reference");
             }
         }
+        const bool png_reference = reference_file.extension() == ".png";
+        for (const fs::path& output : {png, partial_png}) {
+            if (png_reference && same_file(reference_file, output)) {
+                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
+                                 shown(output) + "); give another --out or copy the reference");
+            }
+        }
+        int width = 0, height = 0;
         try {
-            reference = read_pfm(reference_file, PfmPixels::kRadiance);
+            if (png_reference) {
+                reference_picture = read_png(reference_file);
+                width = reference_picture->width;
+                height = reference_picture->height;
+            } else {
+                reference = read_pfm(reference_file, PfmPixels::kRadiance);
+                width = reference->width();
+                height = reference->height();
+            }
         } catch (const InputError& e) {
             throw InputError(std::string("--reference: ") + e.what());
         }
-        if (reference->width() != settings.width || reference->height() != settings.height) {
+        if (width != settings.width || height != settings.height) {
             throw InputError("--reference: " + shown(reference_file) + ": must be the size of the image, " +
                              std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                             ", got " + std::to_string(reference->width()) + "x" +
-                             std::to_string(reference->height()));
+                             ", got " + std::to_string(width) + "x" + std::to_string(height));
         }
     }
 
@@ -243,7 +268,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     RenderSettings all_ranks = settings;
     all_ranks.samples = plan.whole;
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
-                  reference, written);
+                  reference, reference_picture, written);
     if (!r.interrupted && interrupt_requested()) {
         // The signal came once the render was done: the complete image was written all the same.
         std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
