@@ -93,6 +93,64 @@ TEST_CASE("Planes are hit from either side and never by a parallel ray", "[plane
     CHECK_FALSE(intersect_plane(Ray{{0, 1, 0}, {0, 1, 0}}, plane, kInfinity));
 }
 
+TEST_CASE("Both roots of a sphere in front of, around and behind the origin, in order, from both forms",
+          "[sphere][ex:ch02.sphere_stable][ex:ch02.sphere_textbook]") {
+    // A unit sphere 5 along the ray: roots 4 and 6; around the origin: −1 and 1; 5 behind: −6 and −4.
+    const Ray ray{{0, 0, 0}, {0, 0, -1}};
+    const struct {
+        Real z, t0, t1;
+    } cases[] = {{-5, 4, 6}, {0, -1, 1}, {5, -6, -4}};
+    for (const auto& c : cases) {
+        const Sphere sphere{{0, 0, c.z}, 1};
+        for (const auto& roots : {sphere_roots_stable(ray, sphere), sphere_roots_textbook(ray, sphere)}) {
+            INFO("sphere at z = " << c.z);
+            REQUIRE(roots);
+            CHECK(roots->t0 == Approx(c.t0));
+            CHECK(roots->t1 == Approx(c.t1));
+        }
+    }
+    CHECK_FALSE(sphere_roots_textbook(ray, Sphere{{0, 3, -5}, 1}));
+    CHECK_FALSE(intersect_sphere(ray, Sphere{{0, 0, 5}, 1}, kInfinity));  // behind: no hit
+}
+
+TEST_CASE("A triangle behind the ray's origin is not hit, by either test",
+          "[triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
+    const Triangle tri{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+    for (TriangleTest test : {TriangleTest::kWatertight, TriangleTest::kMollerTrumbore}) {
+        CHECK_FALSE(intersect_triangle(Ray{{0.25f, 0.25f, 0}, {0, 0, -1}}, tri, kInfinity, test));
+        CHECK(intersect_triangle(Ray{{0.25f, 0.25f, 0}, {0, 0, 1}}, tri, kInfinity, test));
+    }
+}
+
+TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it; a box behind is missed",
+          "[bvh][ex:ch02.slab_test]") {
+    // The box's own corner and edge points, from random origins far and near: the three slabs' distances are
+    // rounded apart, and only the exit's enlargement by 1 + 2γ₃ keeps the entry before it.
+    Pcg32 rng(17, 3);
+    int missed = 0, rays = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 lo = (Vec3{rng.next_real(), rng.next_real(), rng.next_real()} - Real(0.5)) * Real(200);
+        const Vec3 size = Vec3{rng.next_real(), rng.next_real(), rng.next_real()} * Real(10) + Real(0.01);
+        const Aabb box{lo, lo + size};
+        Vec3 target = lo;
+        for (int axis = 0; axis < 3; ++axis) {
+            const Real pick = rng.next_real();
+            target[axis] = pick < Real(0.4) ? box.min[axis] : pick < Real(0.8) ? box.max[axis]
+                                                             : box.min[axis] + rng.next_real() * size[axis];
+        }
+        const Vec3 origin = target + random_unit(rng) * (Real(1) + rng.next_real() * Real(1000));
+        const Vec3 d = glm::normalize(target - origin);
+        const bool inside = glm::all(glm::greaterThanEqual(origin, box.min)) && glm::all(glm::lessThanEqual(origin, box.max));
+        if (!is_finite(d) || inside) continue;
+        ++rays;
+        if (slab_entry(box, Ray{origin, d}, inverse_direction(d), kInfinity) == kInfinity) ++missed;
+        // The same box behind the origin.
+        if (slab_entry(box, Ray{origin, -d}, inverse_direction(-d), kInfinity) != kInfinity) ++missed;
+    }
+    INFO(rays << " rays");
+    CHECK(missed == 0);
+}
+
 TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics",
           "[triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
     const Triangle tri{{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};

@@ -284,6 +284,35 @@ TEST_CASE("The dielectric reflects with probability R and weighs transmission by
     }
 }
 
+TEST_CASE("A dielectric sample reports the probability of its lobe: R for reflection, 1 - R for transmission",
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    for (Real eta : {Real(kEta), Real(1 / kEta)}) {
+        const Vec3 wo = direction_at(deg(35));
+        const Real R = fresnel_dielectric(wo.z, eta);
+        for (Real u : {Real(0), Real(0.5) * R, Real(0.5) * (1 + R), kOneMinusEpsilon}) {
+            const DielectricSample s = sample_dielectric(wo, kUp, eta, u);
+            INFO("eta " << eta << ", u " << u);
+            CHECK(s.lobe == (u < R ? DielectricLobe::kReflection : DielectricLobe::kTransmission));
+            CHECK(s.probability == Approx(u < R ? R : 1 - R));
+        }
+    }
+}
+
+TEST_CASE("Schlick's approximation is reciprocal and reflects everything beyond the critical angle",
+          "[ex:ch07.fresnel_schlick][ex:ch07.refract]") {
+    // From outside at θ, and from inside at the refracted θ_t: the same reflectance (Schlick takes the angle
+    // on the less dense side both ways).
+    for (double degrees : {10.0, 30.0, 60.0, 80.0}) {
+        const double theta = deg(degrees);
+        const double theta_t = std::asin(std::sin(theta) / kEta);
+        INFO(degrees << " degrees");
+        CHECK(fresnel_schlick(Real(std::cos(theta)), Real(kEta)) ==
+              Approx(fresnel_schlick(Real(std::cos(theta_t)), Real(1 / kEta))).epsilon(1e-4));
+    }
+    // Inside glass, 50° from the normal, beyond the critical angle asin(1 / 1.5) = 41.8°: all reflects.
+    CHECK(fresnel_schlick(Real(std::cos(deg(50))), Real(1 / kEta)) == 1);
+}
+
 TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes everything, even at infinity",
           "[stability][ex:ch07.beer_lambert]") {
     const Color t = beer_lambert(Color(0, 1, 2), 0.5f);

@@ -304,7 +304,7 @@ def command_wrong(args: argparse.Namespace) -> int:
             if not passed:
                 problems.append(f"{e.name}: its tests fail with the right body:\n" + output[-2000:])
             continue
-        how = failed_test(output)
+        how = "" if passed else failed_test(output)
         if passed:
             problems.append(f"{s.source}: {s.key} is not caught by {e.chapter}_test \"[{TAG_PREFIX}{e.name}]\": "
                             f"{s.mistake}")
@@ -392,8 +392,8 @@ def main(argv: list[str]) -> int:
     w.add_argument("out", help="a scratch folder for the edition and its build (outside the repository)")
     w.add_argument("--only", help="these chapters or exercises only: ch04 or ch04.cosine_hemisphere")
     w.add_argument("-j", "--jobs", type=int, default=2, help="build jobs and tests run in parallel")
-    w.add_argument("--timeout", type=int, default=120, help="seconds a run may take; longer counts as caught "
-                   "(default 120)")
+    w.add_argument("--timeout", type=int, default=600, help="seconds a run may take; longer counts as caught "
+                   "(default 600)")
     w.add_argument("-v", "--verbose", action="store_true", help="name each wrong solution and the test catching it")
     args = parser.parse_args(argv)
     try:
