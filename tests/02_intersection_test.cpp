@@ -122,6 +122,38 @@ TEST_CASE("A triangle behind the ray's origin is not hit, by either test",
     }
 }
 
+TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane, never hits it again",
+          "[triangle][stability][ex:ch02.triangle_watertight]") {
+    // Long slivers far from the origin: the hit point o + t d lies off the plane by rounding, and a ray from it
+    // that leaves the plane on the side where it lies can still compute a tiny t > 0 for the same triangle.
+    // The watertight test accepts t only beyond its bound δt on the rounding of t.
+    Pcg32 rng(29, 8);
+    int leaving = 0, rehits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 centre = (Vec3{rng.next_real(), rng.next_real(), rng.next_real()} - Real(0.5)) * Real(2e4);
+        const Vec3 along = random_unit(rng) * Real(100), across = random_unit(rng) * Real(0.01);
+        const Triangle tri{centre - along, centre + along, centre + across};
+        const Vec3 target = centre + Real(0.4) * across + (rng.next_real() - Real(0.5)) * along;
+        const Vec3 origin = target + random_unit(rng) * Real(10);
+        const Ray ray{origin, glm::normalize(target - origin)};
+        const auto hit = intersect_triangle(ray, tri, kInfinity, TriangleTest::kWatertight);
+        if (!hit) continue;
+        const Vec3 p = ray.at(hit->t);
+        // Which side of the plane p lies on, in double (products of floats are exact there).
+        const Vec3d n = glm::cross(Vec3d(tri.p1) - Vec3d(tri.p0), Vec3d(tri.p2) - Vec3d(tri.p0));
+        const double side = glm::dot(n, Vec3d(p) - Vec3d(tri.p0));
+        if (side == 0) continue;
+        Vec3 d = random_unit(rng);
+        if ((glm::dot(Vec3d(d), n) > 0) != (side > 0)) d = -d;
+        if (glm::dot(Vec3d(d), n) == 0) continue;
+        ++leaving;
+        if (intersect_triangle(Ray{p, d}, tri, kInfinity, TriangleTest::kWatertight)) ++rehits;
+    }
+    INFO(leaving << " rays leaving");
+    CHECK(leaving > 10000);
+    CHECK(rehits == 0);
+}
+
 TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it; a box behind is missed",
           "[bvh][ex:ch02.slab_test]") {
     // The box's own corner and edge points, from random origins far and near: the three slabs' distances are

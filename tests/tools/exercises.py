@@ -279,7 +279,7 @@ def command_wrong(args: argparse.Namespace) -> int:
     out = Path(args.out).resolve()
     only = [o for o in (args.only or "").split(",") if o]
     exercises = generate(args.root, out, only, force=True, switchable=True)
-    wrong = load_wrong_solutions(args.root, exercises)
+    wrong = load_wrong_solutions(args.root, find_exercises(args.root))
     problems = [f"{e.where()}: exercise {e.name} has {len(wrong.get(e.name, []))} wrong solutions in "
                 f"tests/wrong_solutions/{e.chapter}.json; at least {MINIMUM_PER_EXERCISE} are needed"
                 for e in exercises if len(wrong.get(e.name, [])) < MINIMUM_PER_EXERCISE]

@@ -192,7 +192,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
         for path in sorted(out.rglob("*"), reverse=True):
             if path.is_file() and path not in wanted and not path.is_relative_to(out / "build"):
                 path.unlink()
-    wrong = load_wrong_solutions(root, chosen) if switchable else {}
+    wrong = load_wrong_solutions(root, all_exercises) if switchable else {}  # checked whole; used for `chosen`
     for relative in files:
         source = root / relative
         data = source.read_bytes()
