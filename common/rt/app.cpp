@@ -14,6 +14,7 @@
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/output_files.hpp"
+#include "rt/heat_maps.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
@@ -43,6 +44,9 @@ void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
     app.add_option("--reference", o.reference,
                    "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
                    "picture (the image's picture is compared with it, and where they differ is shown)");
+    app.add_option("--heat", o.heat,
+                   "Also write what each pixel cost (PNG): rays per sample | bounces per sample (path length) | "
+                   "samples, in false colour with their bars");
     app.add_flag("--quiet", o.quiet, "No progress bar");
 }
 
@@ -237,6 +241,20 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                 settings.seed};
     const SplitPlan plan = plan_split(split, identity, mpi, settings);
 
+    std::vector<PixelHeat> heat;
+    if (!options.heat.empty()) {
+        const fs::path heat_file = options.heat;
+        if (heat_file.extension() != ".png") throw InputError("--heat: must end in .png, got " + shown(heat_file));
+        if (same_file(heat_file, png) || same_file(heat_file, pfm))
+            throw InputError("--heat: " + shown(heat_file) + ": is the image this run writes; give another name");
+        try {
+            check_writable(heat_file);
+        } catch (const InputError& e) {
+            throw InputError(std::string("--heat: ") + e.what());
+        }
+        heat.resize(std::size_t(settings.width) * std::size_t(settings.height));
+        settings.heat = heat.data();
+    }
     const EffectSet needed_effects = needed(scene);
     const RunContext context{scene, settings, needed_effects & chapter.supported};
     std::optional<ChapterRun> result = render(context);
@@ -267,6 +285,10 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // The summary speaks of every rank's samples, not rank 0's share.
     RenderSettings all_ranks = settings;
     all_ranks.samples = plan.whole;
+    if (!heat.empty()) {
+        result->notes.push_back(write_heat_maps(heat, settings.width, settings.height, options.heat) +
+                                (mpi.size() > 1 ? " (this rank's samples)" : ""));
+    }
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
                   reference, reference_picture, written);
     if (!r.interrupted && interrupt_requested()) {

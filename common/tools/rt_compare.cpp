@@ -14,6 +14,7 @@
 
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
+#include "rt/false_colour.hpp"
 #include "rt/image_io.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
@@ -39,22 +40,6 @@ Input read_input(const std::string& name) {
     throw rt::InputError(rt::shown(path) + ": must end in .pfm or .png");
 }
 
-// The false colour of t in [0, 1]: black, blue, magenta, orange, yellow, white (an "inferno"-like ramp, dark
-// for small errors, bright for large ones).
-std::array<std::uint8_t, 3> false_colour(double t) {
-    constexpr std::array<std::array<double, 3>, 6> stops{
-        {{0, 0, 0}, {0.1, 0.1, 0.6}, {0.65, 0.15, 0.55}, {0.95, 0.45, 0.1}, {1, 0.85, 0.15}, {1, 1, 1}}};
-    t = std::clamp(t, 0.0, 1.0) * double(stops.size() - 1);
-    const std::size_t i = std::min(std::size_t(t), stops.size() - 2);
-    const double f = t - double(i);
-    std::array<std::uint8_t, 3> rgb{};
-    for (int c = 0; c < 3; ++c) {
-        const double v = stops[i][std::size_t(c)] * (1 - f) + stops[i + 1][std::size_t(c)] * f;
-        rgb[std::size_t(c)] = std::uint8_t(std::lround(v * 255));
-    }
-    return rgb;
-}
-
 // A | B | the per-pixel error (the largest channel's, in radiance for two PFMs, else in levels of 255) scaled
 // so that `scale` is white | a colour bar from 0 (bottom) to `scale` (top). 4-pixel grey gaps between.
 void write_side_by_side(const Input& a, const Input& b, const fs::path& out, double& scale) {
@@ -75,24 +60,18 @@ void write_side_by_side(const Input& a, const Input& b, const fs::path& out, dou
     const int width = 3 * w + 3 * gap + bar;
     rt::Image canvas(width, h);
     for (rt::Color& c : canvas.pixels()) c = rt::Color(rt::Real(0.2));
-    // Colours are written as display bytes: turn each back to the linear value that write_png encodes to it.
-    auto linear_of = [](std::uint8_t byte) {
-        const double v = byte / 255.0;
-        return rt::Real(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
-    };
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                canvas.at(x, y)[c] = linear_of(a.picture.at(x, y, c));
-                canvas.at(w + gap + x, y)[c] = linear_of(b.picture.at(x, y, c));
-            }
-            const auto rgb = false_colour(scale > 0 ? error[std::size_t(y) * std::size_t(w) + std::size_t(x)] / scale : 0);
-            for (int c = 0; c < 3; ++c) canvas.at(2 * (w + gap) + x, y)[c] = linear_of(rgb[std::size_t(c)]);
+            const auto pixel = [&](const rt::Picture& p) {
+                return rt::linear_of_display({p.at(x, y, 0), p.at(x, y, 1), p.at(x, y, 2)});
+            };
+            canvas.at(x, y) = pixel(a.picture);
+            canvas.at(w + gap + x, y) = pixel(b.picture);
+            const double e = error[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+            canvas.at(2 * (w + gap) + x, y) = rt::linear_of_display(rt::false_colour(scale > 0 ? e / scale : 0));
         }
-        const auto rgb = false_colour(h > 1 ? double(h - 1 - y) / double(h - 1) : 1);
-        for (int x = 0; x < bar; ++x)
-            for (int c = 0; c < 3; ++c) canvas.at(3 * (w + gap) + x, y)[c] = linear_of(rgb[std::size_t(c)]);
     }
+    rt::paint_colour_bar(canvas, 3 * (w + gap), bar);
     rt::write_png(canvas, out);
 }
 
