@@ -154,7 +154,7 @@ TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane,
     CHECK(rehits == 0);
 }
 
-TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it; a box behind is missed",
+TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it, and a box behind is missed",
           "[bvh][ex:ch02.slab_test]") {
     // The box's own corner and edge points, from random origins far and near: the three slabs' distances are
     // rounded apart, and only the exit's enlargement by 1 + 2γ₃ keeps the entry before it.
@@ -199,7 +199,7 @@ TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics",
 }
 
 TEST_CASE("The world returns the nearest of several shapes with a normal facing the ray",
-          "[world][ex:ch02.plane][ex:ch02.quad][ex:ch02.sphere_stable]") {
+          "[world][ex:ch02.plane][ex:ch02.quad][ex:ch02.quad_packet][ex:ch02.sphere_stable]") {
     std::vector<Shape> shapes;
     shapes.push_back({SphereShape{{0, 0, -10}, 1}, 0, "s"});
     shapes.push_back({QuadShape{{-1, -1, -5}, {2, 0, 0}, {0, 2, 0}}, 0, "q"});
@@ -226,7 +226,7 @@ TEST_CASE("The world returns the nearest of several shapes with a normal facing 
     }
 }
 
-TEST_CASE("A transformed box becomes six quads with outward normals", "[world]") {
+TEST_CASE("A transformed box becomes six quads with outward normals", "[world][ex:ch02.quad_packet]") {
     BoxShape box{{0, 0, 0}, {1, 2, 1}, {}};
     box.transform.rotate_degrees = {0, 90, 0};
     box.transform.translate = {10, 0, 0};
@@ -307,7 +307,8 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
           "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.plane]"
-          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
+          "[ex:ch02.quad_packet][ex:ch02.slab_test][ex:ch02.sphere_stable]"
+          "[ex:ch02.triangle_watertight]") {
     const Scene scene = load_scene(scene_path("ch02_default.json"));
     const World world(scene);
     RenderSettings settings{64, 36, 1, 1, 1, ProgressStyle::kNone};
@@ -564,7 +565,8 @@ TEST_CASE("Huge spheres, origins at the centre, inside and on the surface, tange
 }
 
 TEST_CASE("Hit points carry an error bound that contains the exact surface point",
-          "[stability][world][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
+          "[stability][world][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch02.triangle_watertight]") {
     Pcg32 rng(31, 2);
     std::vector<Shape> shapes;
     shapes.push_back({SphereShape{{1000.5f, -300.25f, 77.7f}, 13.3f}, 0, "sphere"});
@@ -627,8 +629,8 @@ TEST_CASE("The slab test handles zero direction components of either sign and fl
 }
 
 TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]["
-          "ex:ch02.triangle_watertight]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.quad_packet]"
+          "[ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
     Pcg32 rng(41, 7);
     std::vector<Shape> shapes;
     auto random_point = [&](Real size) {

@@ -694,8 +694,8 @@ TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
 }
 
 TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L, with shadows",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
     const World world(f.scene);
@@ -762,7 +762,10 @@ TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and 
 }
 
 TEST_CASE("A triangle lamp and a quad lamp light the floor as Lambert's formula says",
-          "[direct][statistical][ex:ch04.direct_light]") {
+          "[direct][statistical][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.triangle_watertight][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_triangle]") {
     // Each lamp alone over the floor (albedo 0.5): the floor's radiance under it is ρ/π E, E from
     // polygon_irradiance. Every kind of light must be summed: a lamp left out gives 0.
     const std::array<Vec3, 3> triangle{Vec3{-0.5f, 1.5f, -0.4f}, Vec3{0.5f, 1.5f, -0.6f}, Vec3{0.6f, 1.5f, 0.5f}};
@@ -799,8 +802,9 @@ TEST_CASE("A triangle lamp and a quad lamp light the floor as Lambert's formula 
 }
 
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.lambert_polygon]"
+          "[ex:ch04.sample_quad_light]") {
     FloorScene f;
     const int lamp = f.add_material(diffuse(Color(0), Color(10)));
     f.scene.shapes.push_back(shape(QuadShape{{-0.5f, 2, -0.5f}, {1, 0, 0}, {0, 0, 1}}, lamp));  // u × v = −y
@@ -830,8 +834,8 @@ TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra
 
 TEST_CASE("The analytic scene converges to its exact image without bias",
           "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
-          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.lambert_polygon]"
-          "[ex:ch04.sample_quad_light]") {
+          "[ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     Scene scene = load_scene(scene_path("ch04_analytic.json"));
     const MaterialTable materials(scene, EffectSet::all());
     const auto analytic = find_plane_under_quad(scene, materials);
@@ -865,8 +869,8 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
 }
 
 TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hit, for every kind of emitter",
-          "[lights][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.slab_test][ex:ch02.sphere_stable]"
-          "[ex:ch02.triangle_watertight]") {
+          "[lights][ex:ch02.bvh_traversal][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
     // Emitters of every kind among surfaces that emit nothing: a box (6 faces), a triangle, a sphere, a quad,
     // and an emissive plane (no light: infinite area).
     const Scene scene = parse_scene(R"({
@@ -929,10 +933,10 @@ TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hi
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal][ex:ch02.slab_test]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light]"
-          "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective][ex:ch04.sample_quad_light]"
-          "[ex:ch04.uniform_cone]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.bvh_traversal]"
+          "[ex:ch02.quad_packet][ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch04.cone_solid_angle][ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert]"
+          "[ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
     const Scene scene = load_scene(scene_path("ch04_default.json"));
     const LightSet lights = collect_lights(scene);
     CHECK(lights.quads.size() == 1);

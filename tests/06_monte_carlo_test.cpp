@@ -198,9 +198,10 @@ TEST_CASE("Points sampled on a triangle lie in its plane, and a quad's point is 
 }
 
 TEST_CASE("The pdf returned with a sample equals the pdf evaluated for its direction",
-          "[statistical][ex:ch02.sphere_stable][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]"
-          "[ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]") {
+          "[statistical][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch04.cone_solid_angle]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]"
+          "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_cone]") {
     Pcg32 rng(400, 1);
     for (const auto& [name, owner] : sampled_brdfs()) {
         const Bsdf& brdf = *owner;
@@ -478,11 +479,11 @@ TEST_CASE(
 }
 
 TEST_CASE("Every strategy converges to the same image on the chapter's scene",
-          "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch04.uniform_hemisphere_pdf]") {
+          "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     // The image cut into 2×2 blocks; each block's mean over kRuns independent renders, with its standard
     // error.
@@ -529,11 +530,11 @@ TEST_CASE("Every strategy converges to the same image on the chapter's scene",
 }
 
 TEST_CASE("MIS has far less error than uniform or cosine sampling for the same samples",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch04.uniform_hemisphere_pdf]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     const RenderResult reference = render_scene(scene, SamplingStrategy::kMis, 24, 256, 99, 2);
     // The relative MSE of error_metrics.hpp: the lamp's own edge, seen directly, does not swamp the rest.
@@ -552,11 +553,11 @@ TEST_CASE("MIS has far less error than uniform or cosine sampling for the same s
 TEST_CASE(
     "Ray counts: shadow rays only with light sampling, none without lights, the same image on 1 and 2 "
     "threads",
-    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-    "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.termination]"
-    "[ex:ch06.mis_weight][ex:ch06.path_tracer]"
-    "[ex:ch04.uniform_hemisphere_pdf]") {
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     const RenderResult one = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 1);
     const RenderResult two = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 2);
@@ -580,7 +581,9 @@ TEST_CASE(
 }
 
 TEST_CASE("Inside a closed box of emitters, emission 0.5 and albedo 0.5, every strategy sees Le / (1 - rho) = 1",
-          "[render][statistical][ex:ch06.path_tracer]") {
+          "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // Every point sees only walls of the same radiance L = Le + ρ L: L = 1 at every bounce, so a path whose
     // later vertices are weighed wrongly (its throughput left out of next-event estimation, a light counted
     // by both strategies) is off by a multiple of the light of those bounces.
