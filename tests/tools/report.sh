@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The accuracy/time report: runs every chapter's sweeps (the study modes of the chapter executables and the
-# benchmark programs), keeps their CSV, draws the plots with gnuplot and writes one page, report/index.md.
+# benchmark programs), keeps their CSV, draws the plots with gnuplot and writes one page, report/index.md, and
+# the same page as HTML beside it (report_html.py: pictures inline, numbers rounded, console output folded).
 #
 #   tests/tools/report.sh BUILD_DIR OUT_DIR [--quick] [--update-lessons]
 #
@@ -386,3 +387,9 @@ fi
 find "$out" -maxdepth 1 -name "*.pfm" -delete
 echo "_The report took $(( $(date +%s) - start )) s._" >> "$page"
 log "wrote $page in $(( $(date +%s) - start )) s"
+# The same page as HTML, to project in class: pictures inline, numbers rounded, console output folded.
+if command -v python3 > /dev/null; then
+    python3 "$source_dir/tests/tools/report_html.py" "$page"
+else
+    log "python3 not found: no index.html beside $page (install it: SUDO=\$(command -v sudo); \$SUDO apt-get install python3)"
+fi
