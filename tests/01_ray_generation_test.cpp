@@ -119,6 +119,22 @@ TEST_CASE("Stratified samples put one sample in each stratum", "[ch01][ex:ch01.p
     for (int h : hits) CHECK(h == 1);
 }
 
+TEST_CASE("A pixel sample: the centre, u within its stratum, and samples beyond the strata anywhere in it",
+          "[ch01][ex:ch01.pixel_sample]") {
+    // The centre sampler takes the pixel's centre, whatever u is.
+    CHECK(pixel_sample_point(PixelSampler::kCenter, 3, 4, 0, 1, Vec2(0.9f, 0.1f)) == Vec2(3.5f, 4.5f));
+    // Stratum i of n × n = 4 × 4 is [i % 4, i % 4 + 1) × [i / 4, i / 4 + 1) / 4, and u places the sample in it.
+    for (const Vec2 u : {Vec2(0.1f, 0.7f), Vec2(0.6f, 0.2f)}) {
+        const Vec2 p = pixel_sample_point(PixelSampler::kStratified, 3, 4, 6, 16, u);
+        CHECK(p.x == Approx(3 + (2 + u.x) / 4));
+        CHECK(p.y == Approx(4 + (1 + u.y) / 4));
+    }
+    // 5 samples: 2 × 2 strata, and the fifth uniform over the whole pixel.
+    const Vec2 fifth = pixel_sample_point(PixelSampler::kStratified, 3, 4, 4, 5, Vec2(0.3f, 0.8f));
+    CHECK(fifth.x == Approx(3.3));
+    CHECK(fifth.y == Approx(4.8));
+}
+
 TEST_CASE("Exact edge coverage: whole pixels, half pixels, and the film's total area", "[ch01]") {
     const PinholeCamera camera = make_pinhole_camera(looking_down_z(), 64, 48);
     const FilmEdge vertical = make_film_edge(camera, 0);  // normal = right: the right half of the film

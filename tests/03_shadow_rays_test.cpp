@@ -131,7 +131,7 @@ TEST_CASE("A shadow ray has a unit direction toward the target and stops short o
 }
 
 TEST_CASE("The exact visibility leaves out the shape the point lies on, and only that one",
-          "[ch03][ex:ch02.plane][ex:ch02.sphere_stable]") {
+          "[ch03][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable]") {
     Shape floor{PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0, "shapes[0]"};
     Shape box{BoxShape{{-1, 0, -1}, {1, 1, 1}, {}}, 0, "shapes[1]"};
     Shape ball{SphereShape{{5, 1, 0}, 1}, 0, "shapes[2]"};
@@ -286,8 +286,8 @@ SpawnCounts spawn_from(const Scene& scene, const RayOffset& offset, Real size, s
 
 TEST_CASE(
     "Rays spawned from spheres, quads, planes and triangles at coordinates 1e-3 to 1e5 never re-hit them",
-    "[ch03][stability][ex:ch02.plane][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]"
-    "[ex:ch03.robust_offset]") {
+    "[ch03][stability][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch02.triangle_watertight][ex:ch03.robust_offset]") {
     const RayOffset robust{}, epsilon{OffsetMethod::kEpsilon, Real(1e-4)}, none{OffsetMethod::kNone};
     for (Real s : {Real(1e-3), Real(1e-2), Real(1e-1), Real(1), Real(10), Real(1e2), Real(1e3), Real(1e4),
                    Real(1e5)}) {
@@ -433,8 +433,8 @@ TEST_CASE("A sphere of radius 1 inside one of radius 1 + 4e-5 is still found: of
 }
 
 TEST_CASE("The floor right under a box resting on it gets exactly zero light",
-          "[ch03][stability][ex:ch02.plane][ex:ch03.point_light][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray]") {
+          "[ch03][stability][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.point_light]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     Scene base = scene_of(
         {Shape{PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0, "floor"},
          Shape{BoxShape{{0, 0, 0}, {1, 0.8f, 1.2f}, {Vec3{1}, Vec3{0, 30, 0}, Vec3{0.37f, 0, -0.21f}}}, 0,
@@ -470,8 +470,8 @@ TEST_CASE("The floor right under a box resting on it gets exactly zero light",
 }
 
 TEST_CASE("A shadow ray to a point on a light stops before the light's own surface",
-          "[ch03][stability][ex:ch02.plane][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray]") {
+          "[ch03][stability][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     struct Setup {
         Real scale;
         Vec3 shift;

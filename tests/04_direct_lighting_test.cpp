@@ -25,8 +25,11 @@
 #include "rt/error_metrics.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
+#include "support/chi_square.hpp"
+#include "support/direction_warps.hpp"
 
 using namespace rt;
+using namespace rt::test;
 
 namespace {
 
@@ -214,6 +217,24 @@ TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflect
     CHECK(s.f.r * s.wi.z / s.pdf == Approx(0.9));  // the reflected fraction is the reflectance, <= 1
 }
 
+TEST_CASE("Every BRDF is 0 when wo or wi is below the surface, even inside its lobe",
+          "[brdf][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.retroreflective]") {
+    // wo 80° from the normal; wi 95° from it, 15° from the glossy lobe's axis (on the far side) or from the
+    // retro-reflective lobe's (on the near side): inside both lobes, but below the surface.
+    const Vec3 wo = polar(radians(80)), far_below = polar(radians(95), kPi), near_below = polar(radians(95));
+    for (const auto& [name, owner] : white_brdfs()) {
+        INFO(name);
+        const Bsdf& brdf = *owner;
+        for (const Vec3& wi : {far_below, near_below}) {
+            CHECK(eval(brdf, wo, wi, kUp) == Color(0));
+            CHECK(eval(brdf, wi, wo, kUp) == Color(0));
+        }
+    }
+    // A mirror seen from below the surface reflects nothing: its one direction is below too.
+    const BsdfSample s = sample(MirrorBrdf{Color(0.9f)}, polar(radians(100)), kUp, Vec2(0.5f));
+    CHECK(s.f == Color(0));
+}
+
 TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and finite near 0",
           "[brdf][stability][ex:ch04.glossy][ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]") {
     CHECK(phong_exponent(1) == 0);
@@ -228,6 +249,114 @@ TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and fin
         REQUIRE(std::isfinite(s.pdf));
         REQUIRE(is_finite(s.f));
         REQUIRE(is_finite(s.wi));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Sampling routines against their pdfs: chi-square goodness of fit (tests/support/chi_square.hpp), 10^6
+// samples each, fixed seeds; and the narrow cones and sharp lobes where float cancels
+
+namespace {
+
+// Every chi-square test of this file (hemisphere 1, cosine 1, cones 3, lobes 3, lights 3, triangle 1), each
+// run at the Šidák-corrected level.
+constexpr int kChiSquareTests = 12;
+const double kAlphaPerTest = test::sidak_level(kChiSquareTests, 0.01);
+
+}  // namespace
+
+TEST_CASE("Uniform hemisphere directions fit uniform_hemisphere_pdf, which integrates to 1",
+          "[statistical][ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf]") {
+    require_warps_fit({uniform_hemisphere_warp()}, 101, kAlphaPerTest);
+}
+
+TEST_CASE("Cosine-weighted directions fit cosine_hemisphere_pdf, which integrates to 1",
+          "[statistical][ex:ch04.cosine_hemisphere]") {
+    require_warps_fit({cosine_hemisphere_warp()}, 102, kAlphaPerTest);
+}
+
+TEST_CASE("Directions in cones of 20, 60 and 150 degrees fit uniform_cone_pdf, which integrates to 1",
+          "[statistical][ex:ch04.uniform_cone][ex:ch04.uniform_cone_pdf]") {
+    require_warps_fit(cone_warps(), 104, kAlphaPerTest);
+}
+
+TEST_CASE("Power-cosine lobes of exponent 0, 6 and 48 fit power_cosine_pdf, which integrates to 1",
+          "[statistical][ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]") {
+    require_warps_fit(power_cosine_warps(), 107, kAlphaPerTest);
+}
+
+TEST_CASE("Directions to a quad, a triangle and a sphere light fit their pdfs, which integrate to 1",
+          "[statistical][ex:ch04.cone_solid_angle][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+          "[ex:ch04.uniform_triangle][ex:ch04.uniform_cone_pdf]") {
+    require_warps_fit(light_warps(), 110, kAlphaPerTest);
+}
+
+TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square test",
+          "[statistical][ex:ch04.uniform_triangle]") {
+    // Cells of a 40×40 grid over the unit square of (b1, b2); the density is 2 on the triangle b1 + b2 <= 1.
+    constexpr int kSide = 40;
+    std::vector<double> observed(kSide * kSide, 0), expected(kSide * kSide, 0);
+    Pcg32 rng(300, 1);
+    long long bad = 0;
+    for (int s = 0; s < kDirectionSamples; ++s) {
+        const Vec2 b = sample_uniform_triangle(rng.next_vec2());
+        if (!(b.x >= 0 && b.y >= 0 && b.x + b.y <= 1 + 1e-6f)) {
+            ++bad;
+            continue;
+        }
+        const int i = std::min(kSide - 1, int(b.x * kSide)), j = std::min(kSide - 1, int(b.y * kSide));
+        observed[std::size_t(i * kSide + j)] += 1;
+    }
+    // The part of cell (i, j) under the diagonal b1 + b2 = 1, exactly: all of it when its far corner is
+    // under (i + j + 2 <= kSide), none when its near corner is on or above (i + j >= kSide), else half (the
+    // diagonal runs corner to corner through it).
+    for (int i = 0; i < kSide; ++i) {
+        for (int j = 0; j < kSide; ++j) {
+            const double inside = i + j + 2 <= kSide ? 1.0 : (i + j >= kSide ? 0.0 : 0.5);
+            expected[std::size_t(i * kSide + j)] = kDirectionSamples * 2.0 * inside / (kSide * kSide);
+        }
+    }
+    ChiSquare r = chi_square(observed, expected);
+    INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value);
+    CHECK(bad == 0);
+    CHECK(r.p_value > kAlphaPerTest);
+}
+
+TEST_CASE("A narrow cone and a sharp lobe keep sin theta, and a narrow cone tells inside from outside",
+          "[stability][ex:ch04.power_cosine][ex:ch04.uniform_cone][ex:ch04.uniform_cone_pdf]") {
+    // A cone of half-angle 1e-3 (1 − cos θmax = 5e-7, a few ulps of 1 in float) and a lobe of exponent 10⁷:
+    // sin θ must come from 1 − cos θ, exactly as the lesson derives it, never from 1 − cos² θ in float.
+    Pcg32 rng(31, 4);
+    const double half_angle = 1e-3;
+    const Real one_minus_cos_max = Real(2 * std::sin(half_angle / 2) * std::sin(half_angle / 2));
+    const double exponent = 1e7;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec2 u = rng.next_vec2();
+        const Vec3 w = sample_uniform_cone(u, one_minus_cos_max);
+        const double v = double(u.x) * double(one_minus_cos_max);  // 1 − cos θ
+        const double sin_exact = std::sqrt(v * (2 - v));
+        INFO("u = (" << u.x << ", " << u.y << ")");
+        CHECK(std::hypot(double(w.x), double(w.y)) == Approx(sin_exact).epsilon(1e-4).margin(1e-12));
+        CHECK(uniform_cone_pdf(w, one_minus_cos_max) > 0);
+        const Vec3 lobe = sample_power_cosine(u, Real(exponent));
+        // 1 − cos α = 1 − (1 − u₁)^(1/(e+1)), in double through expm1 and log1p.
+        const double lobe_v = -std::expm1(std::log1p(-double(u.x)) / (exponent + 1));
+        CHECK(std::hypot(double(lobe.x), double(lobe.y)) ==
+              Approx(std::sqrt(lobe_v * (2 - lobe_v))).epsilon(1e-3).margin(1e-12));
+    }
+    // Directions inside and outside cones of half-angle 1e-3 and 3e-4 (1 − cos θmax = 4.5e-8, under one ulp of
+    // 1: 1 − z in float is 0 or 6e-8 there, and only sin²θ / (1 + z) tells inside from outside).
+    for (const double cone : {1e-3, 3e-4}) {
+        const Real max = Real(2 * std::sin(cone / 2) * std::sin(cone / 2));
+        for (const double fraction : {0.5, 0.9, 0.99, 1.01, 1.1}) {
+            for (const double phi : {0.0, 1.0, 2.5}) {
+                const double theta = fraction * cone;
+                const Vec3 w(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                             Real(std::cos(theta)));
+                INFO("cone " << cone << ", at " << fraction << " of it, phi " << phi);
+                CHECK((uniform_cone_pdf(w, max) > 0) == (fraction < 1));
+            }
+        }
     }
 }
 
@@ -300,6 +429,22 @@ TEST_CASE("Lambert's polygon formula matches brute Monte Carlo, also clipped by 
         [&](const Ray& r) { return bool(intersect_triangle(r, tri, kInfinity, TriangleTest::kWatertight)); },
         seed);
     CHECK(std::abs(brute.mean - exact) <= 4 * brute.error);
+}
+
+TEST_CASE("A long rectangle over p, whose edges subtend more than 90 degrees, gives the exact irradiance",
+          "[irradiance][ex:ch04.lambert_polygon]") {
+    // The rectangle [−a, a] × [−b, b] at height h over p is four rectangles with a corner over p, each giving
+    // E = L/2 [A/√(1+A²) atan(B/√(1+A²)) + B/√(1+B²) atan(A/√(1+B²))], A = a/h, B = b/h (the form factor of a
+    // corner rectangle times π L). Seen from p, its long edges subtend about 167°.
+    const double a = 10, b = 1, h = 0.5, radiance = 3;
+    const double A = a / h, B = b / h;
+    const double corner = radiance / 2 *
+                          (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
+                           B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B)));
+    const Vec3d p{0.25, -0.5, 2};
+    const std::array<Vec3d, 4> corners{p + Vec3d(-a, -b, h), p + Vec3d(a, -b, h), p + Vec3d(a, b, h),
+                                       p + Vec3d(-a, b, h)};
+    CHECK(polygon_irradiance(corners, p, Vec3d(0, 0, 1), radiance) == Approx(4 * corner).epsilon(1e-9));
 }
 
 TEST_CASE("A sphere light fully above the horizon gives pi L (r/d)^2 cos theta",
@@ -549,8 +694,8 @@ TEST_CASE("Lights but only mirrors, or shadows switched off: zero shadow rays",
 }
 
 TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L, with shadows",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.lambert]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0.5f, 2, 0}, Color(8)});
     const World world(f.scene);
@@ -615,9 +760,50 @@ TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and 
     CHECK(a.image.pixels() == p.image.pixels());
 }
 
+TEST_CASE("A triangle lamp and a quad lamp light the floor as Lambert's formula says",
+          "[direct][statistical][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.triangle_watertight][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_triangle]") {
+    // Each lamp alone over the floor (albedo 0.5): the floor's radiance under it is ρ/π E, E from
+    // polygon_irradiance. Every kind of light must be summed: a lamp left out gives 0.
+    const std::array<Vec3, 3> triangle{Vec3{-0.5f, 1.5f, -0.4f}, Vec3{0.5f, 1.5f, -0.6f}, Vec3{0.6f, 1.5f, 0.5f}};
+    const Vec3 quad_origin{-0.5f, 1.5f, -0.5f}, quad_u{1, 0, 0}, quad_v{0, 0, 1};  // u × v = −y
+    for (const bool use_triangle : {true, false}) {
+        INFO((use_triangle ? "triangle lamp" : "quad lamp"));
+        FloorScene f;
+        const int lamp = f.add_material(diffuse(Color(0), Color(4)));
+        std::vector<Vec3d> corners;
+        if (use_triangle) {
+            // Wound so that its normal faces the floor.
+            f.scene.shapes.push_back(shape(TriangleShape{triangle}, lamp));
+            for (const Vec3& v : triangle) corners.push_back(Vec3d(v));
+        } else {
+            f.scene.shapes.push_back(shape(QuadShape{quad_origin, quad_u, quad_v}, lamp));
+            for (const Vec3& v : {quad_origin, quad_origin + quad_u, quad_origin + quad_u + quad_v,
+                                  quad_origin + quad_v})
+                corners.push_back(Vec3d(v));
+        }
+        const World world(f.scene);
+        DirectOptions options;
+        options.shadow_samples = 256;
+        const MaterialTable materials(f.scene, EffectSet::all());
+        const DirectLighting shading(world, materials, collect_lights(f.scene), options);
+        Pcg32 rng(72, 0);
+        RayCounts rays;
+        const Vec3 point{0.1f, 0, 0.05f};
+        const Real floor = shading.radiance(Ray{point + Vec3{0, 0.5f, 0}, {0, -1, 0}}, rng, rays).g;
+        const double exact =
+            0.5 / std::numbers::pi * polygon_irradiance(corners, Vec3d(point), Vec3d(0, 1, 0), 4);
+        CHECK(exact > 0.05);
+        CHECK(double(floor) == Approx(exact).epsilon(0.03));
+    }
+}
+
 TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra and full light",
-          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+          "[direct][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.lambert_polygon]"
+          "[ex:ch04.sample_quad_light]") {
     FloorScene f;
     const int lamp = f.add_material(diffuse(Color(0), Color(10)));
     f.scene.shapes.push_back(shape(QuadShape{{-0.5f, 2, -0.5f}, {1, 0, 0}, {0, 0, 1}}, lamp));  // u × v = −y
@@ -647,8 +833,8 @@ TEST_CASE("Soft shadows: a blocker under a quad light makes an umbra, a penumbra
 
 TEST_CASE("The analytic scene converges to its exact image without bias",
           "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
-          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.lambert_polygon]"
-          "[ex:ch04.sample_quad_light]") {
+          "[ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     Scene scene = load_scene(scene_path("ch04_analytic.json"));
     const MaterialTable materials(scene, EffectSet::all());
     const auto analytic = find_plane_under_quad(scene, materials);

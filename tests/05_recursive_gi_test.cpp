@@ -203,7 +203,7 @@ TEST_CASE("The furnace's closed forms: L_N = Le (1 - rho^(N+1)) / (1 - rho) tend
     CHECK(furnace_radiance(coloured).z == Approx(4));
 }
 
-TEST_CASE("The furnace scene is recognised, and the default scene is not", "[furnace]") {
+TEST_CASE("The furnace scene is recognised, and the default scene is not", "[furnace][ex:ch02.quad_packet]") {
     const Scene furnace_file = load_scene(scene_path("ch05_furnace.json"));
     const World world(furnace_file);
     const auto found = find_furnace(furnace_file, world);
@@ -230,8 +230,8 @@ DirectOptions indirect_rays_alone() {
 }
 
 TEST_CASE("Cut after N bounces, the furnace gives Le (1 - rho^(N+1)) / (1 - rho) within its error bars",
-          "[furnace][statistical][ex:ch03.robust_offset][ex:ch04.lambert][ex:ch04.uniform_hemisphere]"
-          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
+          "[furnace][statistical][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.lambert]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
     std::uint64_t seed = 600;
     for (Real rho : {0.2f, 0.5f, 0.8f}) {
         const Furnace furnace{Color(rho), Color(1.5f)};
@@ -257,8 +257,8 @@ TEST_CASE("Cut after N bounces, the furnace gives Le (1 - rho^(N+1)) / (1 - rho)
 }
 
 TEST_CASE("Russian roulette is unbiased in the furnace, the throughput rule is biased low",
-          "[furnace][statistical][ex:ch03.robust_offset][ex:ch04.lambert][ex:ch04.uniform_hemisphere]"
-          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
+          "[furnace][statistical][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.lambert]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
     std::uint64_t seed = 700;
     for (Real rho : {0.3f, 0.6f, 0.8f}) {
         INFO("rho " << rho);
@@ -279,8 +279,8 @@ TEST_CASE("Russian roulette is unbiased in the furnace, the throughput rule is b
 }
 
 TEST_CASE("Light sampling in the furnace: one bounce gives Le (1 + rho) where its samples are bounded",
-          "[furnace][statistical][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch05.trace]") {
+          "[furnace][statistical][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch05.trace]") {
     // Camera rays from the centre to the middle of the back wall (|x|, |y| <= 0.5): every wall sample is at
     // least 0.5 away, so f Le cos θ cos θ_l A / d² is bounded and the error bars hold.
     for (Real rho : {0.25f, 0.7f}) {
@@ -303,9 +303,10 @@ TEST_CASE("Light sampling in the furnace: one bounce gives Le (1 + rho) where it
 }
 
 TEST_CASE("Emission is counted once: light sampling and indirect rays alone agree on the Cornell box",
-          "[statistical][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
-          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
+          "[statistical][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter][ex:ch05.termination][ex:ch05.trace]"
+          "[ex:ch05.uniform_scatter]") {
     // With light sampling, an indirect ray that hits the lamp must not add its Le again; without it, indirect
     // rays must add it. Both estimate the same radiance, so their means agree within their error bars;
     // counting the lamp twice (or never) would add (or remove) the whole direct term of the back wall.
@@ -377,7 +378,8 @@ TEST_CASE("Mirror reflection: angle out equals angle in, in the plane of inciden
 }
 
 TEST_CASE("A mirror shows the lamp it faces at R times its radiance, through one reflection ray",
-          "[mirror][ex:ch03.robust_offset][ex:ch05.mirror_scatter][ex:ch05.termination][ex:ch05.trace]") {
+          "[mirror][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch05.mirror_scatter]"
+          "[ex:ch05.termination][ex:ch05.trace]") {
     // A mirror in the plane y = 0 facing up; a lamp (Le = 4, facing down) hangs where the reflection lands.
     const Color R(0.9f, 0.5f, 0.2f);
     Scene scene;
@@ -406,8 +408,8 @@ TEST_CASE("A mirror shows the lamp it faces at R times its radiance, through one
 }
 
 TEST_CASE("A mirror facing a mirror terminates under every rule",
-          "[mirror][stability][ex:ch03.robust_offset][ex:ch05.mirror_scatter][ex:ch05.termination]"
-          "[ex:ch05.trace]") {
+          "[mirror][stability][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch05.mirror_scatter]"
+          "[ex:ch05.termination][ex:ch05.trace]") {
     // Two parallel mirrors 1 apart and a ray perpendicular to both: it would bounce forever.
     auto facing_mirrors = [](Real reflectance) {
         Scene scene;
@@ -454,9 +456,10 @@ TEST_CASE("A mirror facing a mirror terminates under every rule",
 // Hard cases
 
 TEST_CASE("Grazing rays give finite radiance, never NaN",
-          "[stability][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
-          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
+          "[stability][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter][ex:ch05.termination][ex:ch05.trace]"
+          "[ex:ch05.uniform_scatter]") {
     // A lit room: a diffuse floor, a mirror wall and a lamp.
     Scene scene;
     scene.materials = {diffuse(Color(0.7f)), mirror(Color(0.95f)), diffuse(Color(0), Color(10))};
@@ -529,10 +532,10 @@ RenderResult render_scene(const Scene& scene, TerminationSettings termination, i
 
 TEST_CASE(
     "Ray counts follow the effects: without a mirror no reflection rays, without indirect no indirect rays",
-    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-    "[ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter][ex:ch05.termination][ex:ch05.trace]"
-    "[ex:ch05.uniform_scatter]") {
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
+          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
     const Scene cornell = load_scene(scene_path("ch05_default.json"));
     const TerminationSettings t = rule(Termination::kRussianRoulette, kSafetyDepthCap);
     const RenderResult all = render_scene(cornell, t, 24, 1, 1);
@@ -563,10 +566,10 @@ TEST_CASE(
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter][ex:ch05.termination][ex:ch05.trace]"
-          "[ex:ch05.uniform_scatter]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
+          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
     const Scene scene = load_scene(scene_path("ch05_default.json"));
     const TerminationSettings t = rule(Termination::kRussianRoulette, kSafetyDepthCap);
     const RenderResult one = render_scene(scene, t, 40, 2, 1);

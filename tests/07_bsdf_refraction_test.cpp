@@ -284,6 +284,35 @@ TEST_CASE("The dielectric reflects with probability R and weighs transmission by
     }
 }
 
+TEST_CASE("A dielectric sample reports the probability of its lobe: R for reflection, 1 - R for transmission",
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    for (Real eta : {Real(kEta), Real(1 / kEta)}) {
+        const Vec3 wo = direction_at(deg(35));
+        const Real R = fresnel_dielectric(wo.z, eta);
+        for (Real u : {Real(0), Real(0.5) * R, Real(0.5) * (1 + R), kOneMinusEpsilon}) {
+            const DielectricSample s = sample_dielectric(wo, kUp, eta, u);
+            INFO("eta " << eta << ", u " << u);
+            CHECK(s.lobe == (u < R ? DielectricLobe::kReflection : DielectricLobe::kTransmission));
+            CHECK(s.probability == Approx(u < R ? R : 1 - R));
+        }
+    }
+}
+
+TEST_CASE("Schlick's approximation is reciprocal and reflects everything beyond the critical angle",
+          "[ex:ch07.fresnel_schlick]") {
+    // From outside at θ, and from inside at the refracted θ_t: the same reflectance (Schlick takes the angle
+    // on the less dense side both ways).
+    for (double degrees : {10.0, 30.0, 60.0, 80.0}) {
+        const double theta = deg(degrees);
+        const double theta_t = std::asin(std::sin(theta) / kEta);
+        INFO(degrees << " degrees");
+        CHECK(fresnel_schlick(Real(std::cos(theta)), Real(kEta)) ==
+              Approx(fresnel_schlick(Real(std::cos(theta_t)), Real(1 / kEta))).epsilon(1e-4));
+    }
+    // Inside glass, 50° from the normal, beyond the critical angle asin(1 / 1.5) = 41.8°: all reflects.
+    CHECK(fresnel_schlick(Real(std::cos(deg(50))), Real(1 / kEta)) == 1);
+}
+
 TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes everything, even at infinity",
           "[stability][ex:ch07.beer_lambert]") {
     const Color t = beer_lambert(Color(0, 1, 2), 0.5f);
@@ -375,9 +404,10 @@ Scene glass_box(const std::string& effects) {
 }
 
 TEST_CASE("A scene without a dielectric traces no refraction rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -390,8 +420,9 @@ TEST_CASE("A scene without a dielectric traces no refraction rays",
 }
 
 TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 1: no indirect rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -405,10 +436,11 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
 
 TEST_CASE(
     "Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
-    "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -472,9 +504,10 @@ TEST_CASE(
 }
 
 TEST_CASE("A glass scene without lights traces no shadow rays",
-          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
     const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
@@ -487,8 +520,9 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
 // The default scene
 
 TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
@@ -507,8 +541,9 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
@@ -532,8 +567,9 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
 }
 
 TEST_CASE("With and without next-event estimation the glass box converges to the same image",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box("");

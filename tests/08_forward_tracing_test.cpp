@@ -221,29 +221,31 @@ TEST_CASE("Lights are picked by power, and the light paths' starting throughput 
 }
 
 TEST_CASE("Connecting light paths to the pinhole converges to chapter 06's image of the Cornell box",
-          "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const StudyScene s(load_scene(scene_path("ch06_default.json")), 16, 16);
     check_forward_matches_reverse(s, 1024);
 }
 
 TEST_CASE(
     "Connecting light paths to the pinhole converges to chapter 06's image of a room lit by a point light",
-    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-    "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch08.connect]"
-    "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+          "[ex:ch06.uniform_sphere][ex:ch08.connect][ex:ch08.pinhole_importance]"
+          "[ex:ch08.project_direction]") {
     const StudyScene s(scene_from(kPointLightRoom), 12, 12);
     check_forward_matches_reverse(s, 1024);
 }
 
 TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind it from the light tracer",
-          "[ch08][statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08][statistical][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     Scene with = default_scene_with_glass([](Material& m) { m.ior = 1; });
     Scene without = with;
     without.shapes.pop_back();  // the sphere is the last shape
@@ -294,8 +296,8 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
 }
 
 TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through the pinhole connection",
-          "[ch08][statistical][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08][statistical][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     // A lamp of radiance 1, larger than the view (half-height 10 tan 20° = 3.6), 10 units in front of the
     // camera: every pixel is 1.
     const StudyScene s(scene_from(R"({
@@ -325,8 +327,9 @@ TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through th
 }
 
 TEST_CASE("A light path that never reaches the camera contributes nothing",
-          "[ch08][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch05.termination][ex:ch08.connect][ex:ch08.project_direction]") {
+          "[ch08][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch08.connect]"
+          "[ex:ch08.project_direction]") {
     SECTION("the light faces away from everything") {
         const StudyScene s(scene_from(R"({
           "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
@@ -364,10 +367,10 @@ TEST_CASE("A light path that never reaches the camera contributes nothing",
 }
 
 TEST_CASE("Light tracing counts its rays by kind and traces only the effects the scene calls for",
-          "[ch08][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.mirror][ex:ch05.termination]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.mirror]"
+          "[ex:ch05.termination][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const Scene cornell = load_scene(scene_path("ch06_default.json"));
     SECTION("every path leaves its light once: one shadow-kind ray per path; no mirror, no reflection rays") {
         const StudyScene s(cornell, 8, 8);
@@ -431,10 +434,10 @@ TEST_CASE("Light tracing counts its rays by kind and traces only the effects the
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical for 1, 2 and 3 threads",
-          "[ch08][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
-          "[ex:ch08.project_direction]") {
+          "[ch08][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const StudyScene s(load_scene(scene_path("ch08_default.json")), 24, 24);
     const ForwardTracer tracer_f(s, needed(s.scene));
     const LightTracer& tracer = tracer_f.tracer;
@@ -619,11 +622,11 @@ TEST_CASE(
 TEST_CASE(
     "Light paths through rough glass converge to chapter 06's image: forward and reverse agree within "
     "error bars",
-    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-    "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
-    "[ex:ch08.project_direction]") {
+    "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect
     // to the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
     const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);

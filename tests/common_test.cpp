@@ -17,6 +17,7 @@
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/picture_compare.hpp"
 #include "rt/random.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene_loader.hpp"
@@ -420,4 +421,37 @@ TEST_CASE("The error over a region is the error of the crop", "[metrics]") {
     CHECK(region.relative_mse == cropped.relative_mse);
     CHECK(region.mean_error == cropped.mean_error);
     CHECK_THROWS(compare(image, reference, PixelRect{2, 1, 7, 3}));
+}
+
+TEST_CASE("Pictures: a PNG reads back as written, and a comparison counts, bounds and maps the pixels that differ",
+          "[image]") {
+    Image image(16, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x) image.at(x, y) = Color(Real(x) / 15, Real(y) / 7, 0.5f);
+    const auto path = std::filesystem::temp_directory_path() / ("rt_picture_" + std::to_string(getpid()) + ".png");
+    write_png(image, path);
+    const Picture read = read_png(path);
+    std::filesystem::remove(path);
+    const Picture made = to_picture(image);
+    CHECK(read.width == 16);
+    CHECK(read.height == 8);
+    CHECK(read.rgb == made.rgb);
+    const PictureDifference same = compare_pictures(read, made, 0);
+    CHECK(same.differing == 0);
+    CHECK(same.largest == 0);
+    // Two pixels changed, in the top left and bottom right regions, by 3 and 40 levels.
+    Picture changed = made;
+    changed.rgb[(1 * 16 + 1) * 3] = std::uint8_t(changed.rgb[(1 * 16 + 1) * 3] + 3);
+    changed.rgb[(7 * 16 + 14) * 3 + 2] = std::uint8_t(changed.rgb[(7 * 16 + 14) * 3 + 2] - 40);
+    const PictureDifference d = compare_pictures(changed, made, 0);
+    CHECK(d.differing == 2);
+    CHECK(d.largest == 40);
+    CHECK((d.min_x == 1 && d.min_y == 1 && d.max_x == 14 && d.max_y == 7));
+    CHECK(compare_pictures(changed, made, 3).differing == 1);  // the 3-level change is within tolerance
+    const std::string text = describe(d, "");
+    CHECK(text.find("2 of 128 pixels differ by more than 0 of 255") != std::string::npos);
+    // The 8 × 8 map: region (0, 0) and region (7, 7), each of 2 pixels, half of which differ.
+    CHECK(text.find("|#       |") != std::string::npos);
+    CHECK(text.find("|       #|") != std::string::npos);
+    CHECK_THROWS_AS(compare_pictures(to_picture(Image(4, 4)), made, 0), InputError);
 }

@@ -38,6 +38,7 @@ struct PacketHit {
 
 // Inline for the reason intersect_quad is.
 inline std::optional<PacketHit> intersect_quad_packet(const Ray& ray, const QuadPacket& packet, Real t_max) {
+    // EXERCISE(ch02.quad_packet)
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     const auto& origin = packet.origin;
@@ -59,6 +60,7 @@ inline std::optional<PacketHit> intersect_quad_packet(const Ray& ray, const Quad
     std::experimental::where(hit, nearest) = t;
     const int lane = std::experimental::find_first_set(nearest == std::experimental::hmin(nearest));
     return PacketHit{lane, {t[lane], {a[lane], b[lane]}}};
+    // END EXERCISE
 }
 
 }  // namespace rt

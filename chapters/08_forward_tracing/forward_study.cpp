@@ -97,9 +97,11 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     if (!o.csv.empty()) {
         csv.open(o.csv);
         if (!csv) throw InputError("--csv: " + o.csv + ": cannot be written");
-        csv << "reverse_strategy,spp,reverse_rmse,reverse_seconds,forward_seconds_to_same_rmse,ratio\n";
+        // One row per render, forward and reverse alike, in named columns; only a reverse row has the
+        // forward time to its RMSE and the ratio.
+        csv << "tracer,spp,rmse,seconds,forward_seconds_to_same_rmse,forward_over_reverse\n";
         for (const TimedRmse& f : forward)
-            csv << "forward," << f.spp << ',' << f.rmse << ',' << f.seconds << ",,\n";
+            csv << "forward (connect)," << f.spp << ',' << f.rmse << ',' << f.seconds << ",,\n";
     }
     std::printf("\n%-22s %6s %12s %10s %18s %12s\n", "reverse (chapter 06)", "spp", "RMSE", "time (s)",
                 "forward to same", "forward/rev.");
@@ -115,7 +117,7 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
                         (std::string("path tracer, ") + std::string(to_string(strategy))).c_str(), spp, rmse,
                         r.seconds, t, t / r.seconds);
             if (csv)
-                csv << to_string(strategy) << ',' << spp << ',' << rmse << ',' << r.seconds << ',' << t << ','
+                csv << "reverse (" << to_string(strategy) << ")," << spp << ',' << rmse << ',' << r.seconds << ',' << t << ','
                     << t / r.seconds << '\n';
         }
     }

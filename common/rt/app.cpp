@@ -14,6 +14,8 @@
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/output_files.hpp"
+#include "rt/heat_maps.hpp"
+#include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
 #include "rt/scene_loader.hpp"
@@ -25,20 +27,32 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void add_core_flags(CLI::App& app, CoreOptions& o) {
-    app.add_option("--scene", o.scene, "Scene file (JSON); default: the chapter's scene");
-    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm");
-    app.add_option("--width", o.width, "Image width in pixels")->check(CLI::Range(1, kMaxImageSide));
-    app.add_option("--height", o.height, "Image height in pixels")->check(CLI::Range(1, kMaxImageSide));
-    app.add_option("--spp", o.spp, "Samples per pixel")->check(CLI::Range(1, kMaxSamplesPerPixel));
+void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
+    const std::string executable = chapter.executable;
+    app.add_option("--scene", o.scene,
+                   "Scene file (JSON), or the name of one in assets/scenes/; default: " + std::string(chapter.default_scene));
+    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm; default: " +
+                   executable + ".png in the current folder");
+    app.add_option("--width", o.width, "Image width in pixels; default: the scene's image.width")
+        ->check(CLI::Range(1, kMaxImageSide));
+    app.add_option("--height", o.height, "Image height in pixels; default: the scene's image.height")
+        ->check(CLI::Range(1, kMaxImageSide));
+    app.add_option("--spp", o.spp, "Samples per pixel; default: the scene's image.spp")
+        ->check(CLI::Range(1, kMaxSamplesPerPixel));
     app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
-    app.add_option("--reference", o.reference, "Reference image (PFM) to measure the error against");
+    app.add_option("--reference", o.reference,
+                   "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
+                   "picture (the image's picture is compared with it, and where they differ is shown)");
+    app.add_option("--heat", o.heat,
+                   "Also write what each pixel cost (PNG): rays per sample | bounces per sample (path length) | "
+                   "samples, in false colour with their bars");
     app.add_flag("--quiet", o.quiet, "No progress bar");
 }
 
 void print_summary(const ChapterInfo& chapter, const RunContext& context, const EffectSet& needed,
-                   const ChapterRun& run, const std::optional<Image>& reference, const std::string& written) {
+                   const ChapterRun& run, const std::optional<Image>& reference,
+                   const std::optional<Picture>& reference_picture, const std::string& written) {
     const RenderResult& r = run.result;
     const RenderSettings& s = context.settings;
     std::printf("%s: %s, %dx%d, %d spp, seed %llu, %d threads\n", chapter.executable,
@@ -95,6 +109,11 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
         std::printf("  error of the %s image against the reference: RMSE %.5g, relative MSE %.5g, mean error %+.5g\n",
                     extra.suffix.substr(1).c_str(), e.rmse, e.relative_mse, e.mean_error);
     }
+    if (reference_picture) {
+        // A PNG reference holds what a PNG shows: the image's own picture is compared with it, level by level.
+        const PictureDifference d = compare_pictures(to_picture(r.image), *reference_picture, 0);
+        std::printf("  picture against the reference picture:\n%s", describe(d, "    ").c_str());
+    }
     std::printf("  image mean %.5g, all pixels finite: %s\n", r.image.mean(),
                 r.image.all_finite() ? "yes" : "NO");
     std::printf("  wrote %s\n", written.c_str());
@@ -113,8 +132,9 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // second one removes any staging file of the output probes.
     install_interrupt_handler();
     CLI::App app(chapter.description, chapter.executable);
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default value
     CoreOptions options;
-    add_core_flags(app, options);
+    add_core_flags(app, options, chapter);
     SplitOptions split;
     add_split_flags(app, split);
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
@@ -132,7 +152,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
 
     const fs::path scene_file =
-        options.scene.empty() ? scene_path(chapter.default_scene) : fs::path(options.scene);
+        options.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(options.scene);
     const Scene scene = load_scene(scene_file);
     RenderSettings settings;
     settings.width = options.width.value_or(scene.image.width);
@@ -186,6 +206,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         }
     }
     std::optional<Image> reference;
+    std::optional<Picture> reference_picture;  // a PNG reference
     if (!options.reference.empty()) {
         const fs::path reference_file = options.reference;
         for (const fs::path& output : pfms) {
@@ -194,16 +215,31 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                  shown(output) + "); give another --out or copy the reference");
             }
         }
+        const bool png_reference = reference_file.extension() == ".png";
+        for (const fs::path& output : {png, partial_png}) {
+            if (png_reference && same_file(reference_file, output)) {
+                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
+                                 shown(output) + "); give another --out or copy the reference");
+            }
+        }
+        int width = 0, height = 0;
         try {
-            reference = read_pfm(reference_file, PfmPixels::kRadiance);
+            if (png_reference) {
+                reference_picture = read_png(reference_file);
+                width = reference_picture->width;
+                height = reference_picture->height;
+            } else {
+                reference = read_pfm(reference_file, PfmPixels::kRadiance);
+                width = reference->width();
+                height = reference->height();
+            }
         } catch (const InputError& e) {
             throw InputError(std::string("--reference: ") + e.what());
         }
-        if (reference->width() != settings.width || reference->height() != settings.height) {
+        if (width != settings.width || height != settings.height) {
             throw InputError("--reference: " + shown(reference_file) + ": must be the size of the image, " +
                              std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                             ", got " + std::to_string(reference->width()) + "x" +
-                             std::to_string(reference->height()));
+                             ", got " + std::to_string(width) + "x" + std::to_string(height));
         }
     }
 
@@ -217,6 +253,20 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                 settings.seed};
     const SplitPlan plan = plan_split(split, identity, mpi, settings);
 
+    std::vector<PixelHeat> heat;
+    if (!options.heat.empty()) {
+        const fs::path heat_file = options.heat;
+        if (heat_file.extension() != ".png") throw InputError("--heat: must end in .png, got " + shown(heat_file));
+        if (same_file(heat_file, png) || same_file(heat_file, pfm))
+            throw InputError("--heat: " + shown(heat_file) + ": is the image this run writes; give another name");
+        try {
+            check_writable(heat_file);
+        } catch (const InputError& e) {
+            throw InputError(std::string("--heat: ") + e.what());
+        }
+        heat.resize(std::size_t(settings.width) * std::size_t(settings.height));
+        settings.heat = heat.data();
+    }
     const EffectSet needed_effects = needed(scene);
     const RunContext context{scene, settings, needed_effects & chapter.supported};
     std::optional<ChapterRun> result = render(context);
@@ -253,8 +303,12 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     // The summary speaks of every rank's samples, not rank 0's share.
     RenderSettings all_ranks = settings;
     all_ranks.samples = plan.whole;
+    if (!heat.empty()) {
+        result->notes.push_back(write_heat_maps(heat, settings.width, settings.height, options.heat) +
+                                (mpi.size() > 1 ? " (this rank's samples)" : ""));
+    }
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
-                  reference, written);
+                  reference, reference_picture, written);
     if (!r.interrupted && interrupt_requested()) {
         // The signal came once the render was done: the complete image was written all the same.
         std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",

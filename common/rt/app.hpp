@@ -27,6 +27,7 @@ struct CoreOptions {
     std::uint64_t seed = 1;
     int threads = 0;
     std::string reference;
+    std::string heat;  // --heat FILE.png: the per-pixel heat maps (heat_maps.hpp); empty: none
     bool quiet = false;
 };
 

@@ -36,6 +36,17 @@ struct RenderSettings {
     // Sums to continue (--resume; not owned): pixel p already holds samples first … first + count − 1 of
     // `samples`, and the render takes the rest.
     const PixelSums* resume = nullptr;
+    // When set (--heat; not owned, width × height): each pixel's rays, bounces and samples of this run are
+    // added here, pass by pass as its sums are kept.
+    struct PixelHeat* heat = nullptr;
+};
+
+// What a pixel's samples cost: the rays they traced (every kind), the bounces among them (reflection,
+// refraction and indirect rays: the path length beyond the first hit) and the samples taken.
+struct PixelHeat {
+    std::uint64_t rays = 0;
+    std::uint64_t bounces = 0;
+    std::uint64_t samples = 0;
 };
 
 // The samples a render with these settings takes.
@@ -112,13 +123,16 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
             constexpr std::size_t kTilePixels = std::size_t(detail::kTileSize * detail::kTileSize);
             std::array<PixelSum, kTilePixels> tile;
             std::array<std::array<PixelSum, Extra>, kTilePixels> tile_extra;
-            auto in_tile = [&](int x, int y) { return std::size_t((y - y0) * detail::kTileSize + (x - x0)); };
+            std::array<PixelHeat, kTilePixels> heat{};
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
+                    const std::size_t slot = std::size_t((y - y0) * detail::kTileSize + (x - x0));
                     PixelSum sum = sums.at(x, y);
-                    std::array<PixelSum, Extra>& layers = tile_extra[in_tile(x, y)];
+                    std::array<PixelSum, Extra>& layers = tile_extra[slot];
                     for (std::size_t k = 0; k < Extra; ++k) layers[k] = extra[k].at(x, y);
+                    const RayCounts before = rays;
+                    const std::uint64_t count_before = sum.count;
                     for (int s = std::max(first, range_first + int(sum.count)); s < end; ++s) {
                         if (detail::interrupted()) return false;
                         Pcg32 rng = Pcg32::for_sample(pixel, std::uint64_t(s), settings.seed);
@@ -126,13 +140,27 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
                         sum.add(values[0]);
                         for (std::size_t k = 0; k < Extra; ++k) layers[k].add(values[k + 1]);
                     }
-                    tile[in_tile(x, y)] = sum;
+                    tile[slot] = sum;
+                    if (settings.heat) {
+                        auto traced = [&](RayKind k) { return rays[k] - before[k]; };
+                        heat[slot] = {rays.total() - before.total(),
+                                      traced(RayKind::kReflection) + traced(RayKind::kRefraction) +
+                                          traced(RayKind::kIndirect),
+                                      std::uint64_t(sum.count - count_before)};
+                    }
                 }
             }
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
-                    sums.at(x, y) = tile[in_tile(x, y)];
-                    for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = tile_extra[in_tile(x, y)][k];
+                    const std::size_t slot = std::size_t((y - y0) * detail::kTileSize + (x - x0));
+                    sums.at(x, y) = tile[slot];
+                    for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = tile_extra[slot][k];
+                    if (settings.heat) {
+                        PixelHeat& h = settings.heat[std::size_t(y) * width + std::size_t(x)];
+                        h.rays += heat[slot].rays;
+                        h.bounces += heat[slot].bounces;
+                        h.samples += heat[slot].samples;
+                    }
                 }
             }
             return true;

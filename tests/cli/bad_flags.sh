@@ -87,6 +87,22 @@ check "--reference: $scratch/ref/crlf.pfm: PFM header must end in one whitespace
 cp "$scratch/ref/mine.pfm" "$scratch/ref/mine.before"
 check "--reference: $scratch/ref/mine.pfm: is the file this run writes ($scratch/ref/mine.pfm); give another --out or copy the reference" "${small[@]}" --out "$scratch/ref/mine.png" --reference "$scratch/ref/mine.pfm"
 cmp -s "$scratch/ref/mine.pfm" "$scratch/ref/mine.before" || fail "the reference that is the output was changed"
+# PNG references (a lesson's picture): missing, not a PNG, another size, the run's own PNG; and a good one
+# compared level by level.
+printf 'not a png' > "$scratch/ref/text.png"
+check "--reference: $scratch/ref/absent.png: must be a PNG file, got no such file" "${small[@]}" --reference "$scratch/ref/absent.png"
+check_prefix "--reference: $scratch/ref/text.png: must be a PNG file, got one stb_image cannot read (" "${small[@]}" --reference "$scratch/ref/text.png"
+check "--reference: $scratch/ref/six.png: must be the size of the image, 8x4, got 6x4" "${small[@]}" --reference "$scratch/ref/six.png"
+check "--reference: $scratch/ref/mine.png: is the file this run writes ($scratch/ref/mine.png); give another --out or copy the reference" "${small[@]}" --out "$scratch/ref/mine.png" --reference "$scratch/ref/mine.png"
+cp "$scratch/ref/mine.png" "$scratch/ref/expected.png"
+"$exe" "${small[@]}" --out "$scratch/ref/again.png" --reference "$scratch/ref/expected.png" > "$scratch/ref/again.txt" || fail "a PNG reference of the same render was refused"
+grep -q "^    0 of 32 pixels differ by more than 0 of 255" "$scratch/ref/again.txt" || fail "the same render against its own picture: $(cat "$scratch/ref/again.txt")"
+# --heat: a PNG name other than the image's; written beside it with the summary's line.
+check "--heat: must end in .png, got $scratch/ref/heat.jpg" "${small[@]}" --heat "$scratch/ref/heat.jpg"
+check "--heat: $scratch/ref/mine.png: is the image this run writes; give another name" "${small[@]}" --out "$scratch/ref/mine.png" --heat "$scratch/ref/mine.png"
+"$exe" "${small[@]}" --out "$scratch/ref/h.png" --heat "$scratch/ref/heat.png" > "$scratch/ref/heat.txt" || fail "--heat failed"
+[ -s "$scratch/ref/heat.png" ] || fail "--heat wrote no picture"
+grep -q "note: heat maps in $scratch/ref/heat.png: rays per sample (up to 1) | bounces per sample (up to 0) | samples (up to 1)" "$scratch/ref/heat.txt" || fail "--heat: $(cat "$scratch/ref/heat.txt")"
 # A scene's own image too large is not refused when the flags set the size; the size rendered is checked.
 printf '{"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "image": {"width": 65536, "height": 65536}}' > "$scratch/huge_image.json"
 check_prefix "$scratch/huge_image.json: image: image size 65536x65536 needs " --scene "$scratch/huge_image.json" --quiet

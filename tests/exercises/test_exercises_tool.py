@@ -145,7 +145,8 @@ class Marks(unittest.TestCase):
         log = self.folder / "reached.log"
 
         def run(**environment):
-            env = {k: v for k, v in os.environ.items() if k not in ("RT_STUB_EXERCISE", "RT_EXERCISE_LOG")}
+            env = {k: v for k, v in os.environ.items()
+                   if k not in ("RT_STUB_EXERCISE", "RT_EXERCISE_LOG", "RT_WRONG_SOLUTION")}
             return subprocess.run([str(program)], capture_output=True, text=True, check=True,
                                   env={**env, **environment}).stdout.strip()
 
@@ -153,6 +154,17 @@ class Marks(unittest.TestCase):
         self.assertEqual(log.read_text().split(), ["ch07.hypotenuse"])  # the one exercise it reached, once
         self.assertEqual(run(RT_STUB_EXERCISE="ch07.counter"), "5")  # another exercise stubbed: no change
         self.assertTrue(run(RT_STUB_EXERCISE="ch07.hypotenuse").startswith("not implemented: ch07.hypotenuse — see"))
+        # The fixture's wrong solutions (tests/wrong_solutions/ch07.json), chosen at run time.
+        self.assertIn("wrong_here", source)
+        self.assertEqual(run(RT_WRONG_SOLUTION="ch07.hypotenuse:1"), "2.64575")  # √(3 + 4)
+        self.assertEqual(run(RT_WRONG_SOLUTION="ch07.hypotenuse:2"), "0")
+        self.assertEqual(run(RT_WRONG_SOLUTION="ch07.counter:1"), "5")  # another exercise's: no change
+
+    def test_a_wrong_solution_that_no_longer_fits_its_exercise_is_refused(self):
+        self.rewrite("square(p) + square(q)", "square(q) + square(p)")
+        with self.assertRaises(marks.ToolError) as refused:
+            edition.generate(self.root, self.folder / "switchable", [], force=False, switchable=True)
+        self.assertIn('ch07.hypotenuse #1: "square(p) + square(q)" occurs 0 times', str(refused.exception))
 
     def rewrite(self, old, new):
         path = self.root / "chapters/07_fixture/fixture.cpp"

@@ -22,6 +22,9 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
   exercises.py deps SCRATCH [--only ch03] which tests depend on which exercise: one build in which any one
                                         exercise is stubbed at run time, each stubbed in turn for the
                                         tests that reach it; prints the tags each test needs
+  exercises.py wrong SCRATCH [--only ch04]  CI: each exercise's wrong solutions (tests/wrong_solutions/,
+                                        at least three each) are caught by its own chapter's tests, in one
+                                        build of the switchable edition of `deps`
   exercises.py check --build DIR        CI: in a student edition's build, the failing tests are exactly
                                         the tests tagged with an exercise stubbed, each naming it (in the
                                         full edition's build: every unit test passes)
@@ -41,8 +44,9 @@ from pathlib import Path
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
 from exercise_tool.edition import generate  # noqa: E402
 from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
-from exercise_tool.test_runs import (exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
+from exercise_tool.test_runs import (UnitTest, exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
                                      source_of_build, summarise, unit_tests)
+from exercise_tool.wrong_solutions import MINIMUM_PER_EXERCISE, load as load_wrong_solutions  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 
@@ -247,20 +251,83 @@ def command_deps(args: argparse.Namespace) -> int:
     return 1 if changes else 0
 
 
-def build_test_programs(source: Path, jobs: int) -> Path:
-    """Configures (once) and builds the test programs of the edition in `source`, in source/build."""
+def build_test_programs(source: Path, jobs: int, only: set[str] | None = None) -> Path:
+    """Configures (once) and builds the test programs of the edition in `source`, in source/build (with
+    `only`, those programs only, e.g. {"ch04_test"}). Warnings stay warnings: a wrong solution may leave a
+    variable unused."""
     build = source / "build"
     if not (build / "CMakeCache.txt").is_file():
-        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"], check=True,
-                       stdout=subprocess.DEVNULL)
+        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                        "-DRT_WARNINGS_AS_ERRORS=OFF"], check=True, stdout=subprocess.DEVNULL)
     targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
         ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
+    if only is not None:
+        targets = [t for t in targets if t in only]
     built = subprocess.run(["cmake", "--build", str(build), "-j", str(jobs), "--target", *targets],
                            capture_output=True, text=True)
     if built.returncode != 0:
         raise ToolError(f"deps: the switchable edition in {source} does not build:\n"
                         + built.stdout[-3000:] + built.stderr[-3000:])
     return build
+
+
+def command_wrong(args: argparse.Namespace) -> int:
+    """CI: every exercise has at least three plausible wrong solutions in tests/wrong_solutions/, and each is
+    caught by its own chapter's tests: one build of the switchable edition (as `deps`), then for each wrong
+    solution the chapter's tests tagged with the exercise are run with it in place of the right body, and at
+    least one must fail (or crash, or time out). With the right body they must all pass."""
+    out = Path(args.out).resolve()
+    only = [o for o in (args.only or "").split(",") if o]
+    exercises = generate(args.root, out, only, force=True, switchable=True)
+    wrong = load_wrong_solutions(args.root, find_exercises(args.root))
+    problems = [f"{e.where()}: exercise {e.name} has {len(wrong.get(e.name, []))} wrong solutions in "
+                f"tests/wrong_solutions/{e.chapter}.json; at least {MINIMUM_PER_EXERCISE} are needed"
+                for e in exercises if len(wrong.get(e.name, [])) < MINIMUM_PER_EXERCISE]
+    programs = {f"{e.chapter}_test" for e in exercises}
+    build = build_test_programs(out, args.jobs, programs)
+    program_of = {t.program: t.command[0] for t in unit_tests(build)}
+    runs = []  # (exercise, wrong solution or None for the right body)
+    for e in exercises:
+        if f"{e.chapter}_test" not in program_of:
+            problems.append(f"{e.where()}: exercise {e.name}: its chapter has no test program {e.chapter}_test")
+            continue
+        runs += [(e, None)] + [(e, s) for s in wrong.get(e.name, [])]
+    print(f"running {len(runs)} times the tests of {len(exercises)} exercises: with the right body, then with each "
+          f"of its {sum(len(wrong.get(e.name, [])) for e in exercises)} wrong solutions ...", flush=True)
+    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]",
+                                                  "--abort"], str(build), e.chapter) for e, _ in runs]
+    outcomes = run_each(tests, args.jobs, args.timeout,
+                        environment_of=lambda i: {"RT_WRONG_SOLUTION": runs[i][1].key} if runs[i][1] else {})
+    caught = 0
+    for (e, s), (passed, output) in zip(runs, outcomes):
+        if s is None:
+            if not passed:
+                problems.append(f"{e.name}: its tests fail with the right body:\n" + output[-2000:])
+            continue
+        how = "" if passed else failed_test(output)
+        if passed:
+            problems.append(f"{s.source}: {s.key} is not caught by {e.chapter}_test \"[{TAG_PREFIX}{e.name}]\": "
+                            f"{s.mistake}")
+        else:
+            caught += 1
+        if args.verbose or passed:
+            print(f"  {s.key:34} {'caught' if not passed else 'NOT CAUGHT'}{' by ' + how if how else ''}: {s.mistake}")
+    print(f"{caught} of {sum(1 for _, s in runs if s)} wrong solutions caught by their own chapter's tests")
+    for p in problems:
+        print("  " + p)
+    return 1 if problems else 0
+
+
+def failed_test(output: str) -> str:
+    """The first failing test of a Catch2 run's output, quoted, or how the run ended otherwise."""
+    if "timed out after" in output:
+        return "a time-out"
+    lines = output.splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("-----") and i + 1 < len(lines) and lines[i + 1].strip() and i >= 1 and \
+                (i < 2 or not lines[i - 2].startswith("-----")):
+            return f'"{lines[i + 1].strip()}"'
+    return ""
 
 
 def command_lint(args: argparse.Namespace) -> int:
@@ -320,10 +387,19 @@ def main(argv: list[str]) -> int:
     deps.add_argument("out", help="a scratch folder for the editions and their build (outside the repository)")
     deps.add_argument("--only", help="these chapters or exercises only: ch03 or ch03.shadow_ray,ch02.quad")
     deps.add_argument("-j", "--jobs", type=int, default=2, help="build jobs and tests run in parallel")
+    w = commands.add_parser("wrong", help="CI: each exercise's wrong solutions (tests/wrong_solutions/) are caught "
+                            "by its chapter's tests")
+    w.add_argument("out", help="a scratch folder for the edition and its build (outside the repository)")
+    w.add_argument("--only", help="these chapters or exercises only: ch04 or ch04.cosine_hemisphere")
+    w.add_argument("-j", "--jobs", type=int, default=2, help="build jobs and tests run in parallel")
+    w.add_argument("--timeout", type=int, default=600, help="seconds a run may take; longer counts as caught "
+                   "(default 600)")
+    w.add_argument("-v", "--verbose", action="store_true", help="name each wrong solution and the test catching it")
     args = parser.parse_args(argv)
     try:
         return {"list": command_list, "generate": command_generate, "status": command_status,
-                "check": command_check, "lint": command_lint, "deps": command_deps}[args.command](args)
+                "check": command_check, "lint": command_lint, "deps": command_deps,
+                "wrong": command_wrong}[args.command](args)
     except ToolError as error:
         print(f"exercises.py: {error}", file=sys.stderr)
         return 2

@@ -336,6 +336,7 @@ int main(int argc, char** argv) {
     int ray_count = 1 << 17;
     int max_exponent = 6;
     CLI::App app("Chapter 02 benchmark: BVH against brute force, 10^3 .. 10^6 triangles", "ch02_benchmark");
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default
     app.add_option("--repeats", repeats, "Runs per figure (the median is reported)")
         ->check(CLI::Range(1, 99));
     app.add_option("--rays", ray_count, "Random rays per measurement")->check(CLI::Range(1000, 1 << 24));
@@ -447,17 +448,27 @@ int main(int argc, char** argv) {
 
     const double camera_growth = camera_largest / camera_smallest;
     const double random_growth = random_largest / random_smallest;
-    const bool growth_ok = camera_growth <= 3, build_ok = worst_build_per_million < 1,
-               bytes_ok = worst_bytes <= 64;
+    // A target is judged only where it was measured: the growth target is set for 10^6 triangles, and build
+    // times are timed from 10^5 triangles on. A smaller run says so rather than "met".
+    const bool growth_measured = max_exponent >= 6, build_measured = max_exponent >= 5;
+    const bool growth_ok = !growth_measured || camera_growth <= 3;
+    const bool build_ok = !build_measured || worst_build_per_million < 1, bytes_ok = worst_bytes <= 64;
+    auto verdict = [](bool measured, bool ok) { return !measured ? "not judged" : ok ? "met" : "NOT MET"; };
     std::printf("\nTargets:\n");
-    std::printf("  time per camera ray at 10^%d triangles / at 10^3: %.2f (target <= 3): %s\n", max_exponent,
-                camera_growth, growth_ok ? "met" : "NOT MET");
+    std::printf("  time per camera ray at 10^%d triangles / at 10^3: %.2f (target <= 3 at 10^6): %s%s\n",
+                max_exponent, camera_growth, verdict(growth_measured, growth_ok),
+                growth_measured ? "" : " (run with --max-exponent 6 or more)");
     std::printf("  (random rays, for comparison: %.2f; they miss the caches at every level of the tree)\n",
                 random_growth);
-    std::printf("  build time per million triangles (10^5 and more), one core: %.2f s (target < 1 s): %s\n",
-                worst_build_per_million, build_ok ? "met" : "NOT MET");
+    if (build_measured) {
+        std::printf("  build time per million triangles (10^5 and more), one core: %.2f s (target < 1 s): %s\n",
+                    worst_build_per_million, verdict(true, build_ok));
+    } else {
+        std::printf("  build time per million triangles (target < 1 s): not measured (builds are timed from 10^5 "
+                    "triangles on: run with --max-exponent 5 or more)\n");
+    }
     std::printf("  BVH bytes per triangle, the binary tree as built: %.1f (target <= 64): %s\n", worst_bytes,
-                bytes_ok ? "met" : "NOT MET");
+                verdict(true, bytes_ok));
     std::printf("  (with the wide tree, the triangle packets and the leaf lists it is traced through: %.1f)\n",
                 worst_all_bytes);
     return growth_ok && build_ok && bytes_ok ? 0 : 1;

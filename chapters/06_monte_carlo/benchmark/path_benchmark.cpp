@@ -50,6 +50,7 @@ bool identical(const Image& a, const Image& b) {
 int main(int argc, char** argv) {
     CLI::App app("ch06_benchmark: path tracer samples per second and time to relative MSE 1e-3",
                  "ch06_benchmark");
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default
     std::string scene_file = scene_path("ch06_default.json").string();
     int size = 600, spp = 16, repeats = 3, reference_spp = 2048;
     std::string cache = ".";

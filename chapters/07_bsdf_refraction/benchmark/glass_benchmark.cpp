@@ -75,6 +75,7 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
 int main(int argc, char** argv) {
     CLI::App app("ch07_benchmark: glass path tracer speed, effects cost and time to a relative MSE",
                  "ch07_benchmark");
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default
     int size = 600, spp = 8, repeats = 3, threads = 2, conv_size = 150, reference_spp = 4096, max_spp = 2048;
     double target = 1e-3;
     std::string cache = ".";

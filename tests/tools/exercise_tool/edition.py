@@ -13,6 +13,7 @@ from pathlib import Path
 
 from .cpp_reader import internal_helpers, tokenize
 from .marks import Exercise, ToolError, find_exercises, selected
+from .wrong_solutions import WrongSolution, load as load_wrong_solutions
 
 EDITION_MARKER = ".student-edition.json"
 SWITCH_HEADER = Path(__file__).resolve().parent / "exercise_switch.hpp"  # copied to common/rt/ of a switchable edition
@@ -60,16 +61,31 @@ def stub_file(text: str, exercises: list[Exercise]) -> str:
     return add_include("\n".join(out), "<stdexcept>")
 
 
-def switch_file(text: str, exercises: list[Exercise]) -> str:
-    """For `deps`: each exercise keeps its body, which first throws as the student edition's does when the
-    environment variable RT_STUB_EXERCISE names it (see exercise_switch.hpp)."""
+def switch_file(text: str, exercises: list[Exercise], wrong: dict[str, list[WrongSolution]] | None = None) -> str:
+    """For `deps` and `wrong`: each exercise keeps its body, which first throws as the student edition's does
+    when the environment variable RT_STUB_EXERCISE names it, and beside which its wrong solutions are compiled,
+    the K-th run instead when RT_WRONG_SOLUTION is chNN.name:K (see exercise_switch.hpp)."""
     lines = text.split("\n")
     for exercise in sorted(exercises, key=lambda e: e.begin, reverse=True):
         indent = re.match(r"\s*", lines[exercise.begin + 1]).group(0)
-        lines[exercise.begin + 1 : exercise.begin + 1] = [
+        switch = [
             f"{indent}static const bool stubbed_here = rt::exercise_switch::stubbed({cpp_string(exercise.name)});",
             f"{indent}if (stubbed_here) throw std::logic_error({cpp_string(not_implemented(exercise))});",
         ]
+        solutions = (wrong or {}).get(exercise.name, [])
+        if solutions:
+            right = lines[exercise.begin + 1 : exercise.end]
+            switch.append(f"{indent}static const int wrong_here = "
+                          f"rt::exercise_switch::wrong_solution({cpp_string(exercise.name)});")
+            for s in solutions:
+                switch.append(f"{indent}{'if' if s.number == 1 else '} else if'} (wrong_here == {s.number}) {{")
+                switch += ["    " + line if line.strip() else line for line in s.body]
+            switch.append(f"{indent}}} else {{")
+            switch += ["    " + line if line.strip() else line for line in right]
+            switch.append(f"{indent}}}")
+            lines[exercise.begin + 1 : exercise.end] = switch
+        else:
+            lines[exercise.begin + 1 : exercise.begin + 1] = switch
     return add_include(add_include("\n".join(lines), "<stdexcept>"), '"rt/exercise_switch.hpp"')
 
 
@@ -176,12 +192,14 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
         for path in sorted(out.rglob("*"), reverse=True):
             if path.is_file() and path not in wanted and not path.is_relative_to(out / "build"):
                 path.unlink()
+    wrong = load_wrong_solutions(root, all_exercises) if switchable else {}  # checked whole; used for `chosen`
     for relative in files:
         source = root / relative
         data = source.read_bytes()
         if relative in by_file:
-            rewrite = switch_file if switchable else stub_file
-            data = rewrite(data.decode("utf-8"), by_file[relative]).encode("utf-8")
+            text = data.decode("utf-8")
+            rewritten = switch_file(text, by_file[relative], wrong) if switchable else stub_file(text, by_file[relative])
+            data = rewritten.encode("utf-8")
         elif relative == Path("README.md") and chosen and not switchable:
             data = edition_note(chosen).encode("utf-8") + data
         elif relative == Path("CMakeLists.txt") and not switchable:

@@ -4,7 +4,8 @@
 //     if (stubbed_here) throw std::logic_error("not implemented: chNN.name ...");
 // so one build can stand for the edition with any one exercise stubbed, chosen when a test runs:
 //   RT_STUB_EXERCISE=chNN.name  that exercise throws as in the student edition, the others run as written;
-//   RT_EXERCISE_LOG=FILE        each exercise the process reaches appends its name to FILE.
+//   RT_EXERCISE_LOG=FILE        each exercise the process reaches appends its name to FILE;
+//   RT_WRONG_SOLUTION=chNN.name:K  that exercise runs its K-th wrong solution (tests/wrong_solutions/) instead.
 // The static is initialised on the first call only, so each exercise is looked up (and logged) once per
 // process, and a test that never reaches an exercise cannot depend on it.
 #pragma once
@@ -24,6 +25,15 @@ inline bool stubbed(const char* exercise) {
     }
     const char* chosen = std::getenv("RT_STUB_EXERCISE");
     return chosen != nullptr && std::strcmp(chosen, exercise) == 0;
+}
+
+// Which of the exercise's wrong solutions (tests/wrong_solutions/) runs instead of its body: K when
+// RT_WRONG_SOLUTION is "chNN.name:K", else 0 (the body as written).
+inline int wrong_solution(const char* exercise) {
+    const char* chosen = std::getenv("RT_WRONG_SOLUTION");
+    const std::size_t length = std::strlen(exercise);
+    if (chosen == nullptr || std::strncmp(chosen, exercise, length) != 0 || chosen[length] != ':') return 0;
+    return std::atoi(chosen + length + 1);
 }
 
 }  // namespace rt::exercise_switch
