@@ -1012,3 +1012,46 @@ TEST_CASE("A quad packet gives intersect_quad's nearest hit bit for bit, on hard
     CHECK(hit_packets > compared / 10);
     CHECK(mismatches == 0);
 }
+
+TEST_CASE("The wide BVH visits the nearest leaf first and culls every child entered beyond the nearest hit",
+          "[bvh][ex:ch02.wide_bvh_traversal]") {
+    // 256 unit boxes in a row along x, 2 apart, and a ray along the row from x = -10: box i is "hit" where
+    // the ray crosses its face x = 2i, at t = 2i + 10, never before its box is entered. Nearest first, the
+    // leaf of box 0 is tested first and every other child is entered after its hit, at t >= 12: that leaf's
+    // items are the only ones tested (a child visited out of order, or popped without the t_max test, adds
+    // items).
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 256; ++i) {
+        Aabb b;
+        b.extend(Vec3(Real(2 * i), 0, 0));
+        b.extend(Vec3(Real(2 * i + 1), 1, 1));
+        boxes.push_back(b);
+    }
+    std::vector<std::uint32_t> order;
+    const Bvh bvh(boxes, order);
+    const WideBvh wide(bvh);
+    std::uint32_t first_leaf = 0;  // the item count of the leaf holding box 0
+    for (const WideBvhNode& node : wide.nodes())
+        for (std::size_t k = 0; k < std::size_t(kWideBvhWidth); ++k)
+            for (std::uint32_t slot = node.child[k]; slot < node.child[k] + node.count[k]; ++slot)
+                if (order[slot] == 0) first_leaf = node.count[k];
+    REQUIRE(first_leaf > 0);
+    const WideRay ray =
+        make_wide_ray({Vec3(-10, Real(0.5), Real(0.5)), glm::normalize(Vec3(1, Real(1e-4), Real(1e-4)))});
+    REQUIRE(ray.finite);
+    auto test = [&](std::uint32_t first, std::uint32_t count, Real& limit) {
+        bool hit = false;
+        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+            const Real t = (boxes[order[slot]].min.x - ray.ray.origin.x) * ray.inverse_d.x;
+            if (t < limit) limit = t, hit = true;
+        }
+        return hit;
+    };
+    for (const bool any_hit : {false, true}) {
+        Real t_max = kInfinity;
+        TraversalStats stats;
+        CHECK(wide.traverse(ray, t_max, any_hit, test, &stats));
+        CHECK(t_max == Approx(10).epsilon(1e-5));
+        CHECK(stats.primitives == first_leaf);
+    }
+}

@@ -305,3 +305,47 @@ TEST_CASE("The features of the back wall and of the glass sphere",
     CHECK(b.normal.at(38, 46).b < -0.8);
     CHECK(b.albedo.at(38, 46).r < 0.73);  // the wall's albedo, less what the glass reflects away
 }
+
+TEST_CASE("The edge-stopping weight is exp(-sum of d2 / s2) on guides worked by hand, each guide alone too",
+          "[filters][ex:ch10.edge_stopping]") {
+    GuidePixel p, q;
+    p.colour = Color(Real(0.5));
+    q.colour = Color(Real(0.8), Real(0.5), Real(0.9));  // d² = 0.09 + 0.16 = 0.25
+    p.variance = Real(0.05), q.variance = Real(0.075);  // s² = 2² (0.05 + 0.075) = 0.5: the term 0.5
+    p.normal = Vec3(0, 0, 1), q.normal = Vec3(Real(0.6), 0, Real(0.8));  // d² = 0.36 + 0.04 = 0.4, s² = 1
+    p.depth = 4, q.depth = 5;  // d² = 1, s² = (0.2 · max(4, 5))² = 1
+    p.albedo = Color(Real(0.5)), q.albedo = Color(Real(0.5), Real(0.8), Real(0.5));  // d² = 0.09 = s²
+    EdgeStopping colour = kOff, normal = kOff, depth = kOff, albedo = kOff;
+    colour.colour = 2, normal.normal = 1, depth.depth = Real(0.2), albedo.albedo = Real(0.3);
+    for (const bool swapped : {false, true}) {  // w(p, q) = w(q, p)
+        const GuidePixel& a = swapped ? q : p;
+        const GuidePixel& b = swapped ? p : q;
+        CHECK(edge_stopping_weight(a, b, colour) == Approx(std::exp(-0.5)).epsilon(1e-5));
+        CHECK(edge_stopping_weight(a, b, normal) == Approx(std::exp(-0.4)).epsilon(1e-5));
+        CHECK(edge_stopping_weight(a, b, depth) == Approx(std::exp(-1.0)).epsilon(1e-5));
+        CHECK(edge_stopping_weight(a, b, albedo) == Approx(std::exp(-1.0)).epsilon(1e-5));
+        CHECK(edge_stopping_weight(a, b, EdgeStopping{}) == Approx(std::exp(-2.9)).epsilon(1e-5));
+        CHECK(edge_stopping_weight(a, b, kOff) == 1);
+    }
+}
+
+TEST_CASE("One a-trous level filters the variance by the squared normalised weights, inside and at a corner",
+          "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
+    // Every guide equal and the colour's off: w = h = h_j h_k, and Var' = Σ (h / Σ h)² Var. Inside, Σ h_j = 1
+    // and Σ h_j² = 70/256 in each axis; at the corner (0, 0) only taps 0, step, 2 step of each axis are in
+    // the image, weighing 6, 4, 1 (/16): Σ h_j² / (Σ h_j)² = (53/256) / (11/16)². The colour x + 2y is
+    // linear: inside it stays, at the corner it is the weighted mean, 6 step/11 in x and in y.
+    const int size = 20;
+    const FeatureBuffers b = flat_buffers(size, size, [](int x, int y) { return Color(Real(x + 2 * y)); });
+    const std::vector<GuidePixel> guides = guide_pixels(b);  // variance 0.03: three channels of 0.01
+    const double v = 0.03, inside = 70.0 / 256, corner = (53.0 / 256) / ((11.0 / 16) * (11.0 / 16));
+    for (const int step : {1, 2, 4}) {
+        INFO("step " << step);
+        const GuidePixel middle = atrous_pixel(guides, size, size, 10, 9, step, kOff);
+        CHECK(middle.variance == Approx(v * inside * inside).epsilon(1e-5));
+        CHECK(middle.colour.r == Approx(28).epsilon(1e-5));
+        const GuidePixel edge = atrous_pixel(guides, size, size, 0, 0, step, kOff);
+        CHECK(edge.variance == Approx(v * corner * corner).epsilon(1e-5));
+        CHECK(edge.colour.r == Approx(3 * 6.0 * step / 11).epsilon(1e-5));
+    }
+}
