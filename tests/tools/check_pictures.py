@@ -10,6 +10,9 @@ Each chapter's images/pictures.json lists every PNG of that folder, with either
                                       how close it must be
 or  "timing": "..."                   a plot of measured times (the report's, chapter 06's convergence in
                                       seconds): it changes from run to run, so it is listed and not compared.
+or  "not_compared": "..."             a picture CI does not regenerate, with the reason (its command and why:
+                                      it needs a converged reference minutes long, or llvmpipe compiles its
+                                      shaders for the CPU it runs on): listed, and counted apart.
 Renders are deterministic (every sample's random numbers come from its pixel, its index and the seed, and
 pixels are exact sums), so a render's picture is the same to the byte on any thread count: the default
 tolerance is none. A PNG with no entry, or an entry with no PNG, fails the check too.
@@ -49,7 +52,7 @@ def main(argv: list[str]) -> int:
         return 2
     only = [o for o in (args.only or "").split(",") if o]
     problems: list[str] = []
-    checked = timing = 0
+    checked = timing = not_compared = 0
     start = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="rt-pictures-") as scratch:
         for folder in sorted((ROOT / "chapters").glob("[0-9][0-9]_*")):
@@ -71,6 +74,10 @@ def main(argv: list[str]) -> int:
                 problems.append(f"{where}: {name} is listed but not in the folder")
             for name in sorted(set(entries) & pngs):
                 entry = entries[name]
+                if "not_compared" in entry:
+                    not_compared += 1
+                    print(f"  {folder.name}/images/{name}: not regenerated here ({entry['not_compared']})")
+                    continue
                 if "timing" in entry:
                     timing += 1
                     print(f"  {folder.name}/images/{name}: not compared, its numbers are timings ({entry['timing']})")
@@ -109,7 +116,8 @@ def main(argv: list[str]) -> int:
                         problems.append(f"{folder.name}/images/{name} is stale: `{entry['command']}` no longer makes "
                                         f"it (regenerate: tests/tools/check_pictures.py {args.build} --only "
                                         f"{folder.name[:2]} --update)")
-    print(f"{checked} pictures regenerated and compared, {timing} plots of timings listed, in "
+    print(f"{checked} pictures regenerated and compared, {timing} plots of timings listed, {not_compared} pictures "
+          f"listed as not regenerated here, in "
           f"{time.monotonic() - start:.0f} s")
     for p in problems:
         print("  " + p)
