@@ -79,15 +79,14 @@ std::vector<Ray> make_camera_rays(int side) {
     return rays;
 }
 
-// Traces every ray (nearest hit, or any hit), split over `threads`; returns how many hit.
-std::size_t trace_all(const World& world, const std::vector<Ray>& rays, bool any_hit, int threads) {
+// Traces every ray with `query(ray)` (true: a hit), split over `threads`; returns how many hit.
+template <typename Query>
+std::size_t count_hits(const std::vector<Ray>& rays, int threads, const Query& query) {
     std::vector<std::size_t> hits(std::size_t(threads), 0);
     auto work = [&](int t) {
-        for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) {
-            const bool hit =
-                any_hit ? world.occluded(rays[i], kInfinity) : world.intersect(rays[i]).has_value();
-            hits[std::size_t(t)] += hit ? 1 : 0;
-        }
+        std::size_t n = 0;
+        for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) n += query(rays[i]) ? 1 : 0;
+        hits[std::size_t(t)] = n;
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
@@ -96,6 +95,13 @@ std::size_t trace_all(const World& world, const std::vector<Ray>& rays, bool any
     std::size_t total = 0;
     for (std::size_t h : hits) total += h;
     return total;
+}
+
+// Traces every ray (nearest hit, or any hit), split over `threads`; returns how many hit.
+std::size_t trace_all(const World& world, const std::vector<Ray>& rays, bool any_hit, int threads) {
+    return count_hits(rays, threads, [&](const Ray& ray) {
+        return any_hit ? world.occluded(ray, kInfinity) : world.intersect(ray).has_value();
+    });
 }
 
 // Million rays per second over `rays`, the median of `repeats` runs.
@@ -131,23 +137,6 @@ Scene mesh_scene(MeshShape mesh) {
 }
 
 
-// Traces every ray with `query(ray)` (true: a hit), split over `threads`; returns how many hit.
-template <typename Query>
-std::size_t count_hits(const std::vector<Ray>& rays, int threads, const Query& query) {
-    std::vector<std::size_t> hits(std::size_t(threads), 0);
-    auto work = [&](int t) {
-        std::size_t n = 0;
-        for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) n += query(rays[i]) ? 1 : 0;
-        hits[std::size_t(t)] = n;
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& thread : pool) thread.join();
-    std::size_t total = 0;
-    for (std::size_t h : hits) total += h;
-    return total;
-}
 
 // Random unit directions and points in the ball of radius 0.5 around the origin, inside every mesh here
 // (a unit sphere, radii jittered by 5 %).
