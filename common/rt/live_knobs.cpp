@@ -43,8 +43,10 @@ LiveKnobs::LiveKnobs(CLI::App& app, const std::set<std::string>& core, std::vect
     : app_(app), args_(std::move(args)) {
     for (CLI::Option* option : app_.get_options()) {
         const std::string name = option->get_name();
-        if (core.contains(name) || option->get_items_expected_max() != 1 ||
-            belongs_to_a_mode(app_, *option))
+        // A live run writes nothing: an option that writes a file (its help starts "Write", as chapter 02's
+        // --write-mesh) is no knob either.
+        if (core.contains(name) || option->get_items_expected_max() != 1 || belongs_to_a_mode(app_, *option) ||
+            option->get_description().starts_with("Write"))
             continue;
         // A knob set live is given again after the command line: the last of its values counts.
         option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);

@@ -20,7 +20,8 @@ class LiveKnobs {
 public:
     // The knobs of `app`, parsed from `args` (the command line without the program's name): every option not
     // in `core` that takes one value, but for a demo mode's own options (their help starts "With --FLAG:",
-    // FLAG a flag that takes no value, as "With --converge: the largest spp").
+    // FLAG a flag that takes no value, as "With --converge: the largest spp") and options that write a file
+    // (their help starts "Write").
     LiveKnobs(CLI::App& app, const std::set<std::string>& core, std::vector<std::string> args);
 
     const std::vector<Knob>& knobs() const { return knobs_; }
@@ -28,9 +29,12 @@ public:
 
     // Sets knob `name` to `value` as `--name=value` after the command line would: the whole command line is
     // parsed again with it. When the command line would refuse it, throws InputError with the message the
-    // run would print ("usage: --sampling: ... (see --help)"), every value left as it was.
+    // run would print ("usage: --sampling: ... (see --help)"), and the line accepted last is parsed again.
+    // (CLI11 leaves a flag's variable alone when the flag is not given, so what that restores is the value
+    // of every flag given so far; a value stored before a later check refused it, as chapter 08's
+    // --aperture without --variant aperture, stays in a flag never given, which that check then ignores.)
     void set(const std::string& name, const std::string& value);
-    // Takes back the last set() (the render refused what it allowed).
+    // Takes back the last set() (the render refused what it allowed), as a refusal does.
     void undo();
 
 private:

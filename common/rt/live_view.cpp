@@ -1,5 +1,6 @@
 #include "rt/live_view.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -119,7 +120,7 @@ private:
                     r.rays);
         if (result->exact) add_error(snapshot, "the exact image", r.image, *result->exact);
         snapshot.status = "done";
-        ++snapshot.pass;
+        snapshot.pass = std::max(snapshot.pass, 1);  // a render whose loop has no hook: one image
         publish(snapshot, png_bytes(r.image));
     }
 

@@ -38,7 +38,7 @@ name = os.path.basename(exe)
 run = LiveRun(exe, "--width", "48", "--height", "32", "--spp", "4096", "--threads", "2", "--quiet")
 
 # --- 1. what is served ---
-state = run.wait_for("the first pass", lambda s: s["frame"] >= 1)
+state = run.wait_for("the first pass", lambda s: s.get("frame", 0) >= 1)  # {} before the render starts
 status, page = run.request("GET", "/")
 if status != 200 or b"<title>live view</title>" not in page:
     fail("/: status %d, not the page" % status)
@@ -140,7 +140,7 @@ for chapter in every_executable:
             state = one.state()
         except OSError:
             break  # the run ended (chapter 11 without OpenGL)
-        if state["status"] == "done" and state["frame"] >= 1:
+        if state.get("status") == "done" and state["frame"] >= 1:  # {} before the first render starts
             break
         time.sleep(0.05)
     if one.process.poll() is not None:
@@ -154,6 +154,8 @@ for chapter in every_executable:
     if status != 200 or not png.startswith(b"\x89PNG"):
         fail("%s: /image.png: status %d" % (chapter_name, status))
     knobs = [k["name"] for k in state["knobs"]]
+    if "--write-mesh" in knobs:
+        fail("%s: --write-mesh writes a file, but it is a knob" % chapter_name)
     exit_status = one.interrupt()
     if exit_status != 130 or one.files_written():
         fail("%s: SIGINT: exit %d, files %s" % (chapter_name, exit_status, one.files_written()))

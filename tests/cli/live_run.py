@@ -1,4 +1,5 @@
 """A chapter executable run with --live, for the live view's tests (live_http.py, live_browser.py)."""
+import atexit
 import http.client
 import json
 import os
@@ -22,8 +23,9 @@ class LiveRun:
     def __init__(self, executable, *args):
         self.folder = tempfile.mkdtemp(prefix="rt-live-")
         self.stderr = tempfile.TemporaryFile("w+")
-        self.process = subprocess.Popen([executable, "--live", "--port", "0", *args], cwd=self.folder,
+        self.process = subprocess.Popen([os.path.abspath(executable), "--live", "--port", "0", *args], cwd=self.folder,
                                         stdout=subprocess.PIPE, stderr=self.stderr, text=True)
+        atexit.register(self.end)  # a test that fails leaves no server behind
         line = self.process.stdout.readline()
         found = re.search(r"live view on http://127\.0\.0\.1:(\d+)/", line)
         if not found:
@@ -84,3 +86,7 @@ class LiveRun:
     def files_written(self):
         return sorted(os.listdir(self.folder))
 
+    def end(self):
+        if self.process.poll() is None:
+            self.process.kill()
+            self.process.wait()
