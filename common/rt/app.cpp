@@ -217,8 +217,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         pfms.push_back(with_suffix(png, ".partial" + suffix, ".pfm"));
         outputs.insert(outputs.end(), pfms.end() - 2, pfms.end());
     }
+    if (live.live) outputs.clear();  // it writes nothing
     for (const fs::path& path : outputs) {
-        if (live.live) break;  // it writes nothing
         try {
             check_writable(path);
         } catch (const InputError& e) {
