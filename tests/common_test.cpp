@@ -17,6 +17,7 @@
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/live_knobs.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/random.hpp"
 #include "rt/render_loop.hpp"
@@ -231,6 +232,115 @@ TEST_CASE("An interrupt after the first pass leaves every pixel the mean of whol
     // Sample 0 for every pixel, then a pass of samples 1..8 kept by no tile: the image is sample 0's value.
     for (const Color& c : r.image.pixels()) REQUIRE(c == Color(0));
     CHECK(r.samples == std::uint64_t(first_pass));
+}
+
+TEST_CASE("The after-pass hook sees every pass's sums, and the image is the same with it", "[render][live]") {
+    auto sample = [](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        rays.add(RayKind::kCamera);
+        return Color(rng.next_real(), Real(s.index), 1);
+    };
+    // 17 samples: the first pass takes 1, then passes of ⌈17/8⌉ = 3: 1 + 16/3 rounded up = 7 passes.
+    RenderSettings settings{20, 18, 17, 9, 2, ProgressStyle::kNone};
+    const RenderResult without = render(settings, sample);
+    std::vector<std::uint32_t> counts;
+    std::vector<std::uint64_t> samples, camera_rays;
+    Image last;
+    settings.after_pass = [&](const PassReport& pass) {
+        counts.push_back(pass.sums.min_count());
+        samples.push_back(pass.samples);
+        camera_rays.push_back(pass.rays[RayKind::kCamera]);
+        last = pass.sums.mean_image();
+    };
+    const RenderResult with = render(settings, sample);
+    CHECK(counts == std::vector<std::uint32_t>{1, 4, 7, 10, 13, 16, 17});
+    const std::uint64_t pixels = 20 * 18;
+    CHECK(samples == std::vector<std::uint64_t>{pixels, 4 * pixels, 7 * pixels, 10 * pixels, 13 * pixels,
+                                                16 * pixels, 17 * pixels});
+    CHECK(camera_rays == samples);
+    for (std::size_t i = 0; i < with.image.pixel_count(); ++i) {
+        REQUIRE(with.image.pixels()[i] == without.image.pixels()[i]);
+        REQUIRE(last.pixels()[i] == with.image.pixels()[i]);
+    }
+}
+
+TEST_CASE("A restart of the live view stops the render as an interrupt does, and is no signal", "[render][live]") {
+    int taken = 0;
+    auto sample = [&](const PixelSample&, Pcg32&, RayCounts&) {
+        if (++taken == 400) set_render_restart(true);
+        return Color(1);
+    };
+    const RenderSettings settings{40, 20, 8, 1, 1, ProgressStyle::kNone};
+    const RenderResult r = render(settings, sample);
+    CHECK(render_restart_requested());
+    CHECK(interrupt_requested());
+    CHECK_FALSE(signal_received());
+    set_render_restart(false);
+    CHECK_FALSE(interrupt_requested());
+    CHECK(r.interrupted);
+    CHECK(taken == 400);
+    CHECK(r.samples == 256);  // the first tile's first pass; the second tile's, cut short, is dropped
+}
+
+TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as the command line sets them",
+          "[live]") {
+    CLI::App app("test", "test");
+    app.option_defaults()->always_capture_default();  // as run_chapter() does: --help shows the defaults
+    std::string sampling = "mis";
+    std::optional<int> depth;
+    bool study = false;
+    int study_runs = 10;
+    std::string variant = "connect";
+    double aperture = 0.1;
+    app.add_option("--scene", "core");
+    app.add_option("--sampling", sampling, "How directions are drawn")
+        ->check(CLI::IsMember({"uniform", "mis"}));
+    app.add_option("--max-depth", depth, "Bounces at most")->check(CLI::Range(1, 1000));
+    app.add_flag("--study", study, "A demo mode");
+    app.add_option("--study-runs", study_runs, "With --study: runs per row");
+    app.add_option("--variant", variant, "connect or aperture")->check(CLI::IsMember({"connect", "aperture"}));
+    CLI::Option* aperture_option = app.add_option("--aperture", aperture, "With --variant aperture: the radius");
+    // As chapter 08 does: a check after the values are stored.
+    app.parse_complete_callback([aperture_option, &variant] {
+        if (aperture_option->count() > 0 && variant != "aperture")
+            throw CLI::ValidationError("--aperture", "is used only with --variant aperture");
+    });
+    std::vector<std::string> args{"--variant", "aperture", "--aperture", "0.5"};
+    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    app.parse(reversed);
+    LiveKnobs knobs(app, {"--help", "--scene"}, args);
+    std::vector<std::string> names;
+    for (const Knob& k : knobs.knobs()) names.push_back(k.name);
+    // --study takes no value, --study-runs is its mode's, --scene is core: none is a knob.
+    CHECK(names == std::vector<std::string>{"--sampling", "--max-depth", "--variant", "--aperture"});
+    CHECK(knobs.knobs()[0].choices == std::vector<std::string>{"uniform", "mis"});
+    CHECK(knobs.knobs()[0].value == "mis");
+    CHECK(knobs.knobs()[1].value == "");  // no default
+    CHECK(knobs.knobs()[3].value == "0.5");
+
+    knobs.set("--sampling", "uniform");
+    CHECK(sampling == "uniform");
+    CHECK(knobs.knobs()[0].value == "uniform");
+    knobs.set("--max-depth", "3");
+    CHECK(depth == 3);
+    CHECK(aperture == 0.5);  // the command line's values stay
+    CHECK_THROWS_WITH(knobs.set("--sampling", "sideways"),
+                      "usage: --sampling: sideways not in {uniform,mis} (see --help)");
+    CHECK_THROWS_WITH(knobs.set("--max-depth", "0"),
+                      "usage: --max-depth: Value 0 not in range 1 to 1000 (see --help)");
+    CHECK(sampling == "uniform");
+    CHECK(depth == 3);
+    // Refused by a check that runs after the values are stored: they are set back all the same.
+    CHECK_THROWS_WITH(knobs.set("--variant", "connect"),
+                      "usage: --aperture: is used only with --variant aperture (see --help)");
+    CHECK(variant == "aperture");
+    CHECK(knobs.knobs()[2].value == "aperture");
+    CHECK_THROWS_AS(knobs.set("--study-runs", "3"), InputError);
+    // undo() takes back the last change that was accepted.
+    knobs.set("--sampling", "mis");
+    CHECK(sampling == "mis");
+    knobs.undo();
+    CHECK(sampling == "uniform");
+    CHECK(knobs.knobs()[0].value == "uniform");
 }
 
 TEST_CASE("Edit distance and did-you-mean find near misses only", "[scene]") {

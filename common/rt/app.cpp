@@ -13,6 +13,7 @@
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
+#include "rt/live_view.hpp"
 #include "rt/output_files.hpp"
 #include "rt/heat_maps.hpp"
 #include "rt/picture_compare.hpp"
@@ -137,6 +138,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     add_core_flags(app, options, chapter);
     SplitOptions split;
     add_split_flags(app, split);
+    LiveOptions live;
+    add_live_flags(app, live);
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
     for (const CLI::Option* option : app.get_options()) core_flags.insert(option->get_name());
     if (add_flags) add_flags(app);
@@ -149,6 +152,22 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         throw InputError(std::string("usage: ") + e.what() + " (see --help)");
+    }
+    if (live.live) {
+        // The live view renders whole, in one process, and writes nothing (live_view.hpp).
+        const std::pair<const char*, bool> not_with[] = {{"--out", !options.out.empty()},
+                                                         {"--heat", !options.heat.empty()},
+                                                         {"--samples", !split.samples.empty()},
+                                                         {"--resume", !split.resume.empty()},
+                                                         {"mpirun with several ranks", mpi.size() > 1}};
+        for (const auto& [flag, given] : not_with) {
+            if (given) {
+                throw InputError(std::string("--live: writes no file and renders whole, in one process: not "
+                                             "with ") + flag);
+            }
+        }
+    } else if (app.get_option("--port")->count() > 0) {
+        throw InputError("--port: is used only with --live");
     }
 
     const fs::path scene_file =
@@ -198,6 +217,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         pfms.push_back(with_suffix(png, ".partial" + suffix, ".pfm"));
         outputs.insert(outputs.end(), pfms.end() - 2, pfms.end());
     }
+    if (live.live) outputs.clear();  // it writes nothing
     for (const fs::path& path : outputs) {
         try {
             check_writable(path);
@@ -268,10 +288,14 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         settings.heat = heat.data();
     }
     const EffectSet needed_effects = needed(scene);
+    if (live.live) {
+        LiveKnobs knobs(app, core_flags, std::vector<std::string>(argv + 1, argv + argc));
+        return run_live(LiveRun{chapter, scene, settings, needed_effects, render, knobs, reference}, live.port);
+    }
     const RunContext context{scene, settings, needed_effects & chapter.supported};
     std::optional<ChapterRun> result = render(context);
     set_interrupt_phase(InterruptPhase::kWriting);
-    if (!result) return interrupt_requested() ? interrupted_exit_status() : kExitOk;
+    if (!result) return signal_received() ? interrupted_exit_status() : kExitOk;
     mpi.gather(result->result);
     if (!mpi.is_root()) return result->result.interrupted ? interrupted_exit_status() : kExitOk;
     if (plan.writes_film) {
@@ -309,12 +333,12 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
                   reference, reference_picture, written);
-    if (!r.interrupted && interrupt_requested()) {
+    if (!r.interrupted && signal_received()) {
         // The signal came once the render was done: the complete image was written all the same.
         std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
                      chapter.executable);
     }
-    return r.interrupted || interrupt_requested() ? interrupted_exit_status() : kExitOk;
+    return r.interrupted || signal_received() ? interrupted_exit_status() : kExitOk;
 }
 
 }  // namespace

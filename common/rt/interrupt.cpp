@@ -12,6 +12,7 @@ namespace {
 
 std::atomic<int> g_signal{0};  // the first signal received, 0 before any
 std::atomic<InterruptPhase> g_phase{InterruptPhase::kRendering};
+std::atomic<bool> g_restart{false};  // the live view asks the render in progress to stop
 static_assert(std::atomic<int>::is_always_lock_free && std::atomic<InterruptPhase>::is_always_lock_free,
               "the signal handler may only touch lock-free atomics");
 
@@ -27,7 +28,10 @@ extern "C" void on_interrupt(int signal_number) {
         remove_staged_files_now();
         _exit(128 + signal_number);
     }
-    if (g_phase.load() == InterruptPhase::kRendering) {
+    if (g_phase.load() == InterruptPhase::kLive) {
+        const char message[] = "\ninterrupted: stopping the live view (it writes nothing)\n";
+        say(message, sizeof message - 1);
+    } else if (g_phase.load() == InterruptPhase::kRendering) {
         const char message[] =
             "\ninterrupted: stopping the samples in progress, then saving the partial image (interrupt again "
             "to quit at once, saving nothing)\n";
@@ -54,7 +58,16 @@ void set_interrupt_phase(InterruptPhase phase) {
     g_phase.store(phase);
 }
 bool interrupt_requested() {
+    return signal_received() || g_restart.load(std::memory_order_relaxed);
+}
+bool signal_received() {
     return g_signal.load(std::memory_order_relaxed) != 0;
+}
+void set_render_restart(bool restart) {
+    g_restart.store(restart);
+}
+bool render_restart_requested() {
+    return g_restart.load();
 }
 int interrupted_exit_status() {
     const int s = g_signal.load();

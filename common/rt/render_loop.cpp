@@ -118,6 +118,11 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
         for (auto& t : pool) t.join();
         if (failure) std::rethrow_exception(failure);
         progress.show(fraction_done(), seconds_since(start));
+        if (settings.after_pass && !interrupt_requested()) {
+            RayCounts rays;
+            for (const RayCounts& r : rays_per_thread) rays += r;
+            settings.after_pass(PassReport{sums, rays, samples_done.load(), seconds_since(start)});
+        }
     }
     progress.clear();
 

@@ -24,6 +24,15 @@ namespace rt {
 
 enum class ProgressStyle { kAuto, kBar, kLines, kNone };
 
+// What the render has after a pass: every pixel's sums (its image is sums.mean_image()), the rays traced
+// and the samples taken by this run so far, and the time since it started.
+struct PassReport {
+    const PixelSums& sums;
+    RayCounts rays;
+    std::uint64_t samples = 0;
+    double seconds = 0;
+};
+
 struct RenderSettings {
     int width = 0;
     int height = 0;
@@ -39,6 +48,9 @@ struct RenderSettings {
     // When set (--heat; not owned, width × height): each pixel's rays, bounces and samples of this run are
     // added here, pass by pass as its sums are kept.
     struct PixelHeat* heat = nullptr;
+    // When set (the live view, live_view.hpp): called on the rendering thread after each whole pass, with
+    // the sums so far; the render goes on when it returns.
+    std::function<void(const PassReport&)> after_pass = nullptr;
 };
 
 // What a pixel's samples cost: the rays they traced (every kind), the bounces among them (reflection,
