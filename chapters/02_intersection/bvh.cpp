@@ -106,7 +106,7 @@ struct Builder {
                 for (int b = 0; b < kBins - 1; ++b) {
                     left.extend(bin_box[b]);
                     left_count += bin_count[b];
-                    left_cost[b] = left_count > 0 ? half_area(left) * double(left_count) : 0;
+                    left_cost[b] = left_count > 0 ? half_area(left) * double((left_count + 3) / 4) : 0;
                 }
                 Aabb right;
                 std::uint32_t right_count = 0;
@@ -114,7 +114,7 @@ struct Builder {
                     right.extend(bin_box[b]);
                     right_count += bin_count[b];
                     const double cost =
-                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * double(right_count) : 0);
+                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * double((right_count + 3) / 4) : 0);
                     if (cost < best_cost) {
                         best_cost = cost;
                         best = b;  // bins [0, b) go left
@@ -123,7 +123,7 @@ struct Builder {
                 }
             }
             const double split_cost = kTraversalCost + best_cost / node_area;
-            if (count <= kMaxLeafSize && !(split_cost < double(count))) return make_leaf(node, begin, end);
+            if (count <= kMaxLeafSize && !(split_cost < double((count + 3) / 4))) return make_leaf(node, begin, end);
             middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
                                                   [&](std::uint32_t p) { return bin_of(p, best_axis) < best; }) -
                                    indices.begin());
