@@ -14,8 +14,14 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
+        // The wide tree's leaves are tested a packet of four triangles at a time: the SAH then weighs a leaf
+        // by its packets (a leaf of spheres or quad packets as well, an approximation: those are tested one
+        // by one).
+        const bool packets = options_.acceleration == Acceleration::kBvh &&
+                             options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets &&
+                             options_.packet_sah;
         std::vector<std::uint32_t> order;
-        bvh_ = Bvh(all_bounds(), order);
+        bvh_ = Bvh(all_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
         lay_out_in(order);
         if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }

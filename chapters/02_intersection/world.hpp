@@ -35,6 +35,9 @@ struct WorldOptions {
     // With kBvh and the watertight test: each leaf's triangles are tested four at a time (false: one by one,
     // to measure what the packets buy).
     bool triangle_packets = true;
+    // With triangle packets: the SAH weighs a leaf by the packets it tests, ⌈n / 4⌉, not by its n triangles
+    // (false: by its triangles, to measure what that buys).
+    bool packet_sah = true;
 };
 
 // The box around a bounded primitive, as the BVH is built over (chapter 11 builds one over its own copy).
