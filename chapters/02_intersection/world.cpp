@@ -18,8 +18,8 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
         // by its packets (a leaf of spheres or quad packets as well, an approximation: those are tested one
         // by one).
         const bool packets = options_.acceleration == Acceleration::kBvh &&
-                             options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets &&
-                             options_.packet_sah;
+                             options_.triangle_test == TriangleTest::kWatertight &&
+                             options_.triangle_packets && options_.packet_sah;
         std::vector<std::uint32_t> order;
         bvh_ = Bvh(all_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
         lay_out_in(order);
@@ -96,7 +96,8 @@ void World::pack_quads() {
 }
 
 void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive) {
-    primitives_.push_back({kind, index, material, std::uint32_t(primitives_.size()), emissive ? light_count_++ : -1});
+    primitives_.push_back(
+        {kind, index, material, std::uint32_t(primitives_.size()), emissive ? light_count_++ : -1});
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
@@ -370,7 +371,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             break;
         }
         case Kind::kTriangle: {
-            const Triangle t = found.triangles ? triangle_in(*found.triangles, found.lane) : triangles_[p.index];
+            const Triangle t =
+                found.triangles ? triangle_in(*found.triangles, found.lane) : triangles_[p.index];
             const Real b1 = found.uv.x, b2 = found.uv.y;
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;

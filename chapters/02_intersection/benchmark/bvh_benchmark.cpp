@@ -182,9 +182,12 @@ struct Engines {
           embree_robust(mesh, true) {}
 };
 constexpr int kEngines = 6, kCourseEngines = 4;
-const char* const kEngineNames[kEngines] = {"binary BVH", "wide BVH, triangles 1 by 1",
+const char* const kEngineNames[kEngines] = {"binary BVH",
+                                            "wide BVH, triangles 1 by 1",
                                             "wide BVH + packets, SAH counting triangles",
-                                            "wide BVH + packets, SAH counting packets", "Embree", "Embree robust"};
+                                            "wide BVH + packets, SAH counting packets",
+                                            "Embree",
+                                            "Embree robust"};
 
 // How many of `rays` engine `e` finds a hit for (nearest hit, or any hit before t_max[i] when given).
 std::size_t trace_engine(const Engines& en, int e, const std::vector<Ray>& rays, const std::vector<Real>* t_max,
@@ -246,13 +249,14 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
             build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
             build[5].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
         }
-        const World* worlds[kCourseEngines] = {&engines.binary, &engines.wide_single, &engines.wide_triangle_sah,
-                                               &engines.wide};
+        const World* worlds[kCourseEngines] = {&engines.binary, &engines.wide_single,
+                                               &engines.wide_triangle_sah, &engines.wide};
         for (int e = 0; e < kEngines; ++e) {
             row.build_ms[e] = median(build[e]) * 1e3;
-            row.bytes[e] = double(e < kCourseEngines ? worlds[e]->acceleration_bytes()
-                                                     : (e == 4 ? engines.embree : engines.embree_robust).bytes()) /
-                           row.triangles;
+            row.bytes[e] =
+                double(e < kCourseEngines ? worlds[e]->acceleration_bytes()
+                                          : (e == 4 ? engines.embree : engines.embree_robust).bytes()) /
+                row.triangles;
         }
         const std::vector<Ray> probe = leak_probe_rays(mesh);
         row.probe_rays = probe.size();
