@@ -451,6 +451,35 @@ TEST_CASE("Rays from inside a closed mesh never escape the watertight test",
     CHECK(probe_leaks(mesh, TriangleTest::kWatertight).escaped == 0);
 }
 
+TEST_CASE("A hit found in a triangle packet has the record of the triangle tested alone",
+          "[world][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]") {
+    // The same tree (the SAH counting triangles in both), its leaves tested one by one or in packets: the
+    // packet's hit record reads the triangle's corners from the packet, the other from the triangle itself;
+    // they must be the same bits. The mesh emits, so every triangle is a light: its number in scene order.
+    const MeshShape mesh = jittered_closed_mesh(3);
+    Scene scene = scene_of({Shape{mesh, 0, "mesh"}});
+    scene.materials[0].emission = Color{1.0f};
+    const World one_by_one(scene, {TriangleTest::kWatertight, Acceleration::kBvh, false, false});
+    const World packets(scene, {TriangleTest::kWatertight, Acceleration::kBvh, true, false});
+    Pcg32 rng(5, 21);
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray{Vec3{10.3f, -5.1f, 2.9f} + Real(0.5) * random_unit(rng), random_unit(rng)};
+        const auto a = one_by_one.intersect(ray), b = packets.intersect(ray);
+        REQUIRE(a.has_value());
+        REQUIRE(b.has_value());
+        INFO("ray " << i);
+        CHECK(a->t == b->t);
+        CHECK(a->point == b->point);
+        CHECK(a->point_error == b->point_error);
+        CHECK(a->normal == b->normal);
+        CHECK(a->front_face == b->front_face);
+        CHECK(a->primitive == b->primitive);
+        CHECK(a->material == b->material);
+        CHECK(b->light == std::int32_t(b->primitive));
+        CHECK(a->light == b->light);
+    }
+}
+
 TEST_CASE("Rays aimed exactly at a shared diagonal always hit one of its two triangles",
           "[stability][triangle][ex:ch02.triangle_moller][ex:ch02.triangle_watertight]") {
     Pcg32 rng(17, 3);

@@ -14,7 +14,7 @@ constexpr std::uint32_t kMaxLeafSize = 8;
 constexpr std::uint32_t kMinSplitCount = 4;
 constexpr int kMaxDepth =
     36;  // below it, splits are median splits: the traversal stack of 64 never overflows
-// SAH costs, in units of one primitive test: a node visit (two box tests) costs about one primitive test.
+// SAH costs, in units of one leaf test (a primitive, or a packet of them): a node visit costs about one.
 constexpr double kTraversalCost = 1;
 
 // Half the surface area of a box, in double: float's product of two extents underflows to zero below about
@@ -37,9 +37,13 @@ Vec3 centroid_of(const Aabb& b) {
 
 struct Builder {
     std::span<const Aabb> bounds;
+    std::uint32_t leaf_packet;
     std::vector<Vec3> centroids;
     std::vector<std::uint32_t>& indices;
     std::vector<BvhNode>& nodes;
+
+    // The tests a leaf of n primitives costs a ray: ⌈n / leaf_packet⌉.
+    double tests(std::uint32_t n) const { return double((n + leaf_packet - 1) / leaf_packet); }
 
     void make_leaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
         nodes[node].offset = begin;
@@ -82,8 +86,9 @@ struct Builder {
             middle = median_split(begin, end, longest);
         } else {
             // Along each axis, bin the centroids into kBins slabs and evaluate the SAH at each bin boundary:
-            // cost(split) = C_trav + (A_left N_left + A_right N_right) / A, against cost(leaf) = N. The
-            // cheapest split of the three axes is taken.
+            // cost(split) = C_trav + (A_left T(N_left) + A_right T(N_right)) / A, against cost(leaf) = T(N),
+            // where T(N) = ⌈N / leaf_packet⌉ is the tests N primitives cost. The cheapest split of the three
+            // axes is taken.
             // (c − lo) / extent is in [0, 1] for every centroid c of the node: the bin is in [0, kBins).
             auto bin_of = [&](std::uint32_t p, int axis) {
                 const double t = (double(centroids[p][axis]) - double(centroid_box.min[axis])) / extent_of(axis) * kBins;
@@ -106,7 +111,7 @@ struct Builder {
                 for (int b = 0; b < kBins - 1; ++b) {
                     left.extend(bin_box[b]);
                     left_count += bin_count[b];
-                    left_cost[b] = left_count > 0 ? half_area(left) * double(left_count) : 0;
+                    left_cost[b] = left_count > 0 ? half_area(left) * tests(left_count) : 0;
                 }
                 Aabb right;
                 std::uint32_t right_count = 0;
@@ -114,7 +119,7 @@ struct Builder {
                     right.extend(bin_box[b]);
                     right_count += bin_count[b];
                     const double cost =
-                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * double(right_count) : 0);
+                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * tests(right_count) : 0);
                     if (cost < best_cost) {
                         best_cost = cost;
                         best = b;  // bins [0, b) go left
@@ -123,7 +128,7 @@ struct Builder {
                 }
             }
             const double split_cost = kTraversalCost + best_cost / node_area;
-            if (count <= kMaxLeafSize && !(split_cost < double(count))) return make_leaf(node, begin, end);
+            if (count <= kMaxLeafSize && !(split_cost < tests(count))) return make_leaf(node, begin, end);
             middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
                                                   [&](std::uint32_t p) { return bin_of(p, best_axis) < best; }) -
                                    indices.begin());
@@ -142,11 +147,11 @@ struct Builder {
 
 }  // namespace
 
-Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order) {
+Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::uint32_t leaf_packet) {
     order.resize(bounds.size());
     std::iota(order.begin(), order.end(), 0u);
     if (bounds.empty()) return;
-    Builder builder{bounds, {}, order, nodes_};
+    Builder builder{bounds, std::max(leaf_packet, 1u), {}, order, nodes_};
     builder.centroids.reserve(bounds.size());
     for (const Aabb& b : bounds) builder.centroids.push_back(centroid_of(b));
     nodes_.reserve(bounds.size());

@@ -20,4 +20,12 @@ TrianglePacket make_triangle_packet(std::span<const Triangle> triangles, std::sp
     return packet;
 }
 
+Triangle triangle_in(const TrianglePacket& packet, int lane) {
+    auto corner = [&](int k) {
+        const auto& v = packet.vertex[std::size_t(k)];
+        return Vec3{v[0][lane], v[1][lane], v[2][lane]};
+    };
+    return {corner(0), corner(1), corner(2)};
+}
+
 }  // namespace rt

@@ -31,6 +31,8 @@ struct TrianglePacket {
 
 // Packs triangles[0..] (one to four of them), lane k numbered slots[k].
 TrianglePacket make_triangle_packet(std::span<const Triangle> triangles, std::span<const std::uint32_t> slots);
+// The triangle in `lane`, its corners the same floats as the one packed there.
+Triangle triangle_in(const TrianglePacket& packet, int lane);
 
 // The nearest of the packet's triangles that the ray hits with t in (δt, t_max): its lane, t and barycentrics.
 struct TrianglePacketHit {

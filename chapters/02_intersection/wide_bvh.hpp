@@ -148,6 +148,10 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                 for (int k = 0; k < kWideBvhWidth; ++k) {
                     if (!(t[k] < kInfinity)) continue;
                     const Pending p{node.child[k], node.count[k], t[k]};
+                    if (p.count == 0) {
+                        __builtin_prefetch(&nodes_[p.child]);
+                        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[p.child]) + 64);
+                    }
                     int at = n++;
                     for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
                     entered[at] = p;

@@ -14,8 +14,14 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
+        // The wide tree's leaves are tested a packet of four triangles at a time: the SAH then weighs a leaf
+        // by its packets (a leaf of spheres or quad packets as well, an approximation: those are tested one
+        // by one).
+        const bool packets = options_.acceleration == Acceleration::kBvh &&
+                             options_.triangle_test == TriangleTest::kWatertight &&
+                             options_.triangle_packets && options_.packet_sah;
         std::vector<std::uint32_t> order;
-        bvh_ = Bvh(all_bounds(), order);
+        bvh_ = Bvh(all_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
         lay_out_in(order);
         if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }
@@ -23,10 +29,11 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
 
 // The wide BVH over the binary one. Each binary leaf becomes a list of items: its triangles four at a time
 // in packets (watertight test only: the packet is its SIMD form), in leaf order, then its other primitives.
+// A leaf of triangles only points at its packets directly: a ray reaching it loads them, and no list first.
 void World::collapse_to_wide() {
     const bool pack = options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
     wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
-        const std::uint32_t first = std::uint32_t(leaf_items_.size());
+        const std::uint32_t first_packet = std::uint32_t(triangle_packets_.size());
         std::vector<Triangle> triangles;
         std::vector<std::uint32_t> slots;
         for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
@@ -37,10 +44,13 @@ void World::collapse_to_wide() {
         }
         for (std::size_t at = 0; at < triangles.size(); at += kTriangleLanes) {
             const std::size_t n = std::min<std::size_t>(kTriangleLanes, triangles.size() - at);
-            leaf_items_.push_back(kPacketItem | std::uint32_t(triangle_packets_.size()));
             triangle_packets_.push_back(make_triangle_packet(std::span(triangles).subspan(at, n),
                                                              std::span(slots).subspan(at, n)));
         }
+        const std::uint32_t packets = std::uint32_t(triangle_packets_.size()) - first_packet;
+        if (triangles.size() == leaf.count) return WideBvh::ItemRange{kPacketItem | first_packet, packets};
+        const std::uint32_t first = std::uint32_t(leaf_items_.size());
+        for (std::uint32_t p = 0; p < packets; ++p) leaf_items_.push_back(kPacketItem | (first_packet + p));
         for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
             if (!(pack && primitives_[slot].kind == Kind::kTriangle)) leaf_items_.push_back(slot);
         }
@@ -79,15 +89,15 @@ void World::pack_quads() {
     }
     for (std::size_t first = 0; first < quads_in_order.size(); first += kQuadLanes) {
         const std::size_t count = std::min<std::size_t>(kQuadLanes, quads_in_order.size() - first);
-        items.push_back({Kind::kQuadPacket, std::uint32_t(packets_.size()), -1, 0});
+        items.push_back({Kind::kQuadPacket, std::uint32_t(packets_.size()), -1, 0, -1});
         packets_.push_back(make_quad_packet(quads_, std::span(quads_in_order).subspan(first, count)));
     }
     primitives_ = std::move(items);
 }
 
 void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive) {
-    primitives_.push_back({kind, index, material, std::uint32_t(primitives_.size())});
-    light_of_primitive_.push_back(emissive ? light_count_++ : -1);
+    primitives_.push_back(
+        {kind, index, material, std::uint32_t(primitives_.size()), emissive ? light_count_++ : -1});
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
@@ -247,13 +257,29 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
 bool World::test_items(const Ray& ray, const WatertightRay& sheared, std::uint32_t first, std::uint32_t count,
                        Real& t_max, bool any_hit, Candidate& found) const {
     bool hit = false;
+    auto test_packet = [&](std::uint32_t index) {
+        const TrianglePacket& packet = triangle_packets_[index];
+        const auto h = intersect_triangle_packet(ray, sheared, packet, t_max);
+        if (!h) return false;
+        found = {h->hit.t, packet.slot[std::size_t(h->lane)], h->hit.barycentrics, h->lane, &packet};
+        // The hit record will need the primitive's record: asked for now, it arrives while the walk goes on.
+        __builtin_prefetch(&primitives_[found.slot]);
+        return true;
+    };
+    if (first & kPacketItem) {  // a leaf of triangles: its packets
+        const std::uint32_t first_packet = first & ~kPacketItem;
+        for (std::uint32_t i = first_packet; i < first_packet + count; ++i) {
+            if (!test_packet(i)) continue;
+            t_max = found.t;
+            hit = true;
+            if (any_hit) return true;
+        }
+        return hit;
+    }
     for (std::uint32_t i = first; i < first + count; ++i) {
         const std::uint32_t item = leaf_items_[i];
         if (item & kPacketItem) {
-            const TrianglePacket& packet = triangle_packets_[item & ~kPacketItem];
-            const auto h = intersect_triangle_packet(ray, sheared, packet, t_max);
-            if (!h) continue;
-            found = {h->hit.t, packet.slot[std::size_t(h->lane)], h->hit.barycentrics};
+            if (!test_packet(item & ~kPacketItem)) continue;
         } else if (!test(ray, sheared, item, t_max, found)) {
             continue;
         }
@@ -324,7 +350,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     if (p.kind == Kind::kQuadPacket) p = quad_primitives_[packets_[p.index].quad[std::size_t(found.lane)]];
     hit.primitive = p.id;
     hit.material = p.material;
-    hit.light = light_of_primitive_[p.id];
+    hit.light = p.light;
     switch (p.kind) {
         case Kind::kSphere: {
             const Sphere& s = spheres_[p.index];
@@ -345,7 +371,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             break;
         }
         case Kind::kTriangle: {
-            const Triangle& t = triangles_[p.index];
+            const Triangle t =
+                found.triangles ? triangle_in(*found.triangles, found.lane) : triangles_[p.index];
             const Real b1 = found.uv.x, b2 = found.uv.y;
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;

@@ -35,6 +35,9 @@ struct WorldOptions {
     // With kBvh and the watertight test: each leaf's triangles are tested four at a time (false: one by one,
     // to measure what the packets buy).
     bool triangle_packets = true;
+    // With triangle packets: the SAH weighs a leaf by the packets it tests, ⌈n / 4⌉, not by its n triangles
+    // (false: by its triangles, to measure what that buys).
+    bool packet_sah = true;
 };
 
 // The box around a bounded primitive, as the BVH is built over (chapter 11 builds one over its own copy).
@@ -66,14 +69,16 @@ class World {
 
   private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle, kQuadPacket };
-    // A bounded primitive: which array holds it, where, its material, and its number in scene order
-    // (what Hit::primitive reports, whatever order the BVH lays the primitives out in). A packet's material
-    // and number are its quads' own, in quad_primitives_.
+    // A bounded primitive: which array holds it, where, its material, its number in scene order (what
+    // Hit::primitive reports, whatever order the BVH lays the primitives out in) and the light it is
+    // (Hit::light). A packet's material, number and light are its quads' own, in quad_primitives_. All that
+    // a hit record needs but the geometry is here, in one record in the BVH's leaf order: one cache miss.
     struct Primitive {
         Kind kind;
         std::uint32_t index;
         int material;
         std::uint32_t id;
+        std::int32_t light;
     };
     struct MaterialPlane {
         Plane plane;
@@ -81,12 +86,14 @@ class World {
     };
     // The nearest hit found so far, before its hit record is made: `slot` is the primitive's place in
     // primitives_, or primitives_.size() + i for plane i; `lane` is the quad's lane when the slot is a
-    // packet.
+    // packet. A triangle found in a triangle packet keeps the packet (`triangles`, and its lane): the hit
+    // record reads the triangle's corners there, already in the cache, not from triangles_.
     struct Candidate {
         Real t;
         std::uint32_t slot;
         Vec2 uv;
         int lane = 0;
+        const TrianglePacket* triangles = nullptr;
     };
 
     // Adds the primitives of `shape`; `emissive`: its material emits, so each bounded primitive is a light.
@@ -111,15 +118,16 @@ class World {
     std::vector<QuadPacket> packets_;
     std::vector<Primitive> quad_primitives_;        // with packets: quad i's own record (material, number)
     std::vector<Primitive> primitives_;             // the bounded ones; planes are numbered after them
-    std::vector<std::int32_t> light_of_primitive_;  // by Primitive::id: Hit::light
     std::int32_t light_count_ = 0;                  // emissive bounded primitives so far
     std::uint32_t bounded_count_ = 0;               // spheres, quads and triangles
     std::vector<MaterialPlane> planes_;
     Bvh bvh_;
-    // The wide BVH's leaves list items: a primitive's slot, or kPacketItem | i for triangle packet i.
+    // A wide leaf's items: a leaf of triangles only (every leaf of a mesh) is `kPacketItem | p` and a count,
+    // its packets p, p + 1, … themselves; any other leaf lists its items in leaf_items_, each a primitive's
+    // slot or kPacketItem | i for triangle packet i.
     static constexpr std::uint32_t kPacketItem = 1u << 31;
     std::vector<std::uint32_t> leaf_items_;
-    std::vector<TrianglePacket> triangle_packets_;
+    std::vector<TrianglePacket> triangle_packets_;  // in leaf order: a leaf's packets are neighbours
     WideBvh wide_;
 };
 

@@ -7,7 +7,8 @@
 // targets.
 //
 // `--embree` instead traces identical rays through the course's BVH, step by step (the binary BVH; the wide
-// one, triangles one by one; the wide one with triangle packets), and through Embree 3 (default and robust),
+// one, triangles one by one; the wide one with triangle packets, over a tree whose SAH counts triangles and
+// over one whose SAH counts packets), and through Embree 3 (default and robust),
 // on 1 and 2 threads, each figure the median of runs taken in turn, and counts the rays each lets escape from
 // the closed mesh. Built with Embree only when CMake finds it; otherwise `--embree` says so and stops.
 #include <CLI/CLI.hpp>
@@ -164,20 +165,29 @@ InsideRays make_inside_rays(std::size_t count, std::uint64_t seed) {
 }
 
 #ifdef RT_HAVE_EMBREE
-// The course's three steps and Embree's two builds, traced on the same rays.
+// The course's four steps and Embree's two builds, traced on the same rays.
+const WorldOptions kOptions[4] = {{TriangleTest::kWatertight, Acceleration::kBinaryBvh},
+                                  {TriangleTest::kWatertight, Acceleration::kBvh, false},
+                                  {TriangleTest::kWatertight, Acceleration::kBvh, true, false},
+                                  {}};
 struct Engines {
-    World binary, wide_single, wide;
+    World binary, wide_single, wide_triangle_sah, wide;
     EmbreeMesh embree, embree_robust;
     explicit Engines(const Scene& scene, const MeshShape& mesh)
-        : binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh}),
-          wide_single(scene, {TriangleTest::kWatertight, Acceleration::kBvh, false}),
-          wide(scene),
+        : binary(scene, kOptions[0]),
+          wide_single(scene, kOptions[1]),
+          wide_triangle_sah(scene, kOptions[2]),
+          wide(scene, kOptions[3]),
           embree(mesh, false),
           embree_robust(mesh, true) {}
 };
-constexpr int kEngines = 5;
-const char* const kEngineNames[kEngines] = {"binary BVH", "wide BVH, triangles 1 by 1", "wide BVH + packets",
-                                           "Embree", "Embree robust"};
+constexpr int kEngines = 6, kCourseEngines = 4;
+const char* const kEngineNames[kEngines] = {"binary BVH",
+                                            "wide BVH, triangles 1 by 1",
+                                            "wide BVH + packets, SAH counting triangles",
+                                            "wide BVH + packets, SAH counting packets",
+                                            "Embree",
+                                            "Embree robust"};
 
 // How many of `rays` engine `e` finds a hit for (nearest hit, or any hit before t_max[i] when given).
 std::size_t trace_engine(const Engines& en, int e, const std::vector<Ray>& rays, const std::vector<Real>* t_max,
@@ -197,8 +207,9 @@ std::size_t trace_engine(const Engines& en, int e, const std::vector<Ray>& rays,
     switch (e) {
         case 0: return count_hits(rays, threads, world_query(en.binary));
         case 1: return count_hits(rays, threads, world_query(en.wide_single));
-        case 2: return count_hits(rays, threads, world_query(en.wide));
-        case 3: return count_hits(rays, threads, embree_query(en.embree));
+        case 2: return count_hits(rays, threads, world_query(en.wide_triangle_sah));
+        case 3: return count_hits(rays, threads, world_query(en.wide));
+        case 4: return count_hits(rays, threads, embree_query(en.embree));
         default: return count_hits(rays, threads, embree_query(en.embree_robust));
     }
 }
@@ -215,7 +226,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
         repeats);
     std::printf("| triangles | rays | threads |");
     for (const char* name : kEngineNames) std::printf(" %s |", name);
-    std::printf(" course / Embree |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf(" course / Embree |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     struct Row {
         double triangles, build_ms[kEngines], bytes[kEngines];
         std::size_t escaped[3][kEngines], probe_rays;
@@ -233,18 +244,19 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
         // Build times, engine after engine, run after run.
         std::vector<double> build[kEngines];
         for (int r = 0; r < repeats; ++r) {
-            build[0].push_back(median_seconds(1, [&] { const World w(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh}); }));
-            build[1].push_back(median_seconds(1, [&] { const World w(scene, {TriangleTest::kWatertight, Acceleration::kBvh, false}); }));
-            build[2].push_back(median_seconds(1, [&] { const World w(scene); }));
-            build[3].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
-            build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
+            for (int e = 0; e < kCourseEngines; ++e)
+                build[e].push_back(median_seconds(1, [&] { const World w(scene, kOptions[e]); }));
+            build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
+            build[5].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
         }
-        const World* worlds[3] = {&engines.binary, &engines.wide_single, &engines.wide};
+        const World* worlds[kCourseEngines] = {&engines.binary, &engines.wide_single,
+                                               &engines.wide_triangle_sah, &engines.wide};
         for (int e = 0; e < kEngines; ++e) {
             row.build_ms[e] = median(build[e]) * 1e3;
-            row.bytes[e] = double(e < 3 ? worlds[e]->acceleration_bytes()
-                                        : (e == 3 ? engines.embree : engines.embree_robust).bytes()) /
-                           row.triangles;
+            row.bytes[e] =
+                double(e < kCourseEngines ? worlds[e]->acceleration_bytes()
+                                          : (e == 4 ? engines.embree : engines.embree_robust).bytes()) /
+                row.triangles;
         }
         const std::vector<Ray> probe = leak_probe_rays(mesh);
         row.probe_rays = probe.size();
@@ -277,9 +289,9 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
                     rate[e] = double(set.rays->size()) / median(seconds[e]) * 1e-6;
                     std::printf(" %.2f |", rate[e]);
                 }
-                std::printf(" %.2f |\n", rate[2] / rate[3]);
+                std::printf(" %.2f |\n", rate[3] / rate[4]);
                 std::fflush(stdout);
-                worst_ratio = std::min(worst_ratio, rate[2] / rate[3]);
+                worst_ratio = std::min(worst_ratio, rate[3] / rate[4]);
             }
         }
         rows.push_back(row);
@@ -288,7 +300,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
                 "lists, beside its triangles and their records; Embree: all it allocated)\n\n| triangles |",
                 repeats);
     for (const char* name : kEngineNames) std::printf(" %s: build ms, bytes/tri |", name);
-    std::printf("\n|---:|---|---|---|---|---|\n");
+    std::printf("\n|---:|---|---|---|---|---|---|\n");
     for (const Row& row : rows) {
         std::printf("| %.0f |", row.triangles);
         for (int e = 0; e < kEngines; ++e) std::printf(" %.1f ms, %.1f B |", row.build_ms[e], row.bytes[e]);
@@ -299,7 +311,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
                 "| triangles | rays |",
                 ray_count, ray_count);
     for (const char* name : kEngineNames) std::printf(" %s |", name);
-    std::printf("\n|---:|---|---:|---:|---:|---:|---:|\n");
+    std::printf("\n|---:|---|---:|---:|---:|---:|---:|---:|\n");
     bool watertight = true;
     for (const Row& row : rows) {
         const char* names[3] = {"from inside", "shadow (any hit)", "leak probe"};
@@ -308,7 +320,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
                         s == 2 ? (" (" + std::to_string(row.probe_rays) + ")").c_str() : "");
             for (int e = 0; e < kEngines; ++e) std::printf(" %zu |", row.escaped[s][e]);
             std::printf("\n");
-            for (int e = 0; e < 3; ++e) watertight = watertight && row.escaped[s][e] == 0;
+            for (int e = 0; e < kCourseEngines; ++e) watertight = watertight && row.escaped[s][e] == 0;
         }
     }
     std::printf("\nTargets:\n  the course's Mrays/s / Embree's, worst over the table: %.2f (target >= 0.5): %s\n",
