@@ -17,9 +17,12 @@
     √(1 + 1/9) = 1.054), else the row is flagged.
 
   report_checks.py lesson-table SOURCE_DIR OUT_DIR CHAPTER    the Markdown table of chapter CHAPTER's markers
-  report_checks.py ch06-reference OUT_DIR CSV                 the reference-noise table of chapter 06's study
-  report_checks.py ch07-depth OUT_DIR CSV REFERENCE_SPP       chapter 07's depth table with the noise flag
-  report_checks.py ch08-time OUT_DIR CSV                      chapter 08's time to the same RMSE, interpolated
+  report_checks.py csv FILE.csv                               a CSV as a Markdown table, numbers rounded
+  report_checks.py console FILE.txt                           a program's console output as tables and text
+  report_checks.py ch06-efficiency CSV REFERENCE.pfm          chapter 06's efficiency table with the noise flag
+  report_checks.py ch07-fresnel CSV                           Schlick's largest and mean error
+  report_checks.py ch07-depth CSV REFERENCE_SPP               chapter 07's depth table with the noise flag
+  report_checks.py ch08-time CSV REFERENCE.pfm                chapter 08's time to the same RMSE, interpolated
 """
 
 from __future__ import annotations
@@ -195,9 +198,10 @@ MEASURES: dict[str, tuple[str, Callable[[Path], float]]] = {
                                         shadow_samples="256")),
     "ch05.roulette_rays": ("rays per path, Russian roulette (lights: hit)",
                            lambda o: cell(o, "ch05_termination.csv", "rays_per_path", rule="roulette",
-                                          lights="hit")),
+                                          light_sampling="hit")),
     "ch05.depth8_bias": ("bias of depth 8 (lights: hit)",
-                         lambda o: cell(o, "ch05_termination.csv", "bias", rule="depth", value="8", lights="hit")),
+                         lambda o: cell(o, "ch05_termination.csv", "bias", rule="depth", max_depth="8",
+                                        light_sampling="hit")),
     "ch06.uniform_slope": ("slope of log RMSE against log spp, uniform",
                            lambda o: slope(o, "ch06_convergence.csv", "uniform")),
     "ch07.schlick_max_error": ("largest |R_Schlick − R|, entering",
@@ -239,6 +243,135 @@ def lesson_table(source: Path, out: Path, chapter: str) -> str:
     return "\n".join(rows) + "\n"
 
 
+# ------------------------------------------------------------------ the programs' output as tables and text
+
+NUMERIC = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?[%*]?$")
+WORD_CELLS = {"on", "off", "yes", "no", "-", "–"}
+
+
+def rounded_number(text: str) -> str:
+    """A number to four significant digits (whole numbers as they are, a leading + and a trailing % or * kept);
+    other text as it is."""
+    if not NUMERIC.match(text) or re.match(r"^[+-]?\d+[%*]?$", text):
+        return text
+    suffix = text[-1] if text[-1] in "%*" else ""
+    value = float(text.rstrip("%*"))
+    out = f"{value:.4g}"
+    if text.startswith("+") and value >= 0:
+        out = "+" + out
+    return out + suffix
+
+
+def rounded_text(line: str) -> str:
+    """Every number of a sentence to four significant digits."""
+    return re.sub(r"(?<![\w.])[+-]?\d+\.\d+(?:[eE][+-]?\d+)?(?![\w.])", lambda m: rounded_number(m.group()), line)
+
+
+def split_row(line: str) -> Optional[tuple[str, list[tuple[str, int]]]]:
+    """A table row of a program's output: a label (words, maybe none) then values (numbers, on/off), each
+    value with the column where it ends; None for any other line (a sentence, a "name: value" line)."""
+    tokens = [(m.group(), m.start(), m.end()) for m in re.finditer(r"\S+", line)]
+    first_value = len(tokens)
+    while first_value > 0 and (NUMERIC.match(tokens[first_value - 1][0])
+                               or tokens[first_value - 1][0].lower() in WORD_CELLS):
+        first_value -= 1
+    values = tokens[first_value:]
+    label = line[:values[0][1]].strip() if values else ""
+    if not values or not any(NUMERIC.match(v) for v, _, _ in values) or label.endswith(":"):
+        return None
+    if not label and len(values) < 2:
+        return None
+    return label, [(v, e) for v, _, e in values]
+
+
+def split_header(header: str, row: tuple[str, list[tuple[str, int]]]) -> Optional[list[str]]:
+    """A header line over a row cut at the row's value columns' ends (printf right-aligns them); when the row
+    has a label, the first piece is the label's name and the first value's, two or more spaces apart. None when
+    a name comes out empty."""
+    label, values = row
+    cells, start = [], 0
+    for _, end in values:
+        while 0 < end < len(header) and not header[end - 1].isspace() and not header[end].isspace():
+            end += 1  # a name wider than its column's numbers, or a left-aligned value: cut after the word
+        cells.append(header[start:end].strip())
+        start = end
+    if header[start:].strip():
+        return None
+    if label:
+        parts = re.split(r"\s{2,}", cells[0], maxsplit=1)
+        if len(parts) != 2:
+            return None
+        cells = parts + cells[1:]
+    return cells if all(cells) else None
+
+
+def markdown_table(header: list[str], rows: list[list[str]]) -> list[str]:
+    align = ["---:" if all(NUMERIC.match(r[i]) or r[i] in ("—", NOT_REACHED) for r in rows) else "---"
+             for i in range(len(header))]
+    return (["| " + " | ".join(header) + " |", "|" + "|".join(align) + "|"]
+            + ["| " + " | ".join(rounded_number(c) for c in r) + " |" for r in rows])
+
+
+def console_to_markdown(text: str) -> str:
+    """A program's console output as Markdown: each table it prints (a header line over rows of an optional
+    label and numbers right-aligned in columns, as printf's %10s over %10.4f prints them) as a table with named
+    columns and rounded numbers; indented "name: value" lines as a two-column table; any other line as a
+    sentence, its numbers rounded. A value marked * (extrapolated, chapter 10's equal-error spp past its last
+    render) is shown as "not reached in the measured range", and the row's values that follow from it as —."""
+    lines = [line.rstrip() for line in text.splitlines()]
+    out: list[str] = []
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        if not line.strip():
+            out.append("")
+            i += 1
+            continue
+        first = split_row(lines[i + 1]) if i + 1 < len(lines) and split_row(line) is None else None
+        header = split_header(line, first) if first else None
+        if header:
+            rows = []
+            j = i + 1
+            while j < len(lines):
+                row = split_row(lines[j])
+                if row is None or bool(row[0]) != bool(first[0]) or len(row[1]) != len(first[1]):
+                    break
+                cells = ([row[0]] if row[0] else []) + [v for v, _ in row[1]]
+                # A value the program marks * is extrapolated past its measured points: it and what follows
+                # from it are not shown.
+                starred = next((k for k, c in enumerate(cells) if c.endswith("*")), None)
+                if starred is not None:
+                    cells = cells[:starred] + [NOT_REACHED] + ["—"] * (len(cells) - starred - 1)
+                rows.append(cells)
+                j += 1
+            out += [""] + markdown_table(header, rows) + [""]
+            i = j
+            continue
+        pair = re.compile(r"^\s+[^:(;]+: [^;]+$")  # "  chapter 07: median 0.125 s", no sentence
+        if pair.match(line):
+            pairs = []
+            j = i
+            while j < len(lines) and pair.match(lines[j]):
+                name, value = lines[j].split(":", 1)
+                pairs.append(f"| {name.strip()} | {rounded_text(value.strip())} |")
+                j += 1
+            out += ["", "| item | measured |", "|---|---|"] + pairs + [""]
+            i = j
+            continue
+        out.append(rounded_text(line.strip()))  # lines of one sentence run on into one paragraph
+        i += 1
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(out)).strip() + "\n"
+
+
+def csv_to_markdown(csv_file: Path) -> str:
+    """A CSV as a Markdown table: its header's names with spaces for underscores, numbers rounded."""
+    with csv_file.open(newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        return ""
+    return "\n".join(markdown_table([h.replace("_", " ") for h in rows[0]], rows[1:])) + "\n"
+
+
 # -------------------------------------------------------------------------------------- the studies' tables
 
 def noise_note(reference_rmse: float, how: str, flagged: int) -> str:
@@ -249,26 +382,46 @@ def noise_note(reference_rmse: float, how: str, flagged: int) -> str:
     return sentence + " Every error here is at least three times the reference's own: it can measure them."
 
 
-def ch06_reference(out: Path, csv_file: Path) -> str:
-    """Chapter 06's reference noise against the smallest error of each strategy."""
-    references = sorted((out / "references").glob("ch06_reference_*spp.pfm"))
+def ch06_efficiency(csv_file: Path, reference: Path) -> str:
+    """Chapter 06's strategies at their largest spp: the slope of log RMSE against log spp, the error, the
+    processor time, the efficiency 1 / (MSE × time) against uniform's, and whether the reference (the mean of
+    two halves, `reference` and its _half.pfm) is good enough for that error."""
     rows = read_csv(csv_file)
-    if not references or not rows:
+    if not rows:
         return ""
-    reference = references[0]
     own = rmse_of_halves(reference, reference.with_name(reference.stem + "_half.pfm"))
-    table = ["| strategy | largest spp | RMSE there | reference noise ok |", "|---|---:|---:|---|"]
+    table = ["| strategy | slope of log RMSE | spp | RMSE | MSE − reference's | processor s | efficiency 1/(MSE·s) |"
+             " × uniform | reference noise ok |", "|---|---:|---:|---:|---:|---:|---:|---:|---|"]
     flagged = 0
-    for strategy in dict.fromkeys(r["strategy"] for r in rows):
-        last = [r for r in rows if r["strategy"] == strategy][-1]
-        rmse = float(last["rmse"])
+    last = {r["strategy"]: r for r in rows}  # each strategy's largest spp: its last row
+    uniform = last.get("uniform")
+    base = 1 / (float(uniform["mse"]) * float(uniform["cpu_seconds"])) if uniform and float(uniform["mse"]) > 0 else 0
+    for strategy, r in last.items():
+        rmse, mse, cpu = float(r["rmse"]), float(r["mse"]), float(r["cpu_seconds"])
         noisy = reference_too_noisy(own, rmse)
         flagged += noisy
-        table.append(f"| {strategy} | {last['spp']} | {rmse:.3g} | {'⚠ no' if noisy else 'yes'} |")
-    return noise_note(own, f"from its two halves, {reference.name}", flagged) + "\n\n" + "\n".join(table) + "\n"
+        efficiency = 1 / (mse * cpu) if mse > 0 and cpu > 0 else 0
+        table.append(f"| {strategy} | {figure_text(slope(csv_file.parent, csv_file.name, strategy))} | {r['spp']} | {rmse:.3g} | "
+                     f"{mse:.3g} | {cpu:.3g} | {efficiency:.4g} | "
+                     f"{f'{efficiency / base:.3g}' if base > 0 and efficiency > 0 else '—'} | "
+                     f"{'⚠ no' if noisy else 'yes'} |")
+    return ("\n".join(table) + "\n\n" + noise_note(own, f"from its two halves, {reference.name}", flagged) + "\n")
 
 
-def ch07_depth(out: Path, csv_file: Path, reference_spp: int) -> str:
+def ch07_fresnel(csv_file: Path) -> str:
+    """Schlick against the exact reflectance over the angles of chapter 07's Fresnel CSV: largest error, where,
+    and the mean, entering (η = 1.5) and leaving (1/1.5) the glass."""
+    rows = read_csv(csv_file)
+    table = ["| side | largest error of Schlick | at θ (degrees) | mean error | angles |", "|---|---:|---:|---:|---:|"]
+    for side in ("entering", "leaving"):
+        errors = [(abs(float(r[f"schlick_{side}"]) - float(r[f"exact_{side}"])), float(r["theta_deg"])) for r in rows]
+        worst, at = max(errors)
+        table.append(f"| {side} | {worst:.3g} | {at:.1f} | {sum(e for e, _ in errors) / len(errors):.2g} | "
+                     f"{len(errors):,} |")
+    return "\n".join(table) + "\n"
+
+
+def ch07_depth(csv_file: Path, reference_spp: int) -> str:
     rows = read_csv(csv_file)
     if not rows:
         return ""
@@ -288,14 +441,13 @@ def ch07_depth(out: Path, csv_file: Path, reference_spp: int) -> str:
     return "\n".join(table) + "\n\n" + noise_note(own, how, flagged) + "\n"
 
 
-def ch08_time(out: Path, csv_file: Path) -> str:
-    """Chapter 08's time to the same RMSE: the light tracer's curve, interpolated only."""
+def ch08_time(csv_file: Path, reference: Optional[Path]) -> str:
+    """Chapter 08's time to the same RMSE: the light tracer's curve, interpolated only; and whether chapter
+    06's reference (`reference`, the mean of two halves) is good enough for each error."""
     rows = read_csv(csv_file)
     forward = [(float(r["seconds"]), float(r["rmse"])) for r in rows if r["tracer"].startswith("forward")]
     reverse = [r for r in rows if r["tracer"].startswith("reverse")]
-    references = sorted((out / "references").glob("ch06_reference_*spp.pfm"))
-    own = (rmse_of_halves(references[0], references[0].with_name(references[0].stem + "_half.pfm"))
-           if references else None)
+    own = rmse_of_halves(reference, reference.with_name(reference.stem + "_half.pfm")) if reference else None
     table = ["| tracer | spp | RMSE | time (s) | light tracer to the same RMSE (s) | forward / reverse | "
              "reference noise ok |", "|---|---:|---:|---:|---:|---:|---|"]
     flagged = 0
@@ -312,19 +464,27 @@ def ch08_time(out: Path, csv_file: Path) -> str:
                      f"{'—' if own is None else '⚠ no' if noisy else 'yes'} |")
     text = "\n".join(table) + "\n"
     if own is not None:
-        text += "\n" + noise_note(own, f"from its two halves, {references[0].name}", flagged) + "\n"
+        text += "\n" + noise_note(own, f"from its two halves, {reference.name}", flagged) + "\n"
     return text
 
 
 def main(argv: list[str]) -> int:
-    if len(argv) == 4 and argv[0] == "lesson-table":
-        sys.stdout.write(lesson_table(Path(argv[1]), Path(argv[2]), argv[3]))
-    elif len(argv) == 3 and argv[0] == "ch06-reference":
-        sys.stdout.write(ch06_reference(Path(argv[1]), Path(argv[2])))
-    elif len(argv) == 4 and argv[0] == "ch07-depth":
-        sys.stdout.write(ch07_depth(Path(argv[1]), Path(argv[2]), int(argv[3])))
-    elif len(argv) == 3 and argv[0] == "ch08-time":
-        sys.stdout.write(ch08_time(Path(argv[1]), Path(argv[2])))
+    command, arguments = (argv[0], argv[1:]) if argv else ("", [])
+    if command == "lesson-table" and len(arguments) == 3:
+        sys.stdout.write(lesson_table(Path(arguments[0]), Path(arguments[1]), arguments[2]))
+    elif command == "console" and len(arguments) == 1:
+        sys.stdout.write(console_to_markdown(Path(arguments[0]).read_text(encoding="utf-8")))
+    elif command == "csv" and len(arguments) == 1:
+        sys.stdout.write(csv_to_markdown(Path(arguments[0])))
+    elif command == "ch06-efficiency" and len(arguments) == 2:
+        sys.stdout.write(ch06_efficiency(Path(arguments[0]), Path(arguments[1])))
+    elif command == "ch07-fresnel" and len(arguments) == 1:
+        sys.stdout.write(ch07_fresnel(Path(arguments[0])))
+    elif command == "ch07-depth" and len(arguments) == 2:
+        sys.stdout.write(ch07_depth(Path(arguments[0]), int(arguments[1])))
+    elif command == "ch08-time" and len(arguments) == 2:
+        reference = Path(arguments[1])
+        sys.stdout.write(ch08_time(Path(arguments[0]), reference if reference.is_file() else None))
     else:
         print(__doc__, file=sys.stderr)
         return 2

@@ -92,5 +92,25 @@ class NoisyReference(unittest.TestCase):
                                    math.sqrt(16 / 6 / 4), places=6)
 
 
+class ConsoleTables(unittest.TestCase):
+    def test_a_printf_table_becomes_named_rounded_columns(self):
+        text = ("Title line, 3 runs\n"
+                "  denoiser       rel. MSE  plain spp  time s\n"
+                "  none         3.0126e-01        16    0.500\n"
+                "  atrous       1.8334e-02       267*   5.852\n"
+                "  chapter 07: median 0.12534 s\n")
+        self.assertEqual(rc.console_to_markdown(text),
+                         "Title line, 3 runs\n\n"
+                         "| denoiser | rel. MSE | plain spp | time s |\n"
+                         "|---|---:|---:|---:|\n"
+                         "| none | 0.3013 | 16 | 0.5 |\n"
+                         f"| atrous | 0.01833 | {rc.NOT_REACHED} | — |\n\n"
+                         "| item | measured |\n|---|---|\n| chapter 07 | median 0.1253 s |\n")
+
+    def test_rounding(self):
+        self.assertEqual([rc.rounded_number(t) for t in ["0.123456", "+1.5e-05", "1024", "58.64%", "x"]],
+                         ["0.1235", "+1.5e-05", "1024", "58.64%", "x"])
+
+
 if __name__ == "__main__":
     unittest.main()
