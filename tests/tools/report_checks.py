@@ -18,7 +18,7 @@
 
   report_checks.py lesson-table SOURCE_DIR OUT_DIR CHAPTER    the Markdown table of chapter CHAPTER's markers
   report_checks.py csv FILE.csv                               a CSV as a Markdown table, numbers rounded
-  report_checks.py console FILE.txt                           a program's console output as tables and text
+  report_checks.py console FILE.txt [REFERENCE_SPP]           a program's console output as tables and text
   report_checks.py ch06-efficiency CSV REFERENCE.pfm          chapter 06's efficiency table with the noise flag
   report_checks.py ch07-fresnel CSV                           Schlick's largest and mean error
   report_checks.py ch07-depth CSV REFERENCE_SPP               chapter 07's depth table with the noise flag
@@ -166,6 +166,20 @@ def cell(out: Path, file: str, column: str, **where: str) -> float:
     return float(rows[0][column])
 
 
+def console_cell(out: Path, file: str, row: str, column: str) -> float:
+    """The number in `column` of the row labelled `row` of a table in a program's console output out/file."""
+    header: list[str] = []
+    for line in console_to_markdown((out / file).read_text(encoding="utf-8")).splitlines():
+        cells = [c.strip() for c in line.strip("|").split("|")] if line.startswith("|") else []
+        if cells and not header:
+            header = cells
+        elif not cells:
+            header = []
+        elif cells[0] == row and column in header:
+            return float(cells[header.index(column)])
+    raise LookupError(f"{file}: no row {row!r} with a column {column!r}")
+
+
 def slope(out: Path, file: str, strategy: str) -> float:
     """Least-squares slope of log RMSE against log spp of one strategy in chapter 06's convergence CSV."""
     rows = [r for r in read_csv(out / file) if r["strategy"] == strategy]
@@ -204,7 +218,12 @@ MEASURES: dict[str, tuple[str, Callable[[Path], float]]] = {
                                         light_sampling="hit")),
     "ch06.uniform_slope": ("slope of log RMSE against log spp, uniform",
                            lambda o: slope(o, "ch06_convergence.csv", "uniform")),
-    "ch07.schlick_max_error": ("largest |R_Schlick − R|, entering",
+    "ch08.bounce_fraction": ("fraction of connected light paths contributing through a bounce",
+                             lambda o: console_cell(o, "ch08_forward.txt", "connect, bounces only", "fraction")),
+    "ch08.camera_rays_per_path": ("camera rays (splats) per connected light path",
+                                  lambda o: console_cell(o, "ch08_forward.txt", "connect (pinhole)",
+                                                         "camera rays/path")),
+    "ch07.schlick_max_error": ("largest error of Schlick's R, entering",
                                lambda o: max(abs(float(r["schlick_entering"]) - float(r["exact_entering"]))
                                              for r in read_csv(o / "ch07_fresnel.csv"))),
     "ch07.depth1_bias": ("mean error (bias) at max depth 1",
@@ -281,7 +300,7 @@ def split_row(line: str) -> Optional[tuple[str, list[tuple[str, int]]]]:
         return None
     if not label and len(values) < 2:
         return None
-    return label, [(v, e) for v, _, e in values]
+    return label, [(v, e - 1 if v.endswith("*") else e) for v, _, e in values]  # a * overflows its column
 
 
 def split_header(header: str, row: tuple[str, list[tuple[str, int]]]) -> Optional[list[str]]:
@@ -306,20 +325,45 @@ def split_header(header: str, row: tuple[str, list[tuple[str, int]]]) -> Optiona
 
 
 def markdown_table(header: list[str], rows: list[list[str]]) -> list[str]:
-    align = ["---:" if all(NUMERIC.match(r[i]) or r[i] in ("—", NOT_REACHED) for r in rows) else "---"
+    align = ["---:" if all(NUMERIC.match(r[i]) or r[i] in ("", "—", NOT_REACHED) for r in rows) else "---"
              for i in range(len(header))]
     return (["| " + " | ".join(header) + " |", "|" + "|".join(align) + "|"]
             + ["| " + " | ".join(rounded_number(c) for c in r) + " |" for r in rows])
 
 
-def console_to_markdown(text: str) -> str:
+def reference_noise_from_tables(tables: list[tuple[list[str], list[list[str]]]],
+                                reference_spp: int) -> tuple[Optional[float], Optional[float]]:
+    """A reference's own RMSE and relative MSE estimated from every row of the tables that has an spp, as the
+    smallest of RMSE · √(spp / reference spp) and relative MSE · spp / reference spp (noise falls like 1/√spp
+    in RMSE, 1/spp in MSE; each row gives an upper bound, bias and the reference's noise included)."""
+    rmse, relative = [], []
+    for header, rows in tables:
+        if "spp" not in header:
+            continue
+        for r in rows:
+            cells = dict(zip(header, r))
+            try:
+                spp = float(cells["spp"])
+                if "RMSE" in cells:
+                    rmse.append(float(cells["RMSE"]) * math.sqrt(spp / reference_spp))
+                if "rel. MSE" in cells:
+                    relative.append(float(cells["rel. MSE"]) * spp / reference_spp)
+            except ValueError:
+                continue
+    return (min(rmse) if rmse else None), (min(relative) if relative else None)
+
+
+def console_to_markdown(text: str, reference_spp: Optional[int] = None) -> str:
     """A program's console output as Markdown: each table it prints (a header line over rows of an optional
     label and numbers right-aligned in columns, as printf's %10s over %10.4f prints them) as a table with named
     columns and rounded numbers; indented "name: value" lines as a two-column table; any other line as a
     sentence, its numbers rounded. A value marked * (extrapolated, chapter 10's equal-error spp past its last
-    render) is shown as "not reached in the measured range", and the row's values that follow from it as —."""
+    render) is shown as "not reached in the measured range", and the row's values that follow from it as —.
+    With `reference_spp` (the samples of the reference the errors are measured against), each table with an
+    RMSE or a relative MSE gets a column saying whether the reference is good enough for it, and a sentence
+    after the last table says how noisy the reference is (reference_noise_from_tables)."""
     lines = [line.rstrip() for line in text.splitlines()]
-    out: list[str] = []
+    out: list[str | tuple[list[str], list[list[str]]]] = []
     i = 0
     while i < len(lines):
         line = lines[i]
@@ -328,23 +372,41 @@ def console_to_markdown(text: str) -> str:
             i += 1
             continue
         first = split_row(lines[i + 1]) if i + 1 < len(lines) and split_row(line) is None else None
-        header = split_header(line, first) if first else None
+        parsed = []
+        j = i + 1
+        while first and j < len(lines):
+            row = split_row(lines[j])
+            if row is None or bool(row[0]) != bool(first[0]):
+                break
+            parsed.append(row)
+            j += 1
+        # The columns end where at least half of the rows have a value end (printf right-aligns them). A row may leave a column empty; a number that ends elsewhere, before the
+        # columns, is part of its row's label ("lens radius 16").
+        counts: dict[int, int] = {}
+        for _, values in parsed:
+            for _, end in values:
+                counts[end] = counts.get(end, 0) + 1
+        ends = sorted(e for e, n in counts.items() if 2 * n >= len(parsed))
+        column_of = lambda end: next((k for k, e in enumerate(ends) if e == end), None)  # noqa: E731
+        header = split_header(line, (first[0], [("", e) for e in ends])) if parsed and ends else None
         if header:
             rows = []
-            j = i + 1
-            while j < len(lines):
-                row = split_row(lines[j])
-                if row is None or bool(row[0]) != bool(first[0]) or len(row[1]) != len(first[1]):
-                    break
-                cells = ([row[0]] if row[0] else []) + [v for v, _ in row[1]]
+            for label, values in parsed:
+                by_column = ["" for _ in ends]
+                for value, end in values:
+                    column = column_of(end)
+                    if column is None and not any(by_column):
+                        label = (label + " " + value).strip()
+                    elif column is not None:
+                        by_column[column] = value
+                cells = ([label] if label else []) + by_column
                 # A value the program marks * is extrapolated past its measured points: it and what follows
                 # from it are not shown.
                 starred = next((k for k, c in enumerate(cells) if c.endswith("*")), None)
                 if starred is not None:
                     cells = cells[:starred] + [NOT_REACHED] + ["—"] * (len(cells) - starred - 1)
                 rows.append(cells)
-                j += 1
-            out += [""] + markdown_table(header, rows) + [""]
+            out += ["", (header, rows), ""]
             i = j
             continue
         pair = re.compile(r"^\s+[^:(;]+: [^;]+$")  # "  chapter 07: median 0.125 s", no sentence
@@ -360,7 +422,56 @@ def console_to_markdown(text: str) -> str:
             continue
         out.append(rounded_text(line.strip()))  # lines of one sentence run on into one paragraph
         i += 1
-    return re.sub(r"\n{3,}", "\n\n", "\n".join(out)).strip() + "\n"
+    tables = [b for b in out if isinstance(b, tuple)]
+    own_rmse, own_relative = reference_noise_from_tables(tables, reference_spp) if reference_spp else (None, None)
+    flagged = 0
+    lines_out: list[str] = []
+    for block in out:
+        if isinstance(block, str):
+            lines_out.append(block)
+            continue
+        header, rows = block
+        own_row = next((r for r in rows if r[0].startswith("reference's own noise")), None)
+        if own_row:  # a table that lists the reference's own error per column (chapter 08's regions)
+            verdicts = []
+            for r in rows:
+                pairs = [(float(v), float(o)) for v, o in zip(r[1:], own_row[1:])
+                         if NUMERIC.match(v) and NUMERIC.match(o) and "RMSE" in header[r.index(v)]]
+                noisy = r is not own_row and any(reference_too_noisy(o, v) for v, o in pairs)
+                flagged += noisy
+                verdicts.append("" if r is own_row else "⚠ no" if noisy else "yes")
+            lines_out += markdown_table(header + ["reference noise ok"], [r + [v] for r, v in zip(rows, verdicts)])
+            continue
+        column = "RMSE" if "RMSE" in header and own_rmse else "rel. MSE" if "rel. MSE" in header and own_relative else None
+        if column:
+            k = header.index(column)
+            verdicts = []
+            for r in rows:
+                try:
+                    value = float(r[k])
+                except ValueError:
+                    verdicts.append("—")
+                    continue
+                # RMSE against RMSE; a relative MSE's square root against the reference's.
+                noisy = (reference_too_noisy(own_rmse, value) if column == "RMSE"
+                         else reference_too_noisy(math.sqrt(own_relative), math.sqrt(value)))
+                flagged += noisy
+                verdicts.append("⚠ no" if noisy else "yes")
+            header, rows = header + ["reference noise ok"], [r + [v] for r, v in zip(rows, verdicts)]
+        lines_out += markdown_table(header, rows)
+    if flagged and not (own_rmse or own_relative):
+        lines_out += ["", f"**The reference is too noisy for {flagged} of these rows** (marked ⚠: its own RMSE is "
+                      "over a third of theirs in a column); render it with more samples to measure them."]
+    if own_rmse or own_relative:
+        own = (f"RMSE about {own_rmse:.2g}" if own_rmse else "") + (" and " if own_rmse and own_relative else "") + \
+              (f"relative MSE about {own_relative:.2g}" if own_relative else "")
+        how = f"estimated from its {reference_spp} spp and the renders above: noise falls like 1/√spp"
+        lines_out += ["", (f"The reference's own {own} ({how})." + (
+            f" **The reference is too noisy for {flagged} of these errors** (marked ⚠: its own error is over a "
+            "third of theirs, in RMSE or in the square root of the relative MSE); render it with more samples to "
+            "measure them." if flagged else
+            " Every error here is at least three times the reference's own: it can measure them."))]
+    return re.sub(r"\n{3,}", "\n\n", "\n".join(lines_out)).strip() + "\n"
 
 
 def csv_to_markdown(csv_file: Path) -> str:
@@ -472,8 +583,9 @@ def main(argv: list[str]) -> int:
     command, arguments = (argv[0], argv[1:]) if argv else ("", [])
     if command == "lesson-table" and len(arguments) == 3:
         sys.stdout.write(lesson_table(Path(arguments[0]), Path(arguments[1]), arguments[2]))
-    elif command == "console" and len(arguments) == 1:
-        sys.stdout.write(console_to_markdown(Path(arguments[0]).read_text(encoding="utf-8")))
+    elif command == "console" and len(arguments) in (1, 2):
+        sys.stdout.write(console_to_markdown(Path(arguments[0]).read_text(encoding="utf-8"),
+                                             int(arguments[1]) if len(arguments) == 2 else None))
     elif command == "csv" and len(arguments) == 1:
         sys.stdout.write(csv_to_markdown(Path(arguments[0])))
     elif command == "ch06-efficiency" and len(arguments) == 2:
