@@ -54,7 +54,7 @@ log() { echo "report: $*" >&2; }
 # csv_to_markdown FILE: the CSV as a Markdown table, its columns named by its header, numbers rounded.
 csv_to_markdown() { python3 "$source_dir/tests/tools/report_checks.py" csv "$1"; }
 # console_to_markdown FILE: a program's console output (kept beside the page) as tables and sentences.
-console_to_markdown() { python3 "$source_dir/tests/tools/report_checks.py" console "$1"; }
+console_to_markdown() { python3 "$source_dir/tests/tools/report_checks.py" console "$@"; }
 
 # plot NAME GNUPLOT_COMMANDS: draws $out/NAME.png (800×500) from the commands, which read CSVs in $out.
 plot() {
@@ -189,8 +189,8 @@ if have 02_intersection ch02_benchmark; then
 
 $(csv_to_markdown "$out/ch02_bvh.csv")
 
-Rays per second of the BVH and of brute force on meshes of 10³ … 10^$max_exponent triangles (median of $repeats
-runs): the BVH's rate falls slowly (its boxes per ray grow like log n), brute force's like 1/n.
+Rays per second of the BVH and of brute force on meshes of 10³ … 10^$max_exponent triangles ($( [ "$repeats" = 1 ] &&
+echo "one run" || echo "median of $repeats runs")): the BVH's rate falls slowly (its boxes per ray grow like log n), brute force's like 1/n.
 
 $(csv_to_markdown "$out/ch02_triangle_tests.csv")
 
@@ -400,11 +400,11 @@ if have 07_bsdf_refraction ch07_bsdf_refraction; then
 
 <img src="ch07.png" width="320"> <img src="ch07_fresnel.png" width="480">
 
-$(checks ch07-fresnel "$out/ch07_fresnel.csv")
+$(console_to_markdown "$out/ch07_fresnel.txt")
 
 Schlick's approximation against the exact Fresnel equations of a dielectric (η = 1.5), entering and leaving
-the glass, over the CSV's angles: its largest error, where, and its mean (what one evaluation of each costs is
-in \`ch07_fresnel.txt\` beside this page).
+the glass: its largest and mean error, where it is largest, and what one evaluation of each costs (the plot:
+the CSV's angles, one degree apart).
 
 <img src="ch07_depth.png" width="480">
 

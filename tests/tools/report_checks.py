@@ -20,7 +20,6 @@
   report_checks.py csv FILE.csv                               a CSV as a Markdown table, numbers rounded
   report_checks.py console FILE.txt [REFERENCE_SPP]           a program's console output as tables and text
   report_checks.py ch06-efficiency CSV REFERENCE.pfm          chapter 06's efficiency table with the noise flag
-  report_checks.py ch07-fresnel CSV                           Schlick's largest and mean error
   report_checks.py ch07-depth CSV REFERENCE_SPP               chapter 07's depth table with the noise flag
   report_checks.py ch08-time CSV REFERENCE.pfm                chapter 08's time to the same RMSE, interpolated
 """
@@ -39,6 +38,7 @@ from typing import Callable, Optional
 # A reference whose own RMSE is above the measured RMSE divided by this is too noisy for it.
 NOISY_REFERENCE_RATIO = 3
 NOT_REACHED = "not reached in the measured range"
+BEFORE_FIRST = "not in the measured range: its first point ({:.3g} s) is already below this RMSE"
 
 # ------------------------------------------------------------------------------------------ lesson markers
 
@@ -224,8 +224,7 @@ MEASURES: dict[str, tuple[str, Callable[[Path], float]]] = {
                                   lambda o: console_cell(o, "ch08_forward.txt", "connect (pinhole)",
                                                          "camera rays/path")),
     "ch07.schlick_max_error": ("largest error of Schlick's R, entering",
-                               lambda o: max(abs(float(r["schlick_entering"]) - float(r["exact_entering"]))
-                                             for r in read_csv(o / "ch07_fresnel.csv"))),
+                               lambda o: console_cell(o, "ch07_fresnel.txt", "1.5", "max error")),
     "ch07.depth1_bias": ("mean error (bias) at max depth 1",
                          lambda o: cell(o, "ch07_depth.csv", "mean_error", max_depth="1")),
 }
@@ -303,10 +302,16 @@ def split_row(line: str) -> Optional[tuple[str, list[tuple[str, int]]]]:
     return label, [(v, e - 1 if v.endswith("*") else e) for v, _, e in values]  # a * overflows its column
 
 
+def label_columns(label: str, columns: int = 0) -> list[str]:
+    """A row's label as its columns: pieces two or more spaces apart (at most `columns`, when given)."""
+    parts = re.split(r"\s{2,}", label.strip(), maxsplit=columns - 1 if columns else 0)
+    return parts + [""] * (columns - len(parts)) if columns else parts
+
+
 def split_header(header: str, row: tuple[str, list[tuple[str, int]]]) -> Optional[list[str]]:
     """A header line over a row cut at the row's value columns' ends (printf right-aligns them); when the row
-    has a label, the first piece is the label's name and the first value's, two or more spaces apart. None when
-    a name comes out empty."""
+    has a label (one column, or several two or more spaces apart: "1.5000   entering"), the first piece holds
+    their names and the first value's, two or more spaces apart. None when a name comes out empty."""
     label, values = row
     cells, start = [], 0
     for _, end in values:
@@ -317,8 +322,9 @@ def split_header(header: str, row: tuple[str, list[tuple[str, int]]]) -> Optiona
     if header[start:].strip():
         return None
     if label:
-        parts = re.split(r"\s{2,}", cells[0], maxsplit=1)
-        if len(parts) != 2:
+        columns = len(label_columns(label))
+        parts = re.split(r"\s{2,}", cells[0], maxsplit=columns)
+        if len(parts) != columns + 1:
             return None
         cells = parts + cells[1:]
     return cells if all(cells) else None
@@ -389,6 +395,7 @@ def console_to_markdown(text: str, reference_spp: Optional[int] = None) -> str:
         ends = sorted(e for e, n in counts.items() if 2 * n >= len(parsed))
         column_of = lambda end: next((k for k, e in enumerate(ends) if e == end), None)  # noqa: E731
         header = split_header(line, (first[0], [("", e) for e in ends])) if parsed and ends else None
+        label_count = len(label_columns(first[0])) if first and first[0] else 0
         if header:
             rows = []
             for label, values in parsed:
@@ -399,7 +406,7 @@ def console_to_markdown(text: str, reference_spp: Optional[int] = None) -> str:
                         label = (label + " " + value).strip()
                     elif column is not None:
                         by_column[column] = value
-                cells = ([label] if label else []) + by_column
+                cells = (label_columns(label, label_count) if label_count else []) + by_column
                 # A value the program marks * is extrapolated past its measured points: it and what follows
                 # from it are not shown.
                 starred = next((k for k, c in enumerate(cells) if c.endswith("*")), None)
@@ -519,19 +526,6 @@ def ch06_efficiency(csv_file: Path, reference: Path) -> str:
     return ("\n".join(table) + "\n\n" + noise_note(own, f"from its two halves, {reference.name}", flagged) + "\n")
 
 
-def ch07_fresnel(csv_file: Path) -> str:
-    """Schlick against the exact reflectance over the angles of chapter 07's Fresnel CSV: largest error, where,
-    and the mean, entering (η = 1.5) and leaving (1/1.5) the glass."""
-    rows = read_csv(csv_file)
-    table = ["| side | largest error of Schlick | at θ (degrees) | mean error | angles |", "|---|---:|---:|---:|---:|"]
-    for side in ("entering", "leaving"):
-        errors = [(abs(float(r[f"schlick_{side}"]) - float(r[f"exact_{side}"])), float(r["theta_deg"])) for r in rows]
-        worst, at = max(errors)
-        table.append(f"| {side} | {worst:.3g} | {at:.1f} | {sum(e for e, _ in errors) / len(errors):.2g} | "
-                     f"{len(errors):,} |")
-    return "\n".join(table) + "\n"
-
-
 def ch07_depth(csv_file: Path, reference_spp: int) -> str:
     rows = read_csv(csv_file)
     if not rows:
@@ -569,7 +563,12 @@ def ch08_time(csv_file: Path, reference: Optional[Path]) -> str:
         same, ratio = "", ""
         if r in reverse:
             t = time_to_reach(forward, rmse)
-            same = NOT_REACHED if t is None else f"{t:.3g}"
+            if t is not None:
+                same = f"{t:.3g}"
+            elif forward and rmse > forward[0][1]:  # reached before the first point: when, it does not say
+                same = BEFORE_FIRST.format(forward[0][0])
+            else:
+                same = NOT_REACHED
             ratio = "" if t is None else f"{t / seconds:.2g}"
         table.append(f"| {r['tracer']} | {r['spp']} | {rmse:.3g} | {seconds:.3g} | {same} | {ratio} | "
                      f"{'—' if own is None else '⚠ no' if noisy else 'yes'} |")
@@ -590,8 +589,6 @@ def main(argv: list[str]) -> int:
         sys.stdout.write(csv_to_markdown(Path(arguments[0])))
     elif command == "ch06-efficiency" and len(arguments) == 2:
         sys.stdout.write(ch06_efficiency(Path(arguments[0]), Path(arguments[1])))
-    elif command == "ch07-fresnel" and len(arguments) == 1:
-        sys.stdout.write(ch07_fresnel(Path(arguments[0])))
     elif command == "ch07-depth" and len(arguments) == 2:
         sys.stdout.write(ch07_depth(Path(arguments[0]), int(arguments[1])))
     elif command == "ch08-time" and len(arguments) == 2:

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """The report as a page to project: report/index.md (written by report.sh) turned into report/index.html beside it,
-with its pictures and plots inline, its tables with named columns and numbers rounded to four significant
-digits, and its code blocks (console output) folded away under a "details" line.
+with its pictures and plots inline and its tables with named columns and numbers rounded to four significant
+digits (report.sh writes no console output into the page: report_checks.py turns it into tables).
 
   report_html.py report/index.md        writes report/index.html
 
 Only the Markdown that report.sh writes is read: headings (#, ##), paragraphs, <img> lines and ![](...) images,
-tables (| ... |) and ``` blocks. Only the Python 3 standard library is used.
+and tables (| ... |). Only the Python 3 standard library is used.
 """
 
 from __future__ import annotations
@@ -51,16 +51,7 @@ def convert(markdown: str) -> str:
     i = 0
     while i < len(lines):
         line = lines[i]
-        if line.startswith("```"):
-            flush()
-            block = []
-            i += 1
-            while i < len(lines) and not lines[i].startswith("```"):
-                block.append(lines[i])
-                i += 1
-            body.append("<details><summary>the program's own output</summary><pre>" + html.escape("\n".join(block))
-                        + "</pre></details>")
-        elif line.startswith("#"):
+        if line.startswith("#"):
             flush()
             level = len(line) - len(line.lstrip("#"))
             body.append(f"<h{level}>{inline(line[level:].strip())}</h{level}>")
@@ -91,7 +82,7 @@ def convert(markdown: str) -> str:
     style = ("body{font-family:sans-serif;max-width:75em;margin:2em auto;font-size:18px;line-height:1.4}"
              "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:.25em .6em}"
              "th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}"
-             "img{max-width:100%;margin:.3em}code{background:#f4f4f4;padding:0 .2em}")
+             "img{max-width:100%;margin:.3em}code{background:#f4f4f4;padding:0 .2em}strong{color:#a00}")
     return (f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}</title>"
             f"<style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
 
