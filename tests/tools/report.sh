@@ -76,8 +76,10 @@ lesson_says() {
     table=$(checks lesson-table "$source_dir" "$out" "$1")
     [ -n "$table" ] || return 0
     cat >> "$page" <<EOF
-**The lesson says / measured.** The figures lesson $1 marks, against this run's$( [ "$quick" = 1 ] &&
-echo " (quick mode renders smaller images than the lesson: the tolerances cover the noise of both)").
+### The lesson says / measured
+
+The figures lesson $1 marks (\`<!--report:KEY ±TOL-->\` before the number), against this run's$( [ "$quick" = 1 ] &&
+echo " (quick mode renders smaller images with fewer samples than the lesson: the tolerances cover the noise of both)").
 
 $table
 
@@ -94,7 +96,7 @@ compare_images() {
     rmse=$(echo "$notes" | sed -n 's/.*radiance: RMSE \([^,]*\),.*/\1/p')
     scale=$(echo "$notes" | sed -n 's/.* to \([0-9.e+-]*\) (top, white).*/\1/p')
     cat >> "$page" <<EOF
-<img src="$name.png" width="720">
+<img src="$name.png" width="720" style="image-rendering:pixelated">
 
 $caption: A | B | their difference per pixel (the largest channel's, in radiance) in false colour, from black
 (0) to white ($(printf '%.3g' "$scale")), with its colour bar. RMSE $(printf '%.3g' "$rmse").
@@ -244,9 +246,11 @@ if have 03_shadow_rays ch03_shadow_rays; then
     (cd "$out" && "$(exe 03_shadow_rays ch03_shadow_rays)" --offset-study --quiet "${size[@]}" \
         --csv ch03_offsets.csv > ch03_offsets.txt)
     (cd "$out" && "$(exe 03_shadow_rays ch03_shadow_rays)" --quiet --width 320 --height 180 --out ch03.png > /dev/null)
+    # The CSV interleaves the offsets scale by scale; a line joins consecutive rows: the plot reads them grouped.
+    (head -n 1 "$out/ch03_offsets.csv"; tail -n +2 "$out/ch03_offsets.csv" | sort -t, -k2,2 -s) > "$out/ch03_offsets_by_offset.csv"
     plot ch03_offsets "set logscale x; set xlabel 'scene scale'; set ylabel 'acne pixels + leak pixels';
         set title 'Ray offsets: wrong pixels against the scene scale'; set key top left;
-        plot 'ch03_offsets.csv' using (strcol(2) eq 'none' ? \$1 : NaN):(\$6 + \$7) with linespoints title 'no offset',
+        plot 'ch03_offsets_by_offset.csv' using (strcol(2) eq 'none' ? \$1 : NaN):(\$6 + \$7) with linespoints title 'no offset',
              '' using (strcol(2) eq 'epsilon' ? \$1 : NaN):(\$6 + \$7) with linespoints title 'fixed epsilon',
              '' using (strcol(2) eq 'robust' ? \$1 : NaN):(\$6 + \$7) with linespoints title 'robust (error bound)'"
     lesson_copy ch03_offsets 03_shadow_rays
@@ -288,7 +292,8 @@ $(csv_to_markdown "$out/ch04_shadow_samples.csv")
 
 Shadow samples per pixel against the RMSE to the exact irradiance image (Lambert's formula for a polygon) and
 against time, for independent and for stratified points on the light: 4× more independent samples halve the
-error; stratified ones fall faster, because most of the error is in the penumbra, where stratification helps.
+error; stratified ones fall 4×: the unoccluded light seen from the plane is a smooth integrand, for which
+stratification in two dimensions gains a factor √N.
 
 EOF
     lesson_says 04
