@@ -38,7 +38,7 @@ from typing import Callable, Optional
 # A reference whose own RMSE is above the measured RMSE divided by this is too noisy for it.
 NOISY_REFERENCE_RATIO = 3
 NOT_REACHED = "not reached in the measured range"
-BEFORE_FIRST = "not in the measured range: its first point ({:.3g} s) is already below this RMSE"
+BEFORE_FIRST = "not in the measured range (its first point, {:.3g} s, is already below)"
 
 # ------------------------------------------------------------------------------------------ lesson markers
 

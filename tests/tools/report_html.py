@@ -16,14 +16,14 @@ import re
 import sys
 from pathlib import Path
 
-NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+NUMBER = re.compile(r"^[+−-]?(\d+\.?\d*|\.\d+)([eE][+−-]?\d+)?%?$")  # − is U+2212, as lessons write it
 
 
 def rounded(cell: str) -> str:
     """A number to four significant digits (whole numbers as they are); any other text unchanged."""
     text = cell.strip()
-    if not NUMBER.match(text) or re.match(r"^[+-]?\d+$", text):
-        return text
+    if not NUMBER.match(text) or re.match(r"^[+−-]?\d+%?$", text) or "−" in text or text.endswith("%"):
+        return text  # whole numbers, and numbers as a lesson writes them, as they are
     value = float(text)
     return f"{value:.4g}"
 
