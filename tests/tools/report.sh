@@ -51,10 +51,13 @@ exe() { echo "$build/chapters/$1/$2"; }
 have() { [ -x "$(exe "$1" "$2")" ]; }
 log() { echo "report: $*" >&2; }
 
+# checks COMMAND ARGS: tests/tools/report_checks.py, which writes the page's tables.
+checks() { python3 "$source_dir/tests/tools/report_checks.py" "$@"; }
 # csv_to_markdown FILE: the CSV as a Markdown table, its columns named by its header, numbers rounded.
-csv_to_markdown() { python3 "$source_dir/tests/tools/report_checks.py" csv "$1"; }
-# console_to_markdown FILE: a program's console output (kept beside the page) as tables and sentences.
-console_to_markdown() { python3 "$source_dir/tests/tools/report_checks.py" console "$@"; }
+csv_to_markdown() { checks csv "$1"; }
+# console_to_markdown FILE [REFERENCE_SPP]: a program's console output (kept beside the page) as tables and
+# sentences; with the spp of the reference its errors are measured against, whether it is good enough for them.
+console_to_markdown() { checks console "$@"; }
 
 # plot NAME GNUPLOT_COMMANDS: draws $out/NAME.png (800×500) from the commands, which read CSVs in $out.
 plot() {
@@ -67,8 +70,6 @@ plot() {
         set datafile separator ','; set key autotitle columnhead; set grid; $commands") \
         || { log "gnuplot failed on $name"; return 1; }
 }
-
-checks() { python3 "$source_dir/tests/tools/report_checks.py" "$@"; }
 
 # lesson_says NN: the figures lesson NN marks against this run's measurements (nothing when it marks none).
 lesson_says() {

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The report as a page to project: report/index.md (written by report.sh) turned into report/index.html beside it,
-with its pictures and plots inline and its tables with named columns and numbers rounded to four significant
-digits (report.sh writes no console output into the page: report_checks.py turns it into tables).
+with its pictures and plots inline and its tables with named columns, numbers right-aligned (report_checks.py has
+rounded them to four significant digits and turned the programs' console output into tables).
 
   report_html.py report/index.md        writes report/index.html
 
@@ -16,16 +16,7 @@ import re
 import sys
 from pathlib import Path
 
-NUMBER = re.compile(r"^[+−-]?(\d+\.?\d*|\.\d+)([eE][+−-]?\d+)?%?$")  # − is U+2212, as lessons write it
-
-
-def rounded(cell: str) -> str:
-    """A number to four significant digits (whole numbers as they are); any other text unchanged."""
-    text = cell.strip()
-    if not NUMBER.match(text) or re.match(r"^[+−-]?\d+%?$", text) or "−" in text or text.endswith("%"):
-        return text  # whole numbers, and numbers as a lesson writes them, as they are
-    value = float(text)
-    return f"{value:.4g}"
+NUMBER = re.compile(r"^[+−-]?(\d+\.?\d*|\.\d+)([eE][+−-]?\d+)?%?$")  # a number (− is U+2212, as lessons write it)
 
 
 def inline(text: str) -> str:
@@ -66,7 +57,7 @@ def convert(markdown: str) -> str:
             table = ["<table>", "<tr>" + "".join(f"<th>{inline(c.replace('_', ' '))}</th>" for c in header) + "</tr>"]
             for r in data:
                 table.append("<tr>" + "".join(
-                    f"<td class=\"{'n' if NUMBER.match(c) else 't'}\">{inline(rounded(c))}</td>" for c in r) + "</tr>")
+                    f"<td class=\"{'n' if NUMBER.match(c) else 't'}\">{inline(c)}</td>" for c in r) + "</tr>")
             table.append("</table>")
             body.append("\n".join(table))
         elif line.lstrip().startswith("<img"):
