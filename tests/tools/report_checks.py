@@ -7,11 +7,12 @@
         at 256 samples they are <!--report:ch01.stratified_gain_256 ±30%-->3.8× more accurate
 
     `ch01.stratified_gain_256` names one of the measurements in MEASURES below (how the report computes it
-    from its CSV files), `±30%` is the tolerance (relative with %, else absolute: `±0.005`), and the number
+    from its CSV files or a program's output), `±30%` is the tolerance (relative with %, else absolute: `±0.005`), and the number
     right after the comment is what the lesson says. The report reads the number from the lesson, so when the
     lesson changes the report follows.
   * time to an error, never extrapolated: time_to_reach interpolates a measured (seconds, error) curve in
-    log–log between the two points around the target and says "not reached in the measured range" outside it.
+    log–log between the two points around the target; below its last error the page says "not reached in the
+    measured range", above its first, that the first point is already below it.
   * a reference too noisy for the error it measures: its own RMSE (from its two halves, or from its samples)
     must be under a third of the error measured against it (then it adds at most 5% to that error:
     √(1 + 1/9) = 1.054), else the row is flagged.
@@ -189,7 +190,8 @@ def slope(out: Path, file: str, strategy: str) -> float:
     return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
 
 
-# Each measurement: what it is (a column of the page) and how to compute it from the CSV files in OUT_DIR.
+# Each measurement: what it is (a column of the page) and how to compute it from the CSV files and the programs'
+# console output in OUT_DIR.
 MEASURES: dict[str, tuple[str, Callable[[Path], float]]] = {
     "ch01.uniform_256": ("edge RMSE, uniform jitter, 256 spp",
                          lambda o: cell(o, "ch01_antialiasing.csv", "edge_rmse", sampler="uniform", spp="256")),
@@ -218,15 +220,15 @@ MEASURES: dict[str, tuple[str, Callable[[Path], float]]] = {
                                         light_sampling="hit")),
     "ch06.uniform_slope": ("slope of log RMSE against log spp, uniform",
                            lambda o: slope(o, "ch06_convergence.csv", "uniform")),
+    "ch07.schlick_max_error": ("largest error of Schlick's R, entering",
+                               lambda o: console_cell(o, "ch07_fresnel.txt", "1.5", "max error")),
+    "ch07.depth1_bias": ("mean error (bias) at max depth 1",
+                         lambda o: cell(o, "ch07_depth.csv", "mean_error", max_depth="1")),
     "ch08.bounce_fraction": ("fraction of connected light paths contributing through a bounce",
                              lambda o: console_cell(o, "ch08_forward.txt", "connect, bounces only", "fraction")),
     "ch08.camera_rays_per_path": ("camera rays (splats) per connected light path",
                                   lambda o: console_cell(o, "ch08_forward.txt", "connect (pinhole)",
                                                          "camera rays/path")),
-    "ch07.schlick_max_error": ("largest error of Schlick's R, entering",
-                               lambda o: console_cell(o, "ch07_fresnel.txt", "1.5", "max error")),
-    "ch07.depth1_bias": ("mean error (bias) at max depth 1",
-                         lambda o: cell(o, "ch07_depth.csv", "mean_error", max_depth="1")),
 }
 
 
