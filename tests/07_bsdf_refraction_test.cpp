@@ -4,10 +4,15 @@
 // (unit, in the plane of incidence, Snell, reversible), flipping the normal, R + T = 1, no NaN. The sampled
 // dielectric ([statistical]), Beer–Lambert, the furnace (a glass sphere and an η = 1 sphere under a uniform
 // environment render 1 within error bars), ray counts for the effects a scene calls for, and the default
-// scene.
+// scene. The depth study's CSV.
+#include <unistd.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <glm/geometric.hpp>
 #include <memory>
 #include <numbers>
@@ -20,6 +25,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
+#include "07_bsdf_refraction/depth_study.hpp"
 #include "07_bsdf_refraction/dielectric.hpp"
 #include "07_bsdf_refraction/fresnel.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
@@ -28,6 +34,7 @@
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
+#include "rt/errors.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
 #include "support/chi_square.hpp"
@@ -1000,4 +1007,20 @@ TEST_CASE("A frosted sphere under a sky calls for direct and indirect light, and
     const RenderResult r = render_scene(scene, small_settings(16, 64));
     CHECK(r.image.mean() > 0.9);
     CHECK(r.image.mean() < 1.01);
+}
+
+TEST_CASE("The depth study's CSV holds one row per depth in named columns", "[depth_study]") {
+    const std::vector<GlassDepthRow> rows{{1, 0.075, 0.119, -0.0416, 0.125, 2399809},
+                                          {16, 0.0296, 0.0193, -0.0002, 0.793, 13905481}};
+    const auto path =
+        std::filesystem::temp_directory_path() / ("rt_depth_study_" + std::to_string(getpid()) + ".csv");
+    write_glass_depth_csv(rows, 64, path);
+    std::ifstream file(path);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::filesystem::remove(path);
+    CHECK(text ==
+          "max_depth,spp,rmse,relative_mse,mean_error,seconds,rays\n"
+          "1,64,0.075,0.119,-0.0416,0.125,2399809\n"
+          "16,64,0.0296,0.0193,-0.0002,0.793,13905481\n");
+    CHECK_THROWS_AS(write_glass_depth_csv(rows, 64, "/nonexistent-folder/x.csv"), InputError);
 }

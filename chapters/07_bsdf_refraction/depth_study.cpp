@@ -1,7 +1,10 @@
 #include "depth_study.hpp"
 
+#include <fstream>
+
 #include "bsdf_render.hpp"
 #include "rt/error_metrics.hpp"
+#include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 
 namespace rt {
@@ -47,6 +50,15 @@ std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSet
         rows.push_back({depth, e.rmse, e.relative_mse, e.mean_error, r.seconds, r.rays.total()});
     }
     return rows;
+}
+
+void write_glass_depth_csv(const std::vector<GlassDepthRow>& rows, int spp, const std::filesystem::path& csv) {
+    std::ofstream file(csv);
+    if (!file) throw InputError("--csv: " + csv.string() + ": cannot be written");
+    file << "max_depth,spp,rmse,relative_mse,mean_error,seconds,rays\n";
+    for (const GlassDepthRow& r : rows)
+        file << r.max_depth << ',' << spp << ',' << r.rmse << ',' << r.relative_mse << ',' << r.mean_error << ','
+             << r.seconds << ',' << r.rays << '\n';
 }
 
 }  // namespace rt

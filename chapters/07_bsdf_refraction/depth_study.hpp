@@ -32,4 +32,8 @@ std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSet
                                              const PathOptions& options, const Image& reference,
                                              const std::vector<int>& depths);
 
+// The rows as CSV (max_depth,spp,rmse,relative_mse,mean_error,seconds,rays), `spp` samples per pixel each.
+// Throws InputError when the file cannot be written.
+void write_glass_depth_csv(const std::vector<GlassDepthRow>& rows, int spp, const std::filesystem::path& csv);
+
 }  // namespace rt

@@ -79,7 +79,9 @@ int main(int argc, char** argv) {
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
         app.add_flag("--fresnel-study", fresnel,
                      "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
-        app.add_option("--csv", csv, "With --fresnel-study: write R(theta) both ways to this CSV file");
+        app.add_option("--csv", csv,
+                       "With --fresnel-study: write R(theta) both ways to this CSV file; with --depth-study: "
+                       "its table");
         app.add_flag("--depth-study", depth,
                      "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
         app.add_option("--depths", depths, "With --depth-study: the maximum depths")
@@ -94,7 +96,7 @@ int main(int argc, char** argv) {
             print_fresnel_study(scene_ior(scene), csv);
             return std::nullopt;
         }
-        if (!csv.empty()) throw InputError("--csv: only with --fresnel-study");
+        if (!csv.empty() && !depth) throw InputError("--csv: only with --fresnel-study or --depth-study");
         PathOptions options;
         options.simulated = context.simulated;
         options.strategy = sampling_strategy_from_string(sampling);
@@ -117,6 +119,7 @@ int main(int argc, char** argv) {
                             context.settings.samples_per_pixel, r.rmse, r.relative_mse, r.mean_error,
                             r.seconds, static_cast<unsigned long long>(r.rays));
             }
+            if (!csv.empty()) write_glass_depth_csv(rows, context.settings.samples_per_pixel, csv);
             return std::nullopt;
         }
         const Renderer renderer = choose_renderer(context.simulated);

@@ -49,7 +49,8 @@ struct StudyScene {
 double masked_rmse(const Image& image, const Image& reference, const std::vector<std::uint8_t>& mask);
 
 // The time at which a curve of (seconds, RMSE) points, falling with time, reaches `rmse`: linear in
-// log–log between the two points around it; past its last point, extrapolated with RMSE ∝ t^(−1/2).
+// log–log between the two points around it; above its first point's RMSE and past its last point,
+// extrapolated from that point with RMSE ∝ t^(−1/2).
 double time_to_rmse(const std::vector<double>& seconds, const std::vector<double>& rmse, double target);
 
 // Runs the three measurements and prints them.

@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """The report as a page to project: report/index.md (written by report.sh) turned into report/index.html beside it,
-with its pictures and plots inline, its tables with named columns and numbers rounded to four significant
-digits, and its code blocks (console output) folded away under a "details" line.
+with its pictures and plots inline and its tables with named columns, numbers right-aligned (report_checks.py has
+rounded them to four significant digits and turned the programs' console output into tables).
 
   report_html.py report/index.md        writes report/index.html
 
 Only the Markdown that report.sh writes is read: headings (#, ##), paragraphs, <img> lines and ![](...) images,
-tables (| ... |) and ``` blocks. Only the Python 3 standard library is used.
+and tables (| ... |). Only the Python 3 standard library is used.
 """
 
 from __future__ import annotations
@@ -16,16 +16,7 @@ import re
 import sys
 from pathlib import Path
 
-NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
-
-
-def rounded(cell: str) -> str:
-    """A number to four significant digits (whole numbers as they are); any other text unchanged."""
-    text = cell.strip()
-    if not NUMBER.match(text) or re.match(r"^[+-]?\d+$", text):
-        return text
-    value = float(text)
-    return f"{value:.4g}"
+NUMBER = re.compile(r"^[+−-]?(\d+\.?\d*|\.\d+)([eE][+−-]?\d+)?%?$")  # a number (− is U+2212, as lessons write it)
 
 
 def inline(text: str) -> str:
@@ -51,16 +42,7 @@ def convert(markdown: str) -> str:
     i = 0
     while i < len(lines):
         line = lines[i]
-        if line.startswith("```"):
-            flush()
-            block = []
-            i += 1
-            while i < len(lines) and not lines[i].startswith("```"):
-                block.append(lines[i])
-                i += 1
-            body.append("<details><summary>the program's own output</summary><pre>" + html.escape("\n".join(block))
-                        + "</pre></details>")
-        elif line.startswith("#"):
+        if line.startswith("#"):
             flush()
             level = len(line) - len(line.lstrip("#"))
             body.append(f"<h{level}>{inline(line[level:].strip())}</h{level}>")
@@ -75,7 +57,7 @@ def convert(markdown: str) -> str:
             table = ["<table>", "<tr>" + "".join(f"<th>{inline(c.replace('_', ' '))}</th>" for c in header) + "</tr>"]
             for r in data:
                 table.append("<tr>" + "".join(
-                    f"<td class=\"{'n' if NUMBER.match(c) else 't'}\">{inline(rounded(c))}</td>" for c in r) + "</tr>")
+                    f"<td class=\"{'n' if NUMBER.match(c) else 't'}\">{inline(c)}</td>" for c in r) + "</tr>")
             table.append("</table>")
             body.append("\n".join(table))
         elif line.lstrip().startswith("<img"):
@@ -91,7 +73,7 @@ def convert(markdown: str) -> str:
     style = ("body{font-family:sans-serif;max-width:75em;margin:2em auto;font-size:18px;line-height:1.4}"
              "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:.25em .6em}"
              "th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}"
-             "img{max-width:100%;margin:.3em}code{background:#f4f4f4;padding:0 .2em}")
+             "img{max-width:100%;margin:.3em}code{background:#f4f4f4;padding:0 .2em}strong{color:#a00}")
     return (f"<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>{title}</title>"
             f"<style>{style}</style></head><body>\n" + "\n".join(body) + "\n</body></html>\n")
 
