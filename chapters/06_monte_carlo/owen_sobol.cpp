@@ -14,7 +14,21 @@ constexpr std::array<std::uint32_t, 32> second_dimension_directions() {
     for (std::size_t k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1u);
     return v;
 }
-constexpr std::array<std::uint32_t, 32> kSecondDimension = second_dimension_directions();
+// The same, a byte at a time: kSecondDimensionBytes[b][x] = ⊕ of v_{8b+k+1} over the bits k set in byte x, so
+// that a point costs four lookups rather than a loop over 32 bits (a shuffled index has all 32).
+constexpr std::array<std::array<std::uint32_t, 256>, 4> second_dimension_bytes() {
+    constexpr std::array<std::uint32_t, 32> v = second_dimension_directions();
+    std::array<std::array<std::uint32_t, 256>, 4> t{};
+    for (std::size_t b = 0; b < 4; ++b) {
+        for (std::size_t x = 0; x < 256; ++x) {
+            for (std::size_t k = 0; k < 8; ++k) {
+                if (x >> k & 1u) t[b][x] ^= v[8 * b + k];
+            }
+        }
+    }
+    return t;
+}
+constexpr std::array<std::array<std::uint32_t, 256>, 4> kSecondDimensionBytes = second_dimension_bytes();
 
 }  // namespace
 
@@ -44,11 +58,8 @@ std::uint32_t nested_uniform_scramble(std::uint32_t x, std::uint32_t seed) {
 
 std::uint32_t sobol_bits(std::uint32_t index, int dimension) {
     if (dimension == 0) return reverse_bits(index);
-    std::uint32_t x = 0;
-    for (std::size_t bit = 0; index != 0; ++bit, index >>= 1u) {
-        if (index & 1u) x ^= kSecondDimension[bit];
-    }
-    return x;
+    return kSecondDimensionBytes[0][index & 0xffu] ^ kSecondDimensionBytes[1][index >> 8u & 0xffu] ^
+           kSecondDimensionBytes[2][index >> 16u & 0xffu] ^ kSecondDimensionBytes[3][index >> 24u];
 }
 
 Vec2 owen_sobol_pair(std::uint32_t index, std::uint32_t pair, std::uint64_t seed) {

@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     app.add_option("--error-png", error_png,
-                   "Write the per-pixel relative squared error (false colour) here");
+                   "Write the per-pixel relative squared error (false colour, log10 from 1e-5 to 10) beside "
+                   "this name, _before.png and _after.png");
     CLI11_PARSE(app, argc, argv);
     try {
         run(size, spp, reference_spp, threads, repeats, target, cache, error_png);
@@ -235,11 +236,17 @@ void run(int size, int spp, int reference_spp, int threads, int repeats, double 
         measured.roulette_eta_scale = eta_scale;
         std::printf("\n%s\n", eta_scale ? "after: roulette judging beta eta^2 (the default)"
                                         : "before: roulette judging beta itself");
-        split_by_path_kind(prepared, camera, measured, settings, spp, r, noise,
-                           eta_scale ? error_png : std::string());
+        const std::filesystem::path png(error_png);
+        split_by_path_kind(
+            prepared, camera, measured, settings, spp, r, noise,
+            error_png.empty()
+                ? std::string()
+                : (png.parent_path() / (png.stem().string() + (eta_scale ? "_after" : "_before") + ".png"))
+                      .string());
     }
 
     // 3. The candidate causes.
+    settings.samples_per_pixel = spp;
     std::vector<Variant> variants;
     variants.push_back({"default", options});
     for (int start : {1, 5, 8}) {
