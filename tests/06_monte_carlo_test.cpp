@@ -24,6 +24,7 @@
 #include "06_monte_carlo/frisvad_frame.hpp"
 #include "06_monte_carlo/irradiance_estimators.hpp"
 #include "06_monte_carlo/mis.hpp"
+#include "06_monte_carlo/owen_sobol.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "06_monte_carlo/warp_pdfs.hpp"
 #include "rt/assets.hpp"
@@ -42,9 +43,10 @@ namespace {
 // ---------------------------------------------------------------------------------------------------------
 // The chi-square test
 
-// Every chi-square test of this file (the uniform sphere 1, BRDF samplers 25), each run at the Šidák-corrected
-// level of tests/support/chi_square.hpp. Chapter 04's warps are tested by chapter 04's tests.
-constexpr int kChiSquareTests = 26;
+// Every chi-square test of this file (the uniform sphere 1, BRDF samplers 25, Sobol points 5), each run at
+// the Šidák-corrected level of tests/support/chi_square.hpp. Chapter 04's warps are tested by chapter 04's
+// tests.
+constexpr int kChiSquareTests = 31;
 constexpr double kAlpha = 0.01;
 const double kAlphaPerTest = sidak_level(kChiSquareTests, kAlpha);
 constexpr int kSamples = kDirectionSamples;
@@ -390,10 +392,10 @@ TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the s
           "[ex:ch04.uniform_cone_pdf]") {
     for (const IrradianceCase& c : irradiance_cases()) {
         for (SamplingStrategy s : kAllStrategies) {
-            for (bool stratified : {false, true}) {
-                const IrradianceEstimate e = estimate_irradiance(c, s, 100000, 7, stratified);
-                INFO(c.name << ", " << to_string(s) << (stratified ? ", stratified" : "") << ": " << e.mean
-                            << " +- " << e.standard_error << ", exact " << c.exact);
+            for (PointSet points : kAllPointSets) {
+                const IrradianceEstimate e = estimate_irradiance(c, s, 100000, 7, points);
+                INFO(c.name << ", " << to_string(s) << ", " << to_string(points) << ": " << e.mean << " +- "
+                            << e.standard_error << ", exact " << c.exact);
                 CHECK(std::abs(e.mean - c.exact) <= 4 * e.standard_error + 1e-6 * c.exact);
             }
         }
@@ -415,23 +417,149 @@ TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the s
 TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
           "[statistical][ex:ch01.pixel_sample][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
     const IrradianceCase quad = irradiance_cases()[0];
-    auto rmse = [&](int n, bool stratified) {
+    auto rmse = [&](int n, PointSet points) {
         double sum2 = 0;
         constexpr int kRuns = 200;
         for (int r = 0; r < kRuns; ++r) {
             const double e =
-                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, stratified).mean -
-                quad.exact;
+                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, points).mean - quad.exact;
             sum2 += e * e;
         }
         return std::sqrt(sum2 / kRuns);
     };
-    const double r64 = rmse(64, false), r1024 = rmse(1024, false);
+    const double r64 = rmse(64, PointSet::kIndependent), r1024 = rmse(1024, PointSet::kIndependent);
     // 16× the samples: 4× less error (within the spread of 200 runs).
     CHECK(r64 / r1024 > 3.3);
     CHECK(r64 / r1024 < 4.8);
     // Stratified: less error for the same N.
-    CHECK(rmse(1024, true) < r1024 / 2);
+    CHECK(rmse(1024, PointSet::kStratified) < r1024 / 2);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Owen-scrambled Sobol points
+
+TEST_CASE("Sobol points: every pair of dimensions is a (0,2)-sequence in each power-of-two block") {
+    // Each aligned block of 2^m points has one point in each elementary interval of area 2^-m, for every
+    // shape 2^-k × 2^-(m−k): the unscrambled points, and the scrambled and padded ones of any seed.
+    constexpr int kPoints = 4096;
+    for (std::uint64_t seed : {1ull, 77ull}) {
+        for (std::uint32_t pair : {0u, 1u, 5u}) {
+            std::vector<std::uint32_t> xs(kPoints), ys(kPoints);
+            for (int i = 0; i < kPoints; ++i) {
+                xs[std::size_t(i)] = std::uint32_t(owen_sobol(std::uint32_t(i), 2 * pair, seed) * 0x1p24f);
+                ys[std::size_t(i)] =
+                    std::uint32_t(owen_sobol(std::uint32_t(i), 2 * pair + 1, seed) * 0x1p24f);
+            }
+            for (int m = 0; m <= 12; ++m) {
+                const int block = 1 << m;
+                bool all_ones = true;
+                for (int first = 0; first < kPoints; first += block) {
+                    for (int k = 0; k <= m; ++k) {
+                        std::vector<int> cells(std::size_t(block), 0);
+                        for (int i = first; i < first + block; ++i) {
+                            const std::uint32_t cx = xs[std::size_t(i)] >> (24 - k);
+                            const std::uint32_t cy = ys[std::size_t(i)] >> (24 - (m - k));
+                            ++cells[std::size_t((cy << k) | cx)];
+                        }
+                        all_ones =
+                            all_ones && std::all_of(cells.begin(), cells.end(), [](int c) { return c == 1; });
+                    }
+                }
+                INFO("seed " << seed << ", pair " << pair << ", blocks of 2^" << m);
+                CHECK(all_ones);
+            }
+        }
+    }
+    // Unscrambled: the van der Corput sequence and Sobol's second dimension, 0, 1/2, 1/4 (3/4 for y), …
+    CHECK(sobol_bits(1, 0) == 0x80000000u);
+    CHECK(sobol_bits(2, 0) == 0x40000000u);
+    CHECK(sobol_bits(3, 0) == 0xc0000000u);
+    CHECK(sobol_bits(2, 1) == 0xc0000000u);
+    CHECK(sobol_bits(3, 1) == 0x40000000u);
+    CHECK(reverse_bits(1u) == 0x80000000u);
+    // Owen's scramble keeps the digits before a given one together: x's first k digits decide the
+    // scrambled value's first k.
+    for (std::uint32_t x : {0x12345678u, 0xdeadbeefu}) {
+        const std::uint32_t y = x ^ 0x0000ffffu;  // the same first 16 digits
+        CHECK(nested_uniform_scramble(x, 99) >> 16u == nested_uniform_scramble(y, 99) >> 16u);
+    }
+}
+
+TEST_CASE("Sobol points: uniform over pixels, pairs independent within one pixel (chi-square)",
+          "[statistical]") {
+    constexpr int kCells = 16;  // a 16 x 16 grid
+    auto test = [](const char* what, auto&& point, int n) {
+        std::vector<double> observed(kCells * kCells, 0),
+            expected(kCells * kCells, double(n) / (kCells * kCells));
+        for (int i = 0; i < n; ++i) {
+            const Vec2 p = point(i);
+            REQUIRE(p.x >= 0);
+            REQUIRE(p.x < 1);
+            REQUIRE(p.y >= 0);
+            REQUIRE(p.y < 1);
+            observed[std::size_t(int(p.y * kCells) * kCells + int(p.x * kCells))] += 1;
+        }
+        const ChiSquare c = chi_square(observed, expected);
+        INFO(what << ": chi-square " << c.statistic << ", " << c.dof << " dof, p = " << c.p_value);
+        CHECK(c.p_value > kAlphaPerTest);
+    };
+    // One sample of each of 100000 pixels: pair j of dimensions is uniform on [0, 1)² (4 tests).
+    for (std::uint32_t pair = 0; pair < 4; ++pair) {
+        test(
+            "pixels' first sample",
+            [&](int i) {
+                OwenSobolStream stream(std::uint64_t(i), 0, 3);
+                for (std::uint32_t d = 0; d < pair; ++d) stream.next_vec2();
+                return stream.next_vec2();
+            },
+            100000);
+    }
+    // 65536 samples of one pixel: dimensions 1 and 2 belong to different pairs, whose shuffles make them
+    // independent; were they not shuffled, a pixel's (x₁, x₂) would lie on a few lines (1 test).
+    test(
+        "dimensions 1 and 2 of one pixel",
+        [&](int i) {
+            OwenSobolStream stream(42, std::uint32_t(i), 3);
+            stream.next_real();
+            return stream.next_vec2();
+        },
+        65536);
+}
+
+TEST_CASE("Sobol points are a pure function of (pixel, sample, dimension, seed)") {
+    // What makes an image independent of the thread count: no state is shared between samples.
+    OwenSobolStream a(7, 12, 5), b(7, 12, 5), other_pixel(8, 12, 5), other_seed(7, 12, 6);
+    std::vector<Real> first;
+    for (int d = 0; d < 64; ++d) first.push_back(a.next_real());
+    int same_pixel = 0, same_seed = 0;
+    for (int d = 0; d < 64; ++d) {
+        CHECK(b.next_real() == first[std::size_t(d)]);
+        same_pixel += other_pixel.next_real() == first[std::size_t(d)] ? 1 : 0;
+        same_seed += other_seed.next_real() == first[std::size_t(d)] ? 1 : 0;
+    }
+    CHECK(same_pixel < 2);
+    CHECK(same_seed < 2);
+}
+
+TEST_CASE("Sobol points: the irradiance error falls faster than 1/sqrt(N)",
+          "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
+    const IrradianceCase quad = irradiance_cases()[0];
+    auto rmse = [&](int n, PointSet points) {
+        double sum2 = 0;
+        constexpr int kRuns = 200;
+        for (int r = 0; r < kRuns; ++r) {
+            const double e =
+                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, points).mean - quad.exact;
+            sum2 += e * e;
+        }
+        return std::sqrt(sum2 / kRuns);
+    };
+    const double s64 = rmse(64, PointSet::kSobol), s1024 = rmse(1024, PointSet::kSobol);
+    INFO("Sobol RMSE " << s64 << " at N = 64, " << s1024 << " at N = 1024");
+    // 16x the samples: 4x less error for independent points, 16^0.75 = 8x for Owen-scrambled Sobol points on
+    // an integrand with an edge (the light's outline); measured
+    CHECK(s64 / s1024 > 6);
+    CHECK(s1024 < rmse(1024, PointSet::kStratified));
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -545,6 +546,71 @@ TEST_CASE("The default scene renders finite, plausible and the same on 1 and 2 t
     CHECK(a.rays[RayKind::kRefraction] > 0);
     CHECK(a.rays[RayKind::kReflection] > 0);
     CHECK(a.image.pixels() == b.image.pixels());
+}
+
+TEST_CASE("Path parts: the glass box's estimate split by path kind sums to it and leaves the path as it was",
+          "[render][ex:ch01.camera_ray][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    const Scene scene = load_scene(scene_path("cornell.json"));
+    const RenderScene prepared(scene, needed(scene), refraction_materials());
+    PathOptions options;
+    options.simulated = needed(scene);
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    const int size = 24, spp = 32;
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
+    RayCounts rays;
+    std::array<double, kPathPartCount> totals{};
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            for (int s = 0; s < spp; ++s) {
+                const Real u = Real(x) + Real(0.5), v = Real(y) + Real(0.5);
+                Pcg32 rng = Pcg32::for_sample(std::uint64_t(y * size + x), std::uint64_t(s), 5);
+                Pcg32 same = rng;
+                PathParts parts;
+                const Color with = tracer.radiance(camera_ray(camera, u, v), rng, rays, nullptr, &parts);
+                const Color without = tracer.radiance(camera_ray(camera, u, v), same, rays);
+                REQUIRE(with == without);
+                REQUIRE(rng.next_uint() == same.next_uint());  // the same numbers drawn
+                Color sum(0);
+                for (std::size_t k = 0; k < kPathPartCount; ++k) {
+                    sum += parts.parts[k];
+                    totals[k] += double(luminance(parts.parts[k]));
+                }
+                for (int c = 0; c < 3; ++c) CHECK(std::abs(sum[c] - with[c]) <= 1e-5f * (1 + with[c]));
+            }
+        }
+    }
+    // The lamp is seen, light sampling lights the walls, and the sphere's caustic is found (the light that
+    // BSDF hits weighted by MIS bring is small here, but not zero).
+    CHECK(totals[std::size_t(PathPart::kSeen)] > 0);
+    CHECK(totals[std::size_t(PathPart::kNextEvent)] > 0);
+    CHECK(totals[std::size_t(PathPart::kCaustic)] > 0);
+    CHECK(totals[std::size_t(PathPart::kBsdfHit)] > 0);
+}
+
+TEST_CASE("Sobol samples: the glass box renders finite, the same on 1 and 2 threads, near the default",
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    const Scene scene = load_scene(scene_path("ch07_default.json"));
+    RenderSettings settings = small_settings(32, 16);
+    PathOptions sobol;
+    sobol.sampler = PointSet::kSobol;
+    const EffectSet simulated = needed(scene) & EffectSet::all();
+    const RenderResult a = render_with(Renderer::kPaths, scene, simulated, settings, sobol);
+    const RenderResult stratified = render_with(Renderer::kPaths, scene, simulated, settings);
+    settings.threads = 1;
+    const RenderResult b = render_with(Renderer::kPaths, scene, simulated, settings, sobol);
+    CHECK(a.image.all_finite());
+    CHECK(a.image.pixels() == b.image.pixels());
+    CHECK(a.image.pixels() != stratified.image.pixels());
+    // Both unbiased: their means agree to the noise of 32 × 32 × 16 samples.
+    CHECK(a.image.mean() == Approx(stratified.image.mean()).epsilon(0.05));
 }
 
 TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redder for a blue-absorbing one",

@@ -9,12 +9,18 @@
 
 namespace rt {
 
-// The camera ray of sample `s` (of `count` per pixel), counted.
+// The camera ray of sample `s` (of `count` per pixel) through the point `u` of [0, 1)² places, counted.
 inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
-                         Pcg32& rng, RayCounts& rays) {
-    const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, rng.next_vec2());
+                         Vec2 u, RayCounts& rays) {
+    const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, u);
     rays.add(RayKind::kCamera);
     return camera_ray(camera, film.x, film.y);
+}
+
+// The same, u drawn from `rng`.
+inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
+                         Pcg32& rng, RayCounts& rays) {
+    return camera_ray_of(camera, sampler, s, count, rng.next_vec2(), rays);
 }
 
 // A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here rather than

@@ -36,6 +36,10 @@ struct BsdfSample {
     Real pdf = 0;  // solid-angle density; for a delta lobe, 1 by convention
     bool delta = false;
     bool transmitted = false;  // wi is on the far side of the surface: the path crosses it
+    // For radiance crossing into a medium of relative index η = η_t / η_i (chapter 07's refraction), the
+    // factor 1/η² that f holds for it (radiance is squeezed into a narrower cone); 1 otherwise. Russian
+    // roulette divides it out (chapter 06's path loop), so a path inside glass is not ended for it.
+    Real radiance_scale = 1;
 };
 
 // The kind of ray a sampled direction makes, for the run's counts: refraction through the surface, indirect

@@ -47,8 +47,9 @@ Real survival_probability(const TerminationSettings& settings, int depth, const 
     // END EXERCISE
 }
 
-bool continue_path(const TerminationSettings& settings, int depth, Color& throughput, Real u) {
-    const Real q = survival_probability(settings, depth, throughput);
+bool continue_path(const TerminationSettings& settings, int depth, Color& throughput, Real u,
+                   Real judged_scale) {
+    const Real q = survival_probability(settings, depth, throughput * judged_scale);
     if (!(u < q)) return false;  // q = 0 always stops; q = 1 never does (u < 1)
     if (q < 1) throughput /= q;
     return true;

@@ -42,6 +42,10 @@ Real survival_probability(const TerminationSettings& settings, int depth, const 
 // Whether a path at `depth` bounces on; with Russian roulette, survival probability q = min(1, max component
 // of throughput), and on survival throughput /= q (unbiased). `u` is a uniform random number in [0, 1).
 // In general: it goes on when u < q (q from survival_probability), and then β /= q when q < 1.
-bool continue_path(const TerminationSettings& settings, int depth, Color& throughput, Real u);
+// q is judged on throughput × `judged_scale` (chapter 06's path loop hands in the η² of the glass a path is
+// in, PBRT's η-scale, so that refraction's 1/η² does not end paths inside glass sooner); any q > 0 keeps the
+// estimate unbiased, E[β'] = β.
+bool continue_path(const TerminationSettings& settings, int depth, Color& throughput, Real u,
+                   Real judged_scale = 1);
 
 }  // namespace rt

@@ -10,6 +10,7 @@
 #include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "mis.hpp"
+#include "owen_sobol.hpp"
 #include "rt/random.hpp"
 #include "warp_pdfs.hpp"
 
@@ -131,15 +132,24 @@ std::vector<IrradianceCase> irradiance_cases() {
 }
 
 IrradianceEstimate estimate_irradiance(const IrradianceCase& c, SamplingStrategy strategy, int samples,
-                                       std::uint64_t seed, bool stratified) {
+                                       std::uint64_t seed, PointSet points) {
     Pcg32 rng(seed, 3);
     const auto start = std::chrono::steady_clock::now();
     double sum = 0, sum2 = 0;
-    const PixelSampler sampler = stratified ? PixelSampler::kStratified : PixelSampler::kUniform;
+    const PixelSampler sampler =
+        points == PointSet::kStratified ? PixelSampler::kStratified : PixelSampler::kUniform;
     for (int j = 0; j < samples; ++j) {
-        // Chapter 01's pixel sampler in pixel (0, 0) spreads the points over the unit square.
-        const Vec2 u = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
-        const Vec2 v = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
+        Vec2 u, v;
+        if (points == PointSet::kSobol) {
+            // Point j of the sequence of this seed: dimensions 0, 1 for u and 2, 3 for v.
+            OwenSobolStream stream(0, std::uint32_t(j), seed);
+            u = stream.next_vec2();
+            v = stream.next_vec2();
+        } else {
+            // Chapter 01's pixel sampler in pixel (0, 0) spreads the points over the unit square.
+            u = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
+            v = pixel_sample_point(sampler, 0, 0, j, samples, rng.next_vec2());
+        }
         const double x = one_estimate(c, strategy, u, v);
         sum += x;
         sum2 += x * x;

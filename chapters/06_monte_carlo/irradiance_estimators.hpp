@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "04_direct_lighting/light_set.hpp"
+#include "sample_stream.hpp"
 #include "sampling_strategy.hpp"
 
 namespace rt {
@@ -33,9 +34,11 @@ struct IrradianceEstimate {
     double seconds = 0;         // time for the N samples
 };
 
-// N samples with `strategy`; with `stratified`, sample j's point of [0, 1)² lies in cell j of an m×m grid
-// (m = ⌊√N⌋; the rest independent) instead of anywhere. The same seed gives the same estimate.
+// N samples with `strategy`, their points of [0, 1)² from `points` (sample_stream.hpp): independent (Pcg32),
+// stratified (point j in cell j of an m×m grid, m = ⌊√N⌋, the rest independent) or Sobol (the
+// Owen-scrambled points of owen_sobol.hpp, dimensions 2 and 3 for MIS's second point). The same seed gives
+// the same estimate.
 IrradianceEstimate estimate_irradiance(const IrradianceCase& c, SamplingStrategy strategy, int samples,
-                                       std::uint64_t seed, bool stratified = false);
+                                       std::uint64_t seed, PointSet points = PointSet::kIndependent);
 
 }  // namespace rt

@@ -34,6 +34,7 @@ std::vector<std::string> light_notes(const Scene& scene) {
 
 int main(int argc, char** argv) {
     std::string sampling = "mis";
+    std::string sampler = "stratified";
     std::string termination = "roulette";
     std::optional<int> max_depth;
     bool irradiance = false;
@@ -53,6 +54,10 @@ int main(int argc, char** argv) {
     auto flags = [&](CLI::App& app) {
         app.add_option("--sampling", sampling, "How directions are drawn: uniform|cosine|brdf|light|mis")
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
+        app.add_option(
+               "--sampler", sampler,
+               "Where a sample's numbers come from: independent|stratified|sobol (Owen-scrambled Sobol)")
+            ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
         app.add_option("--termination", termination,
                        "How a path ends (chapter 05): depth|throughput|roulette")
             ->check(CLI::IsMember({"depth", "throughput", "roulette"}));
@@ -62,7 +67,7 @@ int main(int argc, char** argv) {
         app.add_flag(
             "--irradiance", irradiance,
             "Estimate E = integral of L cos theta over the hemisphere with each strategy against its "
-            "closed form (a quad, a sphere, the sky), independent and stratified");
+            "closed form (a quad, a sphere, the sky), independent, stratified and Sobol points");
         app.add_option("--irradiance-runs", irradiance_runs, "With --irradiance: runs per row")
             ->check(CLI::Range(2, 100000));
         app.add_flag("--converge", converge,
@@ -85,6 +90,7 @@ int main(int argc, char** argv) {
         const RenderSettings& settings = context.settings;
         PathOptions options;
         options.strategy = sampling_strategy_from_string(sampling);
+        options.sampler = point_set_from_string(sampler);
         options.termination.rule = termination_from_string(termination);
         // Roulette and the throughput rule end paths themselves; chapter 05's cap then only guards against a
         // path between two mirrors, high enough not to bias the result measurably.
@@ -114,7 +120,8 @@ int main(int argc, char** argv) {
         std::vector<std::string> notes = prepared.materials.notes();
         for (const std::string& note : light_notes(scene)) notes.push_back(note);
         ChapterRun run{render_paths(tracer, camera, settings), std::move(notes), std::nullopt};
-        run.notes.push_back("sampling: " + sampling + ", termination: " + termination);
+        run.notes.push_back("sampling: " + sampling + ", sampler: " + sampler +
+                            ", termination: " + termination);
         for (const std::string& u : lights.unsampled)
             run.notes.push_back("emitter not sampled as a light: " + u);
         return run;

@@ -56,8 +56,8 @@ Color PathTracer::seen(const Hit& hit, const Vec3& target, RayCounts& rays) cons
     return transmittance(shadow.ray, shadow.t_max, rays);
 }
 
-Color PathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Pcg32& rng,
-                                       RayCounts& rays) const {
+Color PathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
+                                       SampleStream rng, RayCounts& rays) const {
     const bool mis = options_.strategy == SamplingStrategy::kMis;
     const bool shadows = options_.simulates(Effect::kShadows);
     Color sum(0);
@@ -88,7 +88,7 @@ Color PathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const Phas
     return sum;
 }
 
-Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng,
+Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,
                              RayCounts& rays) const {
     const bool mis = options_.strategy == SamplingStrategy::kMis;
     const bool shadows = options_.simulates(Effect::kShadows);
@@ -137,7 +137,8 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, P
     return sum;
 }
 
-Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, PathFeatures* features) const {
+Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays, PathFeatures* features,
+                           PathParts* parts) const {
     // EXERCISE(ch06.path_tracer)
     const SamplingStrategy strategy = options_.strategy;
     const bool direct = options_.simulates(Effect::kDirect);
@@ -150,6 +151,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
     Real previous_pdf = 0;  // the BSDF-sampling density of the ray's direction, for MIS
     Vec3 previous_point(0), previous_normal(0);  // normal 0: the previous vertex was in a medium
     int bounces = 0;                             // non-delta bounces so far
+    Real eta_scale = 1;  // Π η² of the refractions so far: β × eta_scale is what Russian roulette judges
     Real length = 0;                             // of the path so far, for `features`
     // Chapter 09's media: the events of the path's walks so far (scattering, and reflections at a walk's
     // boundary), the colour channel whose density draws its free flights (chosen when the path first meets a
@@ -158,13 +160,19 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
     int medium_events = 0;
     int channel = -1;
     Color spectral_pdf(1);
+    // The analysis hook (path_parts.hpp): the kind of path by which the light L just gained arrived.
+    const auto file_light_met = [&] {
+        if (!parts) return;
+        parts->file(!specular ? PathPart::kBsdfHit : bounces == 0 ? PathPart::kSeen : PathPart::kCaustic, L);
+    };
     for (int depth = 0;;) {
         const auto hit = world_.intersect(ray);
         // The segment runs through what fills the space it crosses, if anything: a medium that only absorbs
         // attenuates it (chapter 07); one that scatters may end it early at a scattering event (chapter 09).
         if (const Medium* medium = medium_along(hit)) {
             if (channel < 0 && medium->phase()) channel = pick_channel(rng.next_real());
-            const FreeFlight flight = medium->sample_free_flight(hit ? hit->t : kInfinity, channel, rng);
+            const FreeFlight flight =
+                medium->sample_free_flight(hit ? hit->t : kInfinity, channel, rng.generator());
             beta *= flight.weight;
             if (flight.pdf_ratio != Color(1)) {
                 spectral_pdf *= flight.pdf_ratio;
@@ -179,6 +187,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
                 const Vec3 p = ray.at(flight.t);
                 const Vec3 wo = -ray.direction;
                 if (nee) L += beta * next_event_in_medium(p, wo, phase, rng, rays);
+                if (parts) parts->file(PathPart::kNextEvent, L);
                 const PhaseSample s = phase.sample(wo, rng.next_vec2());
                 if (!(s.pdf > 0) || !(s.p > 0)) break;
                 beta *= s.p / s.pdf;
@@ -212,6 +221,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
                     w = mis ? power_heuristic(previous_pdf, pdf_light) : Real(0);
                 }
                 L += beta * environment_->radiance * w;
+                file_light_met();
             }
             break;
         }
@@ -225,6 +235,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
                         : Real(0);
             }
             L += beta * emitted * w;
+            file_light_met();
         }
         if (!indirect && bounces >= 1) break;
         const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
@@ -245,6 +256,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
         const Vec3 wo = -ray.direction;
         const Vec3& n = hit->normal;
         if (nee && !flags.delta) L += beta * next_event(*hit, wo, bsdf, rng, rays);
+        if (parts) parts->file(PathPart::kNextEvent, L);
         // Without the indirect effect the path ends at the vertex it reaches next, where light sampling alone
         // (no MIS) already counted every light it could meet — unless some emitter cannot be sampled.
         if (!indirect && !flags.delta && nee && !mis && !has_unsampled_emitters_) break;
@@ -267,6 +279,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
         if (records) features->albedo = beta * s.f * (cos_i / s.pdf);
         beta *= s.f * (cos_i / s.pdf);
+        if (options_.roulette_eta_scale) eta_scale /= s.radiance_scale;
         if (!flags.delta) ++bounces;
         specular = flags.delta;
         previous_pdf = flags.delta ? kInfinity : s.pdf;
@@ -278,7 +291,7 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
         const Medium* inside = hit->front_face ? nullptr : materials_.interior(hit->material);
         if (inside && inside->phase()) {
             if (++medium_events > options_.walk.max_events) break;
-        } else if (!continue_path(options_.termination, ++depth, beta, rng.next_real())) {
+        } else if (!continue_path(options_.termination, ++depth, beta, rng.next_real(), eta_scale)) {
             break;
         }
         ray = spawn_ray(*hit, s.wi, options_.offset);
@@ -290,9 +303,22 @@ Color PathTracer::radiance(const Ray& camera_ray, Pcg32& rng, RayCounts& rays, P
 
 RenderResult render_paths(const PathTracer& tracer, const PinholeCamera& camera,
                           const RenderSettings& settings) {
-    return render_camera_rays(
-        camera, PixelSampler::kStratified, settings,
-        [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return tracer.radiance(ray, rng, rays); });
+    const PointSet points = tracer.options().sampler;
+    if (points != PointSet::kSobol) {
+        return render_camera_rays(
+            camera, points == PointSet::kStratified ? PixelSampler::kStratified : PixelSampler::kUniform,
+            settings,
+            [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return tracer.radiance(ray, rng, rays); });
+    }
+    // Sobol: the pixel's sequence, point s.index of it; its first two dimensions place the camera ray.
+    const int count = settings.samples_per_pixel;
+    const auto width = std::uint64_t(settings.width);
+    return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        OwenSobolStream sobol(std::uint64_t(s.y) * width + std::uint64_t(s.x), std::uint32_t(s.index),
+                              settings.seed);
+        const Ray ray = camera_ray_of(camera, PixelSampler::kUniform, s, count, sobol.next_vec2(), rays);
+        return finite_or_black(tracer.radiance(ray, SampleStream(sobol, rng), rays));
+    });
 }
 
 }  // namespace rt

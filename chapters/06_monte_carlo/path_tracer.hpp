@@ -25,9 +25,11 @@
 #include "04_direct_lighting/material_table.hpp"
 #include "04_direct_lighting/trace_options.hpp"
 #include "05_recursive_gi/termination.hpp"
+#include "path_parts.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "rt/render_loop.hpp"
+#include "sample_stream.hpp"
 #include "sampling_strategy.hpp"
 
 namespace rt {
@@ -47,6 +49,12 @@ struct PathOptions : TraceOptions {
     SamplingStrategy strategy = SamplingStrategy::kMis;
     // Chapter 05's Russian roulette from bounce 3, under its safety cap of 64 bounces (a cap, not a bias).
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
+    // Russian roulette judges β with refraction's radiance scaling (1/η² into glass, ×η² out) divided out,
+    // PBRT's η-scale: otherwise a path inside glass survives with 1/η² of its chance and comes out η² times
+    // brighter, the fireflies of the glass box's caustics (chapter 06's error study). false: judges β itself.
+    bool roulette_eta_scale = true;
+    // Where a sample's numbers come from (sample_stream.hpp; render_paths reads it).
+    PointSet sampler = PointSet::kStratified;
     MediumWalk walk;
 };
 
@@ -68,8 +76,10 @@ class PathTracer {
                PathOptions options);
 
     // The radiance arriving along `ray` (a camera ray): one path, its estimate of L. Given `features`, it
-    // records them there too (the path and its random numbers are the same with or without).
-    Color radiance(const Ray& ray, Pcg32& rng, RayCounts& rays, PathFeatures* features = nullptr) const;
+    // records them there too (the path and its random numbers are the same with or without); given `parts`,
+    // it adds each term of L there by the kind of path it came from (path_parts.hpp, an analysis hook).
+    Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays, PathFeatures* features = nullptr,
+                   PathParts* parts = nullptr) const;
 
     const PathOptions& options() const { return options_; }
     const MaterialTable& materials() const { return materials_; }
@@ -79,7 +89,8 @@ class PathTracer {
     // The next-event estimate at `hit`: one light picked by power (an area light weighted for MIS; a point
     // light is a delta, weight 1) and the environment (one cosine-weighted direction), each with its shadow
     // ray.
-    Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;
+    Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,
+                     RayCounts& rays) const;
 
     // Chapter 09's media. The medium a segment runs through, judged at its end: the inside of a shape when
     // it ends on the back of a surface that lets light through, the medium between the shapes otherwise.
@@ -92,7 +103,7 @@ class PathTracer {
     Color seen(const Hit& hit, const Vec3& target, RayCounts& rays) const;
     // The next-event estimate at a scattering event at p in a medium: as next_event, with the phase function
     // for the BSDF, no cosine, and the environment sampled over the whole sphere.
-    Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Pcg32& rng,
+    Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, SampleStream rng,
                                RayCounts& rays) const;
 
     const World& world_;
@@ -105,7 +116,7 @@ class PathTracer {
     PathOptions options_;
 };
 
-// Renders with `tracer`: one path per sample, through a stratified point of the pixel.
+// Renders with `tracer`: one path per sample, its numbers from tracer.options().sampler.
 RenderResult render_paths(const PathTracer& tracer, const PinholeCamera& camera,
                           const RenderSettings& settings);
 

@@ -38,6 +38,7 @@ BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_
     // f |cos θ_i| / pdf = weight, the convention of every delta lobe (chapter 04's mirror).
     const Real cos_i = std::abs(glm::dot(d.wi, n));
     s.f = cos_i > 0 ? weight / cos_i : Color(0);
+    if (s.transmitted && transport == Transport::kRadiance) s.radiance_scale = 1 / (eta * eta);
     return s;
 }
 

@@ -58,6 +58,7 @@ std::vector<std::string> notes_for(const Scene& scene, Renderer renderer, const 
 int main(int argc, char** argv) {
     std::optional<int> max_depth;
     std::string sampling = "mis";
+    std::string sampler = "stratified";
     bool fresnel = false;
     std::string csv;
     bool depth = false;
@@ -77,6 +78,10 @@ int main(int argc, char** argv) {
         app.add_option("--sampling", sampling,
                        "How chapter 06's loop draws directions: uniform|cosine|brdf|light|mis")
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
+        app.add_option(
+               "--sampler", sampler,
+               "Where a sample's numbers come from: independent|stratified|sobol (Owen-scrambled Sobol)")
+            ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
         app.add_flag("--fresnel-study", fresnel,
                      "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
         app.add_option("--csv", csv,
@@ -100,6 +105,7 @@ int main(int argc, char** argv) {
         PathOptions options;
         options.simulated = context.simulated;
         options.strategy = sampling_strategy_from_string(sampling);
+        options.sampler = point_set_from_string(sampler);
         if (max_depth) options.termination = {Termination::kMaxDepth, *max_depth};
         if (depth) {
             if (!std::filesystem::is_directory(cache))
@@ -125,7 +131,7 @@ int main(int argc, char** argv) {
         const Renderer renderer = choose_renderer(context.simulated);
         ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options),
                        notes_for(scene, renderer, context.simulated), std::nullopt};
-        run.notes.push_back("sampling: " + sampling +
+        run.notes.push_back("sampling: " + sampling + ", sampler: " + sampler +
                             (max_depth ? ", termination: max depth " + std::to_string(*max_depth)
                                        : std::string(", termination: Russian roulette")));
         return run;

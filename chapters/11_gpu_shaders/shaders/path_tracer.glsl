@@ -88,11 +88,13 @@ vec3 next_event(Hit hit, vec3 wo, Material m, inout Pcg32 rng) {
     return sum;
 }
 
-// Chapter 05's continue_path with Russian roulette: q = min(1, max β) from bounce 3, 0 at bounce 64.
-bool continue_path(int depth, inout vec3 beta, float u) {
+// Chapter 05's continue_path with Russian roulette: q = min(1, max β η-scale) from bounce 3, 0 at bounce 64
+// (chapter 06's loop judges β with refraction's 1/η² divided out: eta_scale = Π η²).
+bool continue_path(int depth, inout vec3 beta, float u, float eta_scale) {
     float q = 0.0;
-    const float largest = max(max(beta.r, beta.g), beta.b);
-    if (depth < 64 && all_finite(beta) && largest > 0.0) q = depth < 3 ? 1.0 : min(1.0, largest);
+    const vec3 judged = beta * eta_scale;
+    const float largest = max(max(judged.r, judged.g), judged.b);
+    if (depth < 64 && all_finite(judged) && largest > 0.0) q = depth < 3 ? 1.0 : min(1.0, largest);
     if (!(u < q)) return false;
     if (q < 1.0) beta /= q;
     return true;
@@ -105,6 +107,7 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
     float previous_pdf = 0.0;
     vec3 previous_point = vec3(0.0), previous_normal = vec3(0.0);
     int bounces = 0;
+    float eta_scale = 1.0;
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!intersect_scene(ray, kInfinity, hit)) {
@@ -147,12 +150,17 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
         const float cos_i = s.transmitted ? -dot(s.wi, n) : dot(s.wi, n);
         if (!(cos_i > 0.0) || !(s.pdf > 0.0) || !any(greaterThan(s.f, vec3(0.0)))) break;
         beta *= s.f * (cos_i / s.pdf);
+        if (s.transmitted) {
+            // As the CPU's loop: divided by the radiance scale 1/η² the dielectric's sample holds.
+            const float eta = hit.front_face ? m.eta.x : m.eta.y;
+            eta_scale /= 1.0 / (eta * eta);
+        }
         if (!delta) ++bounces;
         specular = delta;
         previous_pdf = delta ? kInfinity : s.pdf;
         previous_point = hit.point;
         previous_normal = n;
-        if (!continue_path(depth + 1, beta, pcg_next_real(rng))) break;
+        if (!continue_path(depth + 1, beta, pcg_next_real(rng), eta_scale)) break;
         ray = spawn_ray(hit, s.wi);
         ++rays_traced[s.transmitted ? kRefractionRay : is_diffuse(m) ? kIndirectRay : kReflectionRay];
     }

@@ -1,0 +1,40 @@
+// An analysis hook of the path loop: the estimate L of one path split by the kind of path each term of it
+// came from, so that a study can measure which kind of path carries a render's error. The loop is the same
+// with or without it (the same random numbers, the same L); handed a PathParts, it files each term it adds:
+//   seen:       light met by the camera ray, or by a chain of delta bounces from the camera (L-S*-E);
+//   next event: light sampling at a non-delta vertex (chapter 04's estimate, MIS-weighted with BSDF hits);
+//   BSDF hit:   light met by a ray a non-delta vertex drew from its BSDF, MIS-weighted against light
+//               sampling (L-D-…);
+//   caustic:    light met after a delta chain (glass, mirrors) that a non-delta vertex's BSDF sample
+//               started (L-S+-D-…): light sampling cannot find these paths (its shadow rays stop at the
+//               glass), so BSDF sampling alone carries them, at full weight.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "rt/math.hpp"
+
+namespace rt {
+
+enum class PathPart : std::size_t { kSeen, kNextEvent, kBsdfHit, kCaustic };
+inline constexpr std::size_t kPathPartCount = 4;
+
+// "seen", "next event", "BSDF hit" or "caustic".
+inline const char* to_string(PathPart part) {
+    constexpr std::array<const char*, kPathPartCount> names{"seen", "next event", "BSDF hit", "caustic"};
+    return names[std::size_t(part)];
+}
+
+struct PathParts {
+    std::array<Color, kPathPartCount> parts{};  // their sum is the path's L
+    Color filed{0};                             // the part of L filed so far
+
+    // Files what L gained since the last call as `part`.
+    void file(PathPart part, const Color& L) {
+        parts[std::size_t(part)] += L - filed;
+        filed = L;
+    }
+};
+
+}  // namespace rt

@@ -1,0 +1,47 @@
+// Where the path loop's random numbers come from: a sample's stream of uniform numbers in [0, 1), each draw
+// the next dimension of the sample. The loop draws through this one interface (next_real, next_vec2) from
+//   independent: chapter 01's Pcg32 stream of the (pixel, sample, seed), the camera ray through a uniform
+//                point of the pixel;
+//   stratified:  the same, the camera ray through the sample's stratum of the pixel (the course's default);
+//   sobol:       the Owen-scrambled Sobol sequence of the pixel (owen_sobol.hpp), point `sample` of it.
+// Every stream is a pure function of (pixel, sample, seed), so an image is the same for any thread count.
+// Numbers that are handed to a generator rather than drawn here (a medium's free flights, chapter 09) come
+// from the sample's Pcg32 in every case.
+#pragma once
+
+#include <string_view>
+
+#include "owen_sobol.hpp"
+#include "rt/random.hpp"
+
+namespace rt {
+
+enum class PointSet { kIndependent, kStratified, kSobol };
+inline constexpr PointSet kAllPointSets[] = {PointSet::kIndependent, PointSet::kStratified, PointSet::kSobol};
+
+// "independent", "stratified" or "sobol".
+std::string_view to_string(PointSet points);
+// The point set of that name; throws InputError for any other name.
+PointSet point_set_from_string(std::string_view name);
+
+// A handle on a sample's stream (cheap to copy: copies draw from the same stream).
+class SampleStream {
+  public:
+    // Implicit: whatever has a Pcg32 draws from it.
+    SampleStream(Pcg32& rng) : rng_(&rng) {}  // NOLINT(google-explicit-constructor)
+    SampleStream(OwenSobolStream& sobol, Pcg32& rng) : sobol_(&sobol), rng_(&rng) {}
+
+    Real next_real() { return sobol_ ? sobol_->next_real() : rng_->next_real(); }
+    Vec2 next_vec2() {
+        const Real u = next_real();
+        return {u, next_real()};
+    }
+    // The sample's generator, for code that takes one.
+    Pcg32& generator() { return *rng_; }
+
+  private:
+    OwenSobolStream* sobol_ = nullptr;
+    Pcg32* rng_;
+};
+
+}  // namespace rt
