@@ -414,25 +414,33 @@ TEST_CASE("Every strategy estimates the irradiance of a quad, a sphere and the s
     }
 }
 
+namespace {
+
+// The RMSE of the cosine-weighted estimate of the first irradiance case (a quad light) with n points, over
+// 200 runs of their own seeds.
+double quad_irradiance_rmse(int n, PointSet points) {
+    const IrradianceCase quad = irradiance_cases()[0];
+    double sum2 = 0;
+    constexpr int kRuns = 200;
+    for (int r = 0; r < kRuns; ++r) {
+        const double e =
+            estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, points).mean - quad.exact;
+        sum2 += e * e;
+    }
+    return std::sqrt(sum2 / kRuns);
+}
+
+}  // namespace
+
 TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
           "[statistical][ex:ch01.pixel_sample][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
-    const IrradianceCase quad = irradiance_cases()[0];
-    auto rmse = [&](int n, PointSet points) {
-        double sum2 = 0;
-        constexpr int kRuns = 200;
-        for (int r = 0; r < kRuns; ++r) {
-            const double e =
-                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, points).mean - quad.exact;
-            sum2 += e * e;
-        }
-        return std::sqrt(sum2 / kRuns);
-    };
-    const double r64 = rmse(64, PointSet::kIndependent), r1024 = rmse(1024, PointSet::kIndependent);
+    const double r64 = quad_irradiance_rmse(64, PointSet::kIndependent);
+    const double r1024 = quad_irradiance_rmse(1024, PointSet::kIndependent);
     // 16× the samples: 4× less error (within the spread of 200 runs).
     CHECK(r64 / r1024 > 3.3);
     CHECK(r64 / r1024 < 4.8);
     // Stratified: less error for the same N.
-    CHECK(rmse(1024, PointSet::kStratified) < r1024 / 2);
+    CHECK(quad_irradiance_rmse(1024, PointSet::kStratified) < r1024 / 2);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -543,23 +551,13 @@ TEST_CASE("Sobol points are a pure function of (pixel, sample, dimension, seed)"
 
 TEST_CASE("Sobol points: the irradiance error falls faster than 1/sqrt(N)",
           "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
-    const IrradianceCase quad = irradiance_cases()[0];
-    auto rmse = [&](int n, PointSet points) {
-        double sum2 = 0;
-        constexpr int kRuns = 200;
-        for (int r = 0; r < kRuns; ++r) {
-            const double e =
-                estimate_irradiance(quad, SamplingStrategy::kCosine, n, 1000 + r, points).mean - quad.exact;
-            sum2 += e * e;
-        }
-        return std::sqrt(sum2 / kRuns);
-    };
-    const double s64 = rmse(64, PointSet::kSobol), s1024 = rmse(1024, PointSet::kSobol);
+    const double s64 = quad_irradiance_rmse(64, PointSet::kSobol);
+    const double s1024 = quad_irradiance_rmse(1024, PointSet::kSobol);
     INFO("Sobol RMSE " << s64 << " at N = 64, " << s1024 << " at N = 1024");
     // 16x the samples: 4x less error for independent points, 16^0.75 = 8x for Owen-scrambled Sobol points on
     // an integrand with an edge (the light's outline); measured
     CHECK(s64 / s1024 > 6);
-    CHECK(s1024 < rmse(1024, PointSet::kStratified));
+    CHECK(s1024 < quad_irradiance_rmse(1024, PointSet::kStratified));
 }
 
 // ---------------------------------------------------------------------------------------------------------

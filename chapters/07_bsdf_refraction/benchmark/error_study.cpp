@@ -25,6 +25,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
+#include "reference_halves.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/error_metrics.hpp"
@@ -43,19 +44,6 @@ double median(std::vector<double> v) {
 
 EffectSet simulated_of(const Scene& scene) {
     return needed(scene) & EffectSet::all();
-}
-
-Image cached_half(const Scene& scene, RenderSettings settings, int spp, std::uint64_t seed,
-                  const std::filesystem::path& file) {
-    if (std::filesystem::exists(file)) {
-        Image image = read_pfm(file);
-        if (image.width() == settings.width && image.height() == settings.height) return image;
-    }
-    settings.samples_per_pixel = spp;
-    settings.seed = seed;
-    Image image = render_with(Renderer::kPaths, scene, simulated_of(scene), settings).image;
-    write_pfm(image, file);
-    return image;
 }
 
 // Each pixel's squared error over its channels, relative: Σ_c (x − r)² / (r² + 0.01).
@@ -212,9 +200,9 @@ void run(int size, int spp, int reference_spp, int threads, int repeats, double 
     settings.progress = ProgressStyle::kNone;
     const std::string stem =
         "ch07_reference_cornell_" + std::to_string(size) + "_" + std::to_string(reference_spp) + "spp";
-    const Image a = cached_half(scene, settings, reference_spp / 2, 1001,
+    const Image a = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1001,
                                 std::filesystem::path(cache) / (stem + "_a.pfm"));
-    const Image b = cached_half(scene, settings, reference_spp / 2, 1002,
+    const Image b = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1002,
                                 std::filesystem::path(cache) / (stem + "_b.pfm"));
     Image r(size, size);
     for (int y = 0; y < size; ++y)

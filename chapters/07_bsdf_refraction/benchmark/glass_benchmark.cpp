@@ -22,6 +22,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
+#include "reference_halves.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/image_io.hpp"
@@ -52,19 +53,6 @@ double relative_mse(const Image& image, const Image& a, const Image& b) {
         }
     }
     return sum / (3.0 * double(image.width()) * double(image.height()));
-}
-
-Image cached_half(const Scene& scene, RenderSettings settings, int spp, std::uint64_t seed,
-                  const std::filesystem::path& file) {
-    if (std::filesystem::exists(file)) {
-        Image image = read_pfm(file);
-        if (image.width() == settings.width && image.height() == settings.height) return image;
-    }
-    settings.samples_per_pixel = spp;
-    settings.seed = seed;
-    Image image = chapter07(scene, settings).image;
-    write_pfm(image, file);
-    return image;
 }
 
 void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
@@ -181,10 +169,11 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
     conv.width = conv.height = conv_size;
     const std::string stem = "ch07_benchmark_reference_" + std::filesystem::path(conv_scene).stem().string() +
                              "_" + std::to_string(conv_size) + "_" + std::to_string(reference_spp) + "spp";
-    const Image a =
-        cached_half(converging, conv, reference_spp / 2, 1001, std::filesystem::path(cache) / (stem + "_a.pfm"));
-    const Image b =
-        cached_half(converging, conv, reference_spp / 2, 1002, std::filesystem::path(cache) / (stem + "_b.pfm"));
+    // Chapter 07's own renderer for the scene, as chapter07() chooses it.
+    const Renderer renderer = choose_renderer(needed(converging) & EffectSet::all());
+    const std::filesystem::path halves = std::filesystem::path(cache) / stem;
+    const Image a = cached_half(renderer, converging, conv, reference_spp / 2, 1001, halves.string() + "_a.pfm");
+    const Image b = cached_half(renderer, converging, conv, reference_spp / 2, 1002, halves.string() + "_b.pfm");
     const double noise = relative_mse(a, a, b) / 4;  // (A − r) = (A − B) / 2; the mean's noise is a quarter
     std::printf(
         "\ntime to relative MSE %.0e, %s %dx%d, reference %d spp (its own relative MSE %.2e)\n", target,
