@@ -19,6 +19,7 @@
 #include "08_forward_tracing/forward_study.hpp"
 #include "08_forward_tracing/light_emission.hpp"
 #include "08_forward_tracing/light_tracer.hpp"
+#include "08_forward_tracing/splat_render.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
@@ -639,4 +640,37 @@ TEST_CASE(
     CHECK(s.importance.bsdf(glass).flags().transmission);
     CHECK_FALSE(s.importance.bsdf(glass).flags().delta);
     check_forward_matches_reverse(s, 1024);
+}
+
+TEST_CASE("The light tracer reports its image after each wave of paths, and the last report is its image",
+          "[splat][live]") {
+    // Path i adds 1 to pixel i mod 32 of an 8 × 4 image: after N paths (a multiple of 32) every pixel reads
+    // (N / 32) / N = 1/32 exactly. 20 chunks of 2^14 paths make waves of 8, 8 and 4 chunks.
+    RenderSettings settings{8, 4, 1, 3, 2, ProgressStyle::kNone};
+    const std::uint64_t pixels = 32, chunk = chunk_size(8, 4);
+    REQUIRE(chunk == (1u << 14));
+    auto trace = [&](std::uint64_t i, Pcg32&, Image& film, RayCounts& rays) {
+        film.pixels()[std::size_t(i % pixels)] += Color(1);
+        rays.add(RayKind::kCamera, 1);
+        return true;
+    };
+    std::vector<std::uint64_t> samples;
+    std::vector<std::uint32_t> fewest;
+    Image last;
+    settings.after_pass = [&](const PassReport& pass) {
+        samples.push_back(pass.samples);
+        fewest.push_back(pass.fewest_samples);
+        CHECK(pass.samples_held == pass.samples);
+        CHECK(pass.rays[RayKind::kCamera] == pass.samples);
+        last = pass.image;
+    };
+    const SplatResult r = render_light_paths(settings, 20 * chunk, trace);
+    CHECK(samples == std::vector<std::uint64_t>{8 * chunk, 16 * chunk, 20 * chunk});
+    const auto per_pixel = [&](std::uint64_t paths) { return std::uint32_t(paths / pixels); };
+    CHECK(fewest == std::vector<std::uint32_t>{per_pixel(8 * chunk), per_pixel(16 * chunk), per_pixel(20 * chunk)});
+    REQUIRE(last.pixel_count() == r.render.image.pixel_count());
+    for (std::size_t i = 0; i < last.pixel_count(); ++i) {
+        REQUIRE(last.pixels()[i] == r.render.image.pixels()[i]);
+        REQUIRE(last.pixels()[i] == Color(Real(1) / 32));
+    }
 }

@@ -246,10 +246,11 @@ TEST_CASE("The after-pass hook sees every pass's sums, and the image is the same
     std::vector<std::uint64_t> samples, camera_rays;
     Image last;
     settings.after_pass = [&](const PassReport& pass) {
-        counts.push_back(pass.sums.min_count());
+        counts.push_back(pass.fewest_samples);
         samples.push_back(pass.samples);
+        CHECK(pass.samples_held == pass.samples);
         camera_rays.push_back(pass.rays[RayKind::kCamera]);
-        last = pass.sums.mean_image();
+        last = pass.image;
     };
     const RenderResult with = render(settings, sample);
     CHECK(counts == std::vector<std::uint32_t>{1, 4, 7, 10, 13, 16, 17});

@@ -19,6 +19,10 @@ constexpr std::uint64_t kChunksPerWave = 8;
 // Paths between two looks at the interrupt flag.
 constexpr std::uint64_t kInterruptCheck = 1024;
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 }  // namespace
 
 std::uint64_t chunk_size(int width, int height) {
@@ -48,6 +52,18 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
     std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
     std::uint64_t traced = 0, contributed = 0;
     bool interrupted = false;
+    // I = (1 / N) Σ_paths (their splats), over the N paths traced so far.
+    auto image_so_far = [&] {
+        Image image(settings.width, settings.height);
+        const double scale = traced > 0 ? 1.0 / double(traced) : 0.0;
+        for (std::size_t p = 0; p < pixels; ++p) image.pixels()[p] = Color(sums[p] * scale);
+        return image;
+    };
+    auto rays_so_far = [&] {
+        RayCounts rays;
+        for (const RayCounts& c : rays_per_thread) rays += c;
+        return rays;
+    };
 
     for (std::uint64_t wave = 0; wave < chunk_count; wave += kChunksPerWave) {
         if (interrupt_requested()) {
@@ -103,19 +119,22 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
             traced += std::min(path_count, (wave + c + 1) * chunk) - (wave + c) * chunk;
         }
         if (interrupted) break;
+        if (settings.after_pass && !interrupt_requested()) {
+            const Image image = image_so_far();
+            settings.after_pass(PassReport{image, std::uint32_t(traced / pixels), traced, rays_so_far(), traced,
+                                           seconds_since(start)});
+        }
     }
 
     SplatResult out;
     out.contributing_paths = contributed;
     RenderResult& r = out.render;
-    r.image = Image(settings.width, settings.height);
-    const double scale = traced > 0 ? 1.0 / double(traced) : 0.0;
-    for (std::size_t p = 0; p < pixels; ++p) r.image.pixels()[p] = Color(sums[p] * scale);
-    for (const RayCounts& c : rays_per_thread) r.rays += c;
+    r.image = image_so_far();
+    r.rays = rays_so_far();
     r.samples = traced;
     r.samples_per_pixel = int(traced / std::max<std::uint64_t>(1, pixels));
     r.interrupted = interrupted;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.seconds = seconds_since(start);
     return out;
 }
 

@@ -167,6 +167,22 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     // samples does it before the clock starts.
     run_band(0, 1, 0, 0);
 
+    // Read back a texel row at a time (a whole large image is more bytes than one call may name): texel row
+    // r is pixel row H − 1 − r; each pixel is its sums over its count.
+    auto read_image = [&] {
+        Image image(width, height);
+        std::vector<float> row(std::size_t(width) * 4);
+        for (int y = 0; y < height; ++y) {
+            glGetTextureSubImage(total, 0, 0, height - 1 - y, 0, width, 1, 1, GL_RGBA, GL_FLOAT,
+                                 GLsizei(row.size() * sizeof(float)), row.data());
+            for (int x = 0; x < width; ++x) {
+                const float* t = &row[std::size_t(x) * 4];
+                image.at(x, y) = t[3] > 0 ? Color(t[0], t[1], t[2]) / Real(t[3]) : Color(0);
+            }
+        }
+        return image;
+    };
+
     RenderResult result;
     Progress progress(settings.progress);
     const auto start = Clock::now();
@@ -208,21 +224,15 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
         }
         samples_kept += pass_taken;
         samples_per_pixel = end;
+        if (settings.after_pass && !interrupt_requested()) {
+            const Image image = read_image();
+            settings.after_pass(PassReport{image, std::uint32_t(end), samples_kept, result.rays, samples_kept,
+                                           std::chrono::duration<double>(Clock::now() - start).count()});
+        }
     }
     progress.clear();
 
-    // Read back a texel row at a time (a whole large image is more bytes than one call may name): texel row
-    // r is pixel row H − 1 − r; each pixel is its sums over its count.
-    result.image = Image(width, height);
-    std::vector<float> row(std::size_t(width) * 4);
-    for (int y = 0; y < height; ++y) {
-        glGetTextureSubImage(total, 0, 0, height - 1 - y, 0, width, 1, 1, GL_RGBA, GL_FLOAT,
-                             GLsizei(row.size() * sizeof(float)), row.data());
-        for (int x = 0; x < width; ++x) {
-            const float* t = &row[std::size_t(x) * 4];
-            result.image.at(x, y) = t[3] > 0 ? Color(t[0], t[1], t[2]) / Real(t[3]) : Color(0);
-        }
-    }
+    result.image = read_image();
     if (framebuffer) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         glDeleteFramebuffers(1, &framebuffer);

@@ -87,10 +87,9 @@ private:
         Snapshot snapshot;
         context.settings.after_pass = [&](const PassReport& report) {
             ++snapshot.pass;
-            const Image image = report.sums.mean_image();
-            take_counts(snapshot, image, report.sums.min_count(), double(report.sums.total_count()),
+            take_counts(snapshot, report.image, report.fewest_samples, double(report.samples_held),
                         report.samples, report.seconds, report.rays);
-            publish(snapshot, png_bytes(image));
+            publish(snapshot, png_bytes(report.image));
             server_->answer_changes([this](const LiveChange& c) { return apply(c); });
         };
         publish(snapshot, std::nullopt);
@@ -120,7 +119,7 @@ private:
                     r.rays);
         if (result->exact) add_error(snapshot, "the exact image", r.image, *result->exact);
         snapshot.status = "done";
-        snapshot.pass = std::max(snapshot.pass, 1);  // a render whose loop has no hook: one image
+        snapshot.pass = std::max(snapshot.pass, 1);  // a render of one pass
         publish(snapshot, png_bytes(r.image));
     }
 

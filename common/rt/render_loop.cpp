@@ -121,7 +121,9 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
         if (settings.after_pass && !interrupt_requested()) {
             RayCounts rays;
             for (const RayCounts& r : rays_per_thread) rays += r;
-            settings.after_pass(PassReport{sums, rays, samples_done.load(), seconds_since(start)});
+            const Image image = sums.mean_image();
+            settings.after_pass(PassReport{image, sums.min_count(), sums.total_count(), rays, samples_done.load(),
+                                           seconds_since(start)});
         }
     }
     progress.clear();

@@ -24,10 +24,15 @@ namespace rt {
 
 enum class ProgressStyle { kAuto, kBar, kLines, kNone };
 
-// What the render has after a pass: every pixel's sums (its image is sums.mean_image()), the rays traced
-// and the samples taken by this run so far, and the time since it started.
+// What the render has after a pass: its image so far (every pixel's mean), the fewest samples a pixel has
+// and the samples the image holds (a resumed render's included), the rays traced and the samples taken by
+// this run so far, and the time since it started. Chapter 08's light tracer, whose paths splat into any
+// pixel, reports after each wave of paths: its image is the splats' sum over the paths traced, and each
+// pixel "has" the paths per pixel.
 struct PassReport {
-    const PixelSums& sums;
+    const Image& image;
+    std::uint32_t fewest_samples = 0;
+    std::uint64_t samples_held = 0;
     RayCounts rays;
     std::uint64_t samples = 0;
     double seconds = 0;
