@@ -337,14 +337,31 @@ TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes every
 // ---------------------------------------------------------------------------------------------------------
 // The furnace
 
+// The course's scene `file` prepared for chapter 07's path tracer (chapter 06's loop with this chapter's
+// BSDFs), every effect it needs simulated.
+struct SceneTracer {
+    explicit SceneTracer(const char* file)
+        : scene(load_scene(scene_path(file))),
+          prepared(scene, needed(scene), refraction_materials()),
+          tracer(prepared.world, prepared.materials, prepared.lights, every_effect_needed(scene)) {}
+
+    static PathOptions every_effect_needed(const Scene& scene) {
+        PathOptions options;
+        options.simulated = needed(scene);
+        return options;
+    }
+
+    Scene scene;
+    RenderScene prepared;
+    PathTracer tracer;
+};
+
 // Every pixel of the furnace scene: the mean of its samples is 1 within 5 standard errors (and exactly 1
 // where every sample is).
 void check_furnace(const char* file) {
-    const Scene scene = load_scene(scene_path(file));
-    const RenderScene prepared(scene, needed(scene), refraction_materials());
-    PathOptions options;
-    options.simulated = needed(scene);
-    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    const SceneTracer traced(file);
+    const Scene& scene = traced.scene;
+    const PathTracer& tracer = traced.tracer;
     const int size = 32, spp = 256;
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     RayCounts rays;
@@ -554,11 +571,9 @@ TEST_CASE("Path parts: the glass box's estimate split by path kind sums to it an
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
-    const Scene scene = load_scene(scene_path("cornell.json"));
-    const RenderScene prepared(scene, needed(scene), refraction_materials());
-    PathOptions options;
-    options.simulated = needed(scene);
-    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    const SceneTracer traced("cornell.json");
+    const Scene& scene = traced.scene;
+    const PathTracer& tracer = traced.tracer;
     const int size = 24, spp = 32;
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     RayCounts rays;
