@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numeric>
 #include <string>
 #include <variant>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "06_monte_carlo/warp_pdfs.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "08_forward_tracing/camera_importance.hpp"
+#include "08_forward_tracing/combined_render.hpp"
 #include "08_forward_tracing/forward_study.hpp"
 #include "08_forward_tracing/light_emission.hpp"
 #include "08_forward_tracing/light_tracer.hpp"
@@ -108,6 +110,31 @@ Scene default_scene_with_glass(Change&& change) {
     return scene;
 }
 
+// Two estimators' images, each the mean of independent batches (batch_statistics), agree pixel by pixel
+// within error bars, and so do their means over the image.
+void check_images_agree(const MeanAndError& a, const MeanAndError& b) {
+    const std::size_t values = a.mean.size();
+    int within3 = 0, beyond6 = 0;
+    double sum_a = 0, sum_b = 0, variance_sum = 0;
+    for (std::size_t i = 0; i < values; ++i) {
+        const double d = a.mean[i] - b.mean[i];
+        const double se = std::hypot(a.error[i], b.error[i]);
+        const double z = se > 0 ? std::abs(d) / se : (d == 0 ? 0.0 : kInfinity);
+        within3 += z < 3;
+        beyond6 += z > 6;
+        sum_a += a.mean[i];
+        sum_b += b.mean[i];
+        variance_sum += se * se;
+    }
+    INFO("values " << values << ", within 3 sigma " << within3 << ", beyond 6 sigma " << beyond6);
+    CHECK(double(within3) / double(values) >= 0.97);
+    CHECK(beyond6 == 0);
+    // The image means: their difference against its standard error sqrt(Σ se²) / values.
+    INFO("mean of a " << sum_a / double(values) << ", of b " << sum_b / double(values));
+    CHECK(std::abs(sum_a - sum_b) <= 4 * std::sqrt(variance_sum));
+    CHECK(sum_a > 0);
+}
+
 // Forward (connect) and reverse (chapter 06, MIS) images of `setup` agree pixel by pixel within error bars.
 void check_forward_matches_reverse(const StudyScene& s, int spp) {
     constexpr int kBatches = 16;
@@ -124,25 +151,7 @@ void check_forward_matches_reverse(const StudyScene& s, int spp) {
                             settings_of(s.camera.width, s.camera.height, spp / kBatches, seed + 50))
             .image;
     });
-    int within3 = 0, beyond6 = 0;
-    double forward_sum = 0, reverse_sum = 0, variance_sum = 0;
-    for (std::size_t i = 0; i < values; ++i) {
-        const double d = forward.mean[i] - reverse.mean[i];
-        const double se = std::hypot(forward.error[i], reverse.error[i]);
-        const double z = se > 0 ? std::abs(d) / se : (d == 0 ? 0.0 : kInfinity);
-        within3 += z < 3;
-        beyond6 += z > 6;
-        forward_sum += forward.mean[i];
-        reverse_sum += reverse.mean[i];
-        variance_sum += se * se;
-    }
-    INFO("values " << values << ", within 3 sigma " << within3 << ", beyond 6 sigma " << beyond6);
-    CHECK(double(within3) / double(values) >= 0.97);
-    CHECK(beyond6 == 0);
-    // The image means: their difference against its standard error sqrt(Σ se²) / values.
-    INFO("mean forward " << forward_sum / double(values) << ", reverse " << reverse_sum / double(values));
-    CHECK(std::abs(forward_sum - reverse_sum) <= 4 * std::sqrt(variance_sum));
-    CHECK(forward_sum > 0);
+    check_images_agree(forward, reverse);
 }
 
 }  // namespace
@@ -294,6 +303,66 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     // ...while a connection to the pinhole cannot pass through glass (a delta): the sphere's pixels lose
     // what lies behind it.
     CHECK(hidden_a < 0.8 * hidden_b);
+}
+
+TEST_CASE("Paths for all but the camera caustics, plus light paths for those, converge to chapter 06's "
+          "image with less variance",
+          "[ch08][statistical]") {
+    const Scene scene = load_scene(scene_path("ch08_default.json"));
+    const EffectSet all = needed(scene) & EffectSet::all();
+    constexpr int kSide = 16, kBatches = 16, kSpp = 64;
+    const std::size_t values = std::size_t(kSide * kSide * 3);
+    const RenderScene prepared(scene, all, refraction_materials());
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, kSide, kSide);
+    PathOptions options;
+    options.simulated = all;
+    const PathTracer paths(prepared.world, prepared.materials, prepared.lights, options);
+    const auto reverse = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
+        return render_paths(paths, camera, settings_of(kSide, kSide, kSpp, seed + 50)).image;
+    });
+    Image caustic(kSide, kSide);
+    const auto combined = batch_statistics(kBatches, values, [&](std::uint64_t seed) {
+        const CombinedResult r = render_combined(scene, all, settings_of(kSide, kSide, kSpp, seed), {});
+        for (std::size_t p = 0; p < caustic.pixels().size(); ++p)
+            caustic.pixels()[p] += r.caustics.render.image.pixels()[p];
+        return r.render.image;
+    });
+    // The sum is chapter 06's image: each path counted once, by one of the two.
+    check_images_agree(combined, reverse);
+    // The light paths carry a share of it (the caustic under the sphere): the split is not empty.
+    CHECK(caustic.mean() / kBatches >
+          0.01 * std::accumulate(reverse.mean.begin(), reverse.mean.end(), 0.0) / double(values));
+    // And with less variance at equal samples: the squared standard errors summed over the image (0.65 times
+    // the paths' at this size, where a pixel averages the fireflies of many; ch08_time_to_error measures the
+    // gain on the full-size image).
+    double v_reverse = 0, v_combined = 0;
+    for (std::size_t i = 0; i < values; ++i) {
+        v_reverse += reverse.error[i] * reverse.error[i];
+        v_combined += combined.error[i] * combined.error[i];
+    }
+    INFO("summed variance: paths " << v_reverse << ", combined " << v_combined);
+    CHECK(v_combined < 0.8 * v_reverse);
+}
+
+TEST_CASE("Without glass or mirrors the path loop leaves out nothing and the caustic light paths add nothing",
+          "[ch08]") {
+    const StudyScene s(load_scene(scene_path("ch06_default.json")), 12, 12);
+    const RenderSettings settings = settings_of(12, 12, 8, 3);
+    PathOptions options;
+    const PathTracer all_paths(s.prepared.world, s.prepared.materials, s.prepared.lights, options);
+    options.camera_caustic_bounces = 3;
+    const PathTracer leaving(s.prepared.world, s.prepared.materials, s.prepared.lights, options);
+    // The same numbers drawn, the same light counted: the same image, bit for bit.
+    CHECK(render_paths(all_paths, s.camera, settings).image.pixels() ==
+          render_paths(leaving, s.camera, settings).image.pixels());
+    LightTracerOptions light_options;
+    light_options.paths = LightPathSet::kCaustics;
+    light_options.caustic_bounces = 3;
+    const ForwardTracer caustics(s, EffectSet::all(), light_options);
+    const SplatResult r = render_light_tracing(caustics.tracer, settings, paths_per_image(settings));
+    CHECK(r.contributing_paths == 0);
+    CHECK(r.render.image.mean() == 0);
+    CHECK(r.render.rays.count[std::size_t(RayKind::kCamera)] == 0);  // no connection tried
 }
 
 TEST_CASE("A wall of radiance 1 reads 1 through the lens aperture and through the pinhole connection",

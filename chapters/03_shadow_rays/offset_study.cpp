@@ -11,6 +11,7 @@
 #include "scene_scale.hpp"
 #include "shadow_ray.hpp"
 #include "shadow_render.hpp"
+#include "rt/median.hpp"
 
 namespace rt {
 namespace {
@@ -68,11 +69,6 @@ std::vector<std::pair<Hit, Vec3>> shadow_queries(const World& world, const Scene
         }
     }
     return queries;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 // ns per offset_origin call (the method's own work: the origin of one shadow ray), over the queries for at

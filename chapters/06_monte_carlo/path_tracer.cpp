@@ -153,6 +153,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
     int bounces = 0;                             // non-delta bounces so far
     Real eta_scale = 1;  // Π η² of the refractions so far: β × eta_scale is what Russian roulette judges
     Real length = 0;                             // of the path so far, for `features`
+    bool clear_so_far = true;  // no delta bounce (and no medium event) yet: the path is E D*
     // Chapter 09's media: the events of the path's walks so far (scattering, and reflections at a walk's
     // boundary), the colour channel whose density draws its free flights (chosen when the path first meets a
     // medium that scatters), and the densities of the path under each channel's sampling, relative to the
@@ -196,6 +197,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
                 previous_pdf = s.pdf;
                 previous_point = p;
                 previous_normal = Vec3(0);
+                clear_so_far = false;
                 if (options_.walk.roulette) {
                     const Real q = std::min(Real(1), std::max({beta.r, beta.g, beta.b}));
                     if (!(rng.next_real() < q)) break;
@@ -248,6 +250,8 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
             rays.add(RayKind::kRefraction);
             continue;
         }
+        // E D{1..K} S: the rest of this path is the light tracer's (PathOptions::camera_caustic_bounces).
+        if (flags.delta && clear_so_far && bounces >= 1 && bounces <= options_.camera_caustic_bounces) break;
         const bool records = features && !features->recorded && !flags.delta;
         // Chapter 10's features, at the first vertex that is not a delta bounce (the albedo once the bounce
         // is drawn).
@@ -280,6 +284,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
         if (records) features->albedo = beta * s.f * (cos_i / s.pdf);
         beta *= s.f * (cos_i / s.pdf);
         if (options_.roulette_eta_scale) eta_scale /= s.radiance_scale;
+        if (flags.delta) clear_so_far = false;
         if (!flags.delta) ++bounces;
         specular = flags.delta;
         previous_pdf = flags.delta ? kInfinity : s.pdf;

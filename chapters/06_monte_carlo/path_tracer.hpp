@@ -53,6 +53,14 @@ struct PathOptions : TraceOptions {
     // PBRT's η-scale: otherwise a path inside glass survives with 1/η² of its chance and comes out η² times
     // brighter, the fireflies of the glass box's caustics (chapter 06's error study). false: judges β itself.
     bool roulette_eta_scale = true;
+    // K > 0 leaves out every path that begins, from the camera, with 1 to K non-delta vertices and then a
+    // delta one (glass, a mirror): E D{1..K} S …, the caustics the camera sees with no glass or mirror in
+    // between. The loop finds the bright ones only when BSDF samples happen to pass the glass and hit the
+    // light (its fireflies: light sampling cannot see a lamp through glass). Chapter 08's light tracer finds
+    // them from the light's side (LightPathSet::kCaustics with the same K), and the two images add up to the
+    // whole: every path is counted by exactly one of them. The path ends at that delta vertex (what follows is
+    // the light tracer's). Only for scenes without media, whose lights are all sampled. 0: every path.
+    int camera_caustic_bounces = 0;
     // Where a sample's numbers come from (sample_stream.hpp; render_paths reads it).
     PointSet sampler = PointSet::kStratified;
     MediumWalk walk;

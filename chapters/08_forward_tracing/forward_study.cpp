@@ -178,7 +178,7 @@ void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     // The regions: pixels whose centre sees a mirror first; pixels the caustic lights (the light tracer's
     // caustic paths alone give at least 10% of the reference); the rest.
     LightTracerOptions caustic_options = LightTracerOptions{};
-    caustic_options.caustics_only = true;
+    caustic_options.paths = LightPathSet::kCaustics;
     const LightTracer caustic_tracer(s.prepared.world, s.importance, s.prepared.lights, s.camera,
                                      caustic_options);
     const RenderSettings caustic_settings = study_settings(o, 64);

@@ -31,6 +31,8 @@ LightTracer::LightTracer(const World& world, const MaterialTable& materials, con
         throw InputError("--aperture: the lens radius must be > 0, got " +
                          std::to_string(options_.aperture_radius));
     }
+    if (options_.variant == CameraVariant::kAperture && options_.paths != LightPathSet::kAll)
+        throw InputError("caustics alone are traced with --variant connect (a lens sees every path)");
 }
 
 bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const Color& beta, Image& film,
@@ -96,14 +98,15 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
     if (!e) return false;
     const bool connecting = options_.variant == CameraVariant::kConnect;
     bool added = false;
-    if (connecting && options_.simulates(Effect::kCameraRays) && !options_.caustics_only)
+    const LightPathSet wanted_paths = options_.paths;
+    if (connecting && options_.simulates(Effect::kCameraRays) && wanted_paths == LightPathSet::kAll)
         added |= connect_light(*e, film, rays);
     Ray ray = e->point_light ? Ray{e->origin.point, e->direction}
                              : spawn_ray(e->origin, e->direction, options_.offset);
     rays.add(RayKind::kShadow);
     Color relative(1);         // Π f cos θ / pdf: β = β₀ relative
     int diffuse_bounces = 0;   // non-specular bounces so far
-    bool from_mirror = false;  // the last bounce was specular
+    int since_mirror = -1;     // non-specular vertices since the last specular one (−1: none yet)
     for (int depth = 0;; ++depth) {
         const Color beta = e->beta * relative;
         const auto hit = world_.intersect(ray);
@@ -118,11 +121,14 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         const BsdfFlags& flags = bsdf.flags();
         if (flags.black) break;
         const Vec3 wo = -ray.direction;
+        since_mirror = flags.delta ? 0 : since_mirror < 0 ? -1 : since_mirror + 1;
         // A delta vertex (mirror, smooth glass) cannot be connected: its f is 0 toward the pinhole.
         if (connecting && !flags.delta) {
             const bool wanted = diffuse_bounces == 0 ? options_.simulates(Effect::kDirect)
                                                      : options_.simulates(Effect::kIndirect);
-            if (wanted && (!options_.caustics_only || from_mirror))
+            // Caustics: this vertex is one of the first K non-delta ones after a delta one, L…S D{1..K} E.
+            const bool caustic = since_mirror >= 1 && since_mirror <= options_.caustic_bounces;
+            if (wanted && (wanted_paths == LightPathSet::kAll || caustic))
                 added |= connect(*hit, wo, bsdf, beta, film, rays);
         }
         // Without the indirect effect a path ends at its first diffuse vertex: maximum depth 1.
@@ -132,7 +138,6 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         const Real cos_i = scattering_cosine(s.wi, hit->normal, s.transmitted);
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
         relative *= s.f * (cos_i / s.pdf);
-        from_mirror = flags.delta;
         if (!flags.delta) ++diffuse_bounces;
         if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
         ray = spawn_ray(*hit, s.wi, options_.offset);

@@ -38,6 +38,15 @@ enum class CameraVariant { kConnect, kAperture };
 // "connect" or "aperture"; the other name throws InputError.
 CameraVariant camera_variant_from_string(std::string_view name);
 
+// Which light paths a tracer counts, by the vertices next to the camera (D a non-delta vertex, S a delta
+// one):
+//   all:      every path it finds;
+//   caustics: light that reached the camera through at most K = caustic_bounces non-delta vertices after a
+//             delta one, L…S D{1..K} E (K = 1: light that arrived at the connected vertex straight from a
+//             mirror or glass). They are the paths chapter 06's loop leaves out with
+//             PathOptions::camera_caustic_bounces = K.
+enum class LightPathSet { kAll, kCaustics };
+
 // Effects read: "camera" (the emitters themselves, seen by the camera), "direct" (vertices after no diffuse
 // or glossy bounce), "indirect" (bounces off diffuse and glossy surfaces). The material table — built for
 // Transport::kImportance — holds what "glossy", "reflection" and "refraction" change.
@@ -46,8 +55,8 @@ struct LightTracerOptions : TraceOptions {
     Real aperture_radius = 1;  // kAperture: the lens radius R, in scene units
     // Chapter 05's Russian roulette on the relative throughput Π f cos θ / pdf (β / β₀), under its cap.
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
-    // Only vertices whose light arrived straight from a mirror (paths L…S D E): the caustics alone.
-    bool caustics_only = false;
+    LightPathSet paths = LightPathSet::kAll;
+    int caustic_bounces = 1;  // K, with LightPathSet::kCaustics
 };
 
 class LightTracer {

@@ -1,7 +1,9 @@
 // Chapter 08: forward (light) tracing. Paths start at the lights and reach the camera through a lens
 // aperture (`--variant aperture --aperture R`) or by connecting every vertex to the pinhole (`--variant
 // connect`, the default); `--tracer reverse` renders the same scene with chapter 07's renderer beside it.
-// `--forward-study` measures what reverse tracing saves (see forward_study.hpp).
+// `--tracer combined` adds the two: chapter 06's paths for everything but the caustics the camera sees, light
+// paths for those (combined_render.hpp). `--forward-study` measures what reverse tracing saves (see
+// forward_study.hpp).
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -11,6 +13,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "combined_render.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
 #include "rt/app.hpp"
@@ -50,6 +53,9 @@ int main(int argc, char** argv) {
     std::string variant = "connect";
     Real aperture = 1;
     bool caustics_only = false;
+    Real light_paths = 1;
+    int caustic_bounces = kSafetyDepthCap;
+    std::string sampler = "stratified";
     StudyOptions study;
     bool run_study = false;
     const ChapterInfo chapter{
@@ -61,8 +67,22 @@ int main(int argc, char** argv) {
                   Effect::kGlossy, Effect::kIndirect, Effect::kRefraction}};
     auto flags = [&](CLI::App& app) {
         app.add_option("--tracer", tracer_name,
-                       "forward (light paths) or reverse (chapter 07's renderer for the effects simulated)")
-            ->check(CLI::IsMember({"forward", "reverse"}));
+                       "forward (light paths), reverse (chapter 07's renderer for the effects simulated) or "
+                       "combined (chapter 06's paths, and light paths for the caustics the camera sees)")
+            ->check(CLI::IsMember({"forward", "reverse", "combined"}));
+        CLI::Option* light_paths_flag =
+            app.add_option("--light-paths", light_paths,
+                           "With --tracer combined: light paths for the caustics per camera sample")
+                ->check(CLI::Range(0.0, 1024.0));
+        CLI::Option* caustic_bounces_flag =
+            app.add_option("--caustic-bounces", caustic_bounces,
+                           "With --tracer combined: light paths carry the paths that meet glass or a mirror "
+                           "after at most this many diffuse bounces from the camera (E D{1..K} S ...)")
+                ->check(CLI::Range(1, 64));
+        app.add_option("--sampler", sampler,
+                       "With --tracer combined: where a camera sample's numbers come from: "
+                       "independent|stratified|sobol")
+            ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
         app.add_option("--variant", variant,
                        "How forward paths reach the camera: connect (every vertex to the pinhole) or "
                        "aperture (through a lens of radius --aperture)")
@@ -70,11 +90,18 @@ int main(int argc, char** argv) {
         CLI::Option* aperture_flag =
             app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
                 ->check(CLI::PositiveNumber);
-        app.parse_complete_callback([aperture_flag, &variant] {
+        app.parse_complete_callback([aperture_flag, light_paths_flag, caustic_bounces_flag, &variant, &tracer_name,
+                                     &caustics_only] {
             if (aperture_flag->count() > 0 && variant != "aperture") {
                 throw CLI::ValidationError("--aperture", "is used only with --variant aperture, got --variant " +
                                                              variant);
             }
+            for (CLI::Option* flag : {light_paths_flag, caustic_bounces_flag}) {
+                if (flag->count() > 0 && tracer_name != "combined")
+                    throw CLI::ValidationError(flag->get_name(), "is used only with --tracer combined");
+            }
+            if (caustics_only && variant == "aperture")
+                throw CLI::ValidationError("--caustics-only", "is traced with --variant connect");
         });
         app.add_flag("--caustics-only", caustics_only,
                      "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)");
@@ -107,6 +134,28 @@ int main(int argc, char** argv) {
         }
         const Scene& scene = context.scene;
         const RenderSettings& settings = context.settings;
+        if (tracer_name == "combined") {
+            CombinedOptions options;
+            options.light_paths_per_sample = light_paths;
+            options.caustic_bounces = caustic_bounces;
+            options.paths.sampler = point_set_from_string(sampler);
+            const CombinedResult r = render_combined(scene, context.simulated, settings, options);
+            const MaterialTable materials(scene, context.simulated, refraction_materials());
+            ChapterRun run{r.render, scene_notes(scene, materials, collect_lights(scene), false), std::nullopt};
+            char line[320];
+            std::snprintf(line, sizeof line,
+                          "tracer: combined; chapter 06's paths (sampler %s, %.3f s) for all paths but "
+                          "E D{1..%d} S ... (the caustics the camera sees), %llu light paths for those (%.3f s, %.4g%% reached the "
+                          "camera)",
+                          sampler.c_str(), r.paths.seconds, caustic_bounces,
+                          static_cast<unsigned long long>(r.caustics.render.samples), r.caustics.render.seconds,
+                          100.0 * double(r.caustics.contributing_paths) /
+                              double(std::max<std::uint64_t>(1, r.caustics.render.samples)));
+            run.notes.push_back(line);
+            run.notes.push_back("rays: light paths' first rays counted as shadow, connections to the camera as "
+                                "camera rays");
+            return run;
+        }
         const bool forward = tracer_name == "forward";
         // Light paths carry importance: the material table is built for it (chapter 07's glass scales
         // differently).
@@ -125,7 +174,7 @@ int main(int argc, char** argv) {
         options.simulated = context.simulated;
         options.variant = camera_variant_from_string(variant);
         options.aperture_radius = aperture;
-        options.caustics_only = caustics_only;
+        options.paths = caustics_only ? LightPathSet::kCaustics : LightPathSet::kAll;
         const LightTracer tracer(prepared.world, prepared.materials, prepared.lights, camera, options);
         const std::uint64_t paths = paths_per_image(settings);
         const SplatResult r = render_light_tracing(tracer, settings, paths);

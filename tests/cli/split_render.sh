@@ -41,6 +41,8 @@ for exe in "$@"; do
     if [[ $name == ch08_* ]]; then
         expect_bad_input "$name forward --samples" "$name: --samples: forward tracing splats" 1 -- \
             "$exe" "${size[@]}" --samples 0:2 --out out.png
+        expect_bad_input "$name combined --samples" "$name: --samples: the combined tracer adds light paths" 1 -- \
+            "$exe" "${size[@]}" --tracer combined --samples 0:2 --out out.png
         args+=(--tracer reverse)
     fi
     # Chapter 11's GPU sums in float, not exactly: it renders whole and refuses pieces and resumes.

@@ -22,15 +22,11 @@
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/median.hpp"
 
 namespace {
 
 using namespace rt;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 // The first line of /proc/loadavg: "1.23 0.98 0.75 …" (what else the machine is running).
 std::string load_average() {

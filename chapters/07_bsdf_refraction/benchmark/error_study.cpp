@@ -32,15 +32,11 @@
 #include "rt/false_colour.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/median.hpp"
 
 namespace {
 
 using namespace rt;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 EffectSet simulated_of(const Scene& scene) {
     return needed(scene) & EffectSet::all();

@@ -27,15 +27,11 @@
 #include "rt/effects.hpp"
 #include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/median.hpp"
 
 namespace {
 
 using namespace rt;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 RenderResult chapter07(const Scene& scene, const RenderSettings& settings, PathOptions options = {}) {
     const EffectSet simulated = needed(scene) & EffectSet::all();

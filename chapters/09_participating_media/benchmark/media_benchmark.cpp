@@ -11,14 +11,9 @@
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/median.hpp"
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 }  // namespace
 

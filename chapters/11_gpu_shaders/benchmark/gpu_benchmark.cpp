@@ -19,15 +19,11 @@
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
+#include "rt/median.hpp"
 
 namespace {
 
 using namespace rt;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 double samples_per_second(const RenderResult& r) {
     return double(r.samples) / std::max(r.seconds, 1e-9);

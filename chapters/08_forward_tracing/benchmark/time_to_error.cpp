@@ -1,0 +1,170 @@
+// Time to a given error on the course's benchmark scene (not a test): `ch08_time_to_error` renders
+// cornell.json (the glass Cornell box) with each strategy (chapter 07's paths and the combined tracer of
+// combined_render.hpp, each K and R, each sampler) at doubling spp, in turn (strategy after strategy at
+// each spp, --repeats renders each with their own seeds), against a converged reference (two halves of
+// chapter 07's path tracer, cached as PFM: the files ch07_error_study makes; the reference's own noise,
+// mean((A − r)² / (r² + 0.01)), is subtracted). It prints every render's relative MSE and seconds, and each
+// strategy's time to a relative MSE of --target: interpolated in log–log between the two spp around it, or
+// marked "extrapolated" (relative MSE ∝ 1 / time from the nearest point) when the spp it measured do not
+// reach it. A strategy stops at the first spp whose renders reached the target, or whose median render took
+// longer than --max-seconds.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "07_bsdf_refraction/benchmark/reference_halves.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "combined_render.hpp"
+#include "forward_study.hpp"
+#include "rt/assets.hpp"
+#include "rt/error_metrics.hpp"
+#include "rt/median.hpp"
+#include "rt/scene_loader.hpp"
+
+namespace {
+
+using namespace rt;
+
+struct Strategy {
+    std::string name;
+    std::function<RenderResult(const RenderSettings&)> render;
+    std::vector<double> seconds = {}, relative_mse = {};  // per spp: median seconds, mean relative MSE
+    bool done = false;
+};
+
+// The load average of the last minute (what else the machine runs).
+std::string load_average() {
+    std::FILE* f = std::fopen("/proc/loadavg", "r");
+    if (!f) return "unknown";
+    char line[64] = {0};
+    const bool read = std::fgets(line, sizeof line, f) != nullptr;
+    std::fclose(f);
+    if (!read) return "unknown";
+    std::string s(line);
+    return s.substr(0, s.find(' '));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app("ch08_time_to_error: time to a relative MSE on the glass Cornell box, for each strategy",
+                 "ch08_time_to_error");
+    app.option_defaults()->always_capture_default();
+    int size = 300, first_spp = 16, reference_spp = 8192, threads = 2, repeats = 2;
+    double target = 1e-3, max_seconds = 120;
+    std::string cache = ".";
+    std::vector<double> light_paths{1};
+    std::vector<int> caustic_bounces{1, kSafetyDepthCap};
+    std::vector<std::string> samplers{"stratified", "sobol"};
+    app.add_option("--size", size, "Width and height of the renders")->check(CLI::Range(8, 4096));
+    app.add_option("--first-spp", first_spp, "The first spp; each next one doubles it")
+        ->check(CLI::Range(1, 1 << 16));
+    app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference (two halves)")
+        ->check(CLI::Range(2, 1 << 20));
+    app.add_option("--threads", threads, "Render threads")->check(CLI::Range(1, 1024));
+    app.add_option("--repeats", repeats, "Renders of each strategy at each spp")->check(CLI::Range(1, 100));
+    app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
+    app.add_option("--max-seconds", max_seconds, "A strategy stops after a render this long (median)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--light-paths", light_paths, "The combined tracer's light paths per camera sample to try")
+        ->check(CLI::Range(0.0, 1024.0));
+    app.add_option("--caustic-bounces", caustic_bounces,
+                   "The combined tracer's K to try (light paths carry the paths E D{1..K} S ...)")
+        ->check(CLI::Range(1, kSafetyDepthCap));
+    app.add_option("--samplers", samplers, "The samplers to try")
+        ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
+    app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        const Scene scene = load_scene(scene_path("cornell.json"));
+        const EffectSet simulated = needed(scene) & EffectSet::all();
+        RenderSettings settings;
+        settings.width = settings.height = size;
+        settings.threads = threads;
+        settings.progress = ProgressStyle::kNone;
+        const std::string stem =
+            "ch07_reference_cornell_" + std::to_string(size) + "_" + std::to_string(reference_spp) + "spp";
+        const Image a = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1001,
+                                    std::filesystem::path(cache) / (stem + "_a.pfm"));
+        const Image b = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1002,
+                                    std::filesystem::path(cache) / (stem + "_b.pfm"));
+        Image r(size, size);
+        for (std::size_t p = 0; p < r.pixels().size(); ++p)
+            r.pixels()[p] = (a.pixels()[p] + b.pixels()[p]) * Real(0.5);
+        const double noise = compare(a, r).relative_mse;
+        std::printf(
+            "ch08_time_to_error: cornell.json %dx%d, %d threads, %d repeats; reference %d spp of chapter 07 "
+            "(its relative MSE %.2e, subtracted); target relative MSE %.1e; load %s\n",
+            size, size, threads, repeats, reference_spp, noise, target, load_average().c_str());
+
+        std::vector<Strategy> strategies;
+        for (const std::string& sampler : samplers) {
+            PathOptions options;
+            options.sampler = point_set_from_string(sampler);
+            strategies.push_back({"paths, " + sampler, [&scene, simulated, options](const RenderSettings& s) {
+                                      return render_with(Renderer::kPaths, scene, simulated, s, options);
+                                  }});
+        }
+        for (const std::string& sampler : samplers) {
+            for (int bounces : caustic_bounces) {
+                for (double ratio : light_paths) {
+                    CombinedOptions options;
+                    options.paths.sampler = point_set_from_string(sampler);
+                    options.caustic_bounces = bounces;
+                    options.light_paths_per_sample = Real(ratio);
+                    char name[96];
+                    std::snprintf(name, sizeof name, "combined, %s, K %d, R %g", sampler.c_str(), bounces, ratio);
+                    strategies.push_back({name, [&scene, simulated, options](const RenderSettings& s) {
+                                              return render_combined(scene, simulated, s, options).render;
+                                          }});
+                }
+            }
+        }
+
+        std::printf("\n%-40s %6s %10s %12s\n", "strategy", "spp", "seconds", "rel. MSE");
+        for (int spp = first_spp; spp <= (1 << 16); spp *= 2) {
+            bool any = false;
+            for (Strategy& strategy : strategies) {
+                if (strategy.done) continue;
+                any = true;
+                std::vector<double> seconds, errors;
+                for (int rep = 0; rep < repeats; ++rep) {
+                    settings.samples_per_pixel = spp;
+                    settings.seed = std::uint64_t(7 + rep);
+                    const RenderResult result = strategy.render(settings);
+                    seconds.push_back(result.seconds);
+                    errors.push_back(std::max(0.0, compare(result.image, r).relative_mse - noise));
+                }
+                const double t = median(seconds);
+                const double e = std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
+                strategy.seconds.push_back(t);
+                strategy.relative_mse.push_back(e);
+                std::printf("%-40s %6d %10.2f %12.4e\n", strategy.name.c_str(), spp, t, e);
+                std::fflush(stdout);
+                strategy.done = e <= target || t > max_seconds;
+            }
+            if (!any) break;
+        }
+
+        std::printf("\n%-40s %22s\n", "strategy", "time to target");
+        for (const Strategy& strategy : strategies) {
+            // time_to_rmse works on RMSE-like values: the square root of the relative MSE.
+            std::vector<double> root(strategy.relative_mse.size());
+            for (std::size_t i = 0; i < root.size(); ++i) root[i] = std::sqrt(strategy.relative_mse[i]);
+            const double t = time_to_rmse(strategy.seconds, root, std::sqrt(target));
+            const bool bracketed = strategy.relative_mse.front() >= target && strategy.relative_mse.back() <= target;
+            std::printf("%-40s %10.1f s%s\n", strategy.name.c_str(), t, bracketed ? "" : " (extrapolated)");
+        }
+        std::printf("load %s\n", load_average().c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "ch08_time_to_error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
