@@ -27,10 +27,11 @@ Example (from the repository root, with the lead's build):
     python3 chapters/08_forward_tracing/benchmark/against_cycles.py --reference-dir /work/ref --size 300 \\
         --cycles-spp 64,256,1024 --course-spp 64,256,1024 --repeats 2 --threads 2 \\
         --course "ch07=build/release/chapters/07_bsdf_refraction/ch07_bsdf_refraction --scene {scene} \\
-                  --width {size} --height {size} --spp {spp} --seed {seed} --threads {threads} --quiet --out {out}"
+                  --width {size} --height {size} --spp {spp} --seed {seed} --threads {threads} --quiet --out {png}"
 
-Template fields: {scene} {size} {spp} {seed} {threads} {out}. Seeds are 11, 12, ... per repeat (never the
-reference halves' 1001 and 1002). Only Python's standard library is used.
+Template fields: {scene} {size} {spp} {seed} {threads}, {out} (the PFM that is read afterwards) and {png}
+(the same name ending in .png: the course's executables take a PNG name and write the PFM beside it). Seeds
+are 11, 12, ... per repeat (never the reference halves' 1001 and 1002). Only Python's standard library is used.
 """
 import argparse
 import json
@@ -300,7 +301,7 @@ def run_cycles(args, spp, seed, out, log):
 
 def run_course(args, template, spp, seed, out, log):
     command = template.format(scene=args.scene, size=args.size, spp=spp, seed=seed, threads=args.threads,
-                              out=out)
+                              out=out, png=out[:-len(".pfm")] + ".png")
     text, wall = run_command(shlex.split(command), log)
     m = re.search(r"^\s*time ([0-9.]+) s", text, re.M)
     if not m:
@@ -346,7 +347,8 @@ def main():
     p.add_argument("--cycles-spp", default="64,256")
     p.add_argument("--course-spp", default="64,256,1024")
     p.add_argument("--course", action="append", default=[], metavar="NAME=TEMPLATE",
-                   help="a course command (repeatable); fields {scene} {size} {spp} {seed} {threads} {out}")
+                   help="a course command (repeatable); fields {scene} {size} {spp} {seed} {threads}, {out} (the PFM "
+                        "read) and {png} (the same name ending in .png)")
     p.add_argument("--cycles-time", choices=["render", "operator"], default="render",
                    help="Cycles' render time: its own path-tracing time (render) or the wall time of "
                         "bpy.ops.render.render, synchronisation and BVH build included (operator)")
