@@ -6,7 +6,8 @@ Run inside Blender (Debian's blender 3.4):
         --spp 64 --seed 1 --threads 2 --out cycles.pfm
 
 It builds the same scene in Cycles (only what cornell.json uses: quads, a transformed box, a sphere as a
-smooth 256x128 UV mesh, diffuse, emissive and dielectric materials), renders it on the CPU with a 1-pixel box
+smooth 256x128 UV mesh, diffuse, emissive and dielectric materials; and a plane, as a large quad, for
+ch04_analytic.json's units check), renders it on the CPU with a 1-pixel box
 filter, no denoising, no clamping, no adaptive sampling and 64 bounces of every kind, and writes the linear
 image as a PFM with the course's orientation (rows bottom up, as common/rt/image_io.cpp writes them). It
 prints one line
@@ -42,6 +43,12 @@ def parse_args():
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--bounces", type=int, default=64, help="max bounces, of every kind")
+    p.add_argument("--light-threshold", type=float, default=None,
+                   help="Cycles' light_sampling_threshold (default: Cycles' own, 0.01; 0 switches it off)")
+    p.add_argument("--two-sided-emission", action="store_true",
+                   help="diagnosis only: emit on both sides (the course's lamps emit on one)")
+    p.add_argument("--plane-size", type=float, default=1e4,
+                   help="half the side of the square quad that stands for an infinite plane")
     p.add_argument("--sphere-segments", type=int, default=256, help="UV sphere segments (rings: half)")
     p.add_argument("--out", required=True, help="the PFM to write")
     p.add_argument("--blend", default=None, help="also save the built scene as a .blend (for inspection)")
@@ -86,7 +93,7 @@ def box_quads(lo, hi):
 
 # --- materials ---------------------------------------------------------------------------------------------
 
-def make_material(name, desc):
+def make_material(name, desc, two_sided=False):
     m = bpy.data.materials.new(name)
     m.use_nodes = True
     nt = m.node_tree
@@ -113,6 +120,10 @@ def make_material(name, desc):
                 nt.links.new(em.outputs["Emission"], add_node.inputs[0])
                 nt.links.new(bsdf.outputs["BSDF"], add_node.inputs[1])
                 front = add_node.outputs["Shader"]
+            if two_sided:
+                nt.links.new(front, out.inputs["Surface"])
+                m.cycles.sample_as_light = True
+                return m
             geo = nt.nodes.new("ShaderNodeNewGeometry")
             mix = nt.nodes.new("ShaderNodeMixShader")
             nt.links.new(geo.outputs["Backfacing"], mix.inputs["Fac"])
@@ -181,7 +192,7 @@ def build(scene_desc, args):
         for block in list(data):
             data.remove(block)
 
-    materials = {name: make_material(name, d) for name, d in scene_desc.get("materials", {}).items()}
+    materials = {name: make_material(name, d, args.two_sided_emission) for name, d in scene_desc.get("materials", {}).items()}
     for i, s in enumerate(scene_desc.get("shapes", [])):
         name = "shape%02d_%s" % (i, s["type"])
         mat = materials[s["material"]]
@@ -198,6 +209,14 @@ def build(scene_desc, args):
             quads_object(name, quads, mat)
         elif s["type"] == "sphere":
             sphere_object(name, s["center"], s["radius"], args.sphere_segments, mat)
+        elif s["type"] == "plane":
+            # An infinite plane as a square quad of half-size --plane-size around its point, facing `normal`.
+            n = Vector(s["normal"]).normalized()
+            t = (Vector((1, 0, 0)) if abs(n.x) < 0.9 else Vector((0, 1, 0))).cross(n).normalized()
+            b = n.cross(t)  # t x b = n: the quad's front is the plane's front
+            h = args.plane_size
+            origin = Vector(s["point"]) - h * t - h * b
+            quads_object(name, [(tuple(origin), tuple(2 * h * t), tuple(2 * h * b))], mat)
         else:
             raise SystemExit("cycles_scene.py: shape type '%s' is not translated" % s["type"])
     if scene_desc.get("lights") or scene_desc.get("medium"):
@@ -270,6 +289,8 @@ def configure(scene_desc, args):
     c.caustics_reflective = True
     c.caustics_refractive = True
     c.blur_glossy = 0.0
+    if args.light_threshold is not None:
+        c.light_sampling_threshold = args.light_threshold
     c.use_fast_gi = False
     c.film_exposure = 1.0
     c.use_auto_tile = False  # one tile: the image is small
