@@ -1,0 +1,492 @@
+#!/usr/bin/env python3
+"""Time to a relative MSE, the course against Blender Cycles, measured in one run (chapter 08's benchmark).
+
+Runs Cycles (blender + cycles_scene.py) and one or more course commands alternately at lists of samples per
+pixel, --repeats times each, reads every image (PFM), and measures its relative MSE against a converged
+reference r = (A + B) / 2 made of the two cached halves that `ch07_error_study --cache DIR --size N` writes
+(ch07_reference_cornell_N_8192spp_a.pfm and _b.pfm), exactly as chapter 07's error_study.cpp does:
+
+    relMSE(x) = mean over pixels and channels of (x - r)^2 / (r^2 + 0.01)  -  relMSE(A, r)
+
+(the second term is the reference's own noise: A - r = (A - B) / 2). It prints, as Markdown tables:
+  * each renderer at each spp: median render time, median process wall time, the mean relative MSE, the share
+    of the squared error held by the worst 1 % of pixels and the median pixel's error;
+  * each renderer's time to --target (1e-3): interpolated in log-log between the two measured points that
+    bracket the target, otherwise extrapolated from the nearest point with relMSE proportional to 1 / time
+    (marked "extrapolated"); from render times and from process wall times;
+  * the converged images' agreement: the mean of each region (walls, floor, ceiling, lamp, tall box, sphere;
+    pixels whose 3x3 neighbourhood sees one shape) for each renderer at its highest spp, against the reference.
+
+Render time is what each renderer reports for rendering alone, without start-up, scene loading or BVH build:
+the course's summary line "time X s" (its render loop) and Cycles' own render_time (path tracing, without its
+scene synchronisation), which cycles_scene.py reads from the render's metadata. Process wall time includes
+everything (Blender's start-up, the scene build, the sphere's mesh and BVH, writing the image).
+
+Example (from the repository root, with the lead's build):
+
+    python3 chapters/08_forward_tracing/benchmark/against_cycles.py --reference-dir /work/ref --size 300 \\
+        --cycles-spp 64,256,1024 --course-spp 64,256,1024 --repeats 2 --threads 2 \\
+        --course "ch07=build/release/chapters/07_bsdf_refraction/ch07_bsdf_refraction --scene {scene} \\
+                  --width {size} --height {size} --spp {spp} --seed {seed} --threads {threads} --quiet --out {png}"
+
+Template fields: {scene} {size} {spp} {seed} {threads}, {out} (the PFM that is read afterwards) and {png}
+(the same name ending in .png: the course's executables take a PNG name and write the PFM beside it). Seeds
+are 11, 12, ... per repeat (never the reference halves' 1001 and 1002). Only Python's standard library is used.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shlex
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
+
+
+# --- images ----------------------------------------------------------------------------------------------
+
+class Image:
+    """Linear RGB, row 0 at the top (as the course's Image), from a PFM (rows bottom up)."""
+
+    def __init__(self, width, height, data):
+        self.width, self.height, self.data = width, height, data  # data: top row first, RGB floats
+
+    def at(self, x, y):
+        i = 3 * (y * self.width + x)
+        return self.data[i:i + 3]
+
+
+def read_pfm(path):
+    with open(path, "rb") as f:
+        raw = f.read()
+    fields, pos = [], 0
+    while len(fields) < 4:  # "PF", width, height, scale, each followed by whitespace
+        while raw[pos:pos + 1].isspace():
+            pos += 1
+        start = pos
+        while not raw[pos:pos + 1].isspace():
+            pos += 1
+        fields.append(raw[start:pos].decode("ascii"))
+    pos += 1  # the one whitespace byte that ends the header
+    if fields[0] != "PF":
+        raise SystemExit("%s: not a colour PFM" % path)
+    width, height, scale = int(fields[1]), int(fields[2]), float(fields[3])
+    n = width * height * 3
+    values = struct.unpack(("<" if scale < 0 else ">") + "%df" % n, raw[pos:pos + 4 * n])
+    rows = [values[(height - 1 - y) * width * 3:(height - y) * width * 3] for y in range(height)]
+    data = [v for row in rows for v in row]
+    if not all(math.isfinite(v) for v in data):
+        raise SystemExit("%s: holds non-finite values" % path)
+    return Image(width, height, data)
+
+
+def relative_mse(x, r):
+    """mean over pixels and channels of (x - r)^2 / (r^2 + 0.01), as rt::compare."""
+    s = 0.0
+    for a, b in zip(x.data, r.data):
+        d = a - b
+        s += d * d / (b * b + 0.01)
+    return s / len(r.data)
+
+
+def pixel_errors(x, r):
+    """Each pixel's relative squared error summed over its channels, as error_study.cpp's pixel_errors."""
+    xd, rd = x.data, r.data
+    out = []
+    for i in range(0, len(rd), 3):
+        e = 0.0
+        for c in range(3):
+            d = xd[i + c] - rd[i + c]
+            e += d * d / (rd[i + c] * rd[i + c] + 0.01)
+        out.append(e)
+    return out
+
+
+def error_shape(x, r):
+    """(share of the squared error in the worst 1 % of pixels, the median pixel's error per channel)."""
+    e = sorted(pixel_errors(x, r), reverse=True)
+    n = max(1, len(e) // 100)
+    total = sum(e)
+    return (sum(e[:n]) / total if total > 0 else 0.0), e[len(e) // 2] / 3
+
+
+# --- regions: which shape each pixel sees, by an analytic ray cast of the scene JSON -------------------------
+
+def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+def addv(a, b): return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+def mul(a, s): return (a[0] * s, a[1] * s, a[2] * s)
+def dot(a, b): return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def normalize(a): return mul(a, 1 / math.sqrt(dot(a, a)))
+
+
+def transform_point(t, p):
+    x, y, z = p
+    s = t.get("scale", 1)
+    sx, sy, sz = (s, s, s) if isinstance(s, (int, float)) else s
+    x, y, z = x * sx, y * sy, z * sz
+    a = math.radians(t.get("rotate_x", 0))
+    y, z = y * math.cos(a) - z * math.sin(a), y * math.sin(a) + z * math.cos(a)
+    a = math.radians(t.get("rotate_y", 0))
+    x, z = x * math.cos(a) + z * math.sin(a), -x * math.sin(a) + z * math.cos(a)
+    a = math.radians(t.get("rotate_z", 0))
+    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
+    tx, ty, tz = t.get("translate", [0, 0, 0])
+    return (x + tx, y + ty, z + tz)
+
+
+def scene_primitives(scene):
+    """[(region name, kind, data)]: quads (origin, u, v) and spheres (center, radius), with a name per shape."""
+    cam = scene["camera"]
+    eye = tuple(cam["from"])
+    forward = normalize(sub(tuple(cam["at"]), eye))
+    right = normalize(cross(forward, tuple(cam.get("up", [0, 1, 0]))))
+    materials = scene.get("materials", {})
+    prims = []
+    for i, s in enumerate(scene.get("shapes", [])):
+        mat = materials.get(s["material"], {})
+        if s["type"] == "quad":
+            o, u, v = tuple(s["origin"]), tuple(s["u"]), tuple(s["v"])
+            n = normalize(cross(u, v))
+            centre = addv(o, mul(addv(u, v), 0.5))
+            axis = max(range(3), key=lambda k: abs(n[k]))
+            if max(mat.get("emission", [0])) > 0:
+                name = "lamp"
+            elif axis == 1:
+                name = "ceiling" if centre[1] > eye[1] else "floor"
+            elif abs(dot(n, forward)) > 0.9:
+                name = "back wall"
+            else:
+                name = ("left wall" if dot(sub(centre, eye), right) < 0 else "right wall")
+            name += " (%s)" % s["material"]
+            prims.append((name, "quad", (o, u, v)))
+        elif s["type"] == "box":
+            t = s.get("transform", {})
+            lo, hi = s["min"], s["max"]
+            corners = {}
+            for cx in (0, 1):
+                for cy in (0, 1):
+                    for cz in (0, 1):
+                        p = (hi[0] if cx else lo[0], hi[1] if cy else lo[1], hi[2] if cz else lo[2])
+                        corners[(cx, cy, cz)] = transform_point(t, p)
+            faces = [((0, 0, 0), (1, 0, 0), (0, 1, 0)), ((0, 0, 1), (1, 0, 1), (0, 1, 1)),
+                     ((0, 0, 0), (0, 0, 1), (0, 1, 0)), ((1, 0, 0), (1, 0, 1), (1, 1, 0)),
+                     ((0, 0, 0), (1, 0, 0), (0, 0, 1)), ((0, 1, 0), (1, 1, 0), (0, 1, 1))]
+            name = "box shapes[%d] (%s)" % (i, s["material"])
+            if s["type"] == "box" and (hi[1] - lo[1]) > 1.5 * (hi[0] - lo[0]):
+                name = "tall box (%s)" % s["material"]
+            for a, b, c in faces:
+                o = corners[a]
+                prims.append((name, "quad", (o, sub(corners[b], o), sub(corners[c], o))))
+        elif s["type"] == "sphere":
+            prims.append(("sphere (%s)" % s["material"], "sphere", (tuple(s["center"]), float(s["radius"]))))
+        else:
+            prims.append((None, s["type"], None))  # not cast: pixels seeing it may be mislabelled
+    return prims
+
+
+def hit_quad(o, d, quad):
+    q0, u, v = quad
+    n = cross(u, v)
+    den = dot(n, d)
+    if abs(den) < 1e-12:
+        return None
+    t = dot(n, sub(q0, o)) / den
+    if t <= 1e-6:
+        return None
+    p = sub(addv(o, mul(d, t)), q0)
+    w = mul(n, 1 / dot(n, n))
+    a = dot(w, cross(p, v))
+    b = dot(w, cross(u, p))
+    return t if 0 <= a <= 1 and 0 <= b <= 1 else None
+
+
+def hit_sphere(o, d, sphere):
+    c, r = sphere
+    oc = sub(o, c)
+    b = dot(oc, d)
+    disc = b * b - (dot(oc, oc) - r * r)
+    if disc < 0:
+        return None
+    s = math.sqrt(disc)
+    for t in (-b - s, -b + s):
+        if t > 1e-6:
+            return t
+    return None
+
+
+def region_map(scene, width, height):
+    """Each pixel's region name (the first shape its centre's camera ray hits), None at a boundary."""
+    prims = scene_primitives(scene)
+    cam = scene["camera"]
+    eye = tuple(float(v) for v in cam["from"])
+    forward = normalize(sub(tuple(cam["at"]), eye))
+    right = normalize(cross(forward, tuple(cam.get("up", [0, 1, 0]))))
+    up = cross(right, forward)
+    half_h = math.tan(math.radians(cam.get("vfov", 40)) / 2)
+    half_w = half_h * width / height
+    ids = []
+    for y in range(height):
+        for x in range(width):
+            a = (2 * (x + 0.5) / width - 1) * half_w
+            b = (1 - 2 * (y + 0.5) / height) * half_h
+            d = normalize(addv(forward, addv(mul(right, a), mul(up, b))))
+            best, who = float("inf"), None
+            for k, (name, kind, data) in enumerate(prims):
+                if data is None:
+                    continue
+                t = hit_quad(eye, d, data) if kind == "quad" else hit_sphere(eye, d, data)
+                if t is not None and t < best:
+                    best, who = t, name
+            ids.append(who)
+    # Keep a pixel only when its 3x3 neighbourhood sees the same region (no edges, no mixed pixels).
+    out = [None] * (width * height)
+    for y in range(1, height - 1):
+        for x in range(1, width - 1):
+            n = ids[y * width + x]
+            if n is not None and all(ids[(y + j) * width + x + i] == n for j in (-1, 0, 1) for i in (-1, 0, 1)):
+                out[y * width + x] = n
+    return out
+
+
+def region_means(image, regions):
+    sums, counts = {}, {}
+    for i, name in enumerate(regions):
+        if name is None:
+            continue
+        s = sums.setdefault(name, [0.0, 0.0, 0.0])
+        for c in range(3):
+            s[c] += image.data[3 * i + c]
+        counts[name] = counts.get(name, 0) + 1
+    return {k: [v / counts[k] for v in s] for k, s in sums.items()}, counts
+
+
+# --- running the renderers -------------------------------------------------------------------------------
+
+def run_command(argv, log):
+    start = time.perf_counter()
+    proc = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.perf_counter() - start
+    with open(log, "w") as f:
+        f.write(" ".join(shlex.quote(a) for a in argv) + "\n" + proc.stdout)
+    if proc.returncode != 0:
+        sys.stderr.write(proc.stdout[-3000:])
+        raise SystemExit("against_cycles.py: command failed (status %d): %s" % (proc.returncode, " ".join(argv)))
+    return proc.stdout, wall
+
+
+def run_cycles(args, spp, seed, out, log):
+    argv = [args.blender, "-b", "--factory-startup", "--python", os.path.join(HERE, "cycles_scene.py"), "--",
+            "--scene", args.scene, "--size", str(args.size), "--spp", str(spp), "--seed", str(seed),
+            "--threads", str(args.threads), "--out", out]
+    text, wall = run_command(argv, log)
+    m = re.search(r"cycles_scene: render_seconds ([0-9.]+)", text)
+    if not m:
+        raise SystemExit("against_cycles.py: no render_seconds line from cycles_scene.py (see %s)" % log)
+    op_seconds = float(m.group(1))
+    m = re.search(r"cycles_render_time ([0-9.]+)", text)
+    if args.cycles_time == "render" and not m:
+        raise SystemExit("against_cycles.py: Cycles reported no render_time (see %s)" % log)
+    render = float(m.group(1)) if m else op_seconds
+    if args.cycles_time == "operator":
+        render = op_seconds
+    return render, wall, op_seconds
+
+
+def run_course(args, template, spp, seed, out, log):
+    command = template.format(scene=args.scene, size=args.size, spp=spp, seed=seed, threads=args.threads,
+                              out=out, png=out[:-len(".pfm")] + ".png")
+    text, wall = run_command(shlex.split(command), log)
+    m = re.search(r"^\s*time ([0-9.]+) s", text, re.M)
+    if not m:
+        raise SystemExit("against_cycles.py: no 'time X s' line in the course's summary (see %s)" % log)
+    if re.search(r"all pixels finite: NO", text):
+        raise SystemExit("against_cycles.py: the course's image has non-finite pixels (see %s)" % log)
+    return float(m.group(1)), wall, None
+
+
+def median(v):
+    v = sorted(v)
+    n = len(v)
+    return v[n // 2] if n % 2 else 0.5 * (v[n // 2 - 1] + v[n // 2])
+
+
+def time_to_target(points, target):
+    """points: [(time, relMSE)] in order of spp. Returns (time, how)."""
+    pts = [(t, e) for t, e in points if t > 0 and e > 0]
+    if not pts:
+        return float("nan"), "no error measured"
+    for (t0, e0), (t1, e1) in zip(pts, pts[1:]):
+        if (e0 - target) * (e1 - target) <= 0 and e0 != e1:
+            s = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(t0) + s * (math.log(t1) - math.log(t0))), "interpolated"
+    # Not bracketed: from the point nearest the target in error, relMSE proportional to 1 / time.
+    t, e = min(pts, key=lambda p: abs(math.log(p[1] / target)))
+    return t * e / target, "extrapolated"
+
+
+def parse_spp(text):
+    return [int(v) for v in text.split(",") if v.strip()]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0],
+                                formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    p.add_argument("--scene", default=os.path.join(REPO, "assets", "scenes", "cornell.json"))
+    p.add_argument("--size", type=int, default=300)
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--repeats", type=int, default=2)
+    p.add_argument("--target", type=float, default=1e-3)
+    p.add_argument("--blender", default="blender")
+    p.add_argument("--cycles-spp", default="64,256")
+    p.add_argument("--course-spp", default="64,256,1024")
+    p.add_argument("--course", action="append", default=[], metavar="NAME=TEMPLATE",
+                   help="a course command (repeatable); fields {scene} {size} {spp} {seed} {threads}, {out} (the PFM "
+                        "read) and {png} (the same name ending in .png)")
+    p.add_argument("--cycles-time", choices=["render", "operator"], default="render",
+                   help="Cycles' render time: its own path-tracing time (render) or the wall time of "
+                        "bpy.ops.render.render, synchronisation and BVH build included (operator)")
+    p.add_argument("--reference-dir", default=".")
+    p.add_argument("--reference-stem", default="ch07_reference_cornell_{size}_8192spp")
+    p.add_argument("--work", default=None, help="folder for the renders and logs (default: a temporary one)")
+    p.add_argument("--json", default=None, help="also write every measurement to this JSON file")
+    args = p.parse_args()
+    args.scene = os.path.abspath(args.scene)
+
+    stem = os.path.join(args.reference_dir, args.reference_stem.format(size=args.size))
+    A, B = read_pfm(stem + "_a.pfm"), read_pfm(stem + "_b.pfm")
+    if (A.width, A.height) != (args.size, args.size) or (B.width, B.height) != (args.size, args.size):
+        raise SystemExit("against_cycles.py: the reference halves are not %dx%d" % (args.size, args.size))
+    ref = Image(A.width, A.height, [0.5 * (a + b) for a, b in zip(A.data, B.data)])
+    noise = relative_mse(A, ref)
+
+    renderers = [("Cycles", None, parse_spp(args.cycles_spp))]
+    for item in args.course:
+        name, sep, template = item.partition("=")
+        if not sep or not template.strip() or " " in name:
+            raise SystemExit("against_cycles.py: --course must be NAME=TEMPLATE, got %r" % item)
+        renderers.append((name, template, parse_spp(args.course_spp)))
+    if len(renderers) < 2:
+        raise SystemExit("against_cycles.py: give at least one --course NAME=TEMPLATE")
+
+    work = args.work or tempfile.mkdtemp(prefix="against_cycles_")
+    os.makedirs(work, exist_ok=True)
+    load_before = os.getloadavg()
+    print("against_cycles: %s %dx%d, %d threads, %d repeats, target relative MSE %g; reference %s_{a,b}.pfm "
+          "(its own relative MSE %.3e, subtracted); work folder %s" %
+          (os.path.basename(args.scene), args.size, args.size, args.threads, args.repeats, args.target, stem,
+           noise, work), flush=True)
+    print("load average before: %.2f %.2f %.2f" % load_before, flush=True)
+
+    results = {name: {spp: [] for spp in spps} for name, _, spps in renderers}
+    levels = max(len(spps) for _, _, spps in renderers)
+    for rep in range(args.repeats):
+        seed = 11 + rep
+        order = renderers if rep % 2 == 0 else list(reversed(renderers))  # who goes first alternates too
+        for level in range(levels):
+            for name, template, spps in order:
+                if level >= len(spps):
+                    continue
+                spp = spps[level]
+                out = os.path.join(work, "%s_%dspp_seed%d.pfm" % (name, spp, seed))
+                log = out[:-4] + ".log"
+                if template is None:
+                    render, wall, op = run_cycles(args, spp, seed, out, log)
+                else:
+                    render, wall, op = run_course(args, template, spp, seed, out, log)
+                img = read_pfm(out)
+                if (img.width, img.height) != (args.size, args.size):
+                    raise SystemExit("against_cycles.py: %s is %dx%d" % (out, img.width, img.height))
+                raw = relative_mse(img, ref)
+                worst, med = error_shape(img, ref)
+                results[name][spp].append({"seed": seed, "render_s": render, "wall_s": wall, "op_s": op,
+                                           "rel_mse": max(0.0, raw - noise), "rel_mse_raw": raw,
+                                           "worst1_share": worst, "median_pixel": med, "pfm": out,
+                                           "load1": os.getloadavg()[0]})
+                print("  repeat %d: %-8s %5d spp seed %d: render %.3f s, wall %.3f s%s, relMSE %.4e" %
+                      (rep + 1, name, spp, seed, render, wall,
+                       "" if op is None else " (render operator %.3f s)" % op, max(0.0, raw - noise)),
+                      flush=True)
+    load_after = os.getloadavg()
+
+    print("\n## Each renderer at each spp (%d repeats: median seconds, mean relative MSE)\n" % args.repeats)
+    print("| renderer | spp | render s | process wall s | relative MSE | relMSE per repeat | worst 1 % share | "
+          "median pixel |")
+    print("|---|---|---|---|---|---|---|---|")
+    summary = {}
+    for name, _, spps in renderers:
+        for spp in spps:
+            runs = results[name][spp]
+            t = median([r["render_s"] for r in runs])
+            w = median([r["wall_s"] for r in runs])
+            e = sum(r["rel_mse"] for r in runs) / len(runs)
+            share = sum(r["worst1_share"] for r in runs) / len(runs)
+            med = sum(r["median_pixel"] for r in runs) / len(runs)
+            summary.setdefault(name, []).append((spp, t, w, e))
+            print("| %s | %d | %.2f | %.2f | %.4e | %s | %.0f %% | %.2e |" %
+                  (name, spp, t, w, e, ", ".join("%.3e" % r["rel_mse"] for r in runs), 100 * share, med))
+
+    print("\n## Time to a relative MSE of %g\n" % args.target)
+    print("| renderer | from render time | how | from process wall time | how |")
+    print("|---|---|---|---|---|")
+    to_target = {}
+    for name, _, _ in renderers:
+        pts = summary[name]
+        tr, how_r = time_to_target([(t, e) for _, t, _, e in pts], args.target)
+        tw, how_w = time_to_target([(w, e) for _, _, w, e in pts], args.target)
+        to_target[name] = (tr, tw)
+        print("| %s | %.1f s | %s | %.1f s | %s |" % (name, tr, how_r, tw, how_w))
+    cycles_r, cycles_w = to_target["Cycles"]
+    for name, _, _ in renderers[1:]:
+        tr, tw = to_target[name]
+        print("\n%s reaches %g in 1/%.2f of Cycles' time (render times), 1/%.2f (process wall times); the goal "
+              "of issue 18 is 1/5." % (name, args.target, cycles_r / tr, cycles_w / tw))
+
+    print("\n## Converged agreement: region means at the highest spp against the reference\n")
+    scene = json.load(open(args.scene))
+    regions = region_map(scene, args.size, args.size)
+    ref_means, counts = region_means(ref, regions)
+    names = sorted(ref_means, key=lambda n: -counts[n])
+    for name, _, spps in renderers:
+        top = max(spps)
+        print("%s at %d spp (mean of %d repeats; ratio = renderer / reference, per channel R G B, and the "
+              "spread of the repeats' luminance-weighted ratio):\n" % (name, top, len(results[name][top])))
+        print("| region | pixels | reference R G B | %s R G B | ratio R G B | ratio per repeat |" % name)
+        print("|---|---|---|---|---|---|")
+        per_repeat = [region_means(read_pfm(r["pfm"]), regions)[0] for r in results[name][top]]
+        for region in names + ["whole image"]:
+            if region == "whole image":
+                rm = [sum(ref.data[c::3]) / (len(ref.data) // 3) for c in range(3)]
+                reps = []
+                for r in results[name][top]:
+                    im = read_pfm(r["pfm"])
+                    reps.append([sum(im.data[c::3]) / (len(im.data) // 3) for c in range(3)])
+                count = args.size * args.size
+            else:
+                rm = ref_means[region]
+                reps = [m[region] for m in per_repeat]
+                count = counts[region]
+            mean = [sum(m[c] for m in reps) / len(reps) for c in range(3)]
+            ratio = ["%.3f" % (mean[c] / rm[c]) if rm[c] > 1e-6 else "-" for c in range(3)]
+            lum = lambda v: 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2]
+            rep_ratios = ", ".join("%.3f" % (lum(m) / lum(rm)) for m in reps) if lum(rm) > 0 else "-"
+            print("| %s | %d | %.4f %.4f %.4f | %.4f %.4f %.4f | %s | %s |" %
+                  (region, count, rm[0], rm[1], rm[2], mean[0], mean[1], mean[2], " ".join(ratio), rep_ratios))
+        print()
+    print("load average before %.2f %.2f %.2f, after %.2f %.2f %.2f (1, 5, 15 min); nproc %d" %
+          (load_before + load_after + (os.cpu_count() or 0,)))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump({"args": vars(args), "reference_noise": noise, "load_before": load_before,
+                       "load_after": load_after, "results": {n: {str(s): v for s, v in d.items()}
+                                                             for n, d in results.items()}}, f, indent=1)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,394 @@
+"""Render a course scene (assets/scenes/*.json) with Blender Cycles, for chapter 08's comparison.
+
+Run inside Blender (Debian's blender 3.4):
+
+    blender -b --factory-startup --python cycles_scene.py -- --scene cornell.json --size 300 \
+        --spp 64 --seed 1 --threads 2 --out cycles.pfm
+
+It builds the same scene in Cycles (only what cornell.json uses: quads, a transformed box, a sphere as a
+smooth 256x128 UV mesh, diffuse, emissive and dielectric materials; and a plane, as a large quad, for
+ch04_analytic.json's units check), renders it on the CPU with a 1-pixel box
+filter, no denoising, no clamping, no adaptive sampling and 64 bounces of every kind, and writes the linear
+image as a PFM with the course's orientation (rows bottom up, as common/rt/image_io.cpp writes them). It
+prints one line
+
+    cycles_scene: render_seconds <wall time of bpy.ops.render.render> spp <n> size <w>x<h> ...
+
+with, when Cycles reported them in the render's metadata, its own times in seconds (0.01 s resolution):
+cycles_render_time (path tracing only, the like of the course's "time"), cycles_synchronization_time (scene
+export and BVH build) and cycles_total_time.
+"""
+import argparse
+import json
+import math
+import os
+import struct
+import sys
+import tempfile
+import time
+
+import bmesh
+import bpy
+from mathutils import Matrix, Vector
+
+
+def parse_args():
+    argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
+    p = argparse.ArgumentParser(prog="cycles_scene.py")
+    p.add_argument("--scene", required=True, help="the course's scene JSON")
+    p.add_argument("--size", type=int, default=None, help="width and height (default: the scene's image)")
+    p.add_argument("--width", type=int, default=None)
+    p.add_argument("--height", type=int, default=None)
+    p.add_argument("--spp", type=int, default=None, help="samples per pixel (default: the scene's image.spp)")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--threads", type=int, default=2)
+    p.add_argument("--bounces", type=int, default=64, help="max bounces, of every kind")
+    p.add_argument("--light-threshold", type=float, default=None,
+                   help="Cycles' light_sampling_threshold (default: Cycles' own, 0.01; 0 switches it off)")
+    p.add_argument("--two-sided-emission", action="store_true",
+                   help="diagnosis only: emit on both sides (the course's lamps emit on one)")
+    p.add_argument("--plane-size", type=float, default=1e4,
+                   help="half the side of the square quad that stands for an infinite plane")
+    p.add_argument("--sphere-segments", type=int, default=256, help="UV sphere segments (rings: half)")
+    p.add_argument("--out", required=True, help="the PFM to write")
+    p.add_argument("--blend", default=None, help="also save the built scene as a .blend (for inspection)")
+    return p.parse_args(argv)
+
+
+# --- the course's transform: scale, rotate_x, rotate_y, rotate_z, translate (right-handed, degrees) ---------
+
+def transform_point(t, p):
+    x, y, z = p
+    s = t.get("scale", 1)
+    sx, sy, sz = (s, s, s) if isinstance(s, (int, float)) else s
+    x, y, z = x * sx, y * sy, z * sz
+    a = math.radians(t.get("rotate_x", 0))
+    y, z = y * math.cos(a) - z * math.sin(a), y * math.sin(a) + z * math.cos(a)
+    a = math.radians(t.get("rotate_y", 0))
+    x, z = x * math.cos(a) + z * math.sin(a), -x * math.sin(a) + z * math.cos(a)
+    a = math.radians(t.get("rotate_z", 0))
+    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
+    tx, ty, tz = t.get("translate", [0, 0, 0])
+    return (x + tx, y + ty, z + tz)
+
+
+def add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def box_quads(lo, hi):
+    """The six faces of [lo, hi] as (origin, u, v) with u x v pointing outward (as the course builds them)."""
+    dx, dy, dz = hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]
+    X, Y, Z = (dx, 0, 0), (0, dy, 0), (0, 0, dz)
+    neg = lambda v: (-v[0], -v[1], -v[2])
+    return [
+        ((lo[0], lo[1], hi[2]), X, Y),           # front  z = max, normal +z
+        ((hi[0], lo[1], lo[2]), neg(X), Y),      # back   z = min, normal -z
+        ((hi[0], lo[1], hi[2]), neg(Z), Y),      # right  x = max, normal +x
+        ((lo[0], lo[1], lo[2]), Z, Y),           # left   x = min, normal -x
+        ((lo[0], hi[1], hi[2]), X, neg(Z)),      # top    y = max, normal +y
+        ((lo[0], lo[1], lo[2]), X, Z),           # bottom y = min, normal -y
+    ]
+
+
+# --- materials ---------------------------------------------------------------------------------------------
+
+def make_material(name, desc, two_sided=False):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nt = m.node_tree
+    for n in list(nt.nodes):
+        nt.nodes.remove(n)
+    out = nt.nodes.new("ShaderNodeOutputMaterial")
+    kind = desc["type"]
+    emission = desc.get("emission", [0, 0, 0])
+    if kind == "diffuse":
+        albedo = desc.get("albedo", [0.8, 0.8, 0.8])
+        bsdf = nt.nodes.new("ShaderNodeBsdfDiffuse")
+        bsdf.inputs["Color"].default_value = (*albedo, 1)
+        bsdf.inputs["Roughness"].default_value = 0.0  # Lambert
+        surface = bsdf.outputs["BSDF"]
+        if max(emission) > 0:
+            # One-sided emission: the front (the side of the face normal) emits; the back is black.
+            peak = max(emission)
+            em = nt.nodes.new("ShaderNodeEmission")
+            em.inputs["Color"].default_value = (emission[0] / peak, emission[1] / peak, emission[2] / peak, 1)
+            em.inputs["Strength"].default_value = peak
+            front = em.outputs["Emission"]
+            if max(albedo) > 0:
+                add_node = nt.nodes.new("ShaderNodeAddShader")
+                nt.links.new(em.outputs["Emission"], add_node.inputs[0])
+                nt.links.new(bsdf.outputs["BSDF"], add_node.inputs[1])
+                front = add_node.outputs["Shader"]
+            if two_sided:
+                nt.links.new(front, out.inputs["Surface"])
+                m.cycles.sample_as_light = True
+                return m
+            geo = nt.nodes.new("ShaderNodeNewGeometry")
+            mix = nt.nodes.new("ShaderNodeMixShader")
+            nt.links.new(geo.outputs["Backfacing"], mix.inputs["Fac"])
+            nt.links.new(front, mix.inputs[1])                 # Fac 0: front face
+            nt.links.new(bsdf.outputs["BSDF"], mix.inputs[2])  # Fac 1: back face, reflects only
+            surface = mix.outputs["Shader"]
+        m.cycles.sample_as_light = True
+    elif kind == "dielectric":
+        for key in ("absorption", "roughness", "medium"):
+            if key in desc:
+                raise SystemExit("cycles_scene.py: dielectric '%s': %s is not translated" % (name, key))
+        bsdf = nt.nodes.new("ShaderNodeBsdfGlass")
+        bsdf.distribution = "SHARP"
+        bsdf.inputs["Color"].default_value = (1, 1, 1, 1)
+        bsdf.inputs["IOR"].default_value = desc.get("ior", 1.5)
+        surface = bsdf.outputs["BSDF"]
+    else:
+        raise SystemExit("cycles_scene.py: material type '%s' is not translated" % kind)
+    nt.links.new(surface, out.inputs["Surface"])
+    return m
+
+
+def add_mesh_object(name, verts, faces, material, smooth=False):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    mesh.update()
+    for poly in mesh.polygons:
+        poly.use_smooth = smooth
+    mesh.materials.append(material)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def quads_object(name, quads, material):
+    verts, faces = [], []
+    for origin, u, v in quads:
+        # Counter-clockwise seen from u x v: Blender's face normal is then the course's quad normal.
+        i = len(verts)
+        verts += [origin, add(origin, u), add(add(origin, u), v), add(origin, v)]
+        faces.append((i, i + 1, i + 2, i + 3))
+    return add_mesh_object(name, verts, faces, material)
+
+
+def sphere_object(name, center, radius, segments, material):
+    bm = bmesh.new()
+    bmesh.ops.create_uvsphere(bm, u_segments=segments, v_segments=segments // 2, radius=radius)
+    bmesh.ops.recalc_face_normals(bm, faces=bm.faces)  # outward
+    bmesh.ops.translate(bm, verts=bm.verts, vec=Vector(center))
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    for poly in mesh.polygons:
+        poly.use_smooth = True
+    mesh.materials.append(material)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def build(scene_desc, args):
+    scene = bpy.context.scene
+    for obj in list(bpy.data.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    for data in (bpy.data.meshes, bpy.data.materials, bpy.data.lights, bpy.data.cameras):
+        for block in list(data):
+            data.remove(block)
+
+    materials = {name: make_material(name, d, args.two_sided_emission) for name, d in scene_desc.get("materials", {}).items()}
+    for i, s in enumerate(scene_desc.get("shapes", [])):
+        name = "shape%02d_%s" % (i, s["type"])
+        mat = materials[s["material"]]
+        if s["type"] == "quad":
+            quads_object(name, [(tuple(s["origin"]), tuple(s["u"]), tuple(s["v"]))], mat)
+        elif s["type"] == "box":
+            t = s.get("transform", {})
+            quads = []
+            for origin, u, v in box_quads(s["min"], s["max"]):
+                p0 = transform_point(t, origin)
+                pu = transform_point(t, add(origin, u))
+                pv = transform_point(t, add(origin, v))
+                quads.append((p0, tuple(b - a for a, b in zip(p0, pu)), tuple(b - a for a, b in zip(p0, pv))))
+            quads_object(name, quads, mat)
+        elif s["type"] == "sphere":
+            sphere_object(name, s["center"], s["radius"], args.sphere_segments, mat)
+        elif s["type"] == "plane":
+            # An infinite plane as a square quad of half-size --plane-size around its point, facing `normal`.
+            n = Vector(s["normal"]).normalized()
+            t = (Vector((1, 0, 0)) if abs(n.x) < 0.9 else Vector((0, 1, 0))).cross(n).normalized()
+            b = n.cross(t)  # t x b = n: the quad's front is the plane's front
+            h = args.plane_size
+            origin = Vector(s["point"]) - h * t - h * b
+            quads_object(name, [(tuple(origin), tuple(2 * h * t), tuple(2 * h * b))], mat)
+        else:
+            raise SystemExit("cycles_scene.py: shape type '%s' is not translated" % s["type"])
+    if scene_desc.get("lights") or scene_desc.get("medium"):
+        raise SystemExit("cycles_scene.py: 'lights' and 'medium' are not translated")
+
+    # World: black, emits nothing.
+    world = bpy.data.worlds.new("black")
+    world.use_nodes = True
+    bg = world.node_tree.nodes.get("Background")
+    bg.inputs["Color"].default_value = (0, 0, 0, 1)
+    bg.inputs["Strength"].default_value = 0.0
+    scene.world = world
+
+    # Camera: pinhole, vertical field of view, the course's basis (right = forward x up, up' = right x forward).
+    cam_desc = scene_desc["camera"]
+    eye = Vector(cam_desc["from"])
+    forward = (Vector(cam_desc["at"]) - eye).normalized()
+    right = forward.cross(Vector(cam_desc.get("up", [0, 1, 0]))).normalized()
+    up = right.cross(forward)
+    cam_data = bpy.data.cameras.new("camera")
+    cam_data.type = "PERSP"
+    cam_data.sensor_fit = "VERTICAL"
+    cam_data.angle_y = math.radians(cam_desc.get("vfov", 40))
+    cam_data.clip_start = 1e-3
+    cam_data.clip_end = 1e7
+    cam = bpy.data.objects.new("camera", cam_data)
+    rot = Matrix((right, up, -forward)).transposed()  # columns: camera x (right), y (up), z (backward)
+    cam.matrix_world = Matrix.Translation(eye) @ rot.to_4x4()
+    scene.collection.objects.link(cam)
+    scene.camera = cam
+
+
+def configure(scene_desc, args):
+    scene = bpy.context.scene
+    image = scene_desc.get("image", {})
+    width = args.width or args.size or image.get("width", 320)
+    height = args.height or args.size or image.get("height", 240)
+    spp = args.spp or image.get("spp", 16)
+    r = scene.render
+    r.engine = "CYCLES"
+    r.resolution_x, r.resolution_y, r.resolution_percentage = width, height, 100
+    r.pixel_aspect_x = r.pixel_aspect_y = 1
+    r.threads_mode = "FIXED"
+    r.threads = args.threads
+    r.use_persistent_data = False
+    r.film_transparent = False
+    r.use_motion_blur = False
+    c = scene.cycles
+    c.device = "CPU"
+    c.feature_set = "SUPPORTED"
+    c.samples = spp
+    c.seed = args.seed
+    c.use_animated_seed = False
+    c.use_adaptive_sampling = False
+    c.use_denoising = False
+    c.time_limit = 0
+    c.sample_clamp_direct = 0
+    c.sample_clamp_indirect = 0
+    c.pixel_filter_type = "BOX"
+    c.filter_width = 1.0
+    n = args.bounces
+    c.max_bounces = n
+    c.diffuse_bounces = n
+    c.glossy_bounces = n
+    c.transmission_bounces = n
+    c.volume_bounces = n
+    c.transparent_max_bounces = n
+    c.min_light_bounces = 0
+    c.min_transparent_bounces = 0
+    c.caustics_reflective = True
+    c.caustics_refractive = True
+    c.blur_glossy = 0.0
+    if args.light_threshold is not None:
+        c.light_sampling_threshold = args.light_threshold
+    c.use_fast_gi = False
+    c.film_exposure = 1.0
+    c.use_auto_tile = False  # one tile: the image is small
+    scene.view_layers[0].cycles.use_denoising = False
+    scene.view_layers[0].cycles.denoising_store_passes = False
+    vs = scene.view_settings
+    vs.view_transform = "Standard"
+    vs.look = "None"
+    vs.exposure = 0.0
+    vs.gamma = 1.0
+    scene.display_settings.display_device = "sRGB"
+    scene.sequencer_colorspace_settings.name = "Linear"
+    settings = r.image_settings
+    settings.file_format = "OPEN_EXR"
+    settings.color_mode = "RGBA"
+    settings.color_depth = "32"
+    settings.exr_codec = "NONE"
+    return width, height, spp
+
+
+def write_pfm(path, width, height, rgba):
+    """PF, little-endian (scale -1), rows bottom up: Blender's pixel order is already bottom row first."""
+    rgb = [0.0] * (width * height * 3)
+    rgb[0::3] = rgba[0::4]
+    rgb[1::3] = rgba[1::4]
+    rgb[2::3] = rgba[2::4]
+    tmp = path + ".part"
+    with open(tmp, "wb") as f:
+        f.write(b"PF\n%d %d\n-1.0\n" % (width, height))
+        f.write(struct.pack("<%df" % len(rgb), *rgb))
+    os.replace(tmp, path)
+
+
+def main():
+    args = parse_args()
+    with open(args.scene) as f:
+        scene_desc = json.load(f)
+    build(scene_desc, args)
+    width, height, spp = configure(scene_desc, args)
+    c = bpy.context.scene.cycles
+    print("cycles_scene: blender %s, sampling_pattern %s, light_sampling_threshold %g, use_guiding %s, "
+          "scrambling_distance %g, sample_as_light on emitters"
+          % (bpy.app.version_string, c.sampling_pattern, c.light_sampling_threshold, c.use_guiding,
+             c.scrambling_distance), flush=True)
+    if args.blend:
+        bpy.ops.wm.save_as_mainfile(filepath=os.path.abspath(args.blend))
+
+    t0 = time.perf_counter()
+    bpy.ops.render.render(write_still=False)
+    render_seconds = time.perf_counter() - t0
+
+    result = bpy.data.images["Render Result"]
+    with tempfile.TemporaryDirectory() as tmp:
+        exr = os.path.join(tmp, "render.exr")
+        result.save_render(exr, scene=bpy.context.scene)
+        img = bpy.data.images.load(exr)
+        img.colorspace_settings.is_data = True  # no colour conversion: the linear values as rendered
+        if tuple(img.size) != (width, height):
+            raise SystemExit("cycles_scene.py: the render is %dx%d, expected %dx%d" % (*img.size, width, height))
+        rgba = list(img.pixels[:])
+        cycles_times = read_exr_times(exr)
+    write_pfm(args.out, width, height, rgba)
+    # Cycles' own times (resolution 0.01 s): path tracing only, its scene synchronisation (BVH included), total.
+    extra = " ".join("cycles_%s %s" % (k, v) for k, v in sorted(cycles_times.items()))
+    print("cycles_scene: render_seconds %.4f spp %d size %dx%d threads %d seed %d %s" %
+          (render_seconds, spp, width, height, args.threads, args.seed, extra), flush=True)
+    print("cycles_scene: wrote %s" % args.out, flush=True)
+
+
+def seconds_of(text):
+    """Cycles' "[hh:]mm:ss.xx" as seconds."""
+    total = 0.0
+    for part in text.strip().split(":"):
+        total = total * 60 + float(part)
+    return total
+
+
+def read_exr_times(path):
+    """Cycles' own times from the EXR header's string attributes (cycles.*.render_time, ...), if present."""
+    found = {}
+    try:
+        with open(path, "rb") as f:
+            data = f.read(1 << 16)
+        i = 8  # magic and version
+        while i < len(data) and data[i] != 0:
+            j = data.index(b"\0", i)
+            name = data[i:j].decode("latin-1")
+            k = data.index(b"\0", j + 1)
+            kind = data[j + 1:k].decode("latin-1")
+            size = struct.unpack("<i", data[k + 1:k + 5])[0]
+            value = data[k + 5:k + 5 + size]
+            if kind == "string" and name.startswith("cycles.") and name.endswith("time"):
+                found[name.split(".")[-1]] = "%.2f" % seconds_of(value.decode("latin-1").rstrip("\0"))
+            i = k + 5 + size
+    except Exception as e:  # the times are extra information only
+        found["exr_header_error"] = repr(e).replace(" ", "_")
+    return found
+
+
+if __name__ == "__main__":
+    main()
