@@ -307,7 +307,12 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
 
 TEST_CASE("Paths for all but the camera caustics, plus light paths for those, converge to chapter 06's "
           "image with less variance",
-          "[ch08][statistical]") {
+          "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+          "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
+          "[ex:ch08.project_direction]") {
     const Scene scene = load_scene(scene_path("ch08_default.json"));
     const EffectSet all = needed(scene) & EffectSet::all();
     constexpr int kSide = 16, kBatches = 16, kSpp = 64;
@@ -345,7 +350,9 @@ TEST_CASE("Paths for all but the camera caustics, plus light paths for those, co
 }
 
 TEST_CASE("Without glass or mirrors the path loop leaves out nothing and the caustic light paths add nothing",
-          "[ch08]") {
+          "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const StudyScene s(load_scene(scene_path("ch06_default.json")), 12, 12);
     const RenderSettings settings = settings_of(12, 12, 8, 3);
     PathOptions options;

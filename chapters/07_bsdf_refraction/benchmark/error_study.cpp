@@ -194,16 +194,9 @@ void run(int size, int spp, int reference_spp, int threads, int repeats, double 
     settings.width = settings.height = size;
     settings.threads = threads;
     settings.progress = ProgressStyle::kNone;
-    const std::string stem =
-        "ch07_reference_cornell_" + std::to_string(size) + "_" + std::to_string(reference_spp) + "spp";
-    const Image a = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1001,
-                                std::filesystem::path(cache) / (stem + "_a.pfm"));
-    const Image b = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1002,
-                                std::filesystem::path(cache) / (stem + "_b.pfm"));
-    Image r(size, size);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) r.at(x, y) = (a.at(x, y) + b.at(x, y)) * Real(0.5);
-    const double noise = compare(a, r).relative_mse;  // A − r = (A − B) / 2: the mean's own noise
+    const ConvergedReference reference = cornell_reference(scene, settings, reference_spp, cache);
+    const Image& r = reference.image;
+    const double noise = reference.noise;  // A − r = (A − B) / 2: the mean's own noise
     std::printf(
         "ch07_error_study: cornell.json %dx%d, %d spp, %d threads; reference %d spp (its relative MSE "
         "%.2e)\n",

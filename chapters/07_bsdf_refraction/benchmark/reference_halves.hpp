@@ -3,9 +3,11 @@
 // its own noise is read from A − r = (A − B) / 2. Each half is rendered once and cached as a PFM.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "bsdf_render.hpp"
 #include "rt/effects.hpp"
+#include "rt/error_metrics.hpp"
 #include "rt/image_io.hpp"
 
 namespace rt {
@@ -23,6 +25,26 @@ inline Image cached_half(Renderer renderer, const Scene& scene, RenderSettings s
     Image image = render_with(renderer, scene, needed(scene) & EffectSet::all(), settings).image;
     write_pfm(image, file);
     return image;
+}
+
+// The converged reference r = (A + B) / 2 of the glass Cornell box's two cached halves at the settings' size
+// (chapter 07's paths, seeds 1001 and 1002, `spp` in all, files ch07_reference_cornell_N_SPPspp_a.pfm and
+// _b.pfm in `cache`), and its own noise: the relative MSE of A against r, since A − r = (A − B) / 2.
+struct ConvergedReference {
+    Image image;
+    double noise = 0;
+};
+inline ConvergedReference cornell_reference(const Scene& scene, const RenderSettings& settings, int spp,
+                                            const std::filesystem::path& cache) {
+    const std::string stem = "ch07_reference_cornell_" + std::to_string(settings.width) + "_" +
+                             std::to_string(spp) + "spp";
+    const Image a = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1001, cache / (stem + "_a.pfm"));
+    const Image b = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1002, cache / (stem + "_b.pfm"));
+    ConvergedReference r{Image(settings.width, settings.height)};
+    for (std::size_t p = 0; p < r.image.pixels().size(); ++p)
+        r.image.pixels()[p] = (a.pixels()[p] + b.pixels()[p]) * Real(0.5);
+    r.noise = compare(a, r.image).relative_mse;
+    return r;
 }
 
 }  // namespace rt

@@ -6,7 +6,8 @@
 // mean((A − r)² / (r² + 0.01)), is subtracted). It prints every render's relative MSE and seconds, and each
 // strategy's time to a relative MSE of --target: interpolated in log–log between the two spp around it, or
 // marked "extrapolated" (relative MSE ∝ 1 / time from the nearest point) when the spp it measured do not
-// reach it. A strategy stops at the first spp whose renders reached the target, or whose median render took
+// reach it; and its convergence rate, the exponent k of relative MSE ∝ spp^k fitted to its points. A
+// strategy stops at the first spp whose renders reached the target, or whose median render took
 // longer than --max-seconds.
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -37,6 +38,23 @@ struct Strategy {
     bool done = false;
 };
 
+// The convergence rate k of relative MSE ∝ spp^k: the least-squares slope of log relMSE against log spp over
+// the measured points (spp = first, 2 first, 4 first, …). 1/N Monte Carlo gives k = −1.
+double convergence_rate(const std::vector<double>& relative_mse, int first_spp) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+    for (std::size_t i = 0; i < relative_mse.size(); ++i) {
+        if (!(relative_mse[i] > 0)) continue;
+        const double x = std::log(double(first_spp) * std::pow(2.0, double(i))), y = std::log(relative_mse[i]);
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+        n += 1;
+    }
+    const double d = n * sxx - sx * sx;
+    return n >= 2 && d > 0 ? (n * sxy - sx * sy) / d : 0.0;
+}
+
 // The load average of the last minute (what else the machine runs).
 std::string load_average() {
     std::FILE* f = std::fopen("/proc/loadavg", "r");
@@ -58,8 +76,8 @@ int main(int argc, char** argv) {
     int size = 300, first_spp = 16, reference_spp = 8192, threads = 2, repeats = 2;
     double target = 1e-3, max_seconds = 120;
     std::string cache = ".";
-    std::vector<double> light_paths{1};
-    std::vector<int> caustic_bounces{1, kSafetyDepthCap};
+    std::vector<double> light_paths{0.5, 1};
+    std::vector<int> caustic_bounces{kSafetyDepthCap};
     std::vector<std::string> samplers{"stratified", "sobol"};
     app.add_option("--size", size, "Width and height of the renders")->check(CLI::Range(8, 4096));
     app.add_option("--first-spp", first_spp, "The first spp; each next one doubles it")
@@ -88,16 +106,9 @@ int main(int argc, char** argv) {
         settings.width = settings.height = size;
         settings.threads = threads;
         settings.progress = ProgressStyle::kNone;
-        const std::string stem =
-            "ch07_reference_cornell_" + std::to_string(size) + "_" + std::to_string(reference_spp) + "spp";
-        const Image a = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1001,
-                                    std::filesystem::path(cache) / (stem + "_a.pfm"));
-        const Image b = cached_half(Renderer::kPaths, scene, settings, reference_spp / 2, 1002,
-                                    std::filesystem::path(cache) / (stem + "_b.pfm"));
-        Image r(size, size);
-        for (std::size_t p = 0; p < r.pixels().size(); ++p)
-            r.pixels()[p] = (a.pixels()[p] + b.pixels()[p]) * Real(0.5);
-        const double noise = compare(a, r).relative_mse;
+        const ConvergedReference reference = cornell_reference(scene, settings, reference_spp, cache);
+        const Image& r = reference.image;
+        const double noise = reference.noise;
         std::printf(
             "ch08_time_to_error: cornell.json %dx%d, %d threads, %d repeats; reference %d spp of chapter 07 "
             "(its relative MSE %.2e, subtracted); target relative MSE %.1e; load %s\n",
@@ -152,14 +163,15 @@ int main(int argc, char** argv) {
             if (!any) break;
         }
 
-        std::printf("\n%-40s %22s\n", "strategy", "time to target");
+        std::printf("\n%-40s %22s %22s\n", "strategy", "time to target", "rate: rel. MSE ~ spp^k");
         for (const Strategy& strategy : strategies) {
             // time_to_rmse works on RMSE-like values: the square root of the relative MSE.
             std::vector<double> root(strategy.relative_mse.size());
             for (std::size_t i = 0; i < root.size(); ++i) root[i] = std::sqrt(strategy.relative_mse[i]);
             const double t = time_to_rmse(strategy.seconds, root, std::sqrt(target));
             const bool bracketed = strategy.relative_mse.front() >= target && strategy.relative_mse.back() <= target;
-            std::printf("%-40s %10.1f s%s\n", strategy.name.c_str(), t, bracketed ? "" : " (extrapolated)");
+            std::printf("%-40s %10.1f s%-15s k = %.2f\n", strategy.name.c_str(), t, bracketed ? "" : " (extrapolated)",
+                        convergence_rate(strategy.relative_mse, first_spp));
         }
         std::printf("load %s\n", load_average().c_str());
     } catch (const std::exception& e) {
