@@ -53,8 +53,8 @@ int main(int argc, char** argv) {
     std::string variant = "connect";
     Real aperture = 1;
     bool caustics_only = false;
-    Real light_paths = 1;
-    int caustic_bounces = kSafetyDepthCap;
+    Real light_paths = CombinedOptions{}.light_paths_per_sample;
+    int caustic_bounces = CombinedOptions{}.caustic_bounces;
     std::string sampler = "stratified";
     StudyOptions study;
     bool run_study = false;
