@@ -52,7 +52,7 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
     for (std::size_t p = 0; p < caustic.size(); ++p) r.render.image.pixels()[p] += caustic[p];
     r.render.rays += r.caustics.render.rays;
     r.render.seconds += r.caustics.render.seconds;
-    r.render.interrupted = r.paths.interrupted || r.caustics.render.interrupted;
+    r.render.interrupted = r.caustics.render.interrupted;
     return r;
 }
 
