@@ -31,7 +31,8 @@ Example (from the repository root, with the lead's build):
 
 Template fields: {scene} {size} {spp} {seed} {threads}, {out} (the PFM that is read afterwards) and {png}
 (the same name ending in .png: the course's executables take a PNG name and write the PFM beside it). Seeds
-are 11, 12, ... per repeat (never the reference halves' 1001 and 1002). Only Python's standard library is used.
+are 11, 12, ... per repeat (never the reference halves' 1001 and 1002). Only Python's standard library is used,
+with scene_geometry.py beside this script (vectors, the course's transform and camera, ray hits).
 """
 import argparse
 import json
@@ -47,6 +48,10 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
+
+sys.path.insert(0, HERE)  # scene_geometry.py, beside this script
+from scene_geometry import (PinholeCamera, add, box_quads, camera_basis, cross, dot, hit_quad,  # noqa: E402
+                            hit_sphere, mul, normalize, sub)
 
 
 # --- images ----------------------------------------------------------------------------------------------
@@ -118,35 +123,9 @@ def error_shape(x, r):
 
 # --- regions: which shape each pixel sees, by an analytic ray cast of the scene JSON -------------------------
 
-def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
-def addv(a, b): return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-def mul(a, s): return (a[0] * s, a[1] * s, a[2] * s)
-def dot(a, b): return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-def normalize(a): return mul(a, 1 / math.sqrt(dot(a, a)))
-
-
-def transform_point(t, p):
-    x, y, z = p
-    s = t.get("scale", 1)
-    sx, sy, sz = (s, s, s) if isinstance(s, (int, float)) else s
-    x, y, z = x * sx, y * sy, z * sz
-    a = math.radians(t.get("rotate_x", 0))
-    y, z = y * math.cos(a) - z * math.sin(a), y * math.sin(a) + z * math.cos(a)
-    a = math.radians(t.get("rotate_y", 0))
-    x, z = x * math.cos(a) + z * math.sin(a), -x * math.sin(a) + z * math.cos(a)
-    a = math.radians(t.get("rotate_z", 0))
-    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-    tx, ty, tz = t.get("translate", [0, 0, 0])
-    return (x + tx, y + ty, z + tz)
-
-
 def scene_primitives(scene):
     """[(region name, kind, data)]: quads (origin, u, v) and spheres (center, radius), with a name per shape."""
-    cam = scene["camera"]
-    eye = tuple(cam["from"])
-    forward = normalize(sub(tuple(cam["at"]), eye))
-    right = normalize(cross(forward, tuple(cam.get("up", [0, 1, 0]))))
+    eye, forward, right, _ = camera_basis(scene["camera"])
     materials = scene.get("materials", {})
     prims = []
     for i, s in enumerate(scene.get("shapes", [])):
@@ -154,7 +133,7 @@ def scene_primitives(scene):
         if s["type"] == "quad":
             o, u, v = tuple(s["origin"]), tuple(s["u"]), tuple(s["v"])
             n = normalize(cross(u, v))
-            centre = addv(o, mul(addv(u, v), 0.5))
+            centre = add(o, mul(add(u, v), 0.5))
             axis = max(range(3), key=lambda k: abs(n[k]))
             if max(mat.get("emission", [0])) > 0:
                 name = "lamp"
@@ -167,23 +146,12 @@ def scene_primitives(scene):
             name += " (%s)" % s["material"]
             prims.append((name, "quad", (o, u, v)))
         elif s["type"] == "box":
-            t = s.get("transform", {})
             lo, hi = s["min"], s["max"]
-            corners = {}
-            for cx in (0, 1):
-                for cy in (0, 1):
-                    for cz in (0, 1):
-                        p = (hi[0] if cx else lo[0], hi[1] if cy else lo[1], hi[2] if cz else lo[2])
-                        corners[(cx, cy, cz)] = transform_point(t, p)
-            faces = [((0, 0, 0), (1, 0, 0), (0, 1, 0)), ((0, 0, 1), (1, 0, 1), (0, 1, 1)),
-                     ((0, 0, 0), (0, 0, 1), (0, 1, 0)), ((1, 0, 0), (1, 0, 1), (1, 1, 0)),
-                     ((0, 0, 0), (1, 0, 0), (0, 0, 1)), ((0, 1, 0), (1, 1, 0), (0, 1, 1))]
             name = "box shapes[%d] (%s)" % (i, s["material"])
-            if s["type"] == "box" and (hi[1] - lo[1]) > 1.5 * (hi[0] - lo[0]):
+            if (hi[1] - lo[1]) > 1.5 * (hi[0] - lo[0]):
                 name = "tall box (%s)" % s["material"]
-            for a, b, c in faces:
-                o = corners[a]
-                prims.append((name, "quad", (o, sub(corners[b], o), sub(corners[c], o))))
+            for quad in box_quads(s):
+                prims.append((name, "quad", quad))
         elif s["type"] == "sphere":
             prims.append(("sphere (%s)" % s["material"], "sphere", (tuple(s["center"]), float(s["radius"]))))
         else:
@@ -191,57 +159,19 @@ def scene_primitives(scene):
     return prims
 
 
-def hit_quad(o, d, quad):
-    q0, u, v = quad
-    n = cross(u, v)
-    den = dot(n, d)
-    if abs(den) < 1e-12:
-        return None
-    t = dot(n, sub(q0, o)) / den
-    if t <= 1e-6:
-        return None
-    p = sub(addv(o, mul(d, t)), q0)
-    w = mul(n, 1 / dot(n, n))
-    a = dot(w, cross(p, v))
-    b = dot(w, cross(u, p))
-    return t if 0 <= a <= 1 and 0 <= b <= 1 else None
-
-
-def hit_sphere(o, d, sphere):
-    c, r = sphere
-    oc = sub(o, c)
-    b = dot(oc, d)
-    disc = b * b - (dot(oc, oc) - r * r)
-    if disc < 0:
-        return None
-    s = math.sqrt(disc)
-    for t in (-b - s, -b + s):
-        if t > 1e-6:
-            return t
-    return None
-
-
 def region_map(scene, width, height):
     """Each pixel's region name (the first shape its centre's camera ray hits), None at a boundary."""
     prims = scene_primitives(scene)
-    cam = scene["camera"]
-    eye = tuple(float(v) for v in cam["from"])
-    forward = normalize(sub(tuple(cam["at"]), eye))
-    right = normalize(cross(forward, tuple(cam.get("up", [0, 1, 0]))))
-    up = cross(right, forward)
-    half_h = math.tan(math.radians(cam.get("vfov", 40)) / 2)
-    half_w = half_h * width / height
+    camera = PinholeCamera(scene["camera"], width, height)
     ids = []
     for y in range(height):
         for x in range(width):
-            a = (2 * (x + 0.5) / width - 1) * half_w
-            b = (1 - 2 * (y + 0.5) / height) * half_h
-            d = normalize(addv(forward, addv(mul(right, a), mul(up, b))))
+            d = camera.direction(x + 0.5, y + 0.5)
             best, who = float("inf"), None
-            for k, (name, kind, data) in enumerate(prims):
+            for name, kind, data in prims:
                 if data is None:
                     continue
-                t = hit_quad(eye, d, data) if kind == "quad" else hit_sphere(eye, d, data)
+                t = hit_quad(camera.eye, d, data) if kind == "quad" else hit_sphere(camera.eye, d, data)
                 if t is not None and t < best:
                     best, who = t, name
             ids.append(who)

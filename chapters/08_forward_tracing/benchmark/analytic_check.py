@@ -11,7 +11,9 @@ of points in the pixel: a box filter) and compares a render of the scene (a PFM,
     python3 analytic_check.py --scene assets/scenes/ch04_analytic.json --image analytic.pfm
 
 It prints the ratio render / exact over the lit floor (pixels whose 3x3 neighbourhood is lit floor), by band of
-rows and of columns (a camera mismatch would show as a trend), and the lamp's own pixels.
+rows and of columns (a camera mismatch would show as a trend), and the lamp's own pixels. The camera's rays and
+the lamp's hit test come from scene_geometry.py (as against_cycles.py's region map casts them), the PFM reader
+from against_cycles.py.
 """
 import argparse
 import json
@@ -20,12 +22,13 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from against_cycles import addv as add, cross, dot, mul, normalize, read_pfm, sub  # noqa: E402
+from against_cycles import read_pfm  # noqa: E402
+from scene_geometry import PinholeCamera, add, cross, dot, hit_quad, mul, normalize, quad_corners, sub  # noqa: E402
 
 
 def exact_floor(p, n, lamp, radiance, albedo):
     o, u, v = lamp
-    corners = [o, add(o, u), add(add(o, u), v), add(o, v)]
+    corners = quad_corners(lamp)
     ln = normalize(cross(u, v))
     if dot(sub(p, o), ln) <= 0:
         return 0.0, False  # behind the one-sided lamp
@@ -55,32 +58,8 @@ def main():
     lamp = (tuple(lampq["origin"]), tuple(lampq["u"]), tuple(lampq["v"]))
     n = normalize(tuple(plane["normal"]))
     p0 = tuple(plane["point"])
-    cam = scene["camera"]
-    eye = tuple(float(x) for x in cam["from"])
-    fwd = normalize(sub(tuple(cam["at"]), eye))
-    right = normalize(cross(fwd, tuple(cam.get("up", [0, 1, 0]))))
-    up = cross(right, fwd)
-    hh = math.tan(math.radians(cam.get("vfov", 40)) / 2)
-    hw = hh * W / H
-
-    def ray(px, py):
-        a = (2 * px / W - 1) * hw
-        b = (1 - 2 * py / H) * hh
-        return normalize(add(fwd, add(mul(right, a), mul(up, b))))
-
-    def hits_lamp(d):
-        o, u, v = lamp
-        nn = cross(u, v)
-        den = dot(nn, d)
-        if abs(den) < 1e-12:
-            return None
-        t = dot(nn, sub(o, eye)) / den
-        if t <= 0:
-            return None
-        q = sub(add(eye, mul(d, t)), o)
-        w = mul(nn, 1 / dot(nn, nn))
-        a, b = dot(w, cross(q, v)), dot(w, cross(u, q))
-        return t if 0 <= a <= 1 and 0 <= b <= 1 else None
+    camera = PinholeCamera(scene["camera"], W, H)
+    eye = camera.eye
 
     kinds, exact = [], []
     for y in range(H):
@@ -88,8 +67,8 @@ def main():
             vals, kind = [], set()
             for j in range(4):
                 for i in range(4):
-                    d = ray(x + (i + 0.5) / 4, y + (j + 0.5) / 4)
-                    tl = hits_lamp(d)
+                    d = camera.direction(x + (i + 0.5) / 4, y + (j + 0.5) / 4)
+                    tl = hit_quad(eye, d, lamp, t_min=0)
                     den = dot(n, d)
                     tp = dot(n, sub(p0, eye)) / den if abs(den) > 1e-12 else -1
                     if tl is not None and (tp <= 0 or tl < tp):

@@ -17,6 +17,9 @@ prints one line
 with, when Cycles reported them in the render's metadata, its own times in seconds (0.01 s resolution):
 cycles_render_time (path tracing only, the like of the course's "time"), cycles_synchronization_time (scene
 export and BVH build) and cycles_total_time.
+
+The course's geometry (its transform, a box's six faces, a quad's corners) comes from scene_geometry.py, beside
+this script.
 """
 import argparse
 import json
@@ -30,6 +33,9 @@ import time
 import bmesh
 import bpy
 from mathutils import Matrix, Vector
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # scene_geometry.py, beside this script
+from scene_geometry import box_quads, camera_vfov, quad_corners  # noqa: E402
 
 
 def parse_args():
@@ -53,42 +59,6 @@ def parse_args():
     p.add_argument("--out", required=True, help="the PFM to write")
     p.add_argument("--blend", default=None, help="also save the built scene as a .blend (for inspection)")
     return p.parse_args(argv)
-
-
-# --- the course's transform: scale, rotate_x, rotate_y, rotate_z, translate (right-handed, degrees) ---------
-
-def transform_point(t, p):
-    x, y, z = p
-    s = t.get("scale", 1)
-    sx, sy, sz = (s, s, s) if isinstance(s, (int, float)) else s
-    x, y, z = x * sx, y * sy, z * sz
-    a = math.radians(t.get("rotate_x", 0))
-    y, z = y * math.cos(a) - z * math.sin(a), y * math.sin(a) + z * math.cos(a)
-    a = math.radians(t.get("rotate_y", 0))
-    x, z = x * math.cos(a) + z * math.sin(a), -x * math.sin(a) + z * math.cos(a)
-    a = math.radians(t.get("rotate_z", 0))
-    x, y = x * math.cos(a) - y * math.sin(a), x * math.sin(a) + y * math.cos(a)
-    tx, ty, tz = t.get("translate", [0, 0, 0])
-    return (x + tx, y + ty, z + tz)
-
-
-def add(a, b):
-    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
-
-
-def box_quads(lo, hi):
-    """The six faces of [lo, hi] as (origin, u, v) with u x v pointing outward (as the course builds them)."""
-    dx, dy, dz = hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]
-    X, Y, Z = (dx, 0, 0), (0, dy, 0), (0, 0, dz)
-    neg = lambda v: (-v[0], -v[1], -v[2])
-    return [
-        ((lo[0], lo[1], hi[2]), X, Y),           # front  z = max, normal +z
-        ((hi[0], lo[1], lo[2]), neg(X), Y),      # back   z = min, normal -z
-        ((hi[0], lo[1], hi[2]), neg(Z), Y),      # right  x = max, normal +x
-        ((lo[0], lo[1], lo[2]), Z, Y),           # left   x = min, normal -x
-        ((lo[0], hi[1], hi[2]), X, neg(Z)),      # top    y = max, normal +y
-        ((lo[0], lo[1], lo[2]), X, Z),           # bottom y = min, normal -y
-    ]
 
 
 # --- materials ---------------------------------------------------------------------------------------------
@@ -146,10 +116,8 @@ def make_material(name, desc, two_sided=False):
     return m
 
 
-def add_mesh_object(name, verts, faces, material, smooth=False):
-    mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata(verts, [], faces)
-    mesh.update()
+def link_mesh_object(name, mesh, material, smooth):
+    """Give `mesh` its material and smooth or flat shading, and link it into the scene as the object `name`."""
     for poly in mesh.polygons:
         poly.use_smooth = smooth
     mesh.materials.append(material)
@@ -160,12 +128,15 @@ def add_mesh_object(name, verts, faces, material, smooth=False):
 
 def quads_object(name, quads, material):
     verts, faces = [], []
-    for origin, u, v in quads:
+    for quad in quads:
         # Counter-clockwise seen from u x v: Blender's face normal is then the course's quad normal.
         i = len(verts)
-        verts += [origin, add(origin, u), add(add(origin, u), v), add(origin, v)]
+        verts += quad_corners(quad)
         faces.append((i, i + 1, i + 2, i + 3))
-    return add_mesh_object(name, verts, faces, material)
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    mesh.update()
+    return link_mesh_object(name, mesh, material, smooth=False)
 
 
 def sphere_object(name, center, radius, segments, material):
@@ -176,12 +147,7 @@ def sphere_object(name, center, radius, segments, material):
     mesh = bpy.data.meshes.new(name)
     bm.to_mesh(mesh)
     bm.free()
-    for poly in mesh.polygons:
-        poly.use_smooth = True
-    mesh.materials.append(material)
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(obj)
-    return obj
+    return link_mesh_object(name, mesh, material, smooth=True)
 
 
 def build(scene_desc, args):
@@ -199,14 +165,7 @@ def build(scene_desc, args):
         if s["type"] == "quad":
             quads_object(name, [(tuple(s["origin"]), tuple(s["u"]), tuple(s["v"]))], mat)
         elif s["type"] == "box":
-            t = s.get("transform", {})
-            quads = []
-            for origin, u, v in box_quads(s["min"], s["max"]):
-                p0 = transform_point(t, origin)
-                pu = transform_point(t, add(origin, u))
-                pv = transform_point(t, add(origin, v))
-                quads.append((p0, tuple(b - a for a, b in zip(p0, pu)), tuple(b - a for a, b in zip(p0, pv))))
-            quads_object(name, quads, mat)
+            quads_object(name, box_quads(s), mat)
         elif s["type"] == "sphere":
             sphere_object(name, s["center"], s["radius"], args.sphere_segments, mat)
         elif s["type"] == "plane":
@@ -230,7 +189,9 @@ def build(scene_desc, args):
     bg.inputs["Strength"].default_value = 0.0
     scene.world = world
 
-    # Camera: pinhole, vertical field of view, the course's basis (right = forward x up, up' = right x forward).
+    # Camera: pinhole, vertical field of view, the course's basis (right = forward x up, up' = right x forward),
+    # as scene_geometry.camera_basis builds it, but in Blender's single-precision vectors: computed in double
+    # precision it can differ in the last bit, and Cycles' samples (the image's noise) with it.
     cam_desc = scene_desc["camera"]
     eye = Vector(cam_desc["from"])
     forward = (Vector(cam_desc["at"]) - eye).normalized()
@@ -239,7 +200,7 @@ def build(scene_desc, args):
     cam_data = bpy.data.cameras.new("camera")
     cam_data.type = "PERSP"
     cam_data.sensor_fit = "VERTICAL"
-    cam_data.angle_y = math.radians(cam_desc.get("vfov", 40))
+    cam_data.angle_y = math.radians(camera_vfov(cam_desc))
     cam_data.clip_start = 1e-3
     cam_data.clip_end = 1e7
     cam = bpy.data.objects.new("camera", cam_data)
