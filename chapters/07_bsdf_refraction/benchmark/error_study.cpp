@@ -38,10 +38,6 @@ namespace {
 
 using namespace rt;
 
-EffectSet simulated_of(const Scene& scene) {
-    return needed(scene) & EffectSet::all();
-}
-
 // Each pixel's squared error over its channels, relative: Σ_c (x − r)² / (r² + 0.01).
 std::vector<double> pixel_errors(const Image& image, const Image& r) {
     std::vector<double> e;
@@ -188,15 +184,12 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
 
 void run(int size, int spp, int reference_spp, int threads, int repeats, double target,
          const std::string& cache, const std::string& error_png) {
-    const Scene scene = load_scene(scene_path("cornell.json"));
-    const EffectSet simulated = simulated_of(scene);
-    RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.threads = threads;
-    settings.progress = ProgressStyle::kNone;
-    const ConvergedReference reference = cornell_reference(scene, settings, reference_spp, cache);
-    const Image& r = reference.image;
-    const double noise = reference.noise;  // A − r = (A − B) / 2: the mean's own noise
+    GlassBoxBenchmark box(size, threads, reference_spp, cache);
+    const Scene& scene = box.scene;
+    const EffectSet simulated = box.simulated;
+    RenderSettings& settings = box.settings;
+    const Image& r = box.reference.image;
+    const double noise = box.reference.noise;  // A − r = (A − B) / 2: the mean's own noise
     std::printf(
         "ch07_error_study: cornell.json %dx%d, %d spp, %d threads; reference %d spp (its relative MSE "
         "%.2e)\n",

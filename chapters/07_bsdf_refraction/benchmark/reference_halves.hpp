@@ -6,9 +6,11 @@
 #include <string>
 
 #include "bsdf_render.hpp"
+#include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/image_io.hpp"
+#include "rt/scene_loader.hpp"
 
 namespace rt {
 
@@ -46,5 +48,21 @@ inline ConvergedReference cornell_reference(const Scene& scene, const RenderSett
     r.noise = compare(a, r.image).relative_mse;
     return r;
 }
+
+// The glass Cornell box (cornell.json) as chapter 07's error study and chapter 08's time to error measure it:
+// every effect it needs simulated, `size`×`size` pixels on `threads` threads without a progress bar, and its
+// converged reference of `reference_spp` samples from the cache.
+struct GlassBoxBenchmark {
+    Scene scene = load_scene(scene_path("cornell.json"));
+    EffectSet simulated = needed(scene) & EffectSet::all();
+    RenderSettings settings;
+    ConvergedReference reference;
+    GlassBoxBenchmark(int size, int threads, int reference_spp, const std::filesystem::path& cache) {
+        settings.width = settings.height = size;
+        settings.threads = threads;
+        settings.progress = ProgressStyle::kNone;
+        reference = cornell_reference(scene, settings, reference_spp, cache);
+    }
+};
 
 }  // namespace rt

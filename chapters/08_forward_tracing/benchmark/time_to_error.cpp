@@ -100,15 +100,12 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
 
     try {
-        const Scene scene = load_scene(scene_path("cornell.json"));
-        const EffectSet simulated = needed(scene) & EffectSet::all();
-        RenderSettings settings;
-        settings.width = settings.height = size;
-        settings.threads = threads;
-        settings.progress = ProgressStyle::kNone;
-        const ConvergedReference reference = cornell_reference(scene, settings, reference_spp, cache);
-        const Image& r = reference.image;
-        const double noise = reference.noise;
+        GlassBoxBenchmark box(size, threads, reference_spp, cache);
+        const Scene& scene = box.scene;
+        const EffectSet simulated = box.simulated;
+        RenderSettings& settings = box.settings;
+        const Image& r = box.reference.image;
+        const double noise = box.reference.noise;
         std::printf(
             "ch08_time_to_error: cornell.json %dx%d, %d threads, %d repeats; reference %d spp of chapter 07 "
             "(its relative MSE %.2e, subtracted); target relative MSE %.1e; load %s\n",
