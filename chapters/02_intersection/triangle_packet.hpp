@@ -95,11 +95,14 @@ inline std::optional<TrianglePacketHit> intersect_triangle_packet(const PacketRa
             w[k] = Real(double(bx[k]) * double(ay[k]) - double(by[k]) * double(ax[k]));
         }
     }
+    // The ray passes outside a triangle whose edge functions differ in sign. Most packets a ray reaches are
+    // missed this way, and return before the distance is computed.
+    const auto outside = (u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0);
+    if (stdx::all_of(outside)) return std::nullopt;
     const L det = u + v + w;
     const L az = s.sz * a_z, bz = s.sz * b_z, cz = s.sz * c_z;
     const L t_scaled = u * az + v * bz + w * cz;
     const L t_limit = t_max * det;
-    const auto outside = (u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0);
     const auto beyond = (det < 0 && (t_scaled >= 0 || t_scaled < t_limit)) ||
                         (det >= 0 && (t_scaled <= 0 || t_scaled > t_limit));
     // det == 0: the ray lies in the triangle's plane, or the triangle is degenerate; no hit.
