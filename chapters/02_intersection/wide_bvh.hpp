@@ -160,7 +160,7 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                     // An any-hit query keeps the entered children in their order: any hit ends it, so a nearer
                     // one is worth nothing. Each child is written to the next place and kept by n += entered,
                     // with no branch: shadow rays are seldom coherent, and a branch per child, which of them
-                    // the ray enters, is mispredicted about one time in three.
+                    // the ray enters, is often mispredicted.
                     for (int k = 0; k < kWideBvhWidth; ++k) {
                         entered[n] = {node.child[k], node.count[k], t[k]};
                         // Every interior child's node asked for early, entered or not: choosing by `entered`
