@@ -52,19 +52,31 @@ inline TriangleLanes larger(const TriangleLanes& a, const TriangleLanes& b) {
 
 }  // namespace detail
 
+// What the packet test needs of the ray, computed once per ray (make_packet_ray) rather than once per packet:
+// the permutation and shear of the watertight test (WatertightRay), and the origin's coordinates in the
+// permuted axes, each value in every lane. Read by name, not as ray.origin[s.kx]: glm's operator[] with an
+// index known only at run time is a switch, two branches per coordinate, which an incoherent ray (another
+// permutation than the ray before) mispredicts.
+struct PacketRay {
+    int kx, ky, kz;
+    TriangleLanes origin_x, origin_y, origin_z;  // o_kx, o_ky, o_kz
+    TriangleLanes sx, sy, sz;
+};
+
+inline PacketRay make_packet_ray(const Ray& ray, const WatertightRay& s) {
+    return {s.kx, s.ky, s.kz, ray.origin[s.kx], ray.origin[s.ky], ray.origin[s.kz], s.sx, s.sy, s.sz};
+}
+
 // Inline for the reason intersect_quad is (the lesson's "Why intersect_quad lives in its header").
-inline std::optional<TrianglePacketHit> intersect_triangle_packet(const Ray& ray, const WatertightRay& s,
-                                                                  const TrianglePacket& packet, Real t_max) {
+inline std::optional<TrianglePacketHit> intersect_triangle_packet(const PacketRay& s, const TrianglePacket& packet,
+                                                                  Real t_max) {
     namespace stdx = std::experimental;
     using L = TriangleLanes;
     const auto& p = packet.vertex;
     // Translate: the vertices relative to the ray's origin, in the permuted axes (kx, ky, kz).
-    const L a_x = p[0][s.kx] - ray.origin[s.kx], a_y = p[0][s.ky] - ray.origin[s.ky],
-            a_z = p[0][s.kz] - ray.origin[s.kz];
-    const L b_x = p[1][s.kx] - ray.origin[s.kx], b_y = p[1][s.ky] - ray.origin[s.ky],
-            b_z = p[1][s.kz] - ray.origin[s.kz];
-    const L c_x = p[2][s.kx] - ray.origin[s.kx], c_y = p[2][s.ky] - ray.origin[s.ky],
-            c_z = p[2][s.kz] - ray.origin[s.kz];
+    const L a_x = p[0][s.kx] - s.origin_x, a_y = p[0][s.ky] - s.origin_y, a_z = p[0][s.kz] - s.origin_z;
+    const L b_x = p[1][s.kx] - s.origin_x, b_y = p[1][s.ky] - s.origin_y, b_z = p[1][s.kz] - s.origin_z;
+    const L c_x = p[2][s.kx] - s.origin_x, c_y = p[2][s.ky] - s.origin_y, c_z = p[2][s.kz] - s.origin_z;
     // Shear: the ray becomes the +z axis.
     const L ax = a_x - s.sx * a_z, ay = a_y - s.sy * a_z;
     const L bx = b_x - s.sx * b_z, by = b_y - s.sy * b_z;
@@ -83,11 +95,14 @@ inline std::optional<TrianglePacketHit> intersect_triangle_packet(const Ray& ray
             w[k] = Real(double(bx[k]) * double(ay[k]) - double(by[k]) * double(ax[k]));
         }
     }
+    // The ray passes outside a triangle whose edge functions differ in sign. Most packets a ray reaches are
+    // missed this way, and return before the distance is computed.
+    const auto outside = (u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0);
+    if (stdx::all_of(outside)) return std::nullopt;
     const L det = u + v + w;
     const L az = s.sz * a_z, bz = s.sz * b_z, cz = s.sz * c_z;
     const L t_scaled = u * az + v * bz + w * cz;
     const L t_limit = t_max * det;
-    const auto outside = (u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0);
     const auto beyond = (det < 0 && (t_scaled >= 0 || t_scaled < t_limit)) ||
                         (det >= 0 && (t_scaled <= 0 || t_scaled > t_limit));
     // det == 0: the ray lies in the triangle's plane, or the triangle is degenerate; no hit.
@@ -111,6 +126,12 @@ inline std::optional<TrianglePacketHit> intersect_triangle_packet(const Ray& ray
     stdx::where(hit, nearest) = t;
     const int lane = stdx::find_first_set(hit && nearest == stdx::hmin(nearest));
     return TrianglePacketHit{lane, {t[lane], {v[lane] * inverse[lane], w[lane] * inverse[lane]}}};
+}
+
+// The same for one ray alone (the tests): its PacketRay made on the spot.
+inline std::optional<TrianglePacketHit> intersect_triangle_packet(const Ray& ray, const WatertightRay& s,
+                                                                  const TrianglePacket& packet, Real t_max) {
+    return intersect_triangle_packet(make_packet_ray(ray, s), packet, t_max);
 }
 
 }  // namespace rt

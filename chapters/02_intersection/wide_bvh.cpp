@@ -10,7 +10,7 @@ WideRay make_wide_ray(const Ray& ray) {
         r.origin[std::size_t(i)] = ray.origin[i];
         r.inverse[std::size_t(i)] = r.inverse_d[i];
         r.finite = r.finite && std::abs(r.inverse_d[i]) < kInfinity;
-        r.negative[std::size_t(i)] = ray.direction[i] < 0;
+        r.near_corner[std::size_t(i)] = ray.direction[i] < 0 ? 1 : 0;
     }
     return r;
 }
@@ -53,8 +53,8 @@ std::uint32_t WideBvh::collapse(const Bvh& binary, std::uint32_t binary_node, co
     for (int k = 0; k < kWideBvhWidth; ++k) {
         const Aabb box = k < count ? tree[children[std::size_t(k)]].box() : Aabb{};
         for (int axis = 0; axis < 3; ++axis) {
-            node.lower[std::size_t(axis)][std::size_t(k)] = box.min[axis];
-            node.upper[std::size_t(axis)][std::size_t(k)] = box.max[axis];
+            node.corner[0][std::size_t(axis)][std::size_t(k)] = box.min[axis];
+            node.corner[1][std::size_t(axis)][std::size_t(k)] = box.max[axis];
         }
         node.child[std::size_t(k)] = node.count[std::size_t(k)] = 0;
     }

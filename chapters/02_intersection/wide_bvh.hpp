@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <experimental/simd>
 #include <functional>
@@ -22,18 +23,20 @@ inline constexpr int kWideBvhWidth = 4;
 // Four Reals in one SIMD register where the machine has one (SSE: four floats), as deduce_t picks.
 using BoxLanes = std::experimental::simd<Real, std::experimental::simd_abi::deduce_t<Real, kWideBvhWidth>>;
 
-// 128 bytes in float: two cache lines, aligned to them. lower[axis][k], upper[axis][k]: child k's box,
-// coordinate by coordinate, so one aligned load brings one coordinate of the four boxes. An unused child has
-// the empty box (+∞ below, −∞ above), which no ray enters.
+// 128 bytes in float: two cache lines, aligned to them. corner[0][axis][k], corner[1][axis][k]: the lower
+// and upper corners of child k's box, coordinate by coordinate, so one aligned load brings one coordinate of
+// the four boxes. An unused child has the empty box (+∞ below, −∞ above), which no ray enters.
 struct alignas(64) WideBvhNode {
     using Coordinates = std::array<Real, kWideBvhWidth>;
-    alignas(BoxLanes::size() * sizeof(Real)) std::array<Coordinates, 3> lower, upper;
+    alignas(BoxLanes::size() * sizeof(Real)) std::array<std::array<Coordinates, 3>, 2> corner;
     std::array<std::uint32_t, kWideBvhWidth> child;  // interior child: its node; leaf: its first item
     std::array<std::uint32_t, kWideBvhWidth> count;  // leaf: its items (> 0); interior or unused: 0
 
     Aabb box(int k) const {
+        const auto& [lower, upper] = corner;
         return {{lower[0][k], lower[1][k], lower[2][k]}, {upper[0][k], upper[1][k], upper[2][k]}};
     }
+    bool used(int k) const { return corner[0][0][k] <= corner[1][0][k]; }
 };
 
 // What a ray needs for the four-box slab test, computed once per ray.
@@ -42,8 +45,11 @@ struct WideRay {
     Vec3 inverse_d;
     std::array<BoxLanes, 3> origin, inverse;  // o_i and 1 / d_i in every lane
     bool finite;                              // every 1 / d_i finite: the SIMD test applies
-    std::array<bool, 3> negative;             // d_i < 0: the slab is entered at its upper face
+    // The corner whose face the ray enters slab i by: 0 (lower) when d_i >= 0, 1 (upper) when d_i < 0; it
+    // leaves by the other. An index, not a branch: the walk loads corner[near_corner[i]] with no jump to mispredict.
+    std::array<int, 3> near_corner;
 };
+
 
 WideRay make_wide_ray(const Ray& ray);
 
@@ -60,23 +66,29 @@ inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real 
         // infinite faces and enter it.
         BoxLanes t = kInfinity;
         for (int k = 0; k < kWideBvhWidth; ++k) {
-            if (node.lower[0][k] <= node.upper[0][k]) t[k] = slab_entry(node.box(k), r.ray, r.inverse_d, t_max);
+            if (node.used(k)) t[k] = slab_entry(node.box(k), r.ray, r.inverse_d, t_max);
         }
         return t;
     }
     constexpr Real kGamma3 = gamma_bound(3);
     constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
-    BoxLanes t_enter = 0, t_exit = t_max;
+    // The nearest exit and the farthest entry of the three slabs, as they are computed; the rounding
+    // margins are applied once, after the max and the min: x ↦ x (1 − 2γ₃) − s and x ↦ x (1 + 2γ₃) + s are
+    // rounded monotone functions, so max_i of them is them of max_i, bit for bit (and min alike).
+    BoxLanes t_near_max = 0, t_far_min = kInfinity;
     for (int i = 0; i < 3; ++i) {
-        const auto& near = r.negative[i] ? node.upper[i] : node.lower[i];
-        const auto& far = r.negative[i] ? node.lower[i] : node.upper[i];
+        const auto& near = node.corner[r.near_corner[i]][i];
+        const auto& far = node.corner[1 - r.near_corner[i]][i];
         const BoxLanes t_near = (BoxLanes(near.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
         const BoxLanes t_far = (BoxLanes(far.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
-        t_enter = stdx::max(t_enter, t_near * (1 - 2 * kGamma3) - kSmallest);
-        t_exit = stdx::min(t_exit, t_far * (1 + 2 * kGamma3) + kSmallest);
+        t_near_max = i == 0 ? t_near : stdx::max(t_near_max, t_near);
+        t_far_min = i == 0 ? t_far : stdx::min(t_far_min, t_far);
     }
-    stdx::where(!(t_enter <= t_exit), t_enter) = kInfinity;
-    return t_enter;
+    const BoxLanes t_enter = stdx::max(BoxLanes(0), t_near_max * (1 - 2 * kGamma3) - kSmallest);
+    const BoxLanes t_exit = stdx::min(BoxLanes(t_max), t_far_min * (1 + 2 * kGamma3) + kSmallest);
+    BoxLanes entered = t_enter;
+    stdx::where(!(t_enter <= t_exit), entered) = kInfinity;
+    return entered;
 }
 
 class WideBvh {
@@ -136,26 +148,47 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                 }
             } else {
                 const WideBvhNode& node = nodes_[next.child];
-                alignas(BoxLanes::size() * sizeof(Real)) Real t[kWideBvhWidth];
-                entry_distances(node, ray, t_max).copy_to(t, std::experimental::vector_aligned);
+                const BoxLanes t_lanes = entry_distances(node, ray, t_max);
                 if (stats) {
-                    for (int k = 0; k < kWideBvhWidth; ++k) stats->nodes += node.lower[0][k] <= node.upper[0][k];
+                    for (int k = 0; k < kWideBvhWidth; ++k) stats->nodes += node.used(k);
                 }
-                // The children entered, sorted nearest first (the first of equal distances first); the
-                // nearest is visited next, the others pushed farthest first.
+                alignas(BoxLanes::size() * sizeof(Real)) Real t[kWideBvhWidth];
+                t_lanes.copy_to(t, std::experimental::vector_aligned);
                 Pending entered[kWideBvhWidth];
                 int n = 0;
-                for (int k = 0; k < kWideBvhWidth; ++k) {
-                    if (!(t[k] < kInfinity)) continue;
-                    const Pending p{node.child[k], node.count[k], t[k]};
-                    if (p.count == 0) {
-                        __builtin_prefetch(&nodes_[p.child]);
-                        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[p.child]) + 64);
+                if (any_hit) {
+                    // An any-hit query keeps the entered children in their order: any hit ends it, so a nearer
+                    // one is worth nothing. Each child is written to the next place and kept by n += entered,
+                    // with no branch: shadow rays are seldom coherent, and a branch per child, which of them
+                    // the ray enters, is often mispredicted.
+                    for (int k = 0; k < kWideBvhWidth; ++k) {
+                        entered[n] = {node.child[k], node.count[k], t[k]};
+                        // Every interior child's node asked for early, entered or not: choosing by `entered`
+                        // too cost more than it saved. A leaf asks for this node again, already here (a choice
+                        // of address, not a branch).
+                        const std::uint32_t ask = node.count[k] == 0 ? node.child[k] : next.child;
+                        __builtin_prefetch(&nodes_[ask]);
+                        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[ask]) + 64);
+                        n += t[k] < kInfinity;
                     }
-                    int at = n++;
-                    for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
-                    entered[at] = p;
+                } else {
+                    // The children entered, sorted nearest first (the first of equal distances first). Here
+                    // a branch per child is the faster way: a coherent ray (a camera's) takes the same
+                    // branches as the ray before, and the processor, predicting them, loads the next node
+                    // before this one's test is done.
+                    for (int k = 0; k < kWideBvhWidth; ++k) {
+                        if (!(t[k] < kInfinity)) continue;
+                        const Pending p{node.child[k], node.count[k], t[k]};
+                        if (p.count == 0) {
+                            __builtin_prefetch(&nodes_[p.child]);
+                            __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[p.child]) + 64);
+                        }
+                        int at = n++;
+                        for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
+                        entered[at] = p;
+                    }
                 }
+                // The nearest (or first) is visited next, the others pushed farthest (or last) first.
                 if (n > 0) {
                     while (n > 1) stack[top++] = entered[--n];
                     next = entered[0];

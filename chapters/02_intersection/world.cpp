@@ -254,12 +254,12 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
 }
 
 // The items of a wide leaf, in order: a triangle packet at once, any other primitive alone.
-bool World::test_items(const Ray& ray, const WatertightRay& sheared, std::uint32_t first, std::uint32_t count,
-                       Real& t_max, bool any_hit, Candidate& found) const {
+bool World::test_items(const Ray& ray, const WatertightRay& sheared, const PacketRay& packet_ray,
+                       std::uint32_t first, std::uint32_t count, Real& t_max, bool any_hit, Candidate& found) const {
     bool hit = false;
     auto test_packet = [&](std::uint32_t index) {
         const TrianglePacket& packet = triangle_packets_[index];
-        const auto h = intersect_triangle_packet(ray, sheared, packet, t_max);
+        const auto h = intersect_triangle_packet(packet_ray, packet, t_max);
         if (!h) return false;
         found = {h->hit.t, packet.slot[std::size_t(h->lane)], h->hit.barycentrics, h->lane, &packet};
         // The hit record will need the primitive's record: asked for now, it arrives while the walk goes on.
@@ -312,8 +312,9 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
     // would only turn away the rays that miss the whole scene, at the price of three divisions and a slab
     // test each.
     if (options_.acceleration == Acceleration::kBvh && bvh_.nodes().size() > 1) {
+        const PacketRay packet_ray = make_packet_ray(ray, sheared);
         auto test_leaf = [&](std::uint32_t first, std::uint32_t count, Real& limit) {
-            return test_items(ray, sheared, first, count, limit, any_hit, found);
+            return test_items(ray, sheared, packet_ray, first, count, limit, any_hit, found);
         };
         return wide_.traverse(make_wide_ray(ray), t_max, any_hit, test_leaf, stats) || hit;
     }

@@ -106,8 +106,8 @@ class World {
     Aabb bounds(const Primitive& p) const;
     bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
               Candidate& found) const;
-    bool test_items(const Ray& ray, const WatertightRay& sheared, std::uint32_t first, std::uint32_t count,
-                    Real& t_max, bool any_hit, Candidate& found) const;
+    bool test_items(const Ray& ray, const WatertightRay& sheared, const PacketRay& packet_ray, std::uint32_t first,
+                    std::uint32_t count, Real& t_max, bool any_hit, Candidate& found) const;
     bool search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;
 
