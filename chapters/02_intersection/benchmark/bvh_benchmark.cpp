@@ -30,17 +30,13 @@
 #include "world.hpp"
 #ifdef RT_HAVE_EMBREE
 #include "embree_mesh.hpp"
+#include "rt/median.hpp"
 #endif
 
 namespace {
 
 using namespace rt;
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
 
 // Seconds taken by `work`, the median of `repeats` runs.
 double median_seconds(int repeats, const std::function<void()>& work) {
