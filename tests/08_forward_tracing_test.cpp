@@ -349,6 +349,23 @@ TEST_CASE("Paths for all but the camera caustics, plus light paths for those, co
     CHECK(v_combined < 0.8 * v_reverse);
 }
 
+TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threads",
+          "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+    const Scene scene = load_scene(scene_path("ch08_default.json"));
+    const EffectSet all = needed(scene) & EffectSet::all();
+    const CombinedResult one = render_combined(scene, all, settings_of(24, 24, 4, 9, 1), {});
+    const CombinedResult three = render_combined(scene, all, settings_of(24, 24, 4, 9, 3), {});
+    CHECK(one.render.image.all_finite());
+    CHECK(one.render.image.pixels() == three.render.image.pixels());
+    CHECK(one.caustics.contributing_paths > 0);
+    // Both tracers' rays are counted: the light paths' own (shadow-kind first rays) among them.
+    CHECK(one.render.rays.total() == one.paths.rays.total() + one.caustics.render.rays.total());
+}
+
 TEST_CASE("Without glass or mirrors the path loop leaves out nothing and the caustic light paths add nothing",
           "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
