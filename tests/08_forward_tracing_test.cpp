@@ -305,14 +305,18 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     CHECK(hidden_a < 0.8 * hidden_b);
 }
 
+// The exercises a render of the glass box by the combined tracer runs: the camera's path loop with chapter
+// 07's glass, and the light tracer's connections.
+#define kCombinedTracerExercises                                                                \
+    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"    \
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"   \
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]" \
+    "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"      \
+    "[ex:ch08.pinhole_importance][ex:ch08.project_direction]"
+
 TEST_CASE("Paths for all but the camera caustics, plus light paths for those, converge to chapter 06's "
           "image with less variance",
-          "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance]"
-          "[ex:ch08.project_direction]") {
+          "[ch08][statistical]" kCombinedTracerExercises) {
     const Scene scene = load_scene(scene_path("ch08_default.json"));
     const EffectSet all = needed(scene) & EffectSet::all();
     constexpr int kSide = 16, kBatches = 16, kSpp = 64;
@@ -350,11 +354,7 @@ TEST_CASE("Paths for all but the camera caustics, plus light paths for those, co
 }
 
 TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threads",
-          "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08]" kCombinedTracerExercises) {
     const Scene scene = load_scene(scene_path("ch08_default.json"));
     const EffectSet all = needed(scene) & EffectSet::all();
     const CombinedResult one = render_combined(scene, all, settings_of(24, 24, 4, 9, 1), {});
