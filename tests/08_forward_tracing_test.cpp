@@ -366,6 +366,23 @@ TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threa
     CHECK(one.render.rays.total() == one.paths.rays.total() + one.caustics.render.rays.total());
 }
 
+TEST_CASE("Under an environment light the combined tracer is chapter 06's loop alone, bit for bit",
+          "[ch08]" kCombinedTracerExercises) {
+    // Light paths do not start at the environment, so no path may be left to them.
+    const Scene scene = load_scene(scene_path("ch07_furnace_glass.json"));
+    const EffectSet all = needed(scene) & EffectSet::all();
+    const RenderSettings settings = settings_of(12, 12, 4, 5);
+    const CombinedResult combined = render_combined(scene, all, settings, {});
+    PathOptions options;
+    options.simulated = all;
+    const RenderScene prepared(scene, all, refraction_materials());
+    const PathTracer paths(prepared.world, prepared.materials, prepared.lights, options);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, 12, 12);
+    CHECK_FALSE(combined.split);
+    CHECK(combined.caustics.render.samples == 0);
+    CHECK(combined.render.image.pixels() == render_paths(paths, camera, settings).image.pixels());
+}
+
 TEST_CASE("Without glass or mirrors the path loop leaves out nothing and the caustic light paths add nothing",
           "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"

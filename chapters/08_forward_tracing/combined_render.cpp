@@ -36,6 +36,7 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
     const LightTracer light(prepared.world, importance, prepared.lights, camera, light_options);
 
     CombinedResult r;
+    r.split = split;
     r.paths = render_paths(paths, camera, settings);
     // The light paths draw from streams of their own seed, not the camera samples' (path i and pixel i
     // would otherwise share their numbers). The live view follows the camera's passes only.

@@ -38,6 +38,7 @@ struct CombinedResult {
     RenderResult render;   // the sum: its image I_paths + I_light, its rays and seconds both tracers'
     RenderResult paths;    // I_paths alone
     SplatResult caustics;  // I_light alone
+    bool split = false;    // false: the scene was rendered by paths alone (other light, or a medium)
 };
 
 // Renders `scene` both ways (chapter 07's materials: radiance for the camera's paths, importance for the

@@ -78,11 +78,12 @@ int main(int argc, char** argv) {
             app.add_option("--caustic-bounces", caustic_bounces,
                            "With --tracer combined: light paths carry the paths that meet glass or a mirror "
                            "after at most this many diffuse bounces from the camera (E D{1..K} S ...)")
-                ->check(CLI::Range(1, 64));
-        app.add_option("--sampler", sampler,
-                       "With --tracer combined: where a camera sample's numbers come from: "
-                       "independent|stratified|sobol")
-            ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
+                ->check(CLI::Range(1, kSafetyDepthCap));
+        CLI::Option* sampler_flag =
+            app.add_option("--sampler", sampler,
+                           "With --tracer combined: where a camera sample's numbers come from: "
+                           "independent|stratified|sobol")
+                ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
         app.add_option("--variant", variant,
                        "How forward paths reach the camera: connect (every vertex to the pinhole) or "
                        "aperture (through a lens of radius --aperture)")
@@ -90,13 +91,13 @@ int main(int argc, char** argv) {
         CLI::Option* aperture_flag =
             app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
                 ->check(CLI::PositiveNumber);
-        app.parse_complete_callback([aperture_flag, light_paths_flag, caustic_bounces_flag, &variant, &tracer_name,
-                                     &caustics_only] {
+        app.parse_complete_callback([aperture_flag, light_paths_flag, caustic_bounces_flag, sampler_flag, &variant,
+                                     &tracer_name, &caustics_only] {
             if (aperture_flag->count() > 0 && variant != "aperture") {
                 throw CLI::ValidationError("--aperture", "is used only with --variant aperture, got --variant " +
                                                              variant);
             }
-            for (CLI::Option* flag : {light_paths_flag, caustic_bounces_flag}) {
+            for (CLI::Option* flag : {light_paths_flag, caustic_bounces_flag, sampler_flag}) {
                 if (flag->count() > 0 && tracer_name != "combined")
                     throw CLI::ValidationError(flag->get_name(), "is used only with --tracer combined");
             }
@@ -143,14 +144,23 @@ int main(int argc, char** argv) {
             const MaterialTable materials(scene, context.simulated, refraction_materials());
             ChapterRun run{r.render, scene_notes(scene, materials, collect_lights(scene), false), std::nullopt};
             char line[320];
-            std::snprintf(line, sizeof line,
-                          "tracer: combined; chapter 06's paths (sampler %s, %.3f s) for all paths but "
-                          "E D{1..%d} S ... (the caustics the camera sees), %llu light paths for those (%.3f s, %.4g%% reached the "
-                          "camera)",
-                          sampler.c_str(), r.paths.seconds, caustic_bounces,
-                          static_cast<unsigned long long>(r.caustics.render.samples), r.caustics.render.seconds,
-                          100.0 * double(r.caustics.contributing_paths) /
-                              double(std::max<std::uint64_t>(1, r.caustics.render.samples)));
+            if (r.split) {
+                std::snprintf(line, sizeof line,
+                              "tracer: combined; chapter 06's paths (sampler %s, %.3f s) for all paths but "
+                              "E D{1..%d} S ... (the caustics the camera sees), %llu light paths for those "
+                              "(%.3f s, %.4g%% reached the camera)",
+                              sampler.c_str(), r.paths.seconds, caustic_bounces,
+                              static_cast<unsigned long long>(r.caustics.render.samples),
+                              r.caustics.render.seconds,
+                              100.0 * double(r.caustics.contributing_paths) /
+                                  double(std::max<std::uint64_t>(1, r.caustics.render.samples)));
+            } else {
+                std::snprintf(line, sizeof line,
+                              "tracer: combined, by chapter 06's paths alone (sampler %s): light paths start "
+                              "only at area and point lights and cross no medium, and this scene has other "
+                              "light or a medium",
+                              sampler.c_str());
+            }
             run.notes.push_back(line);
             run.notes.push_back("rays: light paths' first rays counted as shadow, connections to the camera as "
                                 "camera rays");

@@ -24,6 +24,7 @@ check "$ch08" "usage: --aperture: $real, got \"1e309\" (see --help)" "${small[@]
 check "$ch08" "usage: --aperture: is used only with --variant aperture, got --variant connect (see --help)" \
     "${small[@]}" --aperture 0.5
 check "$ch08" "usage: --light-paths: is used only with --tracer combined (see --help)" "${small[@]}" --light-paths 2
+check "$ch08" "usage: --sampler: is used only with --tracer combined (see --help)" "${small[@]}" --sampler sobol
 check "$ch08" "usage: --caustics-only: is traced with --variant connect (see --help)" \
     "${small[@]}" --caustics-only --variant aperture
 mkdir -p "$work" && cd "$work" || exit 1
