@@ -215,12 +215,20 @@ TEST_CASE("The world returns the nearest of several shapes with a normal facing 
         CHECK(hit->primitive == 1);
         CHECK(hit->front_face);
         CHECK(hit->normal == Vec3{0, 0, 1});
+        // The same search without the hit record: the distance, the primitive, and where on the quad.
+        const auto nearest = world.nearest(Ray{{0, 0, 0}, {0, 0, -1}});
+        REQUIRE(nearest);
+        CHECK(nearest->t == hit->t);
+        CHECK(nearest->primitive == 1);
+        CHECK(nearest->uv == Vec2{0.5f, 0.5f});
+        CHECK_FALSE(world.nearest(Ray{{0, 0, 0}, {0, 0, -1}}, 4));
         CHECK(world.occluded(Ray{{0, 0, 0}, {0, 0, -1}}, 6));
         CHECK_FALSE(world.occluded(Ray{{0, 0, 0}, {0, 0, -1}}, 4));
         const auto far = world.intersect(Ray{{5, 0, 0}, {0, 0, -1}});
         REQUIRE(far);
         CHECK(far->primitive == 2);
         CHECK(far->t == Approx(20));
+        CHECK(world.nearest(Ray{{5, 0, 0}, {0, 0, -1}})->primitive == 2);
         const auto back = world.intersect(Ray{{0, 0, -7}, {0, 0, 1}});  // the quad's back side
         REQUIRE(back);
         CHECK_FALSE(back->front_face);
@@ -749,7 +757,7 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
     const World bvh(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
     const World binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh});
     const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
-    int mismatches = 0, occlusion_mismatches = 0, hits = 0;
+    int mismatches = 0, occlusion_mismatches = 0, nearest_mismatches = 0, hits = 0;
     for (int i = 0; i < 100000; ++i) {
         const Vec3 origin = random_point(80);
         const Ray ray{origin, glm::normalize(random_point(50) - origin)};
@@ -760,12 +768,16 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
             if (a.has_value() != b.has_value() || (a && (a->t != b->t || a->primitive != b->primitive)))
                 ++mismatches;
             if (world->occluded(ray, t_max) != b.has_value()) ++occlusion_mismatches;
+            const auto n = world->nearest(ray, t_max);
+            if (n.has_value() != a.has_value() || (n && (n->t != a->t || n->primitive != a->primitive)))
+                ++nearest_mismatches;
         }
         hits += b ? 1 : 0;
     }
     CHECK(hits > 10000);
     CHECK(mismatches == 0);
     CHECK(occlusion_mismatches == 0);
+    CHECK(nearest_mismatches == 0);
 }
 
 namespace {
