@@ -17,6 +17,7 @@ WideRay make_wide_ray(const Ray& ray) {
 
 WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
     if (binary.nodes().empty()) return;
+    bounds_ = binary.nodes()[0].box();
     nodes_.reserve(binary.nodes().size() / 2 + 1);
     collapse(binary, 0, leaf_items);
     nodes_.shrink_to_fit();
