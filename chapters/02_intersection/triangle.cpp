@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "float_error.hpp"
 
@@ -15,7 +14,7 @@ WatertightRay make_watertight_ray(const Ray& ray) {
     const Vec3& d = ray.direction;
     const Vec3 a = abs(d);
     const Real component[3] = {d.x, d.y, d.z};
-    // kz = 0 when |d_x| is largest, else 1 when |d_y| is, else 2 (the first of equals last, as before).
+    // kz = 0 when |d_x| is largest, else 1 when |d_y| is, else 2 (of equal magnitudes, the later axis).
     const int x_largest = int(a.x > a.y) & int(a.x > a.z);
     const int y_largest = int(!(a.x > a.y)) & int(a.y > a.z);
     const int kz = 2 - 2 * x_largest - y_largest;

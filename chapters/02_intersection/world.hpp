@@ -52,12 +52,12 @@ class World {
     // The nearest hit with 0 < t < t_max, if any, and its hit record. No offset is applied: spawning rays is
     // chapter 03's topic.
     std::optional<Hit> intersect(const Ray& ray, Real t_max = kInfinity) const;
+    // The same, counting the boxes and primitives tested into `stats`.
+    std::optional<Hit> intersect(const Ray& ray, Real t_max, TraversalStats& stats) const;
     // The same search, and only what it finds: the distance, the primitive and where on it (no hit record:
     // no point, normal, material or light to look up). What Embree's rtcIntersect1 reports, and what a query
     // that needs no shading asks (the leak probe: does the ray hit?).
     std::optional<NearestHit> nearest(const Ray& ray, Real t_max = kInfinity) const;
-    // The same, counting the boxes and primitives tested into `stats`.
-    std::optional<Hit> intersect(const Ray& ray, Real t_max, TraversalStats& stats) const;
     // Whether anything is hit with 0 < t < t_max (any-hit: stops at the first hit found).
     bool occluded(const Ray& ray, Real t_max) const;
 
