@@ -215,12 +215,20 @@ TEST_CASE("The world returns the nearest of several shapes with a normal facing 
         CHECK(hit->primitive == 1);
         CHECK(hit->front_face);
         CHECK(hit->normal == Vec3{0, 0, 1});
+        // The same search without the hit record: the distance, the primitive, and where on the quad.
+        const auto nearest = world.nearest(Ray{{0, 0, 0}, {0, 0, -1}});
+        REQUIRE(nearest);
+        CHECK(nearest->t == hit->t);
+        CHECK(nearest->primitive == 1);
+        CHECK(nearest->uv == Vec2{0.5f, 0.5f});
+        CHECK_FALSE(world.nearest(Ray{{0, 0, 0}, {0, 0, -1}}, 4));
         CHECK(world.occluded(Ray{{0, 0, 0}, {0, 0, -1}}, 6));
         CHECK_FALSE(world.occluded(Ray{{0, 0, 0}, {0, 0, -1}}, 4));
         const auto far = world.intersect(Ray{{5, 0, 0}, {0, 0, -1}});
         REQUIRE(far);
         CHECK(far->primitive == 2);
         CHECK(far->t == Approx(20));
+        CHECK(world.nearest(Ray{{5, 0, 0}, {0, 0, -1}})->primitive == 2);
         const auto back = world.intersect(Ray{{0, 0, -7}, {0, 0, 1}});  // the quad's back side
         REQUIRE(back);
         CHECK_FALSE(back->front_face);
@@ -749,7 +757,7 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
     const World bvh(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
     const World binary(scene, {TriangleTest::kWatertight, Acceleration::kBinaryBvh});
     const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
-    int mismatches = 0, occlusion_mismatches = 0, hits = 0;
+    int mismatches = 0, occlusion_mismatches = 0, nearest_mismatches = 0, hits = 0;
     for (int i = 0; i < 100000; ++i) {
         const Vec3 origin = random_point(80);
         const Ray ray{origin, glm::normalize(random_point(50) - origin)};
@@ -760,12 +768,16 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
             if (a.has_value() != b.has_value() || (a && (a->t != b->t || a->primitive != b->primitive)))
                 ++mismatches;
             if (world->occluded(ray, t_max) != b.has_value()) ++occlusion_mismatches;
+            const auto n = world->nearest(ray, t_max);
+            if (n.has_value() != a.has_value() || (n && (n->t != a->t || n->primitive != a->primitive)))
+                ++nearest_mismatches;
         }
         hits += b ? 1 : 0;
     }
     CHECK(hits > 10000);
     CHECK(mismatches == 0);
     CHECK(occlusion_mismatches == 0);
+    CHECK(nearest_mismatches == 0);
 }
 
 namespace {
@@ -1048,7 +1060,9 @@ TEST_CASE("The wide BVH visits the nearest leaf first and culls every child ente
     // the ray crosses its face x = 2i, at t = 2i + 10, never before its box is entered. Nearest first, the
     // leaf of box 0 is tested first and every other child is entered after its hit, at t >= 12: that leaf's
     // items are the only ones tested (a child visited out of order, or popped without the t_max test, adds
-    // items).
+    // items). Then a ray from x = 509.5, between the last two boxes (inside the tree's bounds, where the walk
+    // gathers the entered children without a branch), back along the row: box i is hit where it crosses
+    // the face x = 2i + 1, at t = 508.5 − 2i, box 254 first, at t = 0.5; nearest first, only its leaf.
     std::vector<Aabb> boxes;
     for (int i = 0; i < 256; ++i) {
         Aabb b;
@@ -1059,28 +1073,44 @@ TEST_CASE("The wide BVH visits the nearest leaf first and culls every child ente
     std::vector<std::uint32_t> order;
     const Bvh bvh(boxes, order);
     const WideBvh wide(bvh);
-    std::uint32_t first_leaf = 0;  // the item count of the leaf holding box 0
-    for (const WideBvhNode& node : wide.nodes())
-        for (std::size_t k = 0; k < std::size_t(kWideBvhWidth); ++k)
-            for (std::uint32_t slot = node.child[k]; slot < node.child[k] + node.count[k]; ++slot)
-                if (order[slot] == 0) first_leaf = node.count[k];
-    REQUIRE(first_leaf > 0);
-    const WideRay ray =
-        make_wide_ray({Vec3(-10, Real(0.5), Real(0.5)), glm::normalize(Vec3(1, Real(1e-4), Real(1e-4)))});
-    REQUIRE(ray.finite);
-    auto test = [&](std::uint32_t first, std::uint32_t count, Real& limit) {
-        bool hit = false;
-        for (std::uint32_t slot = first; slot < first + count; ++slot) {
-            const Real t = (boxes[order[slot]].min.x - ray.ray.origin.x) * ray.inverse_d.x;
-            if (t < limit) limit = t, hit = true;
-        }
-        return hit;
+    auto leaf_of = [&](std::uint32_t box) {  // the item count of the leaf holding `box`
+        std::uint32_t items = 0;
+        for (const WideBvhNode& node : wide.nodes())
+            for (std::size_t k = 0; k < std::size_t(kWideBvhWidth); ++k)
+                for (std::uint32_t slot = node.child[k]; slot < node.child[k] + node.count[k]; ++slot)
+                    if (order[slot] == box) items = node.count[k];
+        return items;
     };
-    for (const bool any_hit : {false, true}) {
-        Real t_max = kInfinity;
-        TraversalStats stats;
-        CHECK(wide.traverse(ray, t_max, any_hit, test, &stats));
-        CHECK(t_max == Approx(10).epsilon(1e-5));
-        CHECK(stats.primitives == first_leaf);
+    struct Case {
+        Real origin_x, direction_x;
+        std::uint32_t nearest_box;
+        Real t;
+    };
+    for (const Case c : {Case{-10, 1, 0, 10}, Case{Real(509.5), -1, 254, Real(0.5)}}) {
+        const std::uint32_t first_leaf = leaf_of(c.nearest_box);
+        REQUIRE(first_leaf > 0);
+        const WideRay ray = make_wide_ray(
+            {Vec3(c.origin_x, Real(0.5), Real(0.5)), glm::normalize(Vec3(c.direction_x, Real(1e-4), Real(1e-4)))});
+        REQUIRE(ray.finite);
+        CHECK(wide.bounds().contains(ray.ray.origin) == (c.origin_x > 0));
+        auto test = [&](std::uint32_t first, std::uint32_t count, Real& limit) {
+            bool hit = false;
+            for (std::uint32_t slot = first; slot < first + count; ++slot) {
+                const Aabb& b = boxes[order[slot]];
+                const Real t = ((c.direction_x > 0 ? b.min.x : b.max.x) - ray.ray.origin.x) * ray.inverse_d.x;
+                if (t > 0 && t < limit) limit = t, hit = true;
+            }
+            return hit;
+        };
+        // An any-hit query takes the entered children in their order: from inside the row, the first leaf it
+        // tests may be any of those ahead.
+        for (const bool any_hit : {false, true}) {
+            if (any_hit && c.origin_x > 0) continue;
+            Real t_max = kInfinity;
+            TraversalStats stats;
+            CHECK(wide.traverse(ray, t_max, any_hit, test, &stats));
+            CHECK(t_max == Approx(c.t).epsilon(1e-5));
+            CHECK(stats.primitives == first_leaf);
+        }
     }
 }

@@ -26,6 +26,10 @@ struct Aabb {
         max = glm::max(max, b.max);
     }
     Vec3 center() const { return (min + max) * Real(0.5); }
+    // Whether p lies in the box, faces included (one test per face, no branch).
+    bool contains(const Vec3& p) const {
+        return (min.x <= p.x) & (p.x <= max.x) & (min.y <= p.y) & (p.y <= max.y) & (min.z <= p.z) & (p.z <= max.z);
+    }
     // Half the surface area, 2 (xy + yz + zx) / 2: only ratios of areas matter to the SAH.
     Real half_area() const {
         const Vec3 e = glm::max(max - min, Vec3{0});

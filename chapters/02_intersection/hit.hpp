@@ -25,6 +25,17 @@ struct Hit {
     std::int32_t light = -1;
 };
 
+// What a ray tracing kernel reports of the nearest hit (Embree's rtcIntersect1 alike): how far, which
+// primitive, and where on it — no point, error bound, normal or material (World::nearest). A Hit is built
+// from the same search, and more: World::intersect.
+struct NearestHit {
+    Real t = kInfinity;
+    std::uint32_t primitive = 0;  // Hit::primitive's number
+    // Where on the primitive: a triangle's barycentrics (b1, b2) of p1 and p2, a quad's (a, b) along u and
+    // v; (0, 0) on a sphere or a plane.
+    Vec2 uv{0};
+};
+
 // Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.
 inline void set_face_normal(Hit& hit, const Vec3& direction, const Vec3& outward_normal) {
     hit.front_face = glm::dot(direction, outward_normal) < 0;

@@ -48,7 +48,7 @@ LeakProbe probe_leaks(const MeshShape& mesh, TriangleTest test) {
     LeakProbe probe;
     for (const Ray& ray : leak_probe_rays(mesh)) {
         ++probe.rays;
-        if (!world.intersect(ray)) ++probe.escaped;
+        if (!world.nearest(ray)) ++probe.escaped;
     }
     return probe;
 }

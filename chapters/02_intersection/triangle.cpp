@@ -2,20 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "float_error.hpp"
 
 namespace rt {
 
+// Computed with no branch: the axes are chosen by arithmetic on the comparisons and the components read from
+// an array, since the choice changes from one incoherent ray to the next and a branch on it is often
+// mispredicted (glm's d[k] with k known only at run time is a switch, a branch too).
 WatertightRay make_watertight_ray(const Ray& ray) {
     const Vec3& d = ray.direction;
     const Vec3 a = abs(d);
-    const int kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-    int kx = (kz + 1) % 3;
-    int ky = (kx + 1) % 3;
-    if (d[kz] < 0) std::swap(kx, ky);
-    return {kx, ky, kz, d[kx] / d[kz], d[ky] / d[kz], Real(1) / d[kz]};
+    const Real component[3] = {d.x, d.y, d.z};
+    // kz = 0 when |d_x| is largest, else 1 when |d_y| is, else 2 (of equal magnitudes, the later axis).
+    const int x_largest = int(a.x > a.y) & int(a.x > a.z);
+    const int y_largest = int(!(a.x > a.y)) & int(a.y > a.z);
+    const int kz = 2 - 2 * x_largest - y_largest;
+    // (kx, ky) = (kz + 1, kz + 2) mod 3, swapped when d_kz < 0 to keep the winding.
+    const int swapped = int(component[kz] < 0);
+    const int kx = (kz + 1 + swapped) % 3, ky = (kz + 2 - swapped) % 3;
+    return {kx, ky, kz, component[kx] / component[kz], component[ky] / component[kz], Real(1) / component[kz]};
 }
 
 std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const WatertightRay& s,

@@ -64,7 +64,8 @@ struct PacketRay {
 };
 
 inline PacketRay make_packet_ray(const Ray& ray, const WatertightRay& s) {
-    return {s.kx, s.ky, s.kz, ray.origin[s.kx], ray.origin[s.ky], ray.origin[s.kz], s.sx, s.sy, s.sz};
+    const Real origin[3] = {ray.origin.x, ray.origin.y, ray.origin.z};  // indexed with no branch
+    return {s.kx, s.ky, s.kz, origin[s.kx], origin[s.ky], origin[s.kz], s.sx, s.sy, s.sz};
 }
 
 // Inline for the reason intersect_quad is (the lesson's "Why intersect_quad lives in its header").

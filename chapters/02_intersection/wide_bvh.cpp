@@ -4,19 +4,20 @@
 
 namespace rt {
 
+// Every member given its value at once: a WideRay first made empty and then filled in is cleared by a loop
+// of stores (`rep stos`, 112 bytes), which took a tenth of the time the ray's set-up took.
 WideRay make_wide_ray(const Ray& ray) {
-    WideRay r{ray, inverse_direction(ray.direction), {}, {}, true, {}};
-    for (int i = 0; i < 3; ++i) {
-        r.origin[std::size_t(i)] = ray.origin[i];
-        r.inverse[std::size_t(i)] = r.inverse_d[i];
-        r.finite = r.finite && std::abs(r.inverse_d[i]) < kInfinity;
-        r.near_corner[std::size_t(i)] = ray.direction[i] < 0 ? 1 : 0;
-    }
-    return r;
+    const Vec3 inverse = inverse_direction(ray.direction);
+    const Vec3& d = ray.direction;
+    auto lanes = [](const Vec3& v) { return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)}; };
+    const bool finite =
+        std::abs(inverse.x) < kInfinity && std::abs(inverse.y) < kInfinity && std::abs(inverse.z) < kInfinity;
+    return {ray, inverse, lanes(ray.origin), lanes(inverse), finite, {int(d.x < 0), int(d.y < 0), int(d.z < 0)}};
 }
 
 WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
     if (binary.nodes().empty()) return;
+    bounds_ = binary.nodes()[0].box();
     nodes_.reserve(binary.nodes().size() / 2 + 1);
     collapse(binary, 0, leaf_items);
     nodes_.shrink_to_fit();

@@ -107,11 +107,16 @@ class WideBvh {
     explicit WideBvh(const Bvh& binary, const LeafItems& leaf_items = {});
 
     const std::vector<WideBvhNode>& nodes() const { return nodes_; }
+    // The box around everything: the binary root's.
+    const Aabb& bounds() const { return bounds_; }
     std::size_t bytes() const { return nodes_.size() * sizeof(WideBvhNode); }
 
     // What Bvh::traverse does, four children at a time: visits, nearest box first, every leaf whose box the
     // ray meets before t_max, calling `test(first, count, t_max)` for its items; it returns true on a hit
     // and then lowers t_max. With any_hit, returns at the first hit. Returns whether anything was hit.
+    // A ray starting outside bounds() (a camera's) picks the children it enters by a branch per child, one
+    // starting inside (a bounce, a shadow ray) and an any-hit query without a branch: the same children, in
+    // the same order.
     template <typename Test>
     bool traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test,
                   TraversalStats* stats = nullptr) const;
@@ -120,6 +125,7 @@ class WideBvh {
     std::uint32_t collapse(const Bvh& binary, std::uint32_t binary_node, const LeafItems& leaf_items);
 
     std::vector<WideBvhNode> nodes_;
+    Aabb bounds_;
 };
 
 template <typename Test>
@@ -136,6 +142,12 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
     // than 70 levels (36 of SAH splits, then median halvings of at most 2^32 primitives).
     Pending stack[3 * 70 + 1];
     int top = 0;
+    // Which children a ray enters, node after node: a coherent ray (a camera's, from outside the scene)
+    // takes the same branches as the ray before, and the processor, predicting them, loads the next node
+    // before this one's test is done. A ray from inside the scene (a bounce, a shadow ray) is seldom
+    // coherent with the one before, and a branch per child, entered or not, is often mispredicted: its
+    // entered children are gathered with no branch.
+    const bool gather = any_hit || bounds_.contains(ray.ray.origin);
     Pending next{0, 0, 0};  // the root
     bool hit = false;
     while (true) {
@@ -156,11 +168,13 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                 t_lanes.copy_to(t, std::experimental::vector_aligned);
                 Pending entered[kWideBvhWidth];
                 int n = 0;
-                if (any_hit) {
-                    // An any-hit query keeps the entered children in their order: any hit ends it, so a nearer
-                    // one is worth nothing. Each child is written to the next place and kept by n += entered,
-                    // with no branch: shadow rays are seldom coherent, and a branch per child, which of them
-                    // the ray enters, is often mispredicted.
+                // Places p among entered[0, at), nearest first (the first of equal distances first).
+                auto insert = [&](Pending p, int at) {
+                    for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
+                    entered[at] = p;
+                };
+                if (gather) {
+                    // Each child is written to the next place and kept by n += entered, with no branch.
                     for (int k = 0; k < kWideBvhWidth; ++k) {
                         entered[n] = {node.child[k], node.count[k], t[k]};
                         // Every interior child's node asked for early, entered or not: choosing by `entered`
@@ -171,11 +185,13 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                         __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[ask]) + 64);
                         n += t[k] < kInfinity;
                     }
+                    // An any-hit query keeps them in their order: any hit ends it, so a nearer one is worth
+                    // nothing. A nearest-hit query sorts them.
+                    if (!any_hit) {
+                        for (int i = 1; i < n; ++i) insert(entered[i], i);
+                    }
                 } else {
-                    // The children entered, sorted nearest first (the first of equal distances first). Here
-                    // a branch per child is the faster way: a coherent ray (a camera's) takes the same
-                    // branches as the ray before, and the processor, predicting them, loads the next node
-                    // before this one's test is done.
+                    // The children entered, each put in its place as it is found.
                     for (int k = 0; k < kWideBvhWidth; ++k) {
                         if (!(t[k] < kInfinity)) continue;
                         const Pending p{node.child[k], node.count[k], t[k]};
@@ -183,9 +199,7 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                             __builtin_prefetch(&nodes_[p.child]);
                             __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[p.child]) + 64);
                         }
-                        int at = n++;
-                        for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
-                        entered[at] = p;
+                        insert(p, n++);
                     }
                 }
                 // The nearest (or first) is visited next, the others pushed farthest (or last) first.

@@ -331,12 +331,23 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
     return hit;
 }
 
+const World::Primitive& World::record_of(const Candidate& found) const {
+    const Primitive& p = primitives_[found.slot];
+    if (p.kind != Kind::kQuadPacket) return p;
+    return quad_primitives_[packets_[p.index].quad[std::size_t(found.lane)]];
+}
+
+std::uint32_t World::number_of(const Candidate& found) const {
+    const std::uint32_t slots = std::uint32_t(primitives_.size());
+    return found.slot >= slots ? bounded_count_ + (found.slot - slots) : record_of(found).id;
+}
+
 Hit World::make_hit(const Ray& ray, const Candidate& found) const {
     Hit hit;
     hit.t = found.t;
     const std::uint32_t slots = std::uint32_t(primitives_.size());
     if (found.slot >= slots) {
-        hit.primitive = bounded_count_ + (found.slot - slots);
+        hit.primitive = number_of(found);
         const MaterialPlane& p = planes_[found.slot - slots];
         // Rebuilt from the plane's own coordinates, p = p0 + a T + b B: in the plane up to rounding.
         const Vec2 uv = plane_uv(p.plane, ray.at(found.t));
@@ -347,8 +358,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
     }
-    Primitive p = primitives_[found.slot];
-    if (p.kind == Kind::kQuadPacket) p = quad_primitives_[packets_[p.index].quad[std::size_t(found.lane)]];
+    const Primitive& p = record_of(found);
     hit.primitive = p.id;
     hit.material = p.material;
     hit.light = p.light;
@@ -397,6 +407,12 @@ std::optional<Hit> World::intersect(const Ray& ray, Real t_max, TraversalStats& 
     Candidate found{};
     if (!search(ray, t_max, false, found, &stats)) return std::nullopt;
     return make_hit(ray, found);
+}
+
+std::optional<NearestHit> World::nearest(const Ray& ray, Real t_max) const {
+    Candidate found{};
+    if (!search(ray, t_max, false, found, nullptr)) return std::nullopt;
+    return NearestHit{found.t, number_of(found), found.uv};
 }
 
 bool World::occluded(const Ray& ray, Real t_max) const {

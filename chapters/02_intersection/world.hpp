@@ -49,10 +49,15 @@ class World {
   public:
     explicit World(const Scene& scene, WorldOptions options = {});
 
-    // The nearest hit with 0 < t < t_max, if any. No offset is applied: spawning rays is chapter 03's topic.
+    // The nearest hit with 0 < t < t_max, if any, and its hit record. No offset is applied: spawning rays is
+    // chapter 03's topic.
     std::optional<Hit> intersect(const Ray& ray, Real t_max = kInfinity) const;
     // The same, counting the boxes and primitives tested into `stats`.
     std::optional<Hit> intersect(const Ray& ray, Real t_max, TraversalStats& stats) const;
+    // The same search, and only what it finds: the distance, the primitive and where on it (no hit record:
+    // no point, normal, material or light to look up). What Embree's rtcIntersect1 reports, and what a query
+    // that needs no shading asks (the leak probe: does the ray hit?).
+    std::optional<NearestHit> nearest(const Ray& ray, Real t_max = kInfinity) const;
     // Whether anything is hit with 0 < t < t_max (any-hit: stops at the first hit found).
     bool occluded(const Ray& ray, Real t_max) const;
 
@@ -109,6 +114,10 @@ class World {
     bool test_items(const Ray& ray, const WatertightRay& sheared, const PacketRay& packet_ray, std::uint32_t first,
                     std::uint32_t count, Real& t_max, bool any_hit, Candidate& found) const;
     bool search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, TraversalStats* stats) const;
+    // The record of the bounded primitive found (a quad of a packet: the quad's own).
+    const Primitive& record_of(const Candidate& found) const;
+    // Its number, Hit::primitive: the record's, or after the bounded ones for a plane.
+    std::uint32_t number_of(const Candidate& found) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;
 
     WorldOptions options_;

@@ -78,7 +78,7 @@ void set_ray(RTCRay& r, const Ray& ray, Real t_max) {
 
 }  // namespace
 
-bool EmbreeMesh::intersect(const Ray& ray, Real t_max) const {
+std::optional<NearestHit> EmbreeMesh::intersect(const Ray& ray, Real t_max) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query;
@@ -86,7 +86,8 @@ bool EmbreeMesh::intersect(const Ray& ray, Real t_max) const {
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl_->scene, &context, &query);
-    return query.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return NearestHit{query.ray.tfar, query.hit.primID, {query.hit.u, query.hit.v}};
 }
 
 bool EmbreeMesh::occluded(const Ray& ray, Real t_max) const {

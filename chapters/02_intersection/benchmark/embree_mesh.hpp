@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 
+#include "hit.hpp"
 #include "rt/ray.hpp"
 #include "rt/scene.hpp"
 
@@ -23,8 +25,10 @@ class EmbreeMesh {
     EmbreeMesh(const EmbreeMesh&) = delete;
     EmbreeMesh& operator=(const EmbreeMesh&) = delete;
 
-    // Whether the ray hits the mesh with t in [0, t_max] (Embree's nearest-hit query).
-    bool intersect(const Ray& ray, Real t_max) const;
+    // The nearest hit with t in [0, t_max], as Embree's nearest-hit query (rtcIntersect1) reports it: its
+    // distance, the triangle's number in the mesh and the barycentrics (u, v) of its second and third
+    // corners. What World::nearest reports, in the same form.
+    std::optional<NearestHit> intersect(const Ray& ray, Real t_max) const;
     // The same, answered by Embree's any-hit query.
     bool occluded(const Ray& ray, Real t_max) const;
     // The bytes Embree allocated for the scene (its BVH and its triangle copies), as its memory monitor
