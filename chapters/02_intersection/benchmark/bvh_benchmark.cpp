@@ -27,6 +27,8 @@
 #include <thread>
 #include <vector>
 
+#include <sched.h>
+
 #include "01_ray_generation/camera.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"
@@ -90,11 +92,64 @@ std::vector<Ray> make_camera_rays(int side) {
     return rays;
 }
 
-// Traces every ray with `query(ray)` (true: a hit), split over `threads`; returns how many hit.
+// The instruction set the course was compiled for (RT_ISA in CMakeLists.txt).
+#ifdef __AVX2__
+constexpr const char* kCompiledFor = "x86-64-v3 (AVX2)";
+#else
+constexpr const char* kCompiledFor = "x86-64 (SSE2)";
+#endif
+
+// The cores this process may run on (its affinity mask when first asked), in order.
+const std::vector<int>& allowed_cores() {
+    static const std::vector<int> cores = [] {
+        std::vector<int> list;
+        cpu_set_t set;
+        if (sched_getaffinity(0, sizeof set, &set) == 0) {
+            for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+                if (CPU_ISSET(cpu, &set)) list.push_back(cpu);
+        }
+        return list;
+    }();
+    return cores;
+}
+
+// The allowed core that worker 0 (the one of a one-thread measurement) is held on: --core.
+int first_core = 0;
+
+// Holds the calling thread on one core while it lives (worker t on the allowed core first_core + t), then lets it run
+// where it could before. A figure and the one it is compared with are measured on the same core: the two
+// cores of a virtual machine are not alike, since the host may run another guest's work beside either of
+// them, and the course's walk, with more mispredicted branches than Embree's, suffers more from it (the
+// lesson's "Which core").
+class CoreHold {
+  public:
+    explicit CoreHold(int worker) {
+        const std::vector<int>& cores = allowed_cores();
+        held_ = !cores.empty() && sched_getaffinity(0, sizeof before_, &before_) == 0;
+        if (!held_) return;
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        CPU_SET(cores[std::size_t(first_core + worker) % cores.size()], &one);
+        held_ = sched_setaffinity(0, sizeof one, &one) == 0;
+    }
+    ~CoreHold() {
+        if (held_) sched_setaffinity(0, sizeof before_, &before_);
+    }
+    CoreHold(const CoreHold&) = delete;
+    CoreHold& operator=(const CoreHold&) = delete;
+
+  private:
+    cpu_set_t before_{};
+    bool held_ = false;
+};
+
+// Traces every ray with `query(ray)` (true: a hit), split over `threads`, each worker held on its core;
+// returns how many hit.
 template <typename Query>
 std::size_t count_hits(const std::vector<Ray>& rays, int threads, const Query& query) {
     std::vector<std::size_t> hits(std::size_t(threads), 0);
     auto work = [&](int t) {
+        const CoreHold hold(t);
         std::size_t n = 0;
         for (std::size_t i = std::size_t(t); i < rays.size(); i += std::size_t(threads)) n += query(rays[i]) ? 1 : 0;
         hits[std::size_t(t)] = n;
@@ -241,8 +296,11 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
         "%d shadow rays from inside to outside (any hit). Nearest hits: distance, primitive and barycentrics "
         "on both sides (World::nearest, rtcIntersect1), and in the column after Embree's the default's hit "
         "record too (World::intersect). Mrays/s, the median of %d runs taken in turn (engine after engine, "
-        "run after run), each run tracing the set as many times as Embree takes %.1f s for on one thread.\n\n",
-        embree_version(), camera_rays.size(), ray_count, ray_count, repeats, kShortestRunSeconds);
+        "run after run), each run tracing the set as many times as Embree takes %.1f s for on one thread. "
+        "The course compiled for %s. Every figure of a row measured on the same cores: one thread on core %d, "
+        "two threads on it and the next.\n\n",
+        embree_version(), camera_rays.size(), ray_count, ray_count, repeats, kShortestRunSeconds, kCompiledFor,
+        allowed_cores().empty() ? -1 : allowed_cores()[std::size_t(first_core) % allowed_cores().size()]);
     std::printf("| triangles | rays | threads |");
     for (const char* name : kEngineNames) std::printf(" %s |", name);
     std::printf(" %s | course / Embree | course / Embree, thread CPU time |\n"
@@ -387,6 +445,10 @@ int main(int argc, char** argv) {
     app.add_option("--max-exponent", max_exponent, "Largest mesh: 10^N triangles")->check(CLI::Range(3, 7));
     std::string csv_path;
     app.add_option("--csv", csv_path, "Also write the table as CSV");
+    app.add_option("--core", first_core,
+                   "The allowed core (counted from 0 among those the process may use) a one-thread figure is "
+                   "measured on; with two threads, it and the next")
+        ->check(CLI::Range(0, CPU_SETSIZE - 1));
     bool embree = false;
     app.add_flag("--embree", embree,
                  "Instead: the course's BVH, step by step, against Embree 3 on identical rays (when built with it)");
