@@ -116,11 +116,10 @@ const std::vector<int>& allowed_cores() {
 // The allowed core that worker 0 (the one of a one-thread measurement) is held on: --core.
 int first_core = 0;
 
-// Holds the calling thread on one core while it lives (worker t on the allowed core first_core + t), then lets it run
-// where it could before. A figure and the one it is compared with are measured on the same core: the two
-// cores of a virtual machine are not alike, since the host may run another guest's work beside either of
-// them, and the course's walk, with more mispredicted branches than Embree's, suffers more from it (the
-// lesson's "Which core").
+// Holds the calling thread on one core while it lives (worker t on the allowed core first_core + t), then
+// lets it run where it could before. A figure and the one it is compared with are measured on the same core:
+// the two cores of a virtual machine are not always alike, and the course's walk lost more on the slower one
+// than Embree did (the lesson's "Which core").
 class CoreHold {
   public:
     explicit CoreHold(int worker) {
