@@ -116,19 +116,25 @@ const std::vector<int>& allowed_cores() {
 // The allowed core that worker 0 (the one of a one-thread measurement) is held on: --core.
 int first_core = 0;
 
-// Holds the calling thread on one core while it lives (worker t on the allowed core first_core + t), then
-// lets it run where it could before. A figure and the one it is compared with are measured on the same core:
+// The core worker t is held on: the allowed core first_core + t, counting round; -1 when none is known.
+int core_of_worker(int worker) {
+    const std::vector<int>& cores = allowed_cores();
+    return cores.empty() ? -1 : cores[std::size_t(first_core + worker) % cores.size()];
+}
+
+// Holds the calling thread on one core while it lives (worker t on core_of_worker(t)), then lets it run
+// where it could before. A figure and the one it is compared with are measured on the same core:
 // the two cores of a virtual machine are not always alike, and the course's walk lost more on the slower one
 // than Embree did (the lesson's "Which core").
 class CoreHold {
   public:
     explicit CoreHold(int worker) {
-        const std::vector<int>& cores = allowed_cores();
-        held_ = !cores.empty() && sched_getaffinity(0, sizeof before_, &before_) == 0;
+        const int core = core_of_worker(worker);
+        held_ = core >= 0 && sched_getaffinity(0, sizeof before_, &before_) == 0;
         if (!held_) return;
         cpu_set_t one;
         CPU_ZERO(&one);
-        CPU_SET(cores[std::size_t(first_core + worker) % cores.size()], &one);
+        CPU_SET(core, &one);
         held_ = sched_setaffinity(0, sizeof one, &one) == 0;
     }
     ~CoreHold() {
@@ -299,7 +305,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
         "The course compiled for %s. Every figure of a row measured on the same cores: one thread on core %d, "
         "two threads on it and the next.\n\n",
         embree_version(), camera_rays.size(), ray_count, ray_count, repeats, kShortestRunSeconds, kCompiledFor,
-        allowed_cores().empty() ? -1 : allowed_cores()[std::size_t(first_core) % allowed_cores().size()]);
+        core_of_worker(0));
     std::printf("| triangles | rays | threads |");
     for (const char* name : kEngineNames) std::printf(" %s |", name);
     std::printf(" %s | course / Embree | course / Embree, thread CPU time |\n"
