@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # interrupt.sh EXECUTABLE PFM_CHECK SLOW_EXECUTABLE: SIGINT and SIGTERM during a run.
-#  1. One SIGINT during the render: it stops within a second, writes out.partial.png, .pfm and .film
+#  1. One SIGINT during the render: it stops at once (within 2 s, or ten start-ups), writes out.partial.png, .pfm and .film
 #     (finite, with the samples it has, said in the summary), leaves the earlier out.png and out.pfm as they
 #     were, exits 130. SIGTERM does the same and exits 143.
 #  2. A render whose every sample is slow (SLOW_EXECUTABLE, chapter 02 testing each of 300,000 triangles for
@@ -8,7 +8,7 @@
 #     interrupt is looked for before every sample, not after a tile's pass (256 samples, a second or more). Interrupted in its first pass,
 #     its summary says which pixels have no sample.
 #  3. A second signal while the partial image is being written (SIGINT, then SIGTERM) exits at once (within
-#     0.5 s of what a SIGKILL at that moment takes), with the status of the second, and leaves no file at all:
+#     0.5 s, or ten start-ups, of what a SIGKILL at that moment takes), with the status of the second, and leaves no file at all:
 #     no partial image, no staging file.
 #  4. One SIGINT while the complete image is being written: the files are finished and renamed into place,
 #     the run says so and exits 130.
@@ -22,8 +22,11 @@ exe=$1
 pfm_check=$2
 slow_exe=$3
 
-now() { date +%s.%N; }
-seconds_between() { echo "$1 $2" | awk '{printf "%.3f", $2 - $1}'; }
+# Every time bound below is ten times or more of a floor measured in this run (lib.sh: start_up_seconds, the
+# slowest of three starts of the executable), so that a loaded machine or a sanitizer build cannot fail it.
+start_up=$(start_up_seconds "$exe") || exit 1
+slow_start_up=$(start_up_seconds "$slow_exe") || exit 1
+echo "start-up (--help, the slowest of three): $start_up s, and $slow_start_up s for the slow executable"
 staging_files() { ls -a | grep -E '\.staging$'; }
 no_staging_files() {
     local left
@@ -78,7 +81,7 @@ for signal in INT TERM; do
         signal_and_wait "$pid" $signal
         sampled_before_signal && break
     done
-    expect_stop "one SIG$signal, stopped and saved" "$expected_status" 1.0
+    expect_stop "one SIG$signal, stopped and saved" "$expected_status" "$(at_least_ten_times "$start_up" 2.0)"
     [ -f out.partial.png ] || fail "SIG$signal: no out.partial.png"
     [ -f out.partial.pfm ] || fail "SIG$signal: no out.partial.pfm"
     [ -f out.partial.film ] || fail "SIG$signal: no out.partial.film"
@@ -104,7 +107,7 @@ cat > slow.json <<'JSON'
  "shapes": [{"type": "mesh", "file": "grid.obj", "material": "w"}]}
 JSON
 # What one sample costs in this build (4 ms in a release build, far more under the sanitizers), from a render
-# of two samples of one pixel: the run must stop within 0.5 s (writing the partial image and exiting) and 8
+# of two samples of one pixel: the run must stop within 0.5 s or ten start-ups (writing the partial image and exiting) and 8
 # samples' time, where waiting for a tile's pass to end would take 256 samples' time.
 # The signal is sent once the render has surely begun: after twice the whole calibration run (loading the
 # mesh, under the sanitizers, takes seconds, and a signal during the loading is answered when it ends).
@@ -113,7 +116,7 @@ started=$(now)
     fail "slow samples: the calibration run failed: $(cat one.txt)"
 calibration=$(seconds_between "$started" "$(now)")
 rate=$(grep -o -E '[0-9.e+-]+ samples/s' one.txt | awk '{print $1}')
-limit=$(awk -v r="$rate" 'BEGIN { printf "%.3f", 0.5 + 8 / r }')
+limit=$(awk -v r="$rate" -v s="$(at_least_ten_times "$slow_start_up" 0.5)" 'BEGIN { printf "%.3f", s + 8 / r }')
 echo "slow samples: $rate samples/s on one thread; the interrupt must be answered within $limit s"
 rm -f one.png one.pfm one.txt
 # Under AddressSanitizer, LeakSanitizer scans the whole heap when the process exits: 0.65 s for this mesh in the
@@ -157,7 +160,7 @@ interrupt_into_writing() {
 }
 # "At once" is measured against the kernel's own floor: the time a SIGKILL at the same moment takes to end the
 # process (unmapping its 1.3 GB; about 0.2 s on an idle machine, seconds on a loaded one). The run may add at
-# most 0.5 s to it.
+# most 0.5 s, or ten start-ups, to it.
 if interrupt_into_writing; then
     signal_and_wait "$pid" KILL
     kill_floor=$stop
@@ -174,7 +177,8 @@ for second in INT TERM; do
     fi
     kill -0 "$pid" 2> /dev/null || fail "second SIG$second: the run ended before the second signal"
     signal_and_wait "$pid" $second
-    expect_stop "SIGINT, then SIG$second while writing" "$expected_status" "$(awk -v f="$kill_floor" 'BEGIN { printf "%.3f", f + 0.5 }')"
+    expect_stop "SIGINT, then SIG$second while writing" "$expected_status" \
+        "$(awk -v f="$kill_floor" -v s="$(at_least_ten_times "$start_up" 0.5)" 'BEGIN { printf "%.3f", f + s }')"
     files=$(ls -a | grep -v -E '^(\.|\.\.|stdout|stderr)$')
     [ -z "$files" ] || fail "files left after the second signal (SIG$second): $files"
 done

@@ -45,6 +45,23 @@ expect_bad_input() {
     [ "$before" = "$after" ] || fail "$what: files changed: $(diff <(echo "$before") <(echo "$after") | tr '\n' ' ')"
 }
 
+# Time bounds. A script may bound a time only by ten times or more of a floor measured in the same run:
+# start_up_seconds EXE prints the slowest of three starts of EXE that print the help and exit (loading the
+# libraries and, under the sanitizers, mapping their shadow memory), which a loaded machine slows as much as
+# the run under test; at_least_ten_times FLOOR MINIMUM prints max(10 × FLOOR, MINIMUM).
+now() { date +%s.%N; }
+seconds_between() { echo "$1 $2" | awk '{printf "%.3f", $2 - $1}'; }
+start_up_seconds() {
+    local slowest=0 started _
+    for _ in 1 2 3; do
+        started=$(now)
+        "$1" --help > /dev/null || { echo "start_up_seconds: $1 --help failed" >&2; return 1; }
+        slowest=$(echo "$(seconds_between "$started" "$(now)") $slowest" | awk '{ printf "%.3f", ($1 > $2 ? $1 : $2) }')
+    done
+    echo "$slowest"
+}
+at_least_ten_times() { awk -v f="$1" -v m="$2" 'BEGIN { b = 10 * f; printf "%.3f", (b > m ? b : m) }'; }
+
 finish() {
     if [ "$failures" -gt 0 ]; then
         echo "$failures failure(s)" >&2
