@@ -21,13 +21,14 @@ def figures():
     for i, (v, offset) in enumerate(zip(vertices[1:], ((0, -0.08), (0.08, 0), (0.06, -0.07))), start=1):
         ax.plot(*v, "o", color="black", ms=5)
         label(ax, (v[0] + offset[0], v[1] + offset[1]), f"x{'₁₂₃'[i - 1]}", fontsize=10)
-    text = ("L(x₁ → x₀) = Lₑ(x₁) + f(x₁) L(x₂ → x₁) cos θ₁ / p(ω₁)\n"
-            "L(x₂ → x₁) = Lₑ(x₂) + f(x₂) L(x₃ → x₂) cos θ₂ / p(ω₂)\n"
-            "L(x₃ → x₂) = Lₑ(x₃)          the path meets the light\n\n"
+    text = ("L(x₁→x₀) = Lₑ(x₁) + f(x₁) L(x₂→x₁) cos θ₁ / p(ω₁)\n"
+            "L(x₂→x₁) = Lₑ(x₂) + f(x₂) L(x₃→x₂) cos θ₂ / p(ω₂)\n"
+            "L(x₃→x₂) = Lₑ(x₃)     (the path meets the light)\n\n"
             "trace(ray, depth):\n"
             "    hit = nearest(ray);  if none: return 0\n"
             "    ω, f, p = sample(hit)\n"
-            "    return Lₑ(hit) + f · trace(ray(hit, ω), depth + 1) · cos θ / p")
+            "    return Lₑ(hit)\n"
+            "         + f · trace(ray(hit, ω), depth + 1) · cos θ / p")
     label(ax, (1.12, 0.5), text, ha="left", fontsize=8, family="DejaVu Sans Mono")
     label(ax, (0.5, -0.12), "one sampled direction per bounce: the path", color=QUIET, fontsize=9)
     ax.set_xlim(-0.6, 3.6)

@@ -43,7 +43,7 @@ def snell_panel(ax):
     arrow(ax, (0, 0), (math.sin(theta_t), -math.cos(theta_t)), color=RAY, width=0.5 + 2.5 * (1 - r))
     label(ax, (-0.62, 0.95), f"θᵢ = {math.degrees(theta_i):.0f}°", fontsize=9)
     label(ax, (0.9, 0.85), f"R = {r:.3f}", color=LIGHT, fontsize=9)
-    label(ax, (0.72, -0.75), f"T = {1 - r:.3f}\nθₜ = {math.degrees(theta_t):.1f}°", color=RAY, fontsize=9)
+    label(ax, (0.95, -0.55), f"T = {1 - r:.3f}\nθₜ = {math.degrees(theta_t):.1f}°", color=RAY, fontsize=9)
     label(ax, (-0.95, 0.15), "air, η = 1", fontsize=8, color=QUIET)
     label(ax, (-0.95, -0.15), "glass, η = 1.5", fontsize=8, color=QUIET)
     label(ax, (0, -1.3), "sin θₜ = sin θᵢ / η", fontsize=9)
