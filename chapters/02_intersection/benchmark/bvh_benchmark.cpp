@@ -117,7 +117,7 @@ int core_of_worker(int worker) {
 // Holds the calling thread on one core while it lives (worker t on core_of_worker(t)), then lets it run
 // where it could before. A figure and the one it is compared with are measured on the same core:
 // the two cores of a virtual machine are not always alike, and the course's walk lost more on the slower one
-// than Embree did (the lesson's "Which core").
+// than Embree did (benchmark/README.md's "Which core").
 class CoreHold {
   public:
     explicit CoreHold(int worker) {
