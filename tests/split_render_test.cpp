@@ -134,6 +134,12 @@ TEST_CASE("split_range cuts a range into contiguous parts differing by at most o
     CHECK_THROWS_AS(parse_sample_range("0:8", 7), InputError);
     CHECK_THROWS_AS(parse_sample_range("-1:2", 7), InputError);
     CHECK_THROWS_AS(parse_sample_range("1:2x", 7), InputError);
+    // Read as strictly as every other flag's whole numbers: no sign, no leading 0.
+    CHECK(parse_sample_range("0:4", 7) == SampleRange{0, 4});
+    for (const char* text : {"-0:4", "+0:4", "00:4", "0:04", "0: 4", " 0:4"}) {
+        INFO(text);
+        CHECK_THROWS_AS(parse_sample_range(text, 7), InputError);
+    }
 }
 
 TEST_CASE("The render loop's pieces, added, are the whole render bit for bit", "[split]") {

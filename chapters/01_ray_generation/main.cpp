@@ -7,7 +7,7 @@
 #include "edge_coverage.hpp"
 #include "ray_generation_render.hpp"
 #include "rt/app.hpp"
-#include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
@@ -21,8 +21,9 @@ int main(int argc, char** argv) {
         app.add_option("--pixel-sampler", sampler_name, "Where samples fall in a pixel: center|uniform|stratified")
             ->check(CLI::IsMember({"center", "uniform", "stratified"}));
         app.add_option("--edge-tilt", tilt_degrees, "Tilt of the edge from the vertical, degrees");
-        app.add_flag("--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
-        app.add_option("--csv", csv, "With --aa-study: also write the table as CSV");
+        CLI::Option* study_flag =
+            app.add_flag("--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
+        app.add_option("--csv", csv, "With --aa-study: also write the table as CSV")->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const PixelSampler sampler = pixel_sampler_from_string(sampler_name);
@@ -37,10 +38,7 @@ int main(int argc, char** argv) {
             }
             return run;
         }
-        if (!csv.empty()) {
-            std::ofstream probe(csv, std::ios::app);
-            if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
-        }
+        if (!csv.empty()) check_writable("--csv", csv);
         const auto rows = antialiasing_study(camera, edge, settings, {1, 4, 16, 64, 256});
         std::printf("anti-aliasing on a straight edge, %dx%d, %d threads: RMSE of pixel coverage over the edge\n",
                     settings.width, settings.height, settings.threads);

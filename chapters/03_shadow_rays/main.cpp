@@ -13,6 +13,7 @@
 #include "ray_offset.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 #include "scene_scale.hpp"
 #include "shadow_render.hpp"
 
@@ -66,17 +67,19 @@ int main(int argc, char** argv) {
                               "ch03_default.json",
                               EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect}};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--offset", offset_name, "How a shadow ray leaves its surface: none|epsilon|robust")
-            ->check(CLI::IsMember({"none", "epsilon", "robust"}));
-        app.add_option("--epsilon", epsilon, "The fixed distance of --offset epsilon (default 1e-4)");
+        CLI::Option* offset_flag =
+            app.add_option("--offset", offset_name, "How a shadow ray leaves its surface: none|epsilon|robust")
+                ->check(CLI::IsMember({"none", "epsilon", "robust"}));
         app.add_option(
             "--scale", scale,
             "Multiply every length of the scene by this, in [1e-12, 1e12] (intensities by its square)");
-        app.add_flag("--offset-study", study,
-                     "Count self-hits, acne and leak pixels and time each offset at each of --study-scales");
+        CLI::Option* study_flag = app.add_flag(
+            "--offset-study", study, "Count self-hits, acne and leak pixels and time each offset at each of --study-scales");
+        app.add_option("--epsilon", epsilon, "The fixed distance of --offset epsilon and of the study's (default 1e-4)")
+            ->check(only_with({{offset_flag, {"epsilon"}}, {study_flag}}));
         app.add_option("--study-scales", study_scales,
-                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)");
-        app.add_option("--csv", csv, "With --offset-study: also write the table as CSV");
+                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)")->check(only_with({{study_flag}}));
+        app.add_option("--csv", csv, "With --offset-study: also write the table as CSV")->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (!(epsilon > 0 && std::isfinite(epsilon))) {
@@ -85,10 +88,7 @@ int main(int argc, char** argv) {
         const RayOffset offset{offset_method_from_string(offset_name), epsilon};
         const RenderSettings& settings = context.settings;
         if (study) {
-            if (!csv.empty()) {
-                std::ofstream probe(csv, std::ios::app);
-                if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
-            }
+            if (!csv.empty()) check_writable("--csv", csv);
             std::vector<Real> scales;
             for (Real s : study_scales) {
                 if (!(s * scale >= Real(1e-12) && s * scale <= Real(1e12))) {

@@ -13,6 +13,7 @@
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
 
 namespace {
@@ -46,11 +47,11 @@ int main(int argc, char** argv) {
                        "Which lights a hit samples: every (N samples each), power (N lights picked with "
                        "probability proportional to power) or auto (every light up to 16 lights, else power)")
             ->check(CLI::IsMember({"auto", "every", "power"}));
-        app.add_flag(
+        CLI::Option* study_flag = app.add_flag(
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
             "1, 4, 16, 64, 256 shadow samples per pixel, for both light samplers");
-        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV");
+        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV")->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
         options.light_sampler = light_sampler_from_string(light_sampler);
         options.light_selection = light_selection_from_string(light_selection);
         if (study) {
+            if (!csv.empty()) check_writable("--csv", csv);
             // The study needs an exact image: the given scene if it is a plane under a quad light, else the
             // course's analytic scene (at the image size of the run).
             const Scene scene =
@@ -70,10 +72,6 @@ int main(int argc, char** argv) {
             const auto analytic = find_plane_under_quad(scene, materials);
             if (!analytic)
                 throw InputError(scene.file + ": --shadow-study: not a plane under one quad light");
-            if (!csv.empty()) {
-                std::ofstream probe(csv, std::ios::app);
-                if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
-            }
             const World world(scene);
             const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
             const Image exact = exact_image(*analytic, world, camera);

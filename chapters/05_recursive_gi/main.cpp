@@ -5,7 +5,6 @@
 // ρ).
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "rt/app.hpp"
 #include "rt/assets.hpp"
 #include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 #include "rt/scene_loader.hpp"
 
 int main(int argc, char** argv) {
@@ -39,7 +39,11 @@ int main(int argc, char** argv) {
                   Effect::kGlossy, Effect::kIndirect}};
     auto flags = [&](CLI::App& app) {
         cli = &app;
-        app.add_option("--termination", rule_name,
+        CLI::Option* study_flag = app.add_flag(
+            "--depth-study", study,
+            "In the furnace (default ch05_furnace.json): mean, bias, RMSE and time for the depth rule "
+            "at each of --study-depths, Russian roulette and the throughput rule");
+        CLI::Option* rule_flag = app.add_option("--termination", rule_name,
                        "When a path stops: depth (after --max-depth bounces), throughput (below "
                        "--min-throughput) or roulette (Russian roulette, unbiased)")
             ->check(CLI::IsMember({"depth", "throughput", "roulette"}));
@@ -50,20 +54,16 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(0, 1024));
         app.add_option("--min-throughput", min_throughput,
                        "The throughput rule's threshold on max(throughput) (default 0.01)")
-            ->check(CLI::Range(0.0, 1.0));
+            ->check(CLI::Range(0.0, 1.0))->check(only_with({{rule_flag, {"throughput"}}}));
         app.add_option("--roulette-start", roulette_start,
                        "Bounces before Russian roulette starts (default 3)")
-            ->check(CLI::Range(0, 1024));
-        app.add_flag(
-            "--depth-study", study,
-            "In the furnace (default ch05_furnace.json): mean, bias, RMSE and time for the depth rule "
-            "at each of --study-depths, Russian roulette and the throughput rule");
+            ->check(CLI::Range(0, 1024))->check(only_with({{rule_flag, {"roulette"}}, {study_flag}}));
         app.add_option("--study-depths", study_depths, "With --depth-study: the depths (default 1 2 4 8 16)")
-            ->check(CLI::Range(0, 1024));
+            ->check(CLI::Range(0, 1024))->check(only_with({{study_flag}}));
         app.add_option("--study-throughputs", study_throughputs,
                        "With --depth-study: the throughput rule's thresholds (default 0.01 0.1)")
-            ->check(CLI::Range(0.0, 1.0));
-        app.add_option("--csv", csv, "With --depth-study: also write the table as CSV");
+            ->check(CLI::Range(0.0, 1.0))->check(only_with({{study_flag}}));
+        app.add_option("--csv", csv, "With --depth-study: also write the table as CSV")->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         TerminationSettings termination;
@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
         direct.simulated = context.simulated;
 
         if (study) {
+            if (!csv.empty()) check_writable("--csv", csv);
             std::optional<Scene> loaded;
             {
                 const World probe(context.scene);
@@ -91,10 +92,6 @@ int main(int argc, char** argv) {
             const auto furnace = find_furnace(scene, world);
             if (!furnace)
                 throw InputError(scene.file + ": --depth-study: not a furnace (a closed emissive box)");
-            if (!csv.empty()) {
-                std::ofstream probe(csv, std::ios::app);
-                if (!probe) throw InputError("--csv: " + csv + ": cannot be written");
-            }
             std::vector<TerminationSettings> rules;
             for (int d : study_depths)
                 rules.push_back({Termination::kMaxDepth, d, min_throughput, roulette_start});

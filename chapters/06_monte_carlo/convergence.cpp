@@ -78,7 +78,7 @@ Reference converged_reference(const RenderScene& prepared, const PathOptions& op
             return ref;
         }
     }
-    check_writable(ref.file);
+    for (const fs::path& file : {half, ref.file}) check_writable("--cache", file);  // before rendering
     settings.samples_per_pixel = std::max(1, spp / 2);
     settings.seed = kReferenceSeedA;
     const RenderResult a = render_with(prepared, options, SamplingStrategy::kMis, camera, settings);

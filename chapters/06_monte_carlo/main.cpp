@@ -4,7 +4,6 @@
 // (CSV, log-log plots, efficiency table) against a converged reference cached as PFM.
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include "01_ray_generation/camera.hpp"
@@ -13,7 +12,6 @@
 #include "irradiance_study.hpp"
 #include "path_tracer.hpp"
 #include "rt/app.hpp"
-#include "rt/errors.hpp"
 #include "rt/image_io.hpp"
 
 namespace {
@@ -46,8 +44,7 @@ int main(int argc, char** argv) {
     std::string csv = "ch06_convergence.csv";
     const ChapterInfo chapter{"ch06_monte_carlo",
                               "Chapter 06: Monte Carlo with importance sampling: an iterative path tracer, "
-                              "five sampling strategies, "
-                              "MIS",
+                              "five sampling strategies, MIS",
                               "ch06_default.json",
                               EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
                                         Effect::kReflection, Effect::kGlossy, Effect::kIndirect}};
@@ -64,22 +61,24 @@ int main(int argc, char** argv) {
         app.add_option("--max-depth", max_depth,
                        "Bounces at most (default: 8 with depth, else chapter 05's safety cap of 64)")
             ->check(CLI::Range(1, 1000));
-        app.add_flag(
+        CLI::Option* irradiance_flag = app.add_flag(
             "--irradiance", irradiance,
             "Estimate E = integral of L cos theta over the hemisphere with each strategy against its "
             "closed form (a quad, a sphere, the sky), independent, stratified and Sobol points");
         app.add_option("--irradiance-runs", irradiance_runs, "With --irradiance: runs per row")
-            ->check(CLI::Range(2, 100000));
-        app.add_flag("--converge", converge,
-                     "RMSE against spp 1..--max-spp and time for every strategy, against a cached converged "
-                     "reference: CSV, log-log plots (gnuplot) and the efficiency table");
+            ->check(CLI::Range(2, 100000))->check(only_with({{irradiance_flag}}));
+        CLI::Option* converge_flag =
+            app.add_flag("--converge", converge,
+                         "RMSE against spp 1..--max-spp and time for every strategy, against a cached converged "
+                         "reference: CSV, log-log plots (gnuplot) and the efficiency table");
         app.add_option("--max-spp", max_spp, "With --converge: the largest spp (a power of 2)")
-            ->check(CLI::Range(1, 1 << 16));
+            ->check(CLI::Range(1, 1 << 16))->check(power_of_two())->check(only_with({{converge_flag}}));
         app.add_option("--reference-spp", reference_spp, "With --converge: spp of the reference")
-            ->check(CLI::Range(2, 1 << 20));
-        app.add_option("--cache", cache, "With --converge: folder of the cached reference PFM");
+            ->check(CLI::Range(2, 1 << 20))->check(only_with({{converge_flag}}));
+        app.add_option("--cache", cache, "With --converge: folder of the cached reference PFM")->check(only_with({{converge_flag}}));
         app.add_option("--csv", csv,
-                       "With --converge: the CSV file; the plots go beside it (_spp.png, _time.png)");
+                       "With --converge: the CSV file; the plots go beside it (_spp.png, _time.png)")
+            ->check(only_with({{converge_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (irradiance) {
@@ -102,8 +101,7 @@ int main(int argc, char** argv) {
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
 
         if (converge) {
-            if (!std::filesystem::is_directory(cache))
-                throw InputError("--cache: " + cache + ": not a folder");
+            check_writable("--csv", csv);
             std::printf("converged reference: %d spp (MIS), %dx%d ...\n", reference_spp, settings.width,
                         settings.height);
             std::fflush(stdout);

@@ -29,6 +29,7 @@ Image glass_depth_reference(const Scene& scene, const RenderSettings& settings, 
             return image;
         }
     }
+    check_writable("--cache", file);
     RenderSettings s = settings;
     s.samples_per_pixel = spp;
     s.seed = settings.seed + 1000;  // independent of the renders it is compared with

@@ -3,7 +3,6 @@
 // Schlick's approximation against the exact form (error and time); `--depth-study` measures the depth glass
 // needs (RMSE against a converged reference and time for each maximum depth); `--max-depth` renders with one.
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,7 +12,7 @@
 #include "refraction_materials.hpp"
 #include "rt/app.hpp"
 #include "rt/effects.hpp"
-#include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 
 namespace {
 
@@ -82,18 +81,18 @@ int main(int argc, char** argv) {
                "--sampler", sampler,
                "Where a sample's numbers come from: independent|stratified|sobol (Owen-scrambled Sobol)")
             ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
-        app.add_flag("--fresnel-study", fresnel,
+        CLI::Option* fresnel_flag = app.add_flag("--fresnel-study", fresnel,
                      "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
+        CLI::Option* depth_flag = app.add_flag(
+            "--depth-study", depth, "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
         app.add_option("--csv", csv,
                        "With --fresnel-study: write R(theta) both ways to this CSV file; with --depth-study: "
-                       "its table");
-        app.add_flag("--depth-study", depth,
-                     "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
+                       "its table")->check(only_with({{fresnel_flag}, {depth_flag}}));
         app.add_option("--depths", depths, "With --depth-study: the maximum depths")
-            ->check(CLI::Range(1, 1000));
+            ->check(CLI::Range(1, 1000))->check(only_with({{depth_flag}}));
         app.add_option("--reference-spp", reference_spp, "With --depth-study: spp of the reference")
-            ->check(CLI::Range(1, 1 << 20));
-        app.add_option("--cache", cache, "With --depth-study: folder of the cached reference PFM");
+            ->check(CLI::Range(1, 1 << 20))->check(only_with({{depth_flag}}));
+        app.add_option("--cache", cache, "With --depth-study: folder of the cached reference PFM")->check(only_with({{depth_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const Scene& scene = context.scene;
@@ -101,15 +100,13 @@ int main(int argc, char** argv) {
             print_fresnel_study(scene_ior(scene), csv);
             return std::nullopt;
         }
-        if (!csv.empty() && !depth) throw InputError("--csv: only with --fresnel-study or --depth-study");
         PathOptions options;
         options.simulated = context.simulated;
         options.strategy = sampling_strategy_from_string(sampling);
         options.sampler = point_set_from_string(sampler);
         if (max_depth) options.termination = {Termination::kMaxDepth, *max_depth};
         if (depth) {
-            if (!std::filesystem::is_directory(cache))
-                throw InputError("--cache: " + cache + ": not a folder");
+            if (!csv.empty()) check_writable("--csv", csv);
             bool cached = false;
             std::printf("reference: %d spp, Russian roulette, %dx%d ...\n", reference_spp,
                         context.settings.width, context.settings.height);

@@ -5,15 +5,11 @@
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
-#include "rt/split_render.hpp"
 
 namespace rt {
 
 CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
                                const CombinedOptions& options) {
-    require_whole_render(settings,
-                         "the combined tracer adds light paths splatted into any pixel: it renders whole (no "
-                         "--samples, --resume or mpirun with several ranks)");
     // One World and one set of lights; a material table for each direction light is carried in.
     const RenderScene prepared(scene, simulated, refraction_materials(), Transport::kRadiance);
     const MaterialTable importance(scene, simulated, refraction_materials(), Transport::kImportance);

@@ -145,6 +145,7 @@ Reference glass_reference(const StudyScene& s, const StudyOptions& o) {
                      a.height() == o.size;
     }
     if (!ref.cached) {
+        for (const fs::path& file : {half, ref.file}) check_writable("--cache", file);
         const PathTracer tracer(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
         RenderSettings settings = study_settings(o, o.glass_reference_spp / 2);
         settings.seed = 1001;
@@ -264,6 +265,7 @@ double time_to_rmse(const std::vector<double>& seconds, const std::vector<double
 void run_forward_study(const StudyOptions& options) {
     if (!std::filesystem::is_directory(options.cache))
         throw InputError("--cache: " + options.cache + ": not a folder");
+    if (!options.csv.empty()) check_writable("--csv", options.csv);  // before any render
     const StudyScene cornell(load_scene(scene_path("ch06_default.json")), options.size, options.size);
     fractions(cornell, options);
     time_to_same_rmse(cornell, options);

@@ -64,67 +64,63 @@ int main(int argc, char** argv) {
         "camera",
         "ch08_default.json",
         EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kReflection,
-                  Effect::kGlossy, Effect::kIndirect, Effect::kRefraction}};
+                  Effect::kGlossy, Effect::kIndirect, Effect::kRefraction},
+        {},
+        [&]() -> std::string {
+            if (tracer_name == "forward")
+                return "forward tracing splats each light path into whichever pixels it reaches, so the image has "
+                       "no samples per pixel to split: it renders whole; --tracer reverse can be split";
+            return tracer_name == "combined" ? "the combined tracer adds light paths splatted into any pixel: it "
+                                               "renders whole; --tracer reverse can be split"
+                                             : "";
+        }};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--tracer", tracer_name,
+        CLI::Option* tracer_flag = app.add_option("--tracer", tracer_name,
                        "forward (light paths), reverse (chapter 07's renderer for the effects simulated) or "
                        "combined (chapter 06's paths, and light paths for the caustics the camera sees)")
             ->check(CLI::IsMember({"forward", "reverse", "combined"}));
-        CLI::Option* light_paths_flag =
-            app.add_option("--light-paths", light_paths,
-                           "With --tracer combined: light paths for the caustics per camera sample")
-                ->check(CLI::Range(0.0, 1024.0));
-        CLI::Option* caustic_bounces_flag =
-            app.add_option("--caustic-bounces", caustic_bounces,
-                           "With --tracer combined: light paths carry the paths that meet glass or a mirror "
-                           "after at most this many diffuse bounces from the camera (E D{1..K} S ...)")
-                ->check(CLI::Range(1, kSafetyDepthCap));
-        CLI::Option* sampler_flag =
-            app.add_option("--sampler", sampler,
-                           "With --tracer combined: where a camera sample's numbers come from: "
-                           "independent|stratified|sobol")
-                ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
-        app.add_option("--variant", variant,
+        const CLI::Validator combined = only_with({{tracer_flag, {"combined"}}});
+        app.add_option("--light-paths", light_paths,
+                       "With --tracer combined: light paths for the caustics per camera sample")
+            ->check(CLI::Range(0.0, 1024.0))->check(combined);
+        app.add_option("--caustic-bounces", caustic_bounces,
+                       "With --tracer combined: light paths carry the paths that meet glass or a mirror "
+                       "after at most this many diffuse bounces from the camera (E D{1..K} S ...)")
+            ->check(CLI::Range(1, kSafetyDepthCap))->check(combined);
+        app.add_option("--sampler", sampler,
+                       "With --tracer combined: where a camera sample's numbers come from: "
+                       "independent|stratified|sobol")
+            ->check(CLI::IsMember({"independent", "stratified", "sobol"}))->check(combined);
+        CLI::Option* variant_flag = app.add_option("--variant", variant,
                        "How forward paths reach the camera: connect (every vertex to the pinhole) or "
                        "aperture (through a lens of radius --aperture)")
             ->check(CLI::IsMember({"connect", "aperture"}));
-        CLI::Option* aperture_flag =
-            app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
-                ->check(CLI::PositiveNumber);
-        app.parse_complete_callback([aperture_flag, light_paths_flag, caustic_bounces_flag, sampler_flag, &variant,
-                                     &tracer_name, &caustics_only] {
-            if (aperture_flag->count() > 0 && variant != "aperture") {
-                throw CLI::ValidationError("--aperture", "is used only with --variant aperture, got --variant " +
-                                                             variant);
-            }
-            for (CLI::Option* flag : {light_paths_flag, caustic_bounces_flag, sampler_flag}) {
-                if (flag->count() > 0 && tracer_name != "combined")
-                    throw CLI::ValidationError(flag->get_name(), "is used only with --tracer combined");
-            }
-            if (caustics_only && variant == "aperture")
-                throw CLI::ValidationError("--caustics-only", "is traced with --variant connect");
-        });
+        app.add_option("--aperture", aperture, "With --variant aperture: the lens radius, scene units")
+            ->check(CLI::PositiveNumber)->check(only_with({{variant_flag, {"aperture"}}}));
         app.add_flag("--caustics-only", caustics_only,
-                     "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)");
-        app.add_flag(
+                     "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)")
+            ->check(only_with({{variant_flag, {"connect"}}}));
+        CLI::Option* study_flag = app.add_flag(
             "--forward-study", run_study,
             "Measure on chapter 06's Cornell box the fraction of light paths that contribute and the "
             "time to chapter 06's RMSE; and where forward tracing wins and loses (ch08_default.json, "
             "ch08_mirror.json)");
         app.add_option("--study-size", study.size, "With --forward-study: image side in pixels")
-            ->check(CLI::Range(8, 1024));
+            ->check(CLI::Range(8, 1024))->check(only_with({{study_flag}}));
         app.add_option("--study-paths", study.fraction_paths,
                        "With --forward-study: light paths per fraction")
-            ->check(CLI::Range(1000, 1 << 30));
+            ->check(CLI::Range(1000, 1 << 30))->check(only_with({{study_flag}}));
         app.add_option("--reference-spp", study.reference_spp,
                        "With --forward-study: spp of chapter 06's converged reference")
-            ->check(CLI::Range(2, 1 << 20));
+            ->check(CLI::Range(2, 1 << 20))->check(only_with({{study_flag}}));
         app.add_option("--glass-reference-spp", study.glass_reference_spp,
                        "With --forward-study: spp of the mirror and glass scenes' references")
-            ->check(CLI::Range(2, 1 << 20));
+            ->check(CLI::Range(2, 1 << 20))->check(only_with({{study_flag}}));
         app.add_option("--cache", study.cache,
-                       "With --forward-study: folder of the converged references (chapter 06's cache files)");
-        app.add_option("--csv", study.csv, "With --forward-study: also write the time-to-RMSE table as CSV");
+                       "With --forward-study: folder of the converged references (chapter 06's cache files)")
+            ->check(only_with({{study_flag}}));
+        app.add_option("--csv", study.csv, "With --forward-study: also write the time-to-RMSE table as CSV")
+            ->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (run_study) {

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "rt/interrupt.hpp"
-#include "rt/split_render.hpp"
 
 namespace rt {
 namespace {
@@ -31,11 +30,6 @@ std::uint64_t chunk_size(int width, int height) {
 
 SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
                                const LightPathFunction& trace) {
-    require_whole_render(
-        settings,
-        "forward tracing splats each light path into whichever pixels it reaches, so the image "
-        "has no samples per pixel to split: it renders whole (no --samples, --resume or "
-        "mpirun with several ranks); --tracer reverse can be split");
     const auto start = std::chrono::steady_clock::now();
     const int threads =
         settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));

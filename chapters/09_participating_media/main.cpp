@@ -70,19 +70,19 @@ int main(int argc, char** argv) {
         app.add_option("--sampling", sampling,
                        "How chapter 06's loop draws directions: uniform|cosine|brdf|light|mis")
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
-        app.add_flag(
+        CLI::Option* walk_flag = app.add_flag(
             "--walk-study", walk_study,
             "Walk lengths and time against the mean free path and the albedo (a sphere of radius 1)");
         app.add_option("--study-paths", study_paths, "With --walk-study: paths per row")
-            ->check(CLI::Range(1, 1 << 24));
-        app.add_flag(
+            ->check(CLI::Range(1, 1 << 24))->check(only_with({{walk_flag}}));
+        CLI::Option* knob_flag = app.add_flag(
             "--knob-study", knob_study,
             "The scene's error (against an uncapped reference) and time for each --caps, roulette on "
             "and off");
         app.add_option("--caps", caps, "With --knob-study: the caps on scattering events")
-            ->check(CLI::Range(1, 1 << 30));
+            ->check(CLI::Range(1, 1 << 30))->check(only_with({{knob_flag}}));
         app.add_option("--reference-spp", reference_spp, "With --knob-study: spp of the reference")
-            ->check(CLI::Range(1, 1 << 20));
+            ->check(CLI::Range(1, 1 << 20))->check(only_with({{knob_flag}}));
         app.add_flag("--free-flight-study", flight_study,
                      "Spectral MIS against the naive per-channel density on a chromatic medium");
     };

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
@@ -15,7 +16,7 @@
 #include "denoiser.hpp"
 #include "feature_buffers.hpp"
 #include "rt/app.hpp"
-#include "rt/errors.hpp"
+#include "rt/image_io.hpp"
 
 namespace {
 
@@ -49,35 +50,42 @@ int main(int argc, char** argv) {
                               "tracer, a joint bilateral and the edge-avoiding a-trous filter, measured",
                               "ch10_default.json",
                               EffectSet::all(),
-                              {".noisy", ".albedo", ".normal"}};
+                              {".noisy", ".albedo", ".normal"},
+                              [&] {
+                                  return denoiser_name == "none" && !study ? "" : "chapter 10 denoises the whole image, "
+                                         "which a piece of it is not: --samples, --resume and several MPI ranks only "
+                                         "with --denoiser none";
+                              }};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--denoiser", denoiser_name,
-                       "none|bilateral|atrous (default atrous: the best measured)")
-            ->check(CLI::IsMember({"none", "bilateral", "atrous"}));
-        app.add_option("--levels", denoise_settings.atrous.levels, "atrous: levels (taps 1, 2, 4, ... apart)")
-            ->check(CLI::Range(1, 12));
-        app.add_option("--sigma-spatial", denoise_settings.bilateral.spatial, "bilateral: sigma_s in pixels")
-            ->check(CLI::Range(0.5, 32.0));
-        app.add_option("--sigma-colour", edges.colour, "Edge stopping on colour, in standard deviations")
-            ->check(CLI::Range(0.0, 1e30));
-        app.add_option("--sigma-normal", edges.normal, "Edge stopping on the normal")
-            ->check(CLI::Range(0.0, 1e30));
-        app.add_option("--sigma-depth", edges.depth, "Edge stopping on depth, a fraction of it")
-            ->check(CLI::Range(0.0, 1e30));
-        app.add_option("--sigma-albedo", edges.albedo, "Edge stopping on the albedo")
-            ->check(CLI::Range(0.0, 1e30));
-        app.add_flag(
+        CLI::Option* study_flag = app.add_flag(
             "--study", study,
             "Measure the denoisers against a converged reference (error, SSIM, time, equal-error spp, "
             "bias, failure regions) instead of rendering an image");
+        CLI::Option* denoiser_flag = app.add_option("--denoiser", denoiser_name,
+                       "none|bilateral|atrous (default atrous: the best measured)")
+            ->check(CLI::IsMember({"none", "bilateral", "atrous"}));
+        // The filters' parameters matter to the filter that takes them, and to the study (it runs both).
+        auto filter = [&](std::vector<std::string> names) { return only_with({{denoiser_flag, names}, {study_flag}}); };
+        app.add_option("--levels", denoise_settings.atrous.levels, "atrous: levels (taps 1, 2, 4, ... apart)")
+            ->check(CLI::Range(1, 12))->check(filter({"atrous"}));
+        app.add_option("--sigma-spatial", denoise_settings.bilateral.spatial, "bilateral: sigma_s in pixels")
+            ->check(CLI::Range(0.5, 32.0))->check(filter({"bilateral"}));
+        for (auto [name, value, help] : {std::tuple{"--sigma-colour", &edges.colour, "on colour, in standard deviations"},
+                                         {"--sigma-normal", &edges.normal, "on the normal"},
+                                         {"--sigma-depth", &edges.depth, "on depth, a fraction of it"},
+                                         {"--sigma-albedo", &edges.albedo, "on the albedo"}}) {
+            app.add_option(name, *value, std::string("Edge stopping ") + help)
+                ->check(CLI::Range(0.0, 1e30))->check(filter({"bilateral", "atrous"}));
+        }
+        const CLI::Validator with_study = only_with({{study_flag}});
         app.add_option("--reference-spp", study_options.reference_spp, "With --study: spp of the reference")
-            ->check(CLI::Range(1, 1 << 20));
-        app.add_option("--cache", study_options.cache, "With --study: folder of the cached reference PFM");
+            ->check(CLI::Range(1, 1 << 20))->check(with_study);
+        app.add_option("--cache", study_options.cache, "With --study: folder of the cached reference PFM")->check(with_study);
         app.add_option("--runs", study_options.runs, "With --study: independent runs for the bias")
-            ->check(CLI::Range(2, 64));
+            ->check(CLI::Range(2, 64))->check(with_study);
         app.add_option("--crops", study_options.crops,
-                       "With --study: write PNG crops of the failure regions into this folder");
-        app.add_flag("--sweeps", study_options.sweeps, "With --study: also sweep the filters' parameters");
+                       "With --study: write PNG crops of the failure regions into this folder")->check(with_study);
+        app.add_flag("--sweeps", study_options.sweeps, "With --study: also sweep the filters' parameters")->check(with_study);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         denoise_settings.bilateral.edges = edges;
@@ -91,24 +99,16 @@ int main(int argc, char** argv) {
         const RenderSettings& settings = context.settings;
         const SampleRange all{0, settings.samples_per_pixel};
         if (settings.resume || (settings.samples && *settings.samples != all)) {
-            if (denoiser != Denoiser::kNone || study) {
-                throw InputError(
-                    "--samples: chapter 10 denoises the whole image, which a piece of it is not: --samples, "
-                    "--resume and several MPI ranks only with --denoiser none");
-            }
             return ChapterRun{
                 render_with(Renderer::kPaths, context.scene, context.simulated, settings, options, media_materials()),
                 {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media; a piece of the render: "
                  "no features, not denoised"},
                 std::nullopt};
         }
-        if (!study && study_options.sweeps) throw InputError("--sweeps: only with --study");
-        if (!study && !study_options.crops.empty()) throw InputError("--crops: only with --study");
         if (study) {
-            if (!std::filesystem::is_directory(study_options.cache))
-                throw InputError("--cache: " + study_options.cache + ": not a folder");
-            if (!study_options.crops.empty() && !std::filesystem::is_directory(study_options.crops))
-                throw InputError("--crops: " + study_options.crops + ": not a folder");
+            // Its outputs are probed before it renders (its cached reference: chapter 07's depth study).
+            if (!study_options.crops.empty())
+                check_writable("--crops", std::filesystem::path(study_options.crops) / "ch10_whole.png");
             run_denoise_study(context.scene, context.settings, options, denoise_settings, study_options);
             return std::nullopt;
         }

@@ -8,7 +8,6 @@
 #include "gpu_render.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
-#include "rt/split_render.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
@@ -17,7 +16,11 @@ int main(int argc, char** argv) {
     const ChapterInfo chapter{"ch11_gpu_shaders",
                               "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
                               "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
-                              "ch07_default.json", EffectSet::all().without({Effect::kMedia})};
+                              "ch07_default.json", EffectSet::all().without({Effect::kMedia}), {}, [] {
+                                  return "the GPU sums each pixel's samples in float, not in the exact sums a piece of "
+                                         "a render needs: it renders whole (no --samples, --resume or mpirun with "
+                                         "several ranks)";
+                              }};
     auto flags = [&](CLI::App& app) {
         app.add_option("--shader", shader, "Which shader traces the paths: compute|fragment")
             ->check(CLI::IsMember({"compute", "fragment"}));
@@ -27,10 +30,6 @@ int main(int argc, char** argv) {
             ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
-        require_whole_render(context.settings,
-                             "the GPU sums each pixel's samples in float, not in the exact sums a piece of a "
-                             "render needs: it renders whole (no --samples, --resume or mpirun with several "
-                             "ranks)");
         try {
             const GlContext gl(egl_platform_from_string(egl));
             const GpuRenderer renderer(gl, context.scene, context.simulated, shader_kind_from_string(shader));

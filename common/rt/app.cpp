@@ -169,6 +169,13 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     } else if (app.get_option("--port")->count() > 0) {
         throw InputError("--port: is used only with --live");
     }
+    const std::string renders_whole = chapter.renders_whole_because ? chapter.renders_whole_because() : "";
+    if (!renders_whole.empty() && (!split.samples.empty() || !split.resume.empty() || mpi.size() > 1)) {
+        const std::string split_by = !split.samples.empty() ? "--samples"
+                                     : !split.resume.empty() ? "--resume"
+                                                              : "mpirun with " + std::to_string(mpi.size()) + " ranks";
+        throw InputError(split_by + ": " + renders_whole);
+    }
 
     const fs::path scene_file =
         options.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(options.scene);
@@ -218,13 +225,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         outputs.insert(outputs.end(), pfms.end() - 2, pfms.end());
     }
     if (live.live) outputs.clear();  // it writes nothing
-    for (const fs::path& path : outputs) {
-        try {
-            check_writable(path);
-        } catch (const InputError& e) {
-            throw InputError(std::string("--out: ") + e.what());
-        }
-    }
+    for (const fs::path& path : outputs) check_writable("--out", path);
     std::optional<Image> reference;
     std::optional<Picture> reference_picture;  // a PNG reference
     if (!options.reference.empty()) {
@@ -279,11 +280,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         if (heat_file.extension() != ".png") throw InputError("--heat: must end in .png, got " + shown(heat_file));
         if (same_file(heat_file, png) || same_file(heat_file, pfm))
             throw InputError("--heat: " + shown(heat_file) + ": is the image this run writes; give another name");
-        try {
-            check_writable(heat_file);
-        } catch (const InputError& e) {
-            throw InputError(std::string("--heat: ") + e.what());
-        }
+        check_writable("--heat", heat_file);
         heat.resize(std::size_t(settings.width) * std::size_t(settings.height));
         settings.heat = heat.data();
     }

@@ -13,9 +13,11 @@
 
 #include "rt/effect_set.hpp"
 #include "rt/image.hpp"
+#include "rt/only_with.hpp"
 #include "rt/output_files.hpp"
 #include "rt/render_loop.hpp"
 #include "rt/scene.hpp"
+#include "rt/strict_flags.hpp"
 
 namespace rt {
 
@@ -39,6 +41,10 @@ struct ChapterInfo {
     // The suffixes of the further PFMs its runs write beside the image (x.SUFFIX.pfm), in the order of
     // ChapterRun::extra_images; probed before the render like the image's own files.
     std::vector<std::string> extra_images = {};
+    // Why its render, with the flags given, cannot be split into pieces (--samples, --resume, several MPI
+    // ranks): asked once the flags are read, and a split is then refused before anything renders. Empty, or
+    // no function: it can be split.
+    std::function<std::string()> renders_whole_because = {};
 };
 
 // What a chapter's render is given: the scene, the settings from it and the flags, and what to simulate.

@@ -8,6 +8,7 @@
 #include "rt/errors.hpp"
 #include "rt/fnv_hash.hpp"
 #include "rt/image_io.hpp"
+#include "rt/memory_limit.hpp"
 #include "rt/staged_file.hpp"
 
 namespace rt {
@@ -140,7 +141,10 @@ Film read_film(const fs::path& path) {
     check_regular_file(path, "a film file");
     std::error_code ec;
     std::ifstream file(path, std::ios::binary);
-    std::vector<unsigned char> bytes(fs::file_size(path, ec));
+    const std::uintmax_t size = fs::file_size(path, ec);
+    // Its bytes, then its sums (as many bytes again), are held at once.
+    if (!ec) check_fits_in_memory(2.0 * double(size), name + ": a film of " + std::to_string(size) + " bytes");
+    std::vector<unsigned char> bytes(ec ? 0 : size);
     if (ec || !file.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size())))
         throw InputError(name + ": cannot be read");
     if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)

@@ -1,23 +1,12 @@
 #include "rt/image.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
-#include <cstdio>
 #include <string>
 
 #include "rt/errors.hpp"
+#include "rt/memory_limit.hpp"
 #include "rt/pixel_sums.hpp"
 
 namespace rt {
-
-namespace {
-std::string gigabytes(double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", bytes / 1e9);
-    return text;
-}
-}  // namespace
 
 void check_image_size(long long width, long long height) {
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
@@ -26,23 +15,8 @@ void check_image_size(long long width, long long height) {
         throw InputError("image size " + size + " is too large: at most " + std::to_string(kMaxImageSide) +
                          " pixels a side");
     }
-    const double needed = double(width) * double(height) * double(sizeof(Color) + sizeof(PixelSum));
-    // Half of this machine's memory, and half of what this process may use (ulimit -v): the tighter is named.
-    const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-    rlimit limit{};
-    const bool limited = getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY;
-    const double process = limited ? double(limit.rlim_cur) : 0;
-    const std::string needs =
-        "image size " + size + " needs " + gigabytes(needed) + " of buffers, more than half of ";
-    if (limited && (!(memory > 0) || process < memory) && needed > process / 2) {
-        throw InputError(needs + "the " + gigabytes(process) + " this process may use (ulimit -v)");
-    }
-    if (memory > 0 && needed > memory / 2) {
-        throw InputError(needs + "this machine's " + gigabytes(memory) + " of memory");
-    }
-    if (limited && needed > process / 2) {
-        throw InputError(needs + "the " + gigabytes(process) + " this process may use (ulimit -v)");
-    }
+    check_fits_in_memory(double(width) * double(height) * double(sizeof(Color) + sizeof(PixelSum)),
+                         "image size " + size);
 }
 
 Image::Image(int width, int height) : width_(width), height_(height) {

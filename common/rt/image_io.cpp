@@ -48,6 +48,14 @@ void check_writable(const fs::path& path) {
     }
 }
 
+void check_writable(const std::string& flag, const fs::path& path) {
+    try {
+        check_writable(path);
+    } catch (const InputError& e) {
+        throw InputError(flag + ": " + e.what());
+    }
+}
+
 // The PNG's bytes, tone-mapped and sRGB-encoded, into `file`; false when a write failed.
 bool encode_png(const Image& image, std::FILE* file) {
     std::vector<std::uint8_t> bytes(image.pixel_count() * 3);

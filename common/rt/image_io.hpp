@@ -34,6 +34,9 @@ Image read_pfm(const std::filesystem::path& path, PfmPixels pixels = PfmPixels::
 // Checks before rendering that `path` can be written: it is not a folder, and its folder exists, is a folder
 // and takes the staging file a write would use (created there and removed). Throws InputError naming why.
 void check_writable(const std::filesystem::path& path);
+// The same for the file a flag names, before any render of the run: the message starts with the flag
+// ("--csv: ...").
+void check_writable(const std::string& flag, const std::filesystem::path& path);
 // Checks that `path` is a file to read: throws InputError "NAME: must be KIND, got no such file" (or what
 // else it is: a folder, a link that cannot be followed).
 void check_regular_file(const std::filesystem::path& path, const std::string& kind);

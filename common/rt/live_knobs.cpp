@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "rt/errors.hpp"
+#include "rt/printable.hpp"
 
 namespace rt {
 namespace {
@@ -75,6 +76,9 @@ void LiveKnobs::read_values() {
 
 void LiveKnobs::set(const std::string& name, const std::string& value) {
     if (!has(name)) throw InputError("no knob " + name);
+    // A command line cannot hold a NUL byte, and CLI11's message would end at it (quoting "mis" for "mis\0x").
+    if (value.find('\0') != std::string::npos)
+        throw InputError("usage: " + name + ": a value holds no NUL byte, got \"" + printable(value, 64) + "\"");
     std::vector<std::string> args = args_;
     args.push_back(name + "=" + value);
     try {

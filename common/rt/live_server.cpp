@@ -13,8 +13,10 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <httplib.h>
 #include <thread>
 #endif
@@ -45,6 +47,59 @@ std::string bind_problem(int port) {
     return problem;
 }
 
+// How long a client may take, as nginx bounds it (client_header_timeout, keepalive_timeout): each read and
+// each write of a connection at most kReadWriteSeconds, and a connection is closed once it has been idle for
+// kIdleSeconds. A client slower than that is dropped; a page's requests take milliseconds.
+constexpr time_t kReadWriteSeconds = 2;
+constexpr time_t kIdleSeconds = 1;
+// Connections served at once (cpp-httplib's default pool has 8 threads, which 8 slow clients fill).
+constexpr int kMaxConnections = 64;
+
+// Each connection on a thread of its own, up to kMaxConnections at once; another waits to be accepted.
+class ConnectionThreads : public httplib::TaskQueue {
+public:
+    void enqueue(std::function<void()> serve) override {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [this] { return running_ < kMaxConnections; });
+        ++running_;
+        std::thread([this, serve = std::move(serve)] {
+            serve();
+            const std::lock_guard<std::mutex> done(mutex_);
+            --running_;
+            changed_.notify_all();
+        }).detach();
+    }
+    // Waits for the connections still served (LiveServer::stop() has cut them short).
+    void shutdown() override {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait(lock, [this] { return running_ == 0; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    int running_ = 0;
+};
+
+// Shuts down every connection this process has accepted on 127.0.0.1:port, so that the thread serving it,
+// waiting for a slow or idle client, returns at once: cpp-httplib keeps the sockets it accepts to itself,
+// and its stop() closes only the one it listens on.
+void shut_connections(int port) {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", ec)) {
+        const int fd = std::atoi(entry.path().filename().c_str());
+        sockaddr_in local{};
+        socklen_t length = sizeof local;
+        int listening = 0;
+        socklen_t size = sizeof listening;
+        if (getsockname(fd, reinterpret_cast<sockaddr*>(&local), &length) != 0 || local.sin_family != AF_INET ||
+            ntohs(local.sin_port) != port)
+            continue;
+        if (getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &listening, &size) == 0 && listening != 0) continue;
+        ::shutdown(fd, SHUT_RDWR);
+    }
+}
+
 }  // namespace
 
 struct LiveServer::Impl {
@@ -55,6 +110,7 @@ struct LiveServer::Impl {
 
     httplib::Server server;
     std::thread listener;
+    std::atomic<bool> listener_done = false;
     int port = 0;
     std::string page;
 
@@ -78,8 +134,19 @@ struct LiveServer::Impl {
             const int yes = 1;
             setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
         });
-        server.set_keep_alive_max_count(1);  // one request a connection: stop() waits for no idle connection
+        server.set_keep_alive_max_count(1);  // one request a connection
+        server.set_keep_alive_timeout(kIdleSeconds);
+        server.set_read_timeout(kReadWriteSeconds);
+        server.set_write_timeout(kReadWriteSeconds);
+        server.new_task_queue = [] { return new ConnectionThreads; };
         server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
+            // One Host, as HTTP/1.1 requires (RFC 9112, 3.2): with two, which one a proxy or a browser
+            // trusted is not known.
+            if (request.get_header_value_count("Host") != 1) {
+                response.status = 400;
+                response.set_content("bad request: one Host header is required\n", "text/plain");
+                return httplib::Server::HandlerResponse::Handled;
+            }
             const std::string origin = request.get_header_value("Origin");
             if (!our_host(request.get_header_value("Host")) ||
                 (!origin.empty() && !(origin.starts_with("http://") && our_host(origin.substr(7))))) {
@@ -115,7 +182,10 @@ struct LiveServer::Impl {
             std::future<std::optional<std::string>> answer = item->answer.get_future();
             {
                 const std::lock_guard<std::mutex> lock(mutex);
-                if (!stopping) pending.push_back(item);
+                if (stopping)
+                    item->answer.set_value(std::string(kStopping));
+                else
+                    pending.push_back(item);
             }
             changed.notify_all();
             // The render answers at the end of its pass; a pass longer than this is answered "busy".
@@ -151,7 +221,13 @@ LiveServer::LiveServer(int port, std::string page) : impl_(std::make_unique<Impl
                              std::to_string(port) + ": " + bind_problem(port));
         impl_->port = port;
     }
-    impl_->listener = std::thread([this] { impl_->server.listen_after_bind(); });
+    impl_->listener = std::thread([this] {
+        impl_->server.listen_after_bind();
+        impl_->listener_done = true;
+    });
+    // stop() stops only a server that runs: wait until it does (or has failed).
+    while (!impl_->server.is_running() && !impl_->listener_done)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
 LiveServer::~LiveServer() {
@@ -197,6 +273,12 @@ void LiveServer::stop() {
         impl_->pending.clear();
     }
     impl_->server.stop();
+    // The listener ends once every connection's thread has: cut them short until it has (one accepted as
+    // the server stopped included).
+    while (!impl_->listener_done) {
+        shut_connections(impl_->port);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     impl_->listener.join();
 }
 

@@ -182,7 +182,8 @@ private:
             {"knobs", knobs},
             {"effects", effects},
             {"message", message_}};
-        server_->publish(std::move(png), state.dump());
+        // A text that is not UTF-8 (a scene's file name may be any bytes) is shown with U+FFFD in its place.
+        server_->publish(std::move(png), state.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     }
 
     // A change from the page: applied, and the render started again; or refused with the reason.

@@ -72,10 +72,4 @@ std::optional<Film> film_of(const SplitPlan& plan, const RenderResult& result, c
     return Film{plan.identity, plan.whole, result.sums};
 }
 
-void require_whole_render(const RenderSettings& settings, const std::string& why) {
-    const SampleRange all{0, settings.samples_per_pixel};
-    if (settings.resume || (settings.samples && *settings.samples != all))
-        throw InputError("--samples: " + why);
-}
-
 }  // namespace rt

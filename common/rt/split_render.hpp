@@ -38,8 +38,4 @@ SplitPlan plan_split(const SplitOptions& options, const FilmIdentity& identity, 
 // needed and the render did not sample pixels through the render loop.
 std::optional<Film> film_of(const SplitPlan& plan, const RenderResult& result, const MpiSession& mpi);
 
-// For a render that does not sample pixels one by one (chapter 08's light paths splat anywhere): throws
-// InputError("--samples: `why`") when the settings ask for part of the samples or to resume.
-void require_whole_render(const RenderSettings& settings, const std::string& why);
-
 }  // namespace rt

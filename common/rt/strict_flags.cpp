@@ -13,11 +13,13 @@ namespace {
 
 constexpr double kLargestFlagNumber = 1e30;
 
-std::string shown_value(const std::string& text) {
-    return "\"" + printable(text, 64) + "\"";
+std::string shown_value(std::string_view text) {
+    return "\"" + printable(std::string(text), 64) + "\"";
 }
 
-std::string check_whole(const std::string& text, bool is_signed) {
+}  // namespace
+
+std::string whole_number_error(std::string_view text, bool is_signed) {
     const char* first = text.data();
     const char* last = text.data() + text.size();
     const std::string expected = is_signed ? "a whole number (decimal digits, a '-' before them if negative)"
@@ -45,6 +47,16 @@ std::string check_whole(const std::string& text, bool is_signed) {
     return r.ec == std::errc() && r.ptr == last ? "" : "must be " + expected + ", got " + shown_value(text);
 }
 
+CLI::Validator power_of_two() {
+    auto check = [](const std::string& text) -> std::string {
+        const std::uint64_t value = std::stoull(text);  // read strictly before this check
+        return value > 0 && (value & (value - 1)) == 0 ? "" : "must be a power of two (1, 2, 4, ...), got " + text;
+    };
+    return CLI::Validator(check, "POWER OF 2");
+}
+
+namespace {
+
 std::string check_real(const std::string& text) {
     const char* last = text.data() + text.size();
     double value = 0;
@@ -67,9 +79,9 @@ void make_values_strict(CLI::App& app) {
         const std::string type = option->get_type_name();
         std::function<std::string(std::string&)> check;
         if (type.starts_with("UINT")) {
-            check = [](std::string& text) { return check_whole(text, false); };
+            check = [](std::string& text) { return whole_number_error(text, false); };
         } else if (type.starts_with("INT")) {
-            check = [](std::string& text) { return check_whole(text, true); };
+            check = [](std::string& text) { return whole_number_error(text, true); };
         } else if (type.starts_with("FLOAT")) {
             check = [](std::string& text) { return check_real(text); };
         } else {

@@ -33,7 +33,7 @@ for exe in "$@"; do
         "$mpiexec" --oversubscribe -np 2 "$exe" "${size[@]}" --out forward.png > stdout 2> stderr
         status=$?
         [ "$status" -eq 2 ] || fail "$name forward under mpirun -np 2: exit status $status, expected 2"
-        grep -q "^$name: --samples: forward tracing splats" stderr ||
+        grep -q "^$name: mpirun with 2 ranks: forward tracing splats" stderr ||
             fail "$name forward under mpirun -np 2: no refusal on stderr: $(head -n 3 stderr)"
         [ ! -e forward.png ] || fail "$name forward under mpirun -np 2: wrote forward.png"
         args+=(--tracer reverse)
