@@ -5,8 +5,8 @@
 #    a second one, of another of these, quits at once and leaves no file;
 #  - SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM: quits at once with 128 + its number, leaving no file;
 #  - SIGPIPE, SIGXFSZ: ignored; the files are written, exit 0.
-# The writing is caught by watching for the staging files of a 2048 × 2048 image (its PNG, PFM and film take
-# about a second to write); a run whose writing was not seen is tried again, up to four times.
+# The writing is caught by watching for the staging files of a 1024 × 1024 image (its PNG, PFM and 59 MB film
+# take a quarter of a second or more to write); a run whose writing was not seen is tried again, up to 4 times.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 exe=$1
@@ -77,7 +77,7 @@ signal_while_writing() {
 }
 
 pieces="$scratch/pieces" && mkdir -p "$pieces" || exit 1
-size=(--width 2048 --height 2048 --spp 2 --threads 2 --quiet)
+size=(--width 1024 --height 1024 --spp 2 --threads 2 --quiet)
 for range in 0:1 1:2; do
     "$exe" "${size[@]}" --samples $range --out "$pieces/p${range%%:*}.png" > /dev/null 2>&1 || fail "piece $range failed"
 done
