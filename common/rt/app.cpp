@@ -306,12 +306,9 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
                   reference, reference_picture, written);
-    if (!r.interrupted && signal_received()) {
-        // The signal came once the render was done: the complete image was written all the same.
-        std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
-                     chapter.executable);
-    }
-    return r.interrupted || signal_received() ? interrupted_exit_status() : kExitOk;
+    if (r.interrupted) return interrupted_exit_status();
+    // A signal that came once the render was done: the complete image was written all the same.
+    return status_after_writing(chapter.executable, "the complete image");
 }
 
 }  // namespace

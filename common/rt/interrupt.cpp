@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 
+#include "rt/errors.hpp"
 #include "rt/staged_file.hpp"
 
 namespace rt {
@@ -86,6 +88,19 @@ bool render_restart_requested() {
 int interrupted_exit_status() {
     const int s = g_signal.load();
     return 128 + (s != 0 ? s : SIGINT);
+}
+bool stop_before_writing(const char* program) {
+    if (signal_received()) {
+        std::fprintf(stderr, "%s: interrupted; nothing written\n", program);
+        return true;
+    }
+    set_interrupt_phase(InterruptPhase::kWriting);
+    return false;
+}
+int status_after_writing(const char* program, const char* what) {
+    if (!signal_received()) return kExitOk;
+    std::fprintf(stderr, "%s: interrupted while writing; %s was written all the same\n", program, what);
+    return interrupted_exit_status();
 }
 void set_interrupt_requested(bool requested) {
     g_signal.store(requested ? SIGINT : 0);

@@ -30,6 +30,12 @@ void set_render_restart(bool restart);
 bool render_restart_requested();
 // 128 + the signal's number: 130 for SIGINT, 143 for SIGTERM, 129 for SIGHUP.
 int interrupted_exit_status();
+// Before a program writes its files: true, having said "PROGRAM: interrupted; nothing written", when a signal
+// came (the program then exits with interrupted_exit_status()); otherwise enters the writing phase.
+bool stop_before_writing(const char* program);
+// Once it has written them: its exit status, 0, or after a signal that came while it wrote, having said
+// "PROGRAM: interrupted while writing; WHAT was written all the same", interrupted_exit_status().
+int status_after_writing(const char* program, const char* what);
 // For tests: as if the user had pressed Ctrl-C (or, with false, as if not).
 void set_interrupt_requested(bool requested);
 

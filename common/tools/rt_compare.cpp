@@ -101,16 +101,13 @@ int compare(int argc, char** argv) {
         throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
     if (!out.empty()) {
-        if (fs::path(out).extension() != ".png") throw rt::InputError("--out: must end in .png, got " + rt::shown(out));
+        if (fs::path(out).extension() != ".png")
+            throw rt::InputError("--out: must end in .png, got " + rt::shown(out));
         rt::check_outputs({{"--out", "the comparison picture", out}},
                           {{"", "image A", a_name}, {"", "image B", b_name}});
     }
     const Input a = read_input(a_name), b = read_input(b_name);
-    if (rt::signal_received()) {
-        std::fprintf(stderr, "rt_compare: interrupted; nothing written\n");
-        return rt::interrupted_exit_status();
-    }
-    rt::set_interrupt_phase(rt::InterruptPhase::kWriting);
+    if (rt::stop_before_writing("rt_compare")) return rt::interrupted_exit_status();
     const rt::PictureDifference d = rt::compare_pictures(a.picture, b.picture, tolerance);
     std::printf("rt_compare: %s against %s, %dx%d\n", rt::shown(a_name).c_str(), rt::shown(b_name).c_str(),
                 d.width, d.height);
@@ -127,12 +124,9 @@ int compare(int argc, char** argv) {
                     "(top, white)\n",
                     rt::shown(out).c_str(), scale, a.radiance && b.radiance ? "" : " levels");
     }
-    if (rt::signal_received()) {
-        std::fprintf(stderr, "rt_compare: interrupted while writing; the picture was written all the same\n");
-        return rt::interrupted_exit_status();
-    }
     const bool agree = d.fraction() <= max_differing;
     std::printf("  %s\n", agree ? "agree" : "DIFFER");
+    if (const int status = rt::status_after_writing("rt_compare", "the picture"); status != rt::kExitOk) return status;
     return agree ? rt::kExitOk : rt::kExitFailure;
 }
 

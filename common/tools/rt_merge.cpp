@@ -49,24 +49,16 @@ int merge(int argc, char** argv) {
         if (rt::signal_received()) break;
         films.push_back({piece, rt::read_film(piece)});
     }
-    if (rt::signal_received()) {
-        std::fprintf(stderr, "rt_merge: interrupted; nothing written\n");
-        return rt::interrupted_exit_status();
-    }
     const rt::Film whole = rt::merge_films(std::move(films));
     const rt::Image image = whole.sums.mean_image();
     rt::check_finite(image);
-    rt::set_interrupt_phase(rt::InterruptPhase::kWriting);
+    if (rt::stop_before_writing("rt_merge")) return rt::interrupted_exit_status();
     const std::string written = rt::write_outputs(image, png, &whole);
     const rt::FilmIdentity& id = whole.identity;
     std::printf("rt_merge: %zu pieces of %s on %s, %dx%d, samples 0:%d, seed %llu: wrote %s\n", pieces.size(),
                 rt::printable(id.chapter).c_str(), rt::printable(id.scene).c_str(), id.width, id.height,
                 id.samples_per_pixel, static_cast<unsigned long long>(id.seed), written.c_str());
-    if (rt::signal_received()) {
-        std::fprintf(stderr, "rt_merge: interrupted while writing; the merged image was written all the same\n");
-        return rt::interrupted_exit_status();
-    }
-    return rt::kExitOk;
+    return rt::status_after_writing("rt_merge", "the merged image");
 }
 
 }  // namespace
