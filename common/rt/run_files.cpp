@@ -8,8 +8,10 @@ namespace rt {
 namespace fs = std::filesystem;
 
 bool same_file(const fs::path& a, const fs::path& b) {
+    // Made absolute first: a relative path with no part that exists stays relative in weakly_canonical.
     std::error_code ec_a, ec_b;
-    const fs::path canonical_a = fs::weakly_canonical(a, ec_a), canonical_b = fs::weakly_canonical(b, ec_b);
+    const fs::path canonical_a = fs::weakly_canonical(fs::absolute(a), ec_a);
+    const fs::path canonical_b = fs::weakly_canonical(fs::absolute(b), ec_b);
     if (!ec_a && !ec_b && canonical_a == canonical_b) return true;
     std::error_code ec;
     return fs::equivalent(a, b, ec);
