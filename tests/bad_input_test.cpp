@@ -616,10 +616,12 @@ TEST_CASE("A run's outputs may not take one another's names, nor an input's", "[
         CHECK(error_of([] {
                   check_files_apart({{"--out", "the image", "t.png"}, {"--csv", "the table", "link.png"}},
                                     {{"--scene", "the scene", "table.csv"}});
-              }) == "--csv: the table link.png is the scene table.csv: it would be replaced; give another name");
+              }) ==
+              "--csv: the table link.png is the scene table.csv: it would be replaced; give another name");
         CHECK(error_of([] {
                   check_files_apart({{"--out", "the image", "t.png"}, {"--csv", "the table", "./t.png"}}, {});
-              }) == "--csv: the table ./t.png is the image t.png: one would replace the other; give another name");
+              }) ==
+              "--csv: the table ./t.png is the image t.png: one would replace the other; give another name");
         CHECK(contents("table.csv") == "a table\n");
     });
     fs::remove_all(folder);

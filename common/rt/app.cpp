@@ -11,11 +11,11 @@
 #include "rt/effects.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
+#include "rt/heat_maps.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/live_view.hpp"
 #include "rt/output_files.hpp"
-#include "rt/heat_maps.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
@@ -212,9 +212,11 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         std::vector<RunFile> inputs{{"--scene", "the scene", scene_file}};
         if (!options.reference.empty()) inputs.push_back({"--reference", "the reference", options.reference});
         // The film --resume continues may be replaced by this run's own film, which holds all of its samples.
-        const bool resume_replaced_by_film = std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
-            return !split.resume.empty() && f.path.extension() == ".film" && same_file(f.path, split.resume);
-        });
+        const bool resume_replaced_by_film =
+            std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
+                return !split.resume.empty() && f.path.extension() == ".film" &&
+                       same_file(f.path, split.resume);
+            });
         if (!split.resume.empty() && !resume_replaced_by_film)
             inputs.push_back({"--resume", "the film to resume", split.resume});
         check_outputs(outputs, inputs);

@@ -91,8 +91,9 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
     if (other.chapter != expected.chapter)
         return differ("chapter", printable(other.chapter), printable(expected.chapter));
     if (other.scene_hash != expected.scene_hash) {
-        return "scene " + printable(other.scene) + " (its files' fingerprint " + std::to_string(other.scene_hash) +
-               "), expected " + printable(expected.scene) + " (" + std::to_string(expected.scene_hash) + ")";
+        return "scene " + printable(other.scene) + " (its files' fingerprint " +
+               std::to_string(other.scene_hash) + "), expected " + printable(expected.scene) + " (" +
+               std::to_string(expected.scene_hash) + ")";
     }
     if (other.options != expected.options)
         return differ("chapter flags", quoted(other.options), quoted(expected.options));

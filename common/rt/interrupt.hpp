@@ -1,15 +1,17 @@
 // Signals during a run, chosen as git chooses for its lock and temporary files: no staging file
 // (staged_file.hpp) survives a signal that ends the process.
-// - SIGINT (Ctrl-C), SIGTERM, SIGHUP (the terminal closed) and SIGXCPU (a CPU-time limit, as batch systems set)
-//   stop the run: the first asks the render loop to stop after the sample each thread is on (so the image so
-//   far can be saved, marked partial), or, once the render is over, lets the files being written be
-//   finished; a second one, of any of these, removes every staging file and exits at once, writing nothing.
+// - SIGINT (Ctrl-C), SIGTERM, SIGHUP (the terminal closed) and SIGXCPU (a CPU-time limit, as batch systems
+//   set) stop the run: the first asks the render loop to stop after the sample each thread is on (so the
+//   image so far can be saved, marked partial), or, once the render is over, lets the files being written
+//   be finished; a second one, of any of these, removes every staging file and exits at once, writing
+//   nothing.
 // - SIGQUIT (Ctrl-\), SIGUSR1, SIGUSR2 and SIGALRM, which end a process at once by default, still do, but
 //   remove the staging files first.
 // - SIGPIPE and SIGXFSZ are ignored, as curl ignores SIGPIPE: a closed pipe costs the messages, not the
 //   files, and a file larger than the limit is a write that fails with its reason.
 // Each exits with 128 + the signal's number, as a shell reports a process ended by it.
-// The live view (live_view.hpp) also stops a render this way, without a signal, to render again with other knobs.
+// The live view (live_view.hpp) also stops a render this way, without a signal, to render again with
+// other knobs.
 #pragma once
 
 namespace rt {

@@ -27,9 +27,9 @@ struct ExtraImage {
     bool radiance = false;  // an estimate of the same radiance: the summary measures it against --reference
 };
 
-// Every file a run with the image `png` (--out) may write, for check_outputs (run_files.hpp): x.png and x.pfm,
-// x.film when `film`, each `extra_images` suffix's x.SUFFIX.pfm, and what an interrupted run writes instead
-// (x.partial.png, x.partial.pfm, x.partial.film, x.partial.SUFFIX.pfm).
+// Every file a run with the image `png` (--out) may write, for check_outputs (run_files.hpp): x.png and
+// x.pfm, x.film when `film`, each `extra_images` suffix's x.SUFFIX.pfm, and what an interrupted run writes
+// instead (x.partial.png, x.partial.pfm, x.partial.film, x.partial.SUFFIX.pfm).
 std::vector<RunFile> image_outputs(const std::filesystem::path& png, bool film,
                                    const std::vector<std::string>& extra_images);
 

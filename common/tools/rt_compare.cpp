@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "rt/error_metrics.hpp"
@@ -120,13 +120,15 @@ int compare(int argc, char** argv) {
     if (!out.empty()) {
         double scale = 0;
         write_side_by_side(a, b, out, scale);
-        std::printf("  wrote %s: A | B | error (largest channel) | colour bar from 0 (bottom, black) to %.6g%s "
-                    "(top, white)\n",
-                    rt::shown(out).c_str(), scale, a.radiance && b.radiance ? "" : " levels");
+        std::printf(
+            "  wrote %s: A | B | error (largest channel) | colour bar from 0 (bottom, black) to %.6g%s "
+            "(top, white)\n",
+            rt::shown(out).c_str(), scale, a.radiance && b.radiance ? "" : " levels");
     }
     const bool agree = d.fraction() <= max_differing;
     std::printf("  %s\n", agree ? "agree" : "DIFFER");
-    if (const int status = rt::status_after_writing("rt_compare", "the picture"); status != rt::kExitOk) return status;
+    if (const int status = rt::status_after_writing("rt_compare", "the picture"); status != rt::kExitOk)
+        return status;
     return agree ? rt::kExitOk : rt::kExitFailure;
 }
 
