@@ -24,6 +24,7 @@
 #include "rt/pixel_sums.hpp"
 #include "rt/printable.hpp"
 #include "rt/random.hpp"
+#include "rt/run_files.hpp"
 #include "rt/scene_loader.hpp"
 #include "rt/staged_file.hpp"
 
@@ -584,6 +585,44 @@ TEST_CASE("A reference that is the output's own PFM is refused, not overwritten"
                   }) == kExitBadInput);
         }
         CHECK(contents("r.pfm") == before);
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("A run's outputs may not take one another's names, nor an input's", "[bad_input][app]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        std::ofstream("table.csv") << "a table\n";
+        fs::create_symlink("table.csv", "link.png");
+        write_pfm(Image(4, 3), "h.pfm");
+        fs::create_symlink("h.pfm", "link.pfm");
+        for (const std::vector<std::string>& args :
+             {std::vector<std::string>{"--out", "h.png", "--heat", "h.partial.png"},
+              std::vector<std::string>{"--out", "h.png", "--heat", "./sub/../h.partial.png"},
+              std::vector<std::string>{"--out", "h.png", "--heat", "h.png"},
+              std::vector<std::string>{"--out", "h.png", "--reference", "link.pfm"}}) {
+            fs::create_directory("sub");
+            std::vector<std::string> all{"--width", "4", "--height", "3", "--spp", "2", "--quiet"};
+            all.insert(all.end(), args.begin(), args.end());
+            CHECK(run_fake_chapter(all, [](const RunContext& c) -> std::optional<ChapterRun> {
+                      return fake_run(c, Color(1), false, 12);
+                  }) == kExitBadInput);
+            CHECK_FALSE(fs::exists("h.png"));
+        }
+        // By name, by a path through other folders, and by a link to one file; an output and an input.
+        CHECK(same_file("h.png", "sub/../h.png"));
+        CHECK(same_file("link.png", "table.csv"));
+        CHECK_FALSE(same_file("h.png", "h.partial.png"));
+        CHECK(error_of([] {
+                  check_files_apart({{"--out", "the image", "t.png"}, {"--csv", "the table", "link.png"}},
+                                    {{"--scene", "the scene", "table.csv"}});
+              }) ==
+              "--csv: the table link.png is the scene table.csv: it would be replaced; give another name");
+        CHECK(error_of([] {
+                  check_files_apart({{"--out", "the image", "t.png"}, {"--csv", "the table", "./t.png"}}, {});
+              }) ==
+              "--csv: the table ./t.png is the image t.png: one would replace the other; give another name");
+        CHECK(contents("table.csv") == "a table\n");
     });
     fs::remove_all(folder);
 }

@@ -11,14 +11,15 @@
 #include "rt/effects.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
+#include "rt/heat_maps.hpp"
 #include "rt/image_io.hpp"
 #include "rt/interrupt.hpp"
 #include "rt/live_view.hpp"
 #include "rt/output_files.hpp"
-#include "rt/heat_maps.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
 #include "rt/render_identity.hpp"
+#include "rt/run_files.hpp"
 #include "rt/scene_loader.hpp"
 #include "rt/split_render.hpp"
 #include "rt/strict_flags.hpp"
@@ -120,13 +121,6 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf("  wrote %s\n", written.c_str());
 }
 
-// Two paths name one file: the same path, or links to one file.
-bool same_file(const fs::path& a, const fs::path& b) {
-    std::error_code ec;
-    if (fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec) && !ec) return true;
-    return fs::equivalent(a, b, ec);
-}
-
 int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
         const ChapterRender& render, const MpiSession& mpi) {
     // From the start: a signal during the checks makes the render stop at once (nothing written), and a
@@ -210,39 +204,35 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         throw InputError("--out: must name a file ending in .png, with a name before the .png, got " +
                          shown(png));
     }
-    const fs::path pfm = with_suffix(png, "", ".pfm");
     const fs::path partial_png = with_suffix(png, ".partial", ".png");
-    const fs::path partial_pfm = with_suffix(png, ".partial", ".pfm");
-    // Every file this run may write, finished or partial, is probed before the render starts: its staging
-    // file is created and removed (staged_file.hpp).
-    // (x.film only when the run writes one: a piece of a render, or a resumed one.)
-    std::vector<fs::path> outputs{png, pfm, partial_png, partial_pfm, with_suffix(png, ".partial", ".film")};
-    if (!split.samples.empty() || !split.resume.empty()) outputs.push_back(with_suffix(png, "", ".film"));
-    std::vector<fs::path> pfms{pfm, partial_pfm};
-    for (const std::string& suffix : chapter.extra_images) {
-        pfms.push_back(with_suffix(png, suffix, ".pfm"));
-        pfms.push_back(with_suffix(png, ".partial" + suffix, ".pfm"));
-        outputs.insert(outputs.end(), pfms.end() - 2, pfms.end());
+    if (!options.heat.empty() && fs::path(options.heat).extension() != ".png")
+        throw InputError("--heat: must end in .png, got " + shown(options.heat));
+    if (!live.live) {  // the live view writes nothing
+        // Every file this run may write, finished or partial, is one of its own and no input, and is probed
+        // before the render starts: its staging file is created and removed (staged_file.hpp).
+        // (x.film only when the run writes one: a piece of a render, or a resumed one.)
+        std::vector<RunFile> outputs =
+            image_outputs(png, !split.samples.empty() || !split.resume.empty(), chapter.extra_images);
+        if (!options.heat.empty()) outputs.push_back({"--heat", "the heat maps", options.heat});
+        if (const CLI::Option* csv = app.get_option_no_throw("--csv"); csv && csv->count() > 0)
+            outputs.push_back({"--csv", "the table", csv->as<std::string>()});
+        std::vector<RunFile> inputs{{"--scene", "the scene", scene_file}};
+        if (!options.reference.empty()) inputs.push_back({"--reference", "the reference", options.reference});
+        // The film --resume continues may be replaced by this run's own film, which holds all of its samples.
+        const bool resume_replaced_by_film =
+            std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
+                return !split.resume.empty() && f.path.extension() == ".film" &&
+                       same_file(f.path, split.resume);
+            });
+        if (!split.resume.empty() && !resume_replaced_by_film)
+            inputs.push_back({"--resume", "the film to resume", split.resume});
+        check_outputs(outputs, inputs);
     }
-    if (live.live) outputs.clear();  // it writes nothing
-    for (const fs::path& path : outputs) check_writable("--out", path);
     std::optional<Image> reference;
     std::optional<Picture> reference_picture;  // a PNG reference
     if (!options.reference.empty()) {
         const fs::path reference_file = options.reference;
-        for (const fs::path& output : pfms) {
-            if (same_file(reference_file, output)) {
-                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
-                                 shown(output) + "); give another --out or copy the reference");
-            }
-        }
         const bool png_reference = reference_file.extension() == ".png";
-        for (const fs::path& output : {png, partial_png}) {
-            if (png_reference && same_file(reference_file, output)) {
-                throw InputError("--reference: " + shown(reference_file) + ": is the file this run writes (" +
-                                 shown(output) + "); give another --out or copy the reference");
-            }
-        }
         int width = 0, height = 0;
         try {
             if (png_reference) {
@@ -276,11 +266,6 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
 
     std::vector<PixelHeat> heat;
     if (!options.heat.empty()) {
-        const fs::path heat_file = options.heat;
-        if (heat_file.extension() != ".png") throw InputError("--heat: must end in .png, got " + shown(heat_file));
-        if (same_file(heat_file, png) || same_file(heat_file, pfm))
-            throw InputError("--heat: " + shown(heat_file) + ": is the image this run writes; give another name");
-        check_writable("--heat", heat_file);
         heat.resize(std::size_t(settings.width) * std::size_t(settings.height));
         settings.heat = heat.data();
     }
@@ -330,12 +315,9 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     }
     print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
                   reference, reference_picture, written);
-    if (!r.interrupted && signal_received()) {
-        // The signal came once the render was done: the complete image was written all the same.
-        std::fprintf(stderr, "%s: interrupted while writing; the complete image was written all the same\n",
-                     chapter.executable);
-    }
-    return r.interrupted || signal_received() ? interrupted_exit_status() : kExitOk;
+    if (r.interrupted) return interrupted_exit_status();
+    // A signal that came once the render was done: the complete image was written all the same.
+    return status_after_writing(chapter.executable, "the complete image");
 }
 
 }  // namespace

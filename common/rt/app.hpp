@@ -1,6 +1,6 @@
 // What a chapter executable does around its render: the core flags of common/README.md, loading and checking
 // the scene, the output files, the summary, and exit statuses (0 done, 2 bad usage or input, 1 failure,
-// 130 interrupted by SIGINT, 143 by SIGTERM).
+// 128 + a signal's number when one ended the run: 130 for SIGINT, 143 for SIGTERM; interrupt.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

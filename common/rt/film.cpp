@@ -9,6 +9,7 @@
 #include "rt/fnv_hash.hpp"
 #include "rt/image_io.hpp"
 #include "rt/memory_limit.hpp"
+#include "rt/printable.hpp"
 #include "rt/staged_file.hpp"
 
 namespace rt {
@@ -86,11 +87,14 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
     auto differ = [](const std::string& what, const std::string& got, const std::string& want) {
         return what + " " + got + ", expected " + want;
     };
-    auto quoted = [](const std::string& s) { return "\"" + s + "\""; };
-    if (other.chapter != expected.chapter) return differ("chapter", other.chapter, expected.chapter);
+    // The texts are a film's, which is input: escaped, so that they stay on the message's one line.
+    auto quoted = [](const std::string& s) { return "\"" + printable(s) + "\""; };
+    if (other.chapter != expected.chapter)
+        return differ("chapter", printable(other.chapter), printable(expected.chapter));
     if (other.scene_hash != expected.scene_hash) {
-        return "scene " + other.scene + " (its files' fingerprint " + std::to_string(other.scene_hash) +
-               "), expected " + expected.scene + " (" + std::to_string(expected.scene_hash) + ")";
+        return "scene " + printable(other.scene) + " (its files' fingerprint " +
+               std::to_string(other.scene_hash) + "), expected " + printable(expected.scene) + " (" +
+               std::to_string(expected.scene_hash) + ")";
     }
     if (other.options != expected.options)
         return differ("chapter flags", quoted(other.options), quoted(expected.options));

@@ -4,7 +4,9 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 
+#include "rt/errors.hpp"
 #include "rt/staged_file.hpp"
 
 namespace rt {
@@ -20,9 +22,9 @@ void say(const char* message, std::size_t size) {
     [[maybe_unused]] auto written = write(STDERR_FILENO, message, size);
 }
 
-// First signal: ask the render loop to stop (or let the files being written finish) and say so (write(2) is
-// async-signal-safe, printf is not). A second one, of either kind: remove the staging files, exit at once.
-extern "C" void on_interrupt(int signal_number) {
+// A first stopping signal: ask the render loop to stop (or let the files being written finish) and say so
+// (write(2) is async-signal-safe, printf is not). A second one, of any kind: remove the staging files, exit.
+extern "C" void on_stop(int signal_number) {
     int none = 0;
     if (!g_signal.compare_exchange_strong(none, signal_number)) {
         remove_staged_files_now();
@@ -30,6 +32,9 @@ extern "C" void on_interrupt(int signal_number) {
     }
     if (g_phase.load() == InterruptPhase::kLive) {
         const char message[] = "\ninterrupted: stopping the live view (it writes nothing)\n";
+        say(message, sizeof message - 1);
+    } else if (g_phase.load() == InterruptPhase::kReading) {
+        const char message[] = "\ninterrupted: stopping before anything is written\n";
         say(message, sizeof message - 1);
     } else if (g_phase.load() == InterruptPhase::kRendering) {
         const char message[] =
@@ -44,15 +49,26 @@ extern "C" void on_interrupt(int signal_number) {
     }
 }
 
+// A signal that ends the process at once: the staging files go first.
+extern "C" void on_quit(int signal_number) {
+    remove_staged_files_now();
+    _exit(128 + signal_number);
+}
+
+void handle(int signal_number, void (*handler)(int)) {
+    struct sigaction action {};
+    action.sa_handler = handler;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;  // a read or write in progress goes on rather than failing with EINTR
+    sigaction(signal_number, &action, nullptr);
+}
+
 }  // namespace
 
 void install_interrupt_handler() {
-    struct sigaction action {};
-    action.sa_handler = on_interrupt;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;  // a read or write in progress goes on rather than failing with EINTR
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    for (const int s : {SIGINT, SIGTERM, SIGHUP, SIGXCPU}) handle(s, on_stop);
+    for (const int s : {SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM}) handle(s, on_quit);
+    for (const int s : {SIGPIPE, SIGXFSZ}) handle(s, SIG_IGN);
 }
 void set_interrupt_phase(InterruptPhase phase) {
     g_phase.store(phase);
@@ -72,6 +88,19 @@ bool render_restart_requested() {
 int interrupted_exit_status() {
     const int s = g_signal.load();
     return 128 + (s != 0 ? s : SIGINT);
+}
+bool stop_before_writing(const char* program) {
+    if (signal_received()) {
+        std::fprintf(stderr, "%s: interrupted; nothing written\n", program);
+        return true;
+    }
+    set_interrupt_phase(InterruptPhase::kWriting);
+    return false;
+}
+int status_after_writing(const char* program, const char* what) {
+    if (!signal_received()) return kExitOk;
+    std::fprintf(stderr, "%s: interrupted while writing; %s was written all the same\n", program, what);
+    return interrupted_exit_status();
 }
 void set_interrupt_requested(bool requested) {
     g_signal.store(requested ? SIGINT : 0);

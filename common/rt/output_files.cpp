@@ -18,6 +18,22 @@ fs::path with_suffix(const fs::path& png, const std::string& suffix, const std::
     return p;
 }
 
+std::vector<RunFile> image_outputs(const fs::path& png, bool film,
+                                   const std::vector<std::string>& extra_images) {
+    std::vector<RunFile> files;
+    for (const std::string partial : {"", ".partial"}) {
+        const std::string of = partial.empty() ? "the " : "the partial ";
+        files.push_back({"--out", of + "image", with_suffix(png, partial, ".png")});
+        files.push_back({"--out", of + "radiance", with_suffix(png, partial, ".pfm")});
+        if (film || !partial.empty())
+            files.push_back({"--out", of + "film", with_suffix(png, partial, ".film")});
+        for (const std::string& suffix : extra_images)
+            files.push_back(
+                {"--out", of + suffix.substr(1) + " image", with_suffix(png, partial + suffix, ".pfm")});
+    }
+    return files;
+}
+
 void check_finite(const Image& image) {
     std::size_t bad = 0;
     int first_x = -1, first_y = -1;

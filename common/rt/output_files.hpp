@@ -8,6 +8,7 @@
 
 #include "rt/film.hpp"
 #include "rt/image.hpp"
+#include "rt/run_files.hpp"
 
 namespace rt {
 
@@ -26,9 +27,15 @@ struct ExtraImage {
     bool radiance = false;  // an estimate of the same radiance: the summary measures it against --reference
 };
 
+// Every file a run with the image `png` (--out) may write, for check_outputs (run_files.hpp): x.png and
+// x.pfm, x.film when `film`, each `extra_images` suffix's x.SUFFIX.pfm, and what an interrupted run writes
+// instead (x.partial.png, x.partial.pfm, x.partial.film, x.partial.SUFFIX.pfm).
+std::vector<RunFile> image_outputs(const std::filesystem::path& png, bool film,
+                                   const std::vector<std::string>& extra_images);
+
 // Writes the PNG, the PFM beside it, the `extra` PFMs and, given `film`, the film beside them (x.png, x.pfm,
 // x.SUFFIX.pfm, x.film): each is first written whole under its staging name (staged_file.hpp), then all are
-// renamed into place together, with SIGINT and SIGTERM held back. Returns what it wrote, for the summary:
+// renamed into place together, with signals held back. Returns what it wrote, for the summary:
 // "x.png and x.pfm" or "x.png, x.pfm and x.film" (names quoted where they need it).
 std::string write_outputs(const Image& image, const std::filesystem::path& png, const Film* film = nullptr,
                           const std::vector<ExtraImage>& extra = {});

@@ -140,9 +140,7 @@ void write_staged(StagedFile& staged, const std::function<bool(std::FILE*)>& wri
 
 void commit_together(const std::vector<StagedFile*>& files) {
     sigset_t held, previous;
-    sigemptyset(&held);
-    sigaddset(&held, SIGINT);
-    sigaddset(&held, SIGTERM);
+    sigfillset(&held);  // every signal that can be held back (not SIGKILL)
     pthread_sigmask(SIG_BLOCK, &held, &previous);
     try {
         for (StagedFile* f : files) f->commit();

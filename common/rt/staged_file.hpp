@@ -43,8 +43,8 @@ class StagedFile {
 // target when a write, the flush or the close failed (the staging file is then removed by its destructor,
 // and an earlier file at the target is left as it was).
 void write_staged(StagedFile& staged, const std::function<bool(std::FILE*)>& write_to);
-// Renames every staged file into place with SIGINT and SIGTERM held back, so that a signal that ends the
-// process at once cannot fall between two renames (a new PFM beside an old PNG): all or none.
+// Renames every staged file into place with every signal held back (interrupt.hpp), so that a signal that
+// ends the process at once cannot fall between two renames (a new PFM beside an old PNG): all or none.
 void commit_together(const std::vector<StagedFile*>& files);
 // fwrite that says whether every byte was written.
 bool write_bytes(std::FILE* file, const void* data, std::size_t size);

@@ -2,22 +2,25 @@
 // Prints the error metrics of error_metrics.hpp when both are PFM, and always how the two pictures (as a PNG
 // shows them: tone-mapped, sRGB, 8 bits) differ and where (picture_compare.hpp). With --out, writes
 // A | B | the error in false colour | its colour bar, one PNG. Exit status 0 when at most a fraction F of
-// the pixels differ by more than L levels (default 0: none), 1 when more do (like cmp), 2 on bad input.
+// the pixels differ by more than L levels (default 0: none), 1 when more do (like cmp), 2 on bad input (an
+// --out that is A or B among it). Signals as the chapters take them (interrupt.hpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/false_colour.hpp"
 #include "rt/image_io.hpp"
+#include "rt/interrupt.hpp"
 #include "rt/picture_compare.hpp"
 #include "rt/printable.hpp"
+#include "rt/run_files.hpp"
 
 namespace {
 
@@ -76,6 +79,8 @@ void write_side_by_side(const Input& a, const Input& b, const fs::path& out, dou
 }
 
 int compare(int argc, char** argv) {
+    rt::install_interrupt_handler();
+    rt::set_interrupt_phase(rt::InterruptPhase::kReading);
     CLI::App app("Compares two renders (PFM or PNG): metrics, where their pictures differ, and A | B | error",
                  "rt_compare");
     std::string a_name, b_name, out;
@@ -96,12 +101,16 @@ int compare(int argc, char** argv) {
         throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
     if (!out.empty()) {
-        if (fs::path(out).extension() != ".png") throw rt::InputError("--out: must end in .png, got " + out);
-        rt::check_writable(out);
+        if (fs::path(out).extension() != ".png")
+            throw rt::InputError("--out: must end in .png, got " + rt::shown(out));
+        rt::check_outputs({{"--out", "the comparison picture", out}},
+                          {{"", "image A", a_name}, {"", "image B", b_name}});
     }
     const Input a = read_input(a_name), b = read_input(b_name);
+    if (rt::stop_before_writing("rt_compare")) return rt::interrupted_exit_status();
     const rt::PictureDifference d = rt::compare_pictures(a.picture, b.picture, tolerance);
-    std::printf("rt_compare: %s against %s, %dx%d\n", a_name.c_str(), b_name.c_str(), d.width, d.height);
+    std::printf("rt_compare: %s against %s, %dx%d\n", rt::shown(a_name).c_str(), rt::shown(b_name).c_str(),
+                d.width, d.height);
     if (a.radiance && b.radiance) {
         const rt::ErrorMetrics m = rt::compare(*a.radiance, *b.radiance);
         std::printf("  radiance: RMSE %.6g, relative MSE %.6g, mean error %+.6g\n", m.rmse, m.relative_mse,
@@ -111,12 +120,15 @@ int compare(int argc, char** argv) {
     if (!out.empty()) {
         double scale = 0;
         write_side_by_side(a, b, out, scale);
-        std::printf("  wrote %s: A | B | error (largest channel) | colour bar from 0 (bottom, black) to %.6g%s "
-                    "(top, white)\n",
-                    out.c_str(), scale, a.radiance && b.radiance ? "" : " levels");
+        std::printf(
+            "  wrote %s: A | B | error (largest channel) | colour bar from 0 (bottom, black) to %.6g%s "
+            "(top, white)\n",
+            rt::shown(out).c_str(), scale, a.radiance && b.radiance ? "" : " levels");
     }
     const bool agree = d.fraction() <= max_differing;
     std::printf("  %s\n", agree ? "agree" : "DIFFER");
+    if (const int status = rt::status_after_writing("rt_compare", "the picture"); status != rt::kExitOk)
+        return status;
     return agree ? rt::kExitOk : rt::kExitFailure;
 }
 

@@ -1,7 +1,8 @@
 // rt_merge --out x.png PIECES.film...: adds the films of a render's pieces (chNN_name --samples A:B --out
 // p.png writes p.film) into the image of the whole render, bit for bit the image of one run of --spp N. The
 // pieces must be of one render and together take samples 0:N exactly once; anything else exits with 2 and
-// one line naming the offending piece. Writes x.png, x.pfm and x.film (a film of 0:N).
+// one line naming the offending piece. Writes x.png, x.pfm and x.film (a film of 0:N), none of them a piece.
+// Signals as the chapters take them (interrupt.hpp); the texts a film holds are printed escaped.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
@@ -10,14 +11,18 @@
 
 #include "rt/errors.hpp"
 #include "rt/film_merge.hpp"
-#include "rt/image_io.hpp"
+#include "rt/interrupt.hpp"
 #include "rt/output_files.hpp"
+#include "rt/printable.hpp"
+#include "rt/run_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 int merge(int argc, char** argv) {
+    rt::install_interrupt_handler();
+    rt::set_interrupt_phase(rt::InterruptPhase::kReading);
     CLI::App app("Adds the films of a render's pieces (--samples A:B) into the image of the whole",
                  "rt_merge");
     std::string out;
@@ -32,25 +37,28 @@ int merge(int argc, char** argv) {
         throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
     const fs::path png = out;
-    if (png.extension() != ".png") throw rt::InputError("--out: must end in .png, got " + png.string());
-    for (const fs::path& path : {png, rt::with_suffix(png, "", ".pfm"), rt::with_suffix(png, "", ".film")}) {
-        try {
-            rt::check_writable(path);
-        } catch (const rt::InputError& e) {
-            throw rt::InputError(std::string("--out: ") + e.what());
-        }
-    }
+    if (png.extension() != ".png") throw rt::InputError("--out: must end in .png, got " + rt::shown(png));
+    std::vector<rt::RunFile> inputs;
+    for (const std::string& piece : pieces) inputs.push_back({"", "the piece", piece});
+    rt::check_outputs({{"--out", "the merged image", png},
+                       {"--out", "the merged radiance", rt::with_suffix(png, "", ".pfm")},
+                       {"--out", "the merged film", rt::with_suffix(png, "", ".film")}},
+                      inputs);
     std::vector<rt::FilmPiece> films;
-    for (const std::string& piece : pieces) films.push_back({piece, rt::read_film(piece)});
+    for (const std::string& piece : pieces) {
+        if (rt::signal_received()) break;
+        films.push_back({piece, rt::read_film(piece)});
+    }
     const rt::Film whole = rt::merge_films(std::move(films));
     const rt::Image image = whole.sums.mean_image();
     rt::check_finite(image);
+    if (rt::stop_before_writing("rt_merge")) return rt::interrupted_exit_status();
     const std::string written = rt::write_outputs(image, png, &whole);
     const rt::FilmIdentity& id = whole.identity;
     std::printf("rt_merge: %zu pieces of %s on %s, %dx%d, samples 0:%d, seed %llu: wrote %s\n", pieces.size(),
-                id.chapter.c_str(), id.scene.c_str(), id.width, id.height, id.samples_per_pixel,
-                static_cast<unsigned long long>(id.seed), written.c_str());
-    return rt::kExitOk;
+                rt::printable(id.chapter).c_str(), rt::printable(id.scene).c_str(), id.width, id.height,
+                id.samples_per_pixel, static_cast<unsigned long long>(id.seed), written.c_str());
+    return rt::status_after_writing("rt_merge", "the merged image");
 }
 
 }  // namespace
@@ -59,10 +67,10 @@ int main(int argc, char** argv) {
     try {
         return merge(argc, argv);
     } catch (const rt::InputError& e) {
-        std::fprintf(stderr, "rt_merge: %s\n", e.what());
+        std::fprintf(stderr, "rt_merge: %s\n", rt::printable(e.what()).c_str());
         return rt::kExitBadInput;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "rt_merge: failed: %s\n", e.what());
+        std::fprintf(stderr, "rt_merge: failed: %s\n", rt::printable(e.what()).c_str());
         return rt::kExitFailure;
     }
 }

@@ -12,9 +12,9 @@ mkdir -p "$work" && cd "$work" || exit 1
 echo "earlier png" > out.png
 echo "earlier pfm" > out.pfm
 before=$(md5sum out.png out.pfm)
-# ulimit -f counts KiB; SIGXFSZ is ignored so that the write fails instead of killing the process (an ignored
-# signal stays ignored across exec).
-(ulimit -f 8; trap '' XFSZ; exec "$exe" --width 320 --height 180 --spp 1 --quiet --out out.png) > stdout 2> stderr
+# ulimit -f counts KiB. The executable ignores SIGXFSZ itself (interrupt.hpp), so that the write fails instead
+# of the signal killing the process with its staging file behind.
+(ulimit -f 8; exec "$exe" --width 320 --height 180 --spp 1 --quiet --out out.png) > stdout 2> stderr
 status=$?
 echo "under an 8 KiB file size limit: exit status $status: $(cat stderr)"
 [ "$status" -eq 1 ] || fail "exit status $status, expected 1"
