@@ -189,7 +189,7 @@ if status != 130:
     fail("SIGINT: exit %d, expected 130; stderr: %s" % (status, run.errors()))
 # The fix stops it in about 0.1 s; 5 s leaves a margin of more than 10 times.
 if took > 5:
-    fail("SIGINT beside 10 slow clients and an idle one: the run ended %.1f s later, expected within 1 s" % took)
+    fail("SIGINT beside 10 slow clients and an idle one: the run ended %.1f s later, expected within 5 s (it takes about 0.1 s)" % took)
 print("SIGINT beside 10 slow clients and an idle connection: ended %.3f s later" % took)
 if run.files_written():
     fail("SIGINT: files written: %s" % run.files_written())
