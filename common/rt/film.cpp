@@ -1,8 +1,10 @@
 #include "rt/film.hpp"
 
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "rt/errors.hpp"
@@ -13,6 +15,12 @@
 namespace rt {
 namespace fs = std::filesystem;
 namespace {
+
+std::string format_double(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
 
 static_assert(std::endian::native == std::endian::little, "films are written and read little-endian");
 
@@ -106,6 +114,40 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
     return "";
 }
 
+void check_film_values(const Film& film, const std::string& name) {
+    const std::uint32_t samples = std::uint32_t(film.range.size());
+    const int width = film.sums.width();
+    for (std::size_t i = 0; i < film.sums.pixels().size(); ++i) {
+        const PixelSum& p = film.sums.pixels()[i];
+        // The largest sum `count` samples reach: each at most kSampleLimit, in units of 2^-kSumFractionBits.
+        const Int128 largest = Int128(p.count) * (Int128(kSampleLimit) << kSumFractionBits);
+        std::string wrong;
+        if (p.count > samples) {
+            wrong = "has " + std::to_string(p.count) + " samples, more than the film's " +
+                    std::to_string(samples);
+        } else if ((p.non_finite & ~PixelSum::kAllFlags) != 0) {
+            wrong = "has unknown flags " + std::to_string(p.non_finite);
+        } else if (p.non_finite != 0) {
+            wrong =
+                "holds a NaN or infinite sample: the render that wrote it failed; render this piece again";
+        }
+        for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
+            const Int128 sum = p.channels[c];
+            if (sum < 0 || sum > largest) {
+                wrong = "has a sum of " + format_double(double(sum) * 0x1p-56) + " in channel " +
+                        std::to_string(c) + " for " + std::to_string(p.count) + " samples, outside [0, " +
+                        format_double(double(largest) * 0x1p-56) +
+                        "] (radiance is never negative, and a sample at most " + format_double(kSampleLimit) +
+                        ")";
+            }
+        }
+        if (!wrong.empty()) {
+            throw InputError(name + ": pixel (" + std::to_string(i % std::size_t(width)) + ", " +
+                             std::to_string(i / std::size_t(width)) + ") " + wrong);
+        }
+    }
+}
+
 bool encode_film(const Film& film, std::FILE* file) {
     const FilmIdentity& id = film.identity;
     Writer out;
@@ -192,13 +234,8 @@ Film read_film(const fs::path& path) {
         for (Int128& c : p.channels) c = in.get<Int128>();
         p.count = in.get<std::uint32_t>();
         p.non_finite = in.get<std::uint32_t>();
-        if (p.count > std::uint32_t(film.range.size()) || (p.non_finite & ~PixelSum::kAllFlags) != 0) {
-            in.fail("pixel (" + std::to_string(i % std::size_t(id.width)) + ", " +
-                    std::to_string(i / std::size_t(id.width)) + ") has " + std::to_string(p.count) +
-                    " samples (at most " + std::to_string(film.range.size()) + ") or unknown flags " +
-                    std::to_string(p.non_finite));
-        }
     }
+    check_film_values(film, name);
     return film;
 }
 
