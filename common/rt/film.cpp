@@ -117,10 +117,12 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
 void check_film_values(const Film& film, const std::string& name) {
     const std::uint32_t samples = std::uint32_t(film.range.size());
     const int width = film.sums.width();
+    // Per sample, in units of 2^-kSumFractionBits: at most kSampleLimit, and at least −2^-16 (radiance
+    // is never negative; a colour computed as (d + 1) / 2 of a unit vector may round a hair below 0).
+    const Int128 most = Int128(kSampleLimit) << kSumFractionBits;
+    const Int128 least = -(Int128(1) << (kSumFractionBits - 16));
     for (std::size_t i = 0; i < film.sums.pixels().size(); ++i) {
         const PixelSum& p = film.sums.pixels()[i];
-        // The largest sum `count` samples reach: each at most kSampleLimit, in units of 2^-kSumFractionBits.
-        const Int128 largest = Int128(p.count) * (Int128(kSampleLimit) << kSumFractionBits);
         std::string wrong;
         if (p.count > samples) {
             wrong = "has " + std::to_string(p.count) + " samples, more than the film's " +
@@ -132,13 +134,14 @@ void check_film_values(const Film& film, const std::string& name) {
                 "holds a NaN or infinite sample: the render that wrote it failed; render this piece again";
         }
         for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
-            const Int128 sum = p.channels[c];
-            if (sum < 0 || sum > largest) {
+            const Int128 sum = p.channels[c], count = p.count;
+            if (sum < count * least || sum > count * most) {
                 wrong = "has a sum of " + format_double(double(sum) * 0x1p-56) + " in channel " +
-                        std::to_string(c) + " for " + std::to_string(p.count) + " samples, outside [0, " +
-                        format_double(double(largest) * 0x1p-56) +
-                        "] (radiance is never negative, and a sample at most " + format_double(kSampleLimit) +
-                        ")";
+                        std::to_string(c) + " for " + std::to_string(p.count) + " samples, outside [" +
+                        format_double(double(count * least) * 0x1p-56) + ", " +
+                        format_double(double(count * most) * 0x1p-56) +
+                        "] (radiance is never negative, and a sample is at most " +
+                        format_double(kSampleLimit) + ")";
             }
         }
         if (!wrong.empty()) {

@@ -43,10 +43,10 @@ struct Film {
 };
 
 // A film is input: every pixel must be what `range.size()` samples of a render can sum to — no more samples,
-// no known flag, no NaN or infinite sample (the render that wrote it failed), no negative sum (radiance is
-// never negative) and no sum beyond its samples' limit (kSampleLimit each, so the whole render's sum, at most
-// kMaxSamplesPerPixel samples, stays far inside 128 bits). Throws InputError naming `name` and the first
-// pixel that is not.
+// no unknown flag, no NaN or infinite sample (the render that wrote it failed), no negative sum (radiance is
+// never negative; 2^-16 a sample of rounding is let through) and no sum beyond its samples' limit
+// (kSampleLimit each, so a whole render's sum, at most kMaxSamplesPerPixel samples, stays far inside 128
+// bits). Throws InputError naming `name` and the first pixel that is not.
 void check_film_values(const Film& film, const std::string& name);
 
 // The film's bytes into an open file (false when a write failed), and the film written all or nothing
