@@ -6,10 +6,10 @@ namespace rt {
 namespace {
 
 // Whether a light shining on the material is seen again: a diffuse, glossy or retro-reflective lobe or a
-// mirror that reflects something, and every dielectric (Fresnel reflects some of any light, and a chapter
-// without refraction shades it as a grey Lambert stand-in). Mirrors and dielectrics count even though the
-// path loop samples no light at their delta vertices: chapters 03 and 04 shade them as Lambert stand-ins,
-// which light does reach.
+// mirror that reflects something, and every dielectric (Fresnel reflects some of any light, a medium inside
+// may scatter it, and a chapter without refraction shades it as a grey stand-in). Mirrors and smooth glass
+// count although the path loop samples no light at their delta vertices: chapters 03 and 04 shade them as
+// Lambert stand-ins, which light does reach.
 bool lit_by_lights(const Material& m) {
     if (m.type == MaterialType::kDielectric) return true;
     const Color reflects = m.type == MaterialType::kMirror ? m.reflectance : m.albedo;
@@ -38,11 +38,11 @@ EffectSet needed(const Scene& scene) {
     const bool lights = !scene.point_lights.empty() || scene.environment || scene.has_area_lights();
     // Anything lights can shine on: a surface that reflects or transmits their light, or a medium that
     // scatters it (its light arrives only by scattering: without shadows, direct and indirect it stays
-    // black).
+    // black). Only dielectrics hold a medium, and every dielectric counts.
     bool lit = scene.medium && scene.medium->scatters();
     for (const Shape& shape : scene.shapes) {
         const Material& m = scene.material_of(shape);
-        lit = lit || lit_by_lights(m) || (m.medium && m.medium->scatters());
+        lit = lit || lit_by_lights(m);
         if (const auto effect = effect_of(m)) content.insert(*effect);
         // Glass reflects too (Fresnel): reflection rays.
         if (effect_of(m) == Effect::kRefraction) content.insert(Effect::kReflection);
