@@ -171,6 +171,30 @@ TEST_CASE("Scaling a scene changes its numbers, not its picture",
     CHECK_THROWS_AS(scale_scene(scene, std::numeric_limits<Real>::quiet_NaN()), InputError);
 }
 
+TEST_CASE("A scale that moves the scene beyond a scene file's limit of 1e9 is refused before rendering",
+          "[ch03]") {
+    // A scene with coordinates near 1e9, scaled by 1e12 (each within its range), rendered all black.
+    Scene far = scene_of({Shape{SphereShape{{0, 0, Real(-9e8)}, Real(1e8)}, 0, "shapes[0]"}});
+    far.camera.from = Vec3(0, 0, Real(-5e8));
+    far.camera.at = Vec3(0, 0, Real(-9e8));
+    CHECK(largest_coordinate(far) == Approx(1e9));
+    CHECK_THROWS_WITH(
+        scale_scene(far, Real(1e12)),
+        Catch::StartsWith("--scale: 1e+12 moves the scene's farthest coordinate (1e+09) to 1e+21, "
+                          "beyond a scene's limit of 1e+09: give a scale of at most 1"));
+    CHECK_NOTHROW(scale_scene(far, 1));
+    // The course's scene reaches 6.5 (the camera's z): 1.5e8 fits, 1e9 does not. A box counts its corners
+    // after its transform; --study-scales is named as the flag it came from.
+    const Scene scene = load_scene(scene_path("ch03_default.json"));
+    CHECK(largest_coordinate(scene) == Approx(6.5));
+    CHECK_NOTHROW(check_scale(scene, Real(1.5e8)));
+    CHECK_THROWS_WITH(check_scale(scene, Real(1e9), "--study-scales (times --scale)"),
+                      Catch::StartsWith("--study-scales (times --scale): 1e+09 moves"));
+    const Scene box =
+        scene_of({Shape{BoxShape{{0, 0, 0}, {1, 1, 1}, {Vec3{2}, Vec3{0}, Vec3{0, 0, 10}}}, 0, "b"}});
+    CHECK(largest_coordinate(box) == Approx(12));
+}
+
 TEST_CASE("Materials and lights this chapter does not simulate are named with their chapter", "[ch03]") {
     Scene scene = scene_of({Shape{SphereShape{}, 0, "shapes[0]"}});
     scene.materials[0] = material("chrome", MaterialType::kMirror);
@@ -287,7 +311,7 @@ SpawnCounts spawn_from(const Scene& scene, const RayOffset& offset, Real size, s
 TEST_CASE(
     "Rays spawned from spheres, quads, planes and triangles at coordinates 1e-3 to 1e5 never re-hit them",
     "[ch03][stability][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
-          "[ex:ch02.triangle_watertight][ex:ch03.robust_offset]") {
+    "[ex:ch02.triangle_watertight][ex:ch03.robust_offset]") {
     const RayOffset robust{}, epsilon{OffsetMethod::kEpsilon, Real(1e-4)}, none{OffsetMethod::kNone};
     for (Real s : {Real(1e-3), Real(1e-2), Real(1e-1), Real(1), Real(10), Real(1e2), Real(1e3), Real(1e4),
                    Real(1e5)}) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
 #include "rt/assets.hpp"
+#include "rt/effects.hpp"
 #include "rt/errors.hpp"
 #include "rt/random.hpp"
 #include "rt/scene_loader.hpp"
@@ -55,8 +57,12 @@ struct Setup {
     std::unique_ptr<DirectLighting> shading;
     std::unique_ptr<RecursiveTracer> tracer;
 
-    // The effects simulated are direct.simulated (every effect by default).
-    Setup(Scene s, TerminationSettings termination, DirectOptions direct = {}) : scene(std::move(s)) {
+    // The effects simulated are direct.simulated when given, else what a run of chapter 05 simulates for
+    // the scene (simulated_effects: needed ∩ supported), as for a user's scene file.
+    Setup(Scene s, TerminationSettings termination, std::optional<DirectOptions> given = std::nullopt)
+        : scene(std::move(s)) {
+        DirectOptions direct = given.value_or(DirectOptions{});
+        if (!given) direct.simulated = simulated_effects(scene, kRecursiveChapterEffects);
         world = std::make_unique<World>(scene);
         materials = std::make_unique<MaterialTable>(scene, direct.simulated);
         shading = std::make_unique<DirectLighting>(*world, *materials, collect_lights(scene), direct);
@@ -520,9 +526,11 @@ TEST_CASE("The uniform hemisphere weight 2 rho cos has mean rho",
 
 namespace {
 
+// With the effects a run of chapter 05 simulates for the scene, unless `effects` says others.
 RenderResult render_scene(const Scene& scene, TerminationSettings termination, int size, int spp, int threads,
-                          EffectSet effects = EffectSet::all()) {
-    const Setup setup(scene, termination, simulating(effects));
+                          std::optional<EffectSet> effects = std::nullopt) {
+    const Setup setup(scene, termination,
+                      effects ? std::optional<DirectOptions>(simulating(*effects)) : std::nullopt);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const RenderSettings settings{size, size, spp, 5, threads, ProgressStyle::kNone};
     return render_gi(*setup.tracer, camera, settings);
@@ -533,9 +541,9 @@ RenderResult render_scene(const Scene& scene, TerminationSettings termination, i
 TEST_CASE(
     "Ray counts follow the effects: without a mirror no reflection rays, without indirect no indirect rays",
     "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
-          "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch04.uniform_hemisphere][ex:ch05.mirror_scatter]"
+    "[ex:ch05.termination][ex:ch05.trace][ex:ch05.uniform_scatter]") {
     const Scene cornell = load_scene(scene_path("ch05_default.json"));
     const TerminationSettings t = rule(Termination::kRussianRoulette, kSafetyDepthCap);
     const RenderResult all = render_scene(cornell, t, 24, 1, 1);

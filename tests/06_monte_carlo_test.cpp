@@ -21,6 +21,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
+#include "05_recursive_gi/gi_render.hpp"
 #include "06_monte_carlo/frisvad_frame.hpp"
 #include "06_monte_carlo/irradiance_estimators.hpp"
 #include "06_monte_carlo/mis.hpp"
@@ -28,6 +29,7 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "06_monte_carlo/warp_pdfs.hpp"
 #include "rt/assets.hpp"
+#include "rt/effects.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/random.hpp"
@@ -116,8 +118,11 @@ Scene furnace_scene(Real albedo) {
 
 RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int size, int spp,
                           std::uint64_t seed, int threads = 1) {
-    const RenderScene prepared(scene, EffectSet::all());
+    // What a run of chapter 06 simulates for the scene, as for a user's scene file.
+    const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
+    const RenderScene prepared(scene, simulated);
     PathOptions options;
+    options.simulated = simulated;
     options.strategy = strategy;
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
@@ -165,7 +170,7 @@ TEST_CASE(
     "Every BRDF sampler passes the chi-square test for 5 outgoing directions up to 89 degrees, its pdf "
     "integrates to 1, to at most 1 above the surface",
     "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine]"
-          "[ex:ch04.power_cosine_pdf]") {
+    "[ex:ch04.power_cosine_pdf]") {
     std::uint64_t seed = 200;
     for (const auto& [name, owner] : sampled_brdfs()) {
         const Bsdf& brdf = *owner;
@@ -680,10 +685,10 @@ TEST_CASE(
     "Ray counts: shadow rays only with light sampling, none without lights, the same image on 1 and 2 "
     "threads",
     "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+    "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     const RenderResult one = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 1);
     const RenderResult two = render_scene(scene, SamplingStrategy::kMis, 24, 4, 5, 2);
@@ -706,10 +711,11 @@ TEST_CASE(
     CHECK(black.image.mean() == 0);
 }
 
-TEST_CASE("Inside a closed box of emitters, emission 0.5 and albedo 0.5, every strategy sees Le / (1 - rho) = 1",
-          "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+TEST_CASE(
+    "Inside a closed box of emitters, emission 0.5 and albedo 0.5, every strategy sees Le / (1 - rho) = 1",
+    "[render][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // Every point sees only walls of the same radiance L = Le + ρ L: L = 1 at every bounce, so a path whose
     // later vertices are weighed wrongly (its throughput left out of next-event estimation, a light counted
     // by both strategies) is off by a multiple of the light of those bounces.
@@ -723,7 +729,8 @@ TEST_CASE("Inside a closed box of emitters, emission 0.5 and albedo 0.5, every s
     scene.materials.push_back(wall);
     // The six faces of [−1, 1]³, each with u × v pointing in.
     const Vec3 a{-1, -1, -1};
-    const std::pair<Vec3, Vec3> x_face{{0, 2, 0}, {0, 0, 2}}, y_face{{0, 0, 2}, {2, 0, 0}}, z_face{{2, 0, 0}, {0, 2, 0}};
+    const std::pair<Vec3, Vec3> x_face{{0, 2, 0}, {0, 0, 2}}, y_face{{0, 0, 2}, {2, 0, 0}},
+        z_face{{2, 0, 0}, {0, 2, 0}};
     scene.shapes.push_back(Shape{QuadShape{a, x_face.first, x_face.second}, 0, "x = -1"});
     scene.shapes.push_back(Shape{QuadShape{{1, -1, -1}, x_face.second, x_face.first}, 0, "x = 1"});
     scene.shapes.push_back(Shape{QuadShape{a, y_face.first, y_face.second}, 0, "y = -1"});

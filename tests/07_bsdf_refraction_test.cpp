@@ -13,8 +13,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <glm/geometric.hpp>
+#include <iterator>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -81,8 +81,13 @@ RenderSettings small_settings(int size, int spp) {
     return s;
 }
 
+// What a run of chapter 07 simulates for `scene`: what run_chapter() computes, needed ∩ supported.
+EffectSet chapter07_effects(const Scene& scene) {
+    return simulated_effects(scene, kRefractionChapterEffects);
+}
+
 RenderResult render_scene(const Scene& scene, const RenderSettings& settings, Renderer* used = nullptr) {
-    const EffectSet simulated = needed(scene) & EffectSet::all();
+    const EffectSet simulated = chapter07_effects(scene);
     const Renderer renderer = choose_renderer(simulated);
     if (used) *used = renderer;
     return render_with(renderer, scene, simulated, settings, {});
@@ -338,16 +343,16 @@ TEST_CASE("Beer-Lambert: exp(-sigma d) per channel, and clear glass passes every
 // The furnace
 
 // The course's scene `file` prepared for chapter 07's path tracer (chapter 06's loop with this chapter's
-// BSDFs), every effect it needs simulated.
+// BSDFs), simulating what a run of chapter 07 simulates (run_chapter()'s simulated_effects).
 struct SceneTracer {
     explicit SceneTracer(const char* file)
         : scene(load_scene(scene_path(file))),
-          prepared(scene, needed(scene), refraction_materials()),
-          tracer(prepared.world, prepared.materials, prepared.lights, every_effect_needed(scene)) {}
+          prepared(scene, chapter07_effects(scene), refraction_materials()),
+          tracer(prepared.world, prepared.materials, prepared.lights, as_run(scene)) {}
 
-    static PathOptions every_effect_needed(const Scene& scene) {
+    static PathOptions as_run(const Scene& scene) {
         PathOptions options;
-        options.simulated = needed(scene);
+        options.simulated = chapter07_effects(scene);
         return options;
     }
 
@@ -439,7 +444,8 @@ TEST_CASE("A scene without a dielectric traces no refraction rays",
     CHECK(used == Renderer::kPaths);
     CHECK(r.rays[RayKind::kRefraction] == 0);
     // The glass tracer itself, given that scene, traces none either.
-    const RenderResult g = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
+    const RenderResult g =
+        render_with(Renderer::kPaths, scene, chapter07_effects(scene), small_settings(24, 4), {});
     CHECK(g.rays[RayKind::kRefraction] == 0);
     CHECK(g.rays[RayKind::kIndirect] > 0);
 }
@@ -462,10 +468,10 @@ TEST_CASE("A scene calling only for shadows and direct light gets maximum depth 
 TEST_CASE(
     "Glass without the indirect effect: refraction rays, and a path ends after its first diffuse bounce",
     "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+    "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = glass_box(R"(, "effects": ["shadows", "direct", "reflection", "refraction"])");
     Renderer used{};
     const RenderResult r = render_scene(scene, small_settings(24, 4), &used);
@@ -478,7 +484,8 @@ TEST_CASE(
     // The same scene with the light strategy (next-event estimation alone) needs no such ray.
     PathOptions light;
     light.strategy = SamplingStrategy::kLight;
-    const RenderResult l = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), light);
+    const RenderResult l =
+        render_with(Renderer::kPaths, scene, chapter07_effects(scene), small_settings(24, 4), light);
     CHECK(l.rays[RayKind::kIndirect] == 0);
 }
 
@@ -504,9 +511,8 @@ Scene sky_scene(const std::string& glass) {
     })");
 }
 
-TEST_CASE(
-    "An emissive plane lights a glass scene as it lights the same scene with the glass made diffuse",
-    "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
+TEST_CASE("An emissive plane lights a glass scene as it lights the same scene with the glass made diffuse",
+          "[render][regression][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
           "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
           "[ex:ch07.refract]") {
@@ -535,7 +541,8 @@ TEST_CASE("A glass scene without lights traces no shadow rays",
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     Scene scene = glass_box("");
     for (Material& m : scene.materials) m.emission = Color(0);
-    const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(24, 4), {});
+    const RenderResult r =
+        render_with(Renderer::kPaths, scene, chapter07_effects(scene), small_settings(24, 4), {});
     CHECK(r.rays[RayKind::kShadow] == 0);
     CHECK(r.rays[RayKind::kRefraction] > 0);
     CHECK(r.image.mean() == 0);
@@ -616,7 +623,7 @@ TEST_CASE("Sobol samples: the glass box renders finite, the same on 1 and 2 thre
     RenderSettings settings = small_settings(32, 16);
     PathOptions sobol;
     sobol.sampler = PointSet::kSobol;
-    const EffectSet simulated = needed(scene) & EffectSet::all();
+    const EffectSet simulated = chapter07_effects(scene);
     const RenderResult a = render_with(Renderer::kPaths, scene, simulated, settings, sobol);
     const RenderResult stratified = render_with(Renderer::kPaths, scene, simulated, settings);
     settings.threads = 1;
@@ -664,9 +671,9 @@ TEST_CASE("With and without next-event estimation the glass box converges to the
     RenderSettings settings = small_settings(16, 512);
     PathOptions nee, hits;
     hits.strategy = SamplingStrategy::kBrdf;
-    const RenderResult a = render_with(Renderer::kPaths, scene, needed(scene), settings, nee);
+    const RenderResult a = render_with(Renderer::kPaths, scene, chapter07_effects(scene), settings, nee);
     settings.seed = 8;
-    const RenderResult b = render_with(Renderer::kPaths, scene, needed(scene), settings, hits);
+    const RenderResult b = render_with(Renderer::kPaths, scene, chapter07_effects(scene), settings, hits);
     CHECK(a.rays[RayKind::kShadow] > 0);
     CHECK(b.rays[RayKind::kShadow] == 0);
     // The image means (256 pixels × 512 paths each): within 3 % (the light-hitting estimate is the noisier).
@@ -686,7 +693,8 @@ TEST_CASE("Radiance inside glass is eta^2 times the radiance outside: a camera i
       "shapes": [{"type": "sphere", "center": [0.1, -0.2, 0.05], "radius": 1, "material": "glass"}],
       "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
     })");
-    const RenderResult r = render_with(Renderer::kPaths, scene, needed(scene), small_settings(16, 16), {});
+    const RenderResult r =
+        render_with(Renderer::kPaths, scene, chapter07_effects(scene), small_settings(16, 16), {});
     for (const Color& c : r.image.pixels()) CHECK(c.g == Approx(2.25).epsilon(1e-5));
     CHECK(r.rays[RayKind::kRefraction] > 0);
 }
@@ -767,9 +775,8 @@ Furnace render_furnace(double roughness, int size, int spp, std::uint64_t seed) 
     const Scene scene = frosted_sphere(roughness);
     RenderSettings settings = small_settings(size, spp);
     settings.seed = seed;
-    // Every effect: needed(scene) (common/rt/effects.cpp) asks for direct and indirect light only when some
-    // surface reflects diffusely, and rough glass, which scatters into a lobe, is not counted there yet.
-    Furnace f{render_with(Renderer::kPaths, scene, EffectSet::all(), settings, {}), 0, 0, 0};
+    // What a run of chapter 07 simulates for the scene, as its executable renders it.
+    Furnace f{render_scene(scene, settings), 0, 0, 0};
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     double sum = 0, sum2 = 0;
     for (int y = 0; y < size; ++y) {
@@ -1011,8 +1018,8 @@ TEST_CASE(
     "Furnace: a frosted sphere (roughness 0.3, ior 1.5) under a uniform sky of radiance 1 loses only "
     "what single-scattering microfacets lose",
     "[furnace][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch05.termination][ex:ch06.mis_weight]"
+    "[ex:ch06.path_tracer][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Furnace f = render_furnace(0.3, 32, 256, 11);
     INFO("sphere pixels " << f.sphere_pixels << ", mean " << f.sphere_mean << " +- " << f.sphere_error
                           << ", image mean " << f.render.image.mean());

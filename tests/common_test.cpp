@@ -474,6 +474,33 @@ TEST_CASE("needed(scene) follows the content, narrowed by the scene's effects li
     CHECK(needed(cornell) == EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia}));
 }
 
+TEST_CASE("needed(scene) lights whatever a light can reach: media that scatter, mirrors and glass too",
+          "[effects]") {
+    const EffectSet lighting{Effect::kShadows, Effect::kDirect, Effect::kIndirect};
+    const auto lit = [&](const std::string& rest) {
+        const Scene scene = parse_scene("{" + std::string(kMinimalCamera) + rest + "}", "s.json");
+        return (needed(scene) & lighting) == lighting;
+    };
+    const std::string point = R"(, "lights": [{"type": "point", "position": [0,5,0], "intensity": [9,9,9]}])";
+    const std::string sky = R"(, "lights": [{"type": "environment", "radiance": [1,1,1]}])";
+    const std::string fog = R"(, "medium": {"sigma_a": [0.01,0.01,0.01], "sigma_s": [0.2,0.2,0.2]})";
+    const auto sphere_of = [](const std::string& material) {
+        return R"(, "materials": {"m": )" + material +
+               R"(}, "shapes": [{"type": "sphere", "center": [0,0,-3], "radius": 1, "material": "m"}])";
+    };
+    // Fog lit by a point light, with nothing else in the scene; a sphere of milk under a sky.
+    CHECK(lit(fog + point));
+    CHECK(lit(sky + sphere_of(R"({"type": "dielectric", "medium": {"sigma_s": [1,1,1]}})")));
+    // A mirror and smooth glass under a lamp (chapters 03 and 04 shade them as lit Lambert stand-ins).
+    CHECK(lit(point + sphere_of(R"({"type": "mirror"})")));
+    CHECK(lit(point + sphere_of(R"({"type": "dielectric"})")));
+    // Nothing a light can reach: fog that only absorbs, a black surface, a black mirror; and no light.
+    CHECK_FALSE(lit(point + R"(, "medium": {"sigma_a": [0.1,0.1,0.1]})"));
+    CHECK_FALSE(lit(point + sphere_of(R"({"type": "diffuse", "albedo": [0,0,0]})")));
+    CHECK_FALSE(lit(point + sphere_of(R"({"type": "mirror", "reflectance": [0,0,0]})")));
+    CHECK_FALSE(lit(fog + sphere_of(R"({"type": "diffuse"})")));
+}
+
 TEST_CASE("The variance of a pixel's mean from exact sums: samples 1, 2, 3, 4 give 5/12", "[variance]") {
     PixelSum sum, squares;
     for (int i = 1; i <= 4; ++i) {

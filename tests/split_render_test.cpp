@@ -210,6 +210,44 @@ TEST_CASE("A film written and read back is the same film, and a changed byte is 
     fs::remove(file);
 }
 
+TEST_CASE("A film is input: negative sums, sums beyond its samples' reach and NaN flags are refused by name",
+          "[split]") {
+    RenderSettings settings = small_settings();
+    const FilmIdentity id{"ch00_test", "test.json", 42, "", settings.width, settings.height, 7, 3};
+    auto piece = [&](SampleRange r) {
+        RenderSettings s = settings;
+        s.samples = r;
+        return Film{id, r, render(s, stratified_sample(s)).sums};
+    };
+    const fs::path file = fs::temp_directory_path() / "rt_split_render_values.film";
+    // Each changed film is refused when read (rt_merge's pieces, --resume) and when merged from memory.
+    using Reason = Catch::Matchers::Impl::MatcherBase<std::string>;
+    auto refused = [&](const Film& film, const Reason& reason) {
+        write_film(film, file);
+        CHECK_THROWS_WITH(read_film(file), Catch::StartsWith(file.string() + ": pixel (3, 2) ") && reason);
+        CHECK_THROWS_WITH(merge_films({{"a.film", film}, {"b.film", piece({3, 7})}}),
+                          Catch::StartsWith("a.film: pixel (3, 2) ") && reason);
+    };
+    Film negative = piece({0, 3});
+    negative.sums.at(3, 2).channels[1] = -negative.sums.at(3, 2).channels[1];
+    refused(negative, Catch::Contains("has a sum of -") && Catch::Contains("in channel 1 for 3 samples") &&
+                          Catch::Contains("radiance is never negative"));
+    // Two such pieces would add to more than 2^127: the 128-bit sum would wrap.
+    Film huge = piece({0, 3});
+    huge.sums.at(3, 2).channels[0] = (Int128(1) << 126) + 1;
+    refused(huge, Catch::Contains("in channel 0 for 3 samples, outside [-4.57764e-05, 3.3777e+15]"));
+    Film nan = piece({0, 3});
+    nan.sums.at(3, 2).non_finite = PixelSum::kNan << 3;
+    refused(nan, Catch::Contains("holds a NaN or infinite sample"));
+    Film unknown = piece({0, 3});
+    unknown.sums.at(3, 2).non_finite = 01000;
+    refused(unknown, Catch::Contains("has unknown flags 512"));
+    // The pieces as rendered are merged.
+    CHECK(merge_films({{"a.film", piece({0, 3})}, {"b.film", piece({3, 7})}}).sums ==
+          render(settings, stratified_sample(settings)).sums);
+    fs::remove(file);
+}
+
 TEST_CASE("merge_films adds pieces given in any order, and names the piece that leaves a gap", "[split]") {
     const RenderSettings whole_settings = small_settings();
     const RenderResult whole = render(whole_settings, stratified_sample(whole_settings));

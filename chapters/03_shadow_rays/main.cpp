@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
     std::vector<Real> study_scales{Real(1e-3), Real(1), Real(1e3), Real(1e5)};
     std::string csv;
     const ChapterInfo chapter{"ch03_shadow_rays", "Chapter 03: point lights, shadow rays and ray offsets",
-                              "ch03_default.json",
-                              EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect}};
+                              "ch03_default.json", kShadowChapterEffects};
     auto flags = [&](CLI::App& app) {
         CLI::Option* offset_flag =
             app.add_option("--offset", offset_name, "How a shadow ray leaves its surface: none|epsilon|robust")
@@ -91,11 +90,7 @@ int main(int argc, char** argv) {
             if (!csv.empty()) check_writable("--csv", csv);
             std::vector<Real> scales;
             for (Real s : study_scales) {
-                if (!(s * scale >= Real(1e-12) && s * scale <= Real(1e12))) {
-                    throw InputError(
-                        "--study-scales: each scale (times --scale) must be in [1e-12, 1e12], got " +
-                        format("%g", double(s * scale)));
-                }
+                check_scale(context.scene, s * scale, "--study-scales (times --scale)");
                 scales.push_back(s * scale);
             }
             const std::vector<RayOffset> methods{{OffsetMethod::kNone, epsilon},
@@ -107,8 +102,7 @@ int main(int argc, char** argv) {
         const Scene scene = scale_scene(context.scene, scale);
         const World world(scene);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-        const ShadowOptions options{offset, context.simulated.contains(Effect::kDirect),
-                                    context.simulated.contains(Effect::kShadows)};
+        const ShadowOptions options = shadow_options(context.simulated, offset);
         ChapterRun run{render_shadows(world, scene, camera, options, settings), {}, std::nullopt};
         std::string method = "ray offset: " + offset_name;
         if (offset.method == OffsetMethod::kEpsilon) method += format(" (epsilon %g)", double(epsilon));

@@ -1,5 +1,6 @@
 #include "scene_scale.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -7,16 +8,67 @@
 #include <variant>
 
 #include "rt/errors.hpp"
+#include "rt/scene_loader.hpp"
 
 namespace rt {
 
-Scene scale_scene(const Scene& scene, Real s) {
+double largest_coordinate(const Scene& scene) {
+    double largest = 0;
+    const auto take = [&](const Vec3& p) {
+        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(double(p[i])));
+    };
+    take(scene.camera.from);
+    take(scene.camera.at);
+    for (const PointLight& light : scene.point_lights) take(light.position);
+    for (const Shape& shape : scene.shapes) {
+        std::visit(
+            [&](const auto& g) {
+                using T = std::decay_t<decltype(g)>;
+                if constexpr (std::is_same_v<T, SphereShape>) {
+                    take(glm::abs(g.center) + Vec3(g.radius));
+                } else if constexpr (std::is_same_v<T, QuadShape>) {
+                    for (const Vec3& p : {g.origin, g.origin + g.u, g.origin + g.v, g.origin + g.u + g.v})
+                        take(p);
+                } else if constexpr (std::is_same_v<T, TriangleShape>) {
+                    for (const Vec3& v : g.vertices) take(v);
+                } else if constexpr (std::is_same_v<T, PlaneShape>) {
+                    take(g.point);
+                } else if constexpr (std::is_same_v<T, BoxShape>) {
+                    for (int corner = 0; corner < 8; ++corner) {
+                        take(g.transform.apply_to_point({corner & 1 ? g.max.x : g.min.x,
+                                                         corner & 2 ? g.max.y : g.min.y,
+                                                         corner & 4 ? g.max.z : g.min.z}));
+                    }
+                } else if constexpr (std::is_same_v<T, MeshShape>) {
+                    for (const Vec3& p : g.positions) take(p);
+                }
+            },
+            shape.geometry);
+    }
+    return largest;
+}
+
+void check_scale(const Scene& scene, Real s, const std::string& flag) {
+    char text[256];
     // Beyond 1e12 the scaled intensities (× s²) overflow float; below 1e-12 the squared distances underflow.
     if (!(s >= Real(1e-12) && s <= Real(1e12))) {
-        char text[96];
-        std::snprintf(text, sizeof text, "--scale: must be in [1e-12, 1e12], got %g", double(s));
+        std::snprintf(text, sizeof text, "%s: must be in [1e-12, 1e12], got %g", flag.c_str(), double(s));
         throw InputError(text);
     }
+    const double largest = largest_coordinate(scene);
+    if (largest * double(s) > kLargestSceneNumber) {
+        std::snprintf(
+            text, sizeof text,
+            "%s: %g moves the scene's farthest coordinate (%g) to %g, beyond a scene's limit of %g: "
+            "give a scale of at most %g",
+            flag.c_str(), double(s), largest, largest * double(s), kLargestSceneNumber,
+            kLargestSceneNumber / largest);
+        throw InputError(text);
+    }
+}
+
+Scene scale_scene(const Scene& scene, Real s) {
+    check_scale(scene, s);
     Scene out = scene;
     out.camera.from *= s;
     out.camera.at *= s;

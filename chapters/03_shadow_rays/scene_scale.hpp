@@ -3,11 +3,22 @@
 // the same. Only the floating-point numbers change: what an offset does at 1e-3 and at 1e5 can be compared.
 #pragma once
 
+#include <string>
+
 #include "rt/scene.hpp"
 
 namespace rt {
 
-// Throws InputError unless s is in [1e-12, 1e12] (intensities × s² stay finite in float).
+// The largest magnitude of any coordinate of the scene's camera, point lights and shapes (a sphere's extent,
+// a quad's corners, a box's corners after its transform).
+double largest_coordinate(const Scene& scene);
+
+// Throws InputError unless s is in [1e-12, 1e12] (intensities × s² stay finite in float) and the scaled
+// scene's coordinates stay within a scene file's limit (kLargestSceneNumber): beyond it ray tests overflow
+// float, and the picture turns black. `flag` names where s came from in the message.
+void check_scale(const Scene& scene, Real s, const std::string& flag = "--scale");
+
+// The scene scaled by s; check_scale's refusals first.
 Scene scale_scene(const Scene& scene, Real s);
 
 }  // namespace rt

@@ -7,6 +7,10 @@
 
 namespace rt {
 
+ShadowOptions shadow_options(const EffectSet& simulated, const RayOffset& offset) {
+    return {offset, simulated.contains(Effect::kDirect), simulated.contains(Effect::kShadows)};
+}
+
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng) {
     const Vec2 film = pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, spp, rng.next_vec2());
     return camera_ray(camera, film.x, film.y);

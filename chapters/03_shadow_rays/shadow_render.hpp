@@ -10,6 +10,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
+#include "rt/effect_set.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "rt/render_loop.hpp"
@@ -17,11 +18,17 @@
 
 namespace rt {
 
+// What this chapter simulates (its ChapterInfo::supported).
+inline constexpr EffectSet kShadowChapterEffects{Effect::kCameraRays, Effect::kShadows, Effect::kDirect};
+
 struct ShadowOptions {
     RayOffset offset{};
     bool direct = true;   // effect "direct": light the surfaces at all
     bool shadows = true;  // effect "shadows": trace shadow rays (false: every light counts as visible)
 };
+
+// The options of a run that simulates `simulated` and leaves surfaces by `offset`.
+ShadowOptions shadow_options(const EffectSet& simulated, const RayOffset& offset);
 
 // The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);

@@ -9,9 +9,14 @@
 #include "01_ray_generation/camera.hpp"
 #include "furnace.hpp"
 #include "recursive_tracer.hpp"
+#include "rt/effect_set.hpp"
 #include "rt/render_loop.hpp"
 
 namespace rt {
+
+// What chapters 05 and 06 simulate (their ChapterInfo::supported): all but refraction and media.
+inline constexpr EffectSet kRecursiveChapterEffects =
+    EffectSet::all().without({Effect::kRefraction, Effect::kMedia});
 
 RenderResult render_gi(const RecursiveTracer& tracer, const PinholeCamera& camera,
                        const RenderSettings& settings);

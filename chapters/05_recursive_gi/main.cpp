@@ -34,9 +34,7 @@ int main(int argc, char** argv) {
     const ChapterInfo chapter{
         "ch05_recursive_gi",
         "Chapter 05: recursive global illumination: mirrors, indirect light, termination",
-        "ch05_default.json",
-        EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kReflection,
-                  Effect::kGlossy, Effect::kIndirect}};
+        "ch05_default.json", kRecursiveChapterEffects};
     auto flags = [&](CLI::App& app) {
         cli = &app;
         CLI::Option* study_flag = app.add_flag(

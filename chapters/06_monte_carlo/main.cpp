@@ -8,6 +8,7 @@
 
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
+#include "05_recursive_gi/gi_render.hpp"
 #include "convergence.hpp"
 #include "irradiance_study.hpp"
 #include "path_tracer.hpp"
@@ -44,10 +45,9 @@ int main(int argc, char** argv) {
     std::string csv = "ch06_convergence.csv";
     const ChapterInfo chapter{"ch06_monte_carlo",
                               "Chapter 06: Monte Carlo with importance sampling: an iterative path tracer, "
-                              "five sampling strategies, MIS",
-                              "ch06_default.json",
-                              EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
-                                        Effect::kReflection, Effect::kGlossy, Effect::kIndirect}};
+                              "five sampling strategies, "
+                              "MIS",
+                              "ch06_default.json", kRecursiveChapterEffects};
     auto flags = [&](CLI::App& app) {
         app.add_option("--sampling", sampling, "How directions are drawn: uniform|cosine|brdf|light|mis")
             ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));

@@ -18,6 +18,9 @@
 
 namespace rt {
 
+// What this chapter simulates (its ChapterInfo::supported; chapter 08 the same): all but media.
+inline constexpr EffectSet kRefractionChapterEffects = EffectSet::all().without({Effect::kMedia});
+
 enum class Renderer { kDirect, kPaths };
 
 // "direct (chapter 04)" or "paths (chapter 06's loop, chapter 07's BSDFs)".

@@ -68,7 +68,7 @@ int main(int argc, char** argv) {
         "ch07_bsdf_refraction",
         "Chapter 07: BSDF refraction: Snell, Fresnel (exact and Schlick), total internal "
         "reflection, Beer-Lambert, the sampled smooth dielectric in the path tracer",
-        "ch07_default.json", EffectSet::all().without({Effect::kMedia})};
+        "ch07_default.json", kRefractionChapterEffects};
     auto flags = [&](CLI::App& app) {
         app.add_option("--max-depth", max_depth,
                        "End every path after this many bounces (chapter 05's depth rule) instead of Russian "

@@ -63,8 +63,7 @@ int main(int argc, char** argv) {
         "Chapter 08: forward (light) tracing: paths from the lights, through an aperture or connected to the "
         "camera",
         "ch08_default.json",
-        EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kReflection,
-                  Effect::kGlossy, Effect::kIndirect, Effect::kRefraction},
+        kRefractionChapterEffects,
         {},
         [&]() -> std::string {
             if (tracer_name == "forward")

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
         "ch09_participating_media",
         "Chapter 09: participating media and subsurface scattering: free flight, Henyey-Greenstein, "
         "next-event estimation through media, the random walk",
-        "ch09_default.json", EffectSet::all()};
+        "ch09_default.json", kMediaChapterEffects};
     auto flags = [&](CLI::App& app) {
         app.add_option("--max-events", max_events, "End a path after this many scattering events in media")
             ->check(CLI::Range(1, 1 << 30));

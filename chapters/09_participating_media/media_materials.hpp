@@ -8,6 +8,9 @@
 
 namespace rt {
 
+// What chapter 09 simulates (its ChapterInfo::supported; chapter 10's too): every effect.
+inline constexpr EffectSet kMediaChapterEffects = EffectSet::all();
+
 MaterialHooks media_materials();
 
 }  // namespace rt

@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
                               "Chapter 10: denoising: feature buffers and per-pixel variance from the path "
                               "tracer, a joint bilateral and the edge-avoiding a-trous filter, measured",
                               "ch10_default.json",
-                              EffectSet::all(),
+                              kMediaChapterEffects,
                               {".noisy", ".albedo", ".normal"},
                               [&] {
                                   return denoiser_name == "none" && !study ? "" : "chapter 10 denoises the whole image, "

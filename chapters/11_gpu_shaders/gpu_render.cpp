@@ -4,6 +4,8 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "04_direct_lighting/light_set.hpp"
 #include "04_direct_lighting/material_table.hpp"
@@ -41,7 +43,47 @@ GLuint make_accumulation(int width, int height) {
     return texture;
 }
 
+GLint gl_integer(GLenum name, GLuint index = 0) {
+    GLint value = 0;
+    glGetIntegeri_v(name, index, &value);
+    return value;
+}
+
 }  // namespace
+
+void check_image_size(int width, int height, ShaderKind kind) {
+    // The largest side each part of the render takes: the accumulation texture, and the compute shader's
+    // workgroups of 8×8 pixels, or the fragment shader's framebuffer and viewport.
+    struct Limit {
+        const char* name;
+        long long side;
+    };
+    std::vector<Limit> limits;
+    GLint texture = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    limits.push_back({"GL_MAX_TEXTURE_SIZE", texture});
+    if (kind == ShaderKind::kCompute) {
+        const long long groups = std::min(gl_integer(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0),
+                                          gl_integer(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 1));
+        limits.push_back({"GL_MAX_COMPUTE_WORK_GROUP_COUNT, 8 pixels a group", 8 * groups});
+    } else {
+        GLint framebuffer_width = 0, framebuffer_height = 0, viewport[2] = {0, 0};
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &framebuffer_width);
+        glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &framebuffer_height);
+        glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+        limits.push_back(
+            {"GL_MAX_FRAMEBUFFER_WIDTH and _HEIGHT", std::min(framebuffer_width, framebuffer_height)});
+        limits.push_back({"GL_MAX_VIEWPORT_DIMS", std::min(viewport[0], viewport[1])});
+    }
+    const Limit smallest = *std::min_element(limits.begin(), limits.end(),
+                                             [](const Limit& a, const Limit& b) { return a.side < b.side; });
+    if (std::max(width, height) > smallest.side) {
+        throw InputError("image " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": this OpenGL's " + std::string(to_string(kind)) + " shader renders at most " +
+                         std::to_string(smallest.side) + " pixels a side (" + smallest.name +
+                         "): give --width and --height of at most " + std::to_string(smallest.side));
+    }
+}
 
 ShaderKind shader_kind_from_string(std::string_view name) {
     if (name == "compute") return ShaderKind::kCompute;
@@ -111,6 +153,7 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     const State& s = *state_;
     const GlProgram& p = s.program;
     const int width = settings.width, height = settings.height, spp = settings.samples_per_pixel;
+    check_image_size(width, height, s.kind);
     const PinholeCamera camera = make_pinhole_camera(s.scene.camera, width, height);
     p.set("camera_eye", float(camera.eye.x), float(camera.eye.y), float(camera.eye.z));
     p.set("camera_forward", float(camera.forward.x), float(camera.forward.y), float(camera.forward.z));

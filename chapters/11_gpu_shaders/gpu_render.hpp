@@ -25,6 +25,11 @@ enum class ShaderKind { kCompute, kFragment };
 ShaderKind shader_kind_from_string(std::string_view name);
 std::string_view to_string(ShaderKind kind);
 
+// Throws InputError, naming the limit, when this OpenGL (its context current on this thread) cannot hold an
+// image of width × height for the `kind` shader: beyond its limits a texture or a dispatch silently fails and
+// the image reads black.
+void check_image_size(int width, int height, ShaderKind kind);
+
 class GpuRenderer {
   public:
     // Flattens and uploads the scene and compiles the shader, on `context` (current on this thread); the

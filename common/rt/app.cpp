@@ -274,7 +274,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         LiveKnobs knobs(app, core_flags, std::vector<std::string>(argv + 1, argv + argc));
         return run_live(LiveRun{chapter, scene, settings, needed_effects, render, knobs, reference}, live.port);
     }
-    const RunContext context{scene, settings, needed_effects & chapter.supported};
+    const RunContext context{scene, settings, simulated_effects(scene, chapter.supported)};
     std::optional<ChapterRun> result = render(context);
     set_interrupt_phase(InterruptPhase::kWriting);
     if (!result) return signal_received() ? interrupted_exit_status() : kExitOk;

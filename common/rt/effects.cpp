@@ -5,13 +5,15 @@
 namespace rt {
 namespace {
 
-// Whether light sampling can reach the material: a diffuse, glossy or retro-reflective lobe that reflects
-// something, or rough glass (its microfacet lobes are not deltas; chapter 07).
-bool reflects_diffusely(const Material& m) {
-    if (m.type == MaterialType::kDielectric) return m.roughness > 0;
-    const bool lobe = m.type == MaterialType::kDiffuse || m.type == MaterialType::kGlossy ||
-                      m.type == MaterialType::kRetroreflective;
-    return lobe && (m.albedo.r > 0 || m.albedo.g > 0 || m.albedo.b > 0);
+// Whether a light shining on the material is seen again: a diffuse, glossy or retro-reflective lobe or a
+// mirror that reflects something, and every dielectric (Fresnel reflects some of any light, a medium inside
+// may scatter it, and a chapter without refraction shades it as a grey stand-in). Mirrors and smooth glass
+// count although the path loop samples no light at their delta vertices: chapters 03 and 04 shade them as
+// Lambert stand-ins, which light does reach.
+bool lit_by_lights(const Material& m) {
+    if (m.type == MaterialType::kDielectric) return true;
+    const Color reflects = m.type == MaterialType::kMirror ? m.reflectance : m.albedo;
+    return reflects.r > 0 || reflects.g > 0 || reflects.b > 0;
 }
 
 }  // namespace
@@ -34,10 +36,13 @@ std::optional<Effect> effect_of(const Material& m) {
 EffectSet needed(const Scene& scene) {
     EffectSet content{Effect::kCameraRays};
     const bool lights = !scene.point_lights.empty() || scene.environment || scene.has_area_lights();
-    bool diffuse = false;
+    // Anything lights can shine on: a surface that reflects or transmits their light, or a medium that
+    // scatters it (its light arrives only by scattering: without shadows, direct and indirect it stays
+    // black). Only dielectrics hold a medium, and every dielectric counts.
+    bool lit = scene.medium && scene.medium->scatters();
     for (const Shape& shape : scene.shapes) {
         const Material& m = scene.material_of(shape);
-        diffuse = diffuse || reflects_diffusely(m);
+        lit = lit || lit_by_lights(m);
         if (const auto effect = effect_of(m)) content.insert(*effect);
         // Glass reflects too (Fresnel): reflection rays.
         if (effect_of(m) == Effect::kRefraction) content.insert(Effect::kReflection);
@@ -46,12 +51,16 @@ EffectSet needed(const Scene& scene) {
     // No chapter before 09 has anything between the shapes: a medium there, even one that only absorbs,
     // calls for media.
     if (scene.medium) content.insert(Effect::kMedia);
-    if (lights && diffuse) {
+    if (lights && lit) {
         content.insert(Effect::kShadows);
         content.insert(Effect::kDirect);
         content.insert(Effect::kIndirect);
     }
     return scene.effects ? content & *scene.effects : content;
+}
+
+EffectSet simulated_effects(const Scene& scene, const EffectSet& supported) {
+    return needed(scene) & supported;
 }
 
 std::string chapter_that_adds(Effect effect) {

@@ -1,8 +1,10 @@
 #include "rt/film.hpp"
 
 #include <bit>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "rt/errors.hpp"
@@ -15,6 +17,12 @@
 namespace rt {
 namespace fs = std::filesystem;
 namespace {
+
+std::string format_double(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+}
 
 static_assert(std::endian::native == std::endian::little, "films are written and read little-endian");
 
@@ -111,6 +119,43 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
     return "";
 }
 
+void check_film_values(const Film& film, const std::string& name) {
+    const std::uint32_t samples = std::uint32_t(film.range.size());
+    const int width = film.sums.width();
+    // Per sample, in units of 2^-kSumFractionBits: at most kSampleLimit, and at least −2^-16 (radiance
+    // is never negative; a colour computed as (d + 1) / 2 of a unit vector may round a hair below 0).
+    const Int128 most = Int128(kSampleLimit) << kSumFractionBits;
+    const Int128 least = -(Int128(1) << (kSumFractionBits - 16));
+    for (std::size_t i = 0; i < film.sums.pixels().size(); ++i) {
+        const PixelSum& p = film.sums.pixels()[i];
+        std::string wrong;
+        if (p.count > samples) {
+            wrong = "has " + std::to_string(p.count) + " samples, more than the film's " +
+                    std::to_string(samples);
+        } else if ((p.non_finite & ~PixelSum::kAllFlags) != 0) {
+            wrong = "has unknown flags " + std::to_string(p.non_finite);
+        } else if (p.non_finite != 0) {
+            wrong =
+                "holds a NaN or infinite sample: the render that wrote it failed; render this piece again";
+        }
+        for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
+            const Int128 sum = p.channels[c], count = p.count;
+            if (sum < count * least || sum > count * most) {
+                wrong = "has a sum of " + format_double(double(sum) * 0x1p-56) + " in channel " +
+                        std::to_string(c) + " for " + std::to_string(p.count) + " samples, outside [" +
+                        format_double(double(count * least) * 0x1p-56) + ", " +
+                        format_double(double(count * most) * 0x1p-56) +
+                        "] (radiance is never negative, and a sample is at most " +
+                        format_double(kSampleLimit) + ")";
+            }
+        }
+        if (!wrong.empty()) {
+            throw InputError(name + ": pixel (" + std::to_string(i % std::size_t(width)) + ", " +
+                             std::to_string(i / std::size_t(width)) + ") " + wrong);
+        }
+    }
+}
+
 bool encode_film(const Film& film, std::FILE* file) {
     const FilmIdentity& id = film.identity;
     Writer out;
@@ -200,13 +245,8 @@ Film read_film(const fs::path& path) {
         for (Int128& c : p.channels) c = in.get<Int128>();
         p.count = in.get<std::uint32_t>();
         p.non_finite = in.get<std::uint32_t>();
-        if (p.count > std::uint32_t(film.range.size()) || (p.non_finite & ~PixelSum::kAllFlags) != 0) {
-            in.fail("pixel (" + std::to_string(i % std::size_t(id.width)) + ", " +
-                    std::to_string(i / std::size_t(id.width)) + ") has " + std::to_string(p.count) +
-                    " samples (at most " + std::to_string(film.range.size()) + ") or unknown flags " +
-                    std::to_string(p.non_finite));
-        }
     }
+    check_film_values(film, name);
     return film;
 }
 

@@ -42,12 +42,19 @@ struct Film {
     bool complete() const { return sums.min_count() == std::uint32_t(range.size()); }
 };
 
+// A film is input: every pixel must be what `range.size()` samples of a render can sum to — no more samples,
+// no unknown flag, no NaN or infinite sample (the render that wrote it failed), no negative sum (radiance is
+// never negative; 2^-16 a sample of rounding is let through) and no sum beyond its samples' limit
+// (kSampleLimit each, so a whole render's sum, at most kMaxSamplesPerPixel samples, stays far inside 128
+// bits). Throws InputError naming `name` and the first pixel that is not.
+void check_film_values(const Film& film, const std::string& name);
+
 // The film's bytes into an open file (false when a write failed), and the film written all or nothing
 // (staged_file.hpp).
 bool encode_film(const Film& film, std::FILE* file);
 void write_film(const Film& film, const std::filesystem::path& path);
 // Throws InputError naming the file and what is wrong: not a film, another version, truncated, corrupt (the
-// checksum), or values out of range.
+// checksum), or values out of range (check_film_values).
 Film read_film(const std::filesystem::path& path);
 
 }  // namespace rt

@@ -15,6 +15,7 @@ Film merge_films(std::vector<FilmPiece> pieces) {
             throw InputError(piece.name + ": not a piece of the same render as " + pieces.front().name +
                              ": " + difference);
         }
+        check_film_values(piece.film, piece.name);
         if (!piece.film.complete()) {
             throw InputError(piece.name + ": an interrupted render (some pixels have " +
                              std::to_string(piece.film.sums.min_count()) + " of its samples " +

@@ -24,10 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-// The largest magnitude a number in a scene may have. Ray tests multiply up to three coordinates (a triple
-// product), and (2·1e9)³·3 ≈ 2.4e28 stays far below float's 3.4e38; a scene beyond 1e9 units could not hold
-// a unit-sized object in float anyway (the spacing of floats there is 64).
-constexpr double kLargestNumber = 1e9;
+constexpr double kLargestNumber = kLargestSceneNumber;
 constexpr const char* kRealName = sizeof(Real) == sizeof(float) ? "float" : "double";
 
 std::string show(double x) {

@@ -9,6 +9,11 @@
 
 namespace rt {
 
+// The largest magnitude a number in a scene may have. Ray tests multiply up to three coordinates (a triple
+// product), and (2·1e9)³·3 ≈ 2.4e28 stays far below float's 3.4e38; a scene beyond 1e9 units could not hold
+// a unit-sized object in float anyway (the spacing of floats there is 64).
+inline constexpr double kLargestSceneNumber = 1e9;
+
 Scene load_scene(const std::filesystem::path& file);
 // Parses scene text; `file` names it in messages and is where relative mesh paths start from.
 Scene parse_scene(const std::string& text, const std::filesystem::path& file);

@@ -6,6 +6,8 @@
 #     PFM bit for bit; and on llvmpipe the compute and the fragment shader give the same bits too.
 #  3. Ctrl-C during a long render: exit 130 within a few seconds, the complete image not written, the partial
 #     one (whole passes) written when a pass was done.
+#  4. On llvmpipe, an image wider than its largest texture (16384 pixels), which rendered black with exit 0:
+#     refused before rendering, exit 2, naming the limit, for both shaders.
 # Exits 77 (skipped) after 1 when this machine has no OpenGL for 2.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
@@ -27,7 +29,9 @@ if ! "$exe" "${size[@]}" --out probe.png > probe.stdout 2> probe.stderr; then
     fi
     fail "$name: exit status $?: $(cat probe.stderr)"
 fi
+llvmpipe=0
 if grep -q llvmpipe probe.stdout; then
+    llvmpipe=1
     for threads in 1 2 3; do
         LP_NUM_THREADS=$threads "$exe" "${size[@]}" --out "t$threads.png" > /dev/null 2> stderr ||
             fail "$name with LP_NUM_THREADS=$threads: $(tail -n 2 stderr)"
@@ -58,5 +62,13 @@ awk -v s="$took" -v l="$limit" 'BEGIN { exit !(s < l) }' || fail "$name interrup
 [ ! -e long.png ] || fail "$name interrupted: wrote the complete long.png"
 if [ -e long.partial.pfm ]; then
     grep -q "interrupted: partial image" long.stdout || fail "$name interrupted: a partial image but no summary line"
+fi
+# 4. (expect_bad_input renders in a fresh $work: after the checks that run there.)
+if [ "$llvmpipe" = 1 ]; then
+    for shader in compute fragment; do
+        expect_bad_input "$name --shader $shader --width 16385" \
+            "$name: image 16385x1: this OpenGL's $shader shader renders at most 16384 pixels a side (GL_MAX_" 1 -- \
+            "$exe" --width 16385 --height 1 --spp 1 --quiet --shader "$shader" --out out.png
+    done
 fi
 finish

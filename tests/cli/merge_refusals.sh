@@ -2,8 +2,9 @@
 # merge_refusals.sh EXECUTABLE OTHER_EXECUTABLE RT_MERGE: what does not fit is refused with exit 2, one line
 # naming the offending piece, and no file written: rt_merge given a gap, an overlap, pieces of other renders
 # (seed, size, samples per pixel, chapter flags, scene, chapter), an interrupted piece, a corrupt, truncated or
-# other-version film, or a file that is no film; a chapter given a bad --samples or a --resume film that does
-# not fit.
+# other-version film, a film holding values no render writes (a negative sum, one past what its samples
+# reach, a NaN flag), or a file that is no film; a chapter given a bad --samples or a --resume film that does
+# not fit or holds such values.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 exe=$1
@@ -41,6 +42,29 @@ h = 0xcbf29ce484222325
 for b in data:
     h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
 open(sys.argv[2], "wb").write(data + struct.pack("<Q", h))
+PY
+# Values no render writes, in b.film's first pixel (after the header and its three texts): a negative red sum,
+# a red sum near 2^127 (two such pieces wrapped the 128-bit sum), a NaN flag. Before they were checked they
+# merged to pixels of -1e12, to nonsense, and to exit 1 ("a bug in the chapter").
+python3 - b.film <<'PY'
+import struct, sys
+data = bytearray(open(sys.argv[1], "rb").read()[:-8])
+at = 8 + 4 * 7 + 8 * 2
+for _ in range(3):
+    at += 4 + struct.unpack_from("<I", data, at)[0]
+def write(name, red=None, flags=None):
+    d = bytearray(data)
+    if red is not None:
+        d[at:at + 16] = (red & ((1 << 128) - 1)).to_bytes(16, "little")
+    if flags is not None:
+        struct.pack_into("<I", d, at + 52, flags)
+    h = 0xcbf29ce484222325
+    for b in d:
+        h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
+    open(name, "wb").write(d + struct.pack("<Q", h))
+write("negative.film", red=-(10**12 << 56))
+write("huge.film", red=(1 << 127) - 5)
+write("nan.film", flags=1)
 PY
 P=$pieces
 # The control: the pieces that fit are merged.
@@ -83,6 +107,12 @@ refused "a missing piece" "$P/none.film: must be a film file, got no such file" 
 refused "no piece" "usage: pieces is required (see --help)" 
 refused "an interrupted piece" "$P/interrupted.film: an interrupted render (some pixels have 2 of its samples 2:5): finish it first with --resume $P/interrupted.film" \
     "$P/a.film" "$P/interrupted.film" "$P/c.film"
+refused "a negative sum" "$P/negative.film: pixel (0, 0) has a sum of -1e+12 in channel 0 for 2 samples, outside [" \
+    "$P/a.film" "$P/negative.film" "$P/c.film"
+refused "a sum past what its samples reach" "$P/huge.film: pixel (0, 0) has a sum of 2.36118e+21 in channel 0" \
+    "$P/a.film" "$P/huge.film" "$P/c.film"
+refused "a NaN flag" "$P/nan.film: pixel (0, 0) holds a NaN or infinite sample: the render that wrote it failed" \
+    "$P/a.film" "$P/nan.film" "$P/c.film"
 expect_bad_input "rt_merge: --out not .png" "rt_merge: --out: must end in .png, got out.pfm" 0 -- \
     "$merge" --out out.pfm "$P/a.film" "$P/b.film" "$P/c.film"
 
@@ -97,6 +127,7 @@ chapter_refused "--samples empty range" "--samples: must be A:B with 0 <= A < B 
 chapter_refused "--samples past spp" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 0:7" --samples 0:7
 chapter_refused "--samples not a range" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 2" --samples 2
 chapter_refused "--resume another seed" "--resume: $P/seed.film: a film of another render: seed 7, expected 1" --resume "$P/seed.film"
+chapter_refused "--resume a negative sum" "--resume: $P/negative.film: pixel (0, 0) has a sum of -1e+12" --resume "$P/negative.film"
 chapter_refused "--resume corrupt" "--resume: $P/corrupt.film: corrupt" --resume "$P/corrupt.film"
 chapter_refused "--resume moved" "--resume: $P/b.film: takes samples 2:4: --samples can only extend it (2:B, B >= 4), got 0:6" \
     --resume "$P/b.film" --samples 0:6
