@@ -252,10 +252,10 @@ def command_deps(args: argparse.Namespace) -> int:
 
 
 def build_test_programs(source: Path, jobs: int, only: set[str] | None = None) -> Path:
-    """Configures (once) and builds the test programs of the edition in `source`, in source/build (with
+    """Configures (once) and builds the test programs of the edition in `source`, in source/build/release (with
     `only`, those programs only, e.g. {"ch04_test"}). Warnings stay warnings: a wrong solution may leave a
     variable unused."""
-    build = source / "build"
+    build = source / "build" / "release"  # as deep as the course's own build: ccache reuses unchanged objects
     if not (build / "CMakeCache.txt").is_file():
         subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
                         "-DRT_WARNINGS_AS_ERRORS=OFF"], check=True, stdout=subprocess.DEVNULL)
