@@ -34,9 +34,9 @@
 #include "mesh_generator.hpp"
 #include "rt/random.hpp"
 #include "world.hpp"
+#include "rt/median.hpp"
 #ifdef RT_HAVE_EMBREE
 #include "embree_mesh.hpp"
-#include "rt/median.hpp"
 #endif
 
 namespace {
@@ -53,14 +53,6 @@ double median_seconds(int repeats, const std::function<void()>& work) {
         seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
     }
     return median(seconds);
-}
-
-// The CPU time this thread has run for, in seconds (CLOCK_THREAD_CPUTIME_ID): on a machine shared with other
-// jobs, what a one-thread measurement costs, without the time spent waiting for a core.
-double thread_cpu_seconds() {
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
 }
 
 // Rays from random points on a sphere of radius 3 around the mesh to random points within radius 1.2.
@@ -207,7 +199,14 @@ Scene mesh_scene(MeshShape mesh) {
     return scene;
 }
 
-
+#ifdef RT_HAVE_EMBREE
+// The CPU time this thread has run for, in seconds (CLOCK_THREAD_CPUTIME_ID): on a machine shared with other
+// jobs, what a one-thread measurement costs, without the time spent waiting for a core.
+double thread_cpu_seconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
 
 // Random unit directions and points in the ball of radius 0.5 around the origin, inside every mesh here
 // (a unit sphere, radii jittered by 5 %).
@@ -234,7 +233,6 @@ InsideRays make_inside_rays(std::size_t count, std::uint64_t seed) {
     return rays;
 }
 
-#ifdef RT_HAVE_EMBREE
 // The course's four steps and Embree's two builds, traced on the same rays.
 const WorldOptions kOptions[4] = {{TriangleTest::kWatertight, Acceleration::kBinaryBvh},
                                   {TriangleTest::kWatertight, Acceleration::kBvh, false},
