@@ -62,12 +62,26 @@ class Marks(unittest.TestCase):
         self.assertEqual(found["ch07.counter_start"].parameters, ["start", "stride"])
         self.assertEqual(found["ch07.integrate"].parameters, ["interval", "steps", "f"])
 
-    def test_names_the_lesson_section(self):
+    def test_names_the_lesson_section_its_mark_names(self):
         found = {e.name: e for e in marks.find_exercises(self.root)}
         lesson = "chapters/07_fixture/README.md"
-        self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")  # heading
-        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # code names integrate
-        self.assertEqual(found["ch07.counter"].reference(), lesson + " § Exercises")  # neither: the exercises
+        self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")
+        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")
+        self.assertEqual(found["ch07.counter"].reference(), lesson + " § Counting, `next` and all")  # backticks kept
+
+    def test_refuses_a_mark_without_a_section_or_naming_no_heading_of_its_lesson(self):
+        self.rewrite("EXERCISE(ch07.counter) § Counting, `next` and all", "EXERCISE(ch07.counter)")
+        with self.assertRaisesRegex(marks.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) names no lesson "
+                                    r"section: add § and a heading of chapters/07_fixture/README.md"):
+            marks.find_exercises(self.root)
+        self.rewrite("EXERCISE(ch07.counter)", "EXERCISE(ch07.counter) § Files")
+        with self.assertRaisesRegex(marks.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) names § Files, "
+                                    r"but chapters/07_fixture/README.md has no such heading"):
+            marks.find_exercises(self.root)
+        # A heading inside a code block is no heading.
+        self.rewrite("EXERCISE(ch07.counter) § Files", "EXERCISE(ch07.counter) § Not a heading")
+        with self.assertRaisesRegex(marks.ToolError, "names § Not a heading, but"):
+            marks.find_exercises(self.root)
 
     def test_the_stubbed_sources_compile_with_warnings_as_errors(self):
         out = self.folder / "edition"

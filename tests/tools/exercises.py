@@ -5,15 +5,18 @@ exercises are done.
 A chapter source marks the statements a student writes, inside one function body:
 
     Vec3 sphere_normal(const Sphere& sphere, const Vec3& p) {
-        // EXERCISE(ch02.sphere_normal)
+        // EXERCISE(ch02.sphere_normal) § Each shape's equation
         ...the statements...
         // END EXERCISE
     }
 
-The END line must be followed by the closing brace of the function. Tests that depend on an exercise carry
+After § comes the heading of the lesson's section that teaches it (the chapter's README.md; it must exist,
+or every command stops with the mark's file and line). The END line must be followed by the closing brace of
+the function. Tests that depend on an exercise carry
 the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
 
-  exercises.py list                     every exercise: name, file:line, function, lesson section
+  exercises.py list                     every exercise: name, file:line, function, lesson section (fails when
+                                        a mark names no section or one its lesson lacks)
   exercises.py generate OUT             the student edition in OUT: each marked body becomes a line that
                                         throws "not implemented: chNN.name — see <lesson> § <section>"
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
