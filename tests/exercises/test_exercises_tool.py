@@ -52,7 +52,9 @@ class Marks(unittest.TestCase):
     def test_finds_every_mark_with_its_function_parameters_and_locals(self):
         found = {e.name: e for e in marks.find_exercises(self.root)}
         self.assertEqual(sorted(found), ["ch07.counter", "ch07.counter_start", "ch07.hypotenuse", "ch07.increment",
-                                         "ch07.integrate"])
+                                         "ch07.integrate", "ch07.shader_square"])
+        self.assertTrue(found["ch07.shader_square"].glsl)
+        self.assertFalse(found["ch07.hypotenuse"].glsl)
         h = found["ch07.hypotenuse"]
         self.assertEqual(h.function, "hypotenuse")
         self.assertEqual(h.parameters, ["a", "b", "scale"])  # the unnamed int has no name to cast
@@ -105,6 +107,27 @@ class Marks(unittest.TestCase):
                                   cwd=self.root / "chapters/07_fixture", capture_output=True, text=True)
         self.assertEqual(compiled.returncode, 0, compiled.stderr)
 
+    def test_a_shader_exercise_is_stubbed_by_an_error_line_and_switched_by_a_define(self):
+        message = ("not implemented: ch07.shader_square — see chapters/07_fixture/README.md § Counting, `next` and "
+                   "all")
+        stubbed = self.folder / "edition"
+        edition.generate(self.root, stubbed, [], force=False)
+        shader = (stubbed / "chapters/07_fixture/fixture.glsl").read_text(encoding="utf-8")
+        self.assertIn(f"    // EXERCISE(ch07.shader_square) § Counting, `next` and all\n#error {message}\n"
+                      "    // END EXERCISE\n", shader)
+        self.assertNotIn("x * x", shader)
+        self.assertTrue({e.name: e for e in marks.find_exercises(stubbed)}["ch07.shader_square"].stubbed)
+        switchable = self.folder / "switchable"
+        chosen = {e.name: e for e in edition.generate(self.root, switchable, [], force=False, switchable=True)}
+        path = switchable / "chapters/07_fixture/fixture.glsl"
+        shader = path.read_text(encoding="utf-8")
+        self.assertIn("#define RT_EXERCISE_ch07_shader_square 0\n#if RT_EXERCISE_ch07_shader_square == -1\n"
+                      f"#error {message}\n", shader)
+        self.assertIn("#else\n    return x * x;\n#endif\n", shader)
+        self.assertFalse({e.name: e for e in marks.find_exercises(switchable)}["ch07.shader_square"].stubbed)
+        edition.set_shader_switch(switchable, chosen["ch07.shader_square"], -1)
+        self.assertIn("#define RT_EXERCISE_ch07_shader_square -1\n", path.read_text(encoding="utf-8"))
+
     def test_only_stubs_the_chosen_exercises_and_refuses_unknown_ones(self):
         out = self.folder / "edition"
         chosen = edition.generate(self.root, out, ["ch07.counter"], force=False)
@@ -141,7 +164,7 @@ class Marks(unittest.TestCase):
     def test_the_switchable_edition_runs_as_written_or_stubs_the_exercise_named_at_run_time(self):
         out = self.folder / "switchable"
         chosen = edition.generate(self.root, out, [], force=False, switchable=True)
-        self.assertEqual(len(chosen), 5)
+        self.assertEqual(len(chosen), 6)
         source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
         self.assertIn('#include "rt/exercise_switch.hpp"', source)
         self.assertIn("std::sqrt(square(p)", source)  # every body kept, after its switch

@@ -8,7 +8,8 @@ from pathlib import Path
 
 from .cpp_reader import Token, enclosing_function, locals_before, matching, tokenize
 
-SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"}
+GLSL_SUFFIXES = {".glsl", ".comp", ".frag", ".vert"}  # a shader's exercises are stubbed by #error, not a throw
+SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"} | GLSL_SUFFIXES
 SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ holds none
 MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)(?:\s*§\s*(.*?))?\s*$")
 END_RE = re.compile(r"^\s*//\s*END EXERCISE\b")
@@ -33,6 +34,10 @@ class Exercise:
     stubbed: bool = False  # its body is still the student edition's throw: not written yet
     lesson: str = ""  # "chapters/02_intersection/README.md"
     section: str = ""  # "Spheres": the heading of the lesson's section that teaches it, named by the mark
+
+    @property
+    def glsl(self) -> bool:  # in a shader, which C++ compiles when it runs (chapter 11)
+        return self.file.suffix in GLSL_SUFFIXES
 
     @property
     def chapter(self) -> str:
@@ -152,7 +157,10 @@ def find_exercises(root: Path) -> list[Exercise]:
                 continue
             body = "\n".join(lines[exercise.begin + 1 : exercise.end])
             # (The switchable edition of `deps` keeps the body after its throw: not stubbed.)
-            exercise.stubbed = f'"not implemented: {exercise.name} ' in body and "exercise_switch::" not in body
+            # (A shader's stub is an #error line; its switchable body an #if on RT_EXERCISE_chNN_name.)
+            exercise.stubbed = (f'"not implemented: {exercise.name} ' in body
+                                or f"#error not implemented: {exercise.name} " in body) and \
+                "exercise_switch::" not in body and not re.search(r"^\s*#if RT_EXERCISE_", body, re.MULTILINE)
             exercise.function = function.name
             exercise.parameters = function.parameters
             exercise.locals = locals_before(tokens, function, exercise.begin)
