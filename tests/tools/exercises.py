@@ -12,7 +12,9 @@ A chapter source marks the statements a student writes, inside one function body
 
 After § comes the heading of the lesson's section that teaches it (the chapter's README.md; it must exist,
 or every command stops with the mark's file and line). The END line must be followed by the closing brace of
-the function. Tests that depend on an exercise carry
+the function. A shader's function (chapter 11's .glsl files) is marked the same way: its stub is an #error line
+with the message, which the driver prints when it refuses the shader; `deps` and `wrong` switch its body by a
+#define in the edition's source and rebuild the chapter's test program. Tests that depend on an exercise carry
 the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
 
   exercises.py list                     every exercise: name, file:line, function, lesson section (fails when
