@@ -227,6 +227,12 @@ class Results(unittest.TestCase):
     def result(self, name, passed, output, tags):
         return test_runs.TestResult(name, "ch07_test", "ch07", passed, output, tags)
 
+    def test_a_not_implemented_message_is_found_where_catch_wrapped_it(self):
+        # A shader's #error reaches the test's output inside the driver's message, which Catch2 wraps.
+        output = ("  the driver did not compile probe.comp: 0:46(1): preprocessor error: #error not\n"
+                  "  implemented: ch07.a — see chapters/07_fixture/README.md § Integrals")
+        self.assertEqual(self.result("t", False, output, ["ch07.a"]).not_implemented(), ["ch07.a"])
+
     def test_an_exercise_is_left_failing_or_done(self):
         found = [marks.Exercise(n, Path("x.cpp"), 0, 1) for n in ("ch07.a", "ch07.b", "ch07.c", "ch07.d")]
         results = [

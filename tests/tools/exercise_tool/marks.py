@@ -14,7 +14,7 @@ SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ holds non
 MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)(?:\s*§\s*(.*?))?\s*$")
 END_RE = re.compile(r"^\s*//\s*END EXERCISE\b")
 NAME_RE = re.compile(r"^ch(\d\d)\.[a-z][a-z0-9_]*$")
-NOT_IMPLEMENTED_RE = re.compile(r"not implemented: (ch\d\d\.[a-z][a-z0-9_]*)")
+NOT_IMPLEMENTED_RE = re.compile(r"not\s+implemented:\s+(ch\d\d\.[a-z][a-z0-9_]*)")  # a report may wrap its lines
 TAG_PREFIX = "ex:"
 
 
