@@ -25,6 +25,9 @@
 
 using namespace rt;
 
+// Every test here compiles the shaders, so it depends on their exercises (a stub is an #error).
+#define SHADER_EXERCISES "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]"
+
 namespace {
 
 constexpr int kSkipped = 77;
@@ -99,7 +102,8 @@ std::int64_t check_against_world(const Scene& scene, const std::vector<Ray>& ray
 
 }  // namespace
 
-TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit", "[gpu][random]") {
+TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
+          "[gpu]" SHADER_EXERCISES "[random]") {
     std::vector<ShaderProbe::Query> queries;
     Pcg32 pick(99, 1);
     for (int i = 0; i < 2000; ++i) {
@@ -132,7 +136,8 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit", "[
 }
 
 TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
-          "[gpu][stability][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]"
+          "[gpu]" SHADER_EXERCISES
+          "[stability][ex:ch02.bvh_traversal][ex:ch02.slab_test][ex:ch02.triangle_watertight]"
           "[ex:ch02.wide_bvh_traversal]") {
     MeshShape mesh = make_icosphere(3);  // 1280 triangles
     jitter_radii(mesh, Real(0.05), 11);
@@ -160,7 +165,7 @@ TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what cha
 }
 
 TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles",
-          "[gpu][stability][ex:ch02.triangle_watertight]") {
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.triangle_watertight]") {
     Pcg32 rng(17, 3);
     std::vector<Ray> rays;
     auto random_point = [&] {
@@ -193,7 +198,7 @@ TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles
 }
 
 TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hits them",
-          "[gpu][stability][ex:ch02.sphere_stable]") {
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.sphere_stable]") {
     Pcg32 rng(23, 9);
     std::int64_t largest = 0;
     for (const Real radius : {Real(0.1), Real(0.01)}) {
@@ -224,7 +229,8 @@ TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hi
     WARN("spheres: t of the shader and of chapter 02 at most " << largest << " ulps apart");
 }
 
-TEST_CASE("Shader rays parallel to triangles, and degenerate triangles, give no hit", "[gpu][stability]") {
+TEST_CASE("Shader rays parallel to triangles, and degenerate triangles, give no hit",
+          "[gpu]" SHADER_EXERCISES "[stability]") {
     const Scene flat =
         scene_of({Shape{TriangleShape{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}, 0, "flat"}});
     const std::vector<Ray> parallel{{{-1, 0.2f, 0}, {1, 0, 0}}, {{-1, 0.2f, 0.5f}, {1, 0, 0}}};
@@ -299,7 +305,8 @@ void check_agreement(const std::string& file, ShaderKind kind) {
 }  // namespace
 
 TEST_CASE("The compute shader's glass Cornell box agrees with the CPU's within the noise",
-          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "[gpu]" SHADER_EXERCISES
+          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
           "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
           "fresnel_exact][ex:ch07.refract]") {
@@ -307,7 +314,8 @@ TEST_CASE("The compute shader's glass Cornell box agrees with the CPU's within t
 }
 
 TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within the noise",
-          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "[gpu]" SHADER_EXERCISES
+          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
           "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07."
           "fresnel_exact][ex:ch07.refract]") {
@@ -316,7 +324,8 @@ TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within 
 
 // Chapter 07's other scenes: ch07_default.json is the glass Cornell box above; its furnaces are below.
 TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU does",
-          "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
+          "[gpu]" SHADER_EXERCISES
+          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
           "offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07."
           "dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
@@ -325,14 +334,16 @@ TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU doe
 
 TEST_CASE(
     "The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
-    "[gpu][image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:"
+    "[gpu]" SHADER_EXERCISES
+    "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:"
     "ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.power_cosine][ex:"
     "ch04.power_cosine_pdf][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_"
     "tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_agreement("ch07_glossy_glass.json", ShaderKind::kCompute);
 }
 
-TEST_CASE("The shader's white furnaces of glass return the light of the sky", "[gpu][image]") {
+TEST_CASE("The shader's white furnaces of glass return the light of the sky",
+          "[gpu]" SHADER_EXERCISES "[image]") {
     // A glass sphere under a uniform sky of radiance 1, in nothing else: every path returns 1 (chapter 07).
     for (const char* file : {"ch07_furnace_glass.json", "ch07_furnace_eta1.json"}) {
         const Scene scene = load_scene(scene_path(file));

@@ -41,7 +41,7 @@ Vec3 film_direction(const PinholeCamera& c, Real px, Real py) {
 }
 
 Ray camera_ray(const PinholeCamera& camera, Real px, Real py) {
-    // EXERCISE(ch01.camera_ray)
+    // EXERCISE(ch01.camera_ray) § The pinhole camera
     return Ray{camera.eye, glm::normalize(film_direction(camera, px, py))};
     // END EXERCISE
 }

@@ -35,7 +35,7 @@ Vec2 inside_pixel(const Vec2& corner, const Vec2& p) {
 
 Vec2 pixel_sample_point(PixelSampler sampler, int x, int y, int index, int count, Vec2 u) {
     const Vec2 corner{Real(x), Real(y)};
-    // EXERCISE(ch01.pixel_sample)
+    // EXERCISE(ch01.pixel_sample) § From a pixel to its rays: anti-aliasing
     if (sampler == PixelSampler::kCenter) return corner + Vec2(0.5f);
     const int n = int(std::sqrt(double(count)));
     if (sampler == PixelSampler::kUniform || index >= n * n) return inside_pixel(corner, corner + u);

@@ -57,7 +57,7 @@ inline Vec3 inverse_direction(const Vec3& d) {
 // on the box, neither against the exit nor against a t_max that is the rounded distance of a hit on the same
 // plane; a box of zero thickness (min_i = max_i) is entered and left at one t.
 inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, Real t_max) {
-    // EXERCISE(ch02.slab_test)
+    // EXERCISE(ch02.slab_test) § Bounding boxes and the BVH
     constexpr Real kGamma3 = gamma_bound(3);
     constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
     Real t_enter = 0;

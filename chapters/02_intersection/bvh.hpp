@@ -58,7 +58,7 @@ class Bvh {
 template <typename Test>
 bool Bvh::traverse(const Ray& ray, const Vec3& inverse_d, Real& t_max, bool any_hit, Test&& test,
                    TraversalStats* stats) const {
-    // EXERCISE(ch02.bvh_traversal)
+    // EXERCISE(ch02.bvh_traversal) § Bounding boxes and the BVH
     if (nodes_.empty()) return false;
     if (stats) ++stats->nodes;
     if (slab_entry(nodes_[0].box(), ray, inverse_d, t_max) == kInfinity) return false;

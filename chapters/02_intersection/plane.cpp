@@ -13,7 +13,7 @@ Plane make_plane(const Vec3& point, const Vec3& normal) {
 }
 
 std::optional<Real> intersect_plane(const Ray& ray, const Plane& plane, Real t_max) {
-    // EXERCISE(ch02.plane)
+    // EXERCISE(ch02.plane) § Each shape's equation
     const Real denominator = glm::dot(plane.normal, ray.direction);
     if (denominator == 0) return std::nullopt;
     const Real t = glm::dot(plane.normal, plane.point - ray.origin) / denominator;

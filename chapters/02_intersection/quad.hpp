@@ -33,7 +33,7 @@ struct QuadHit {
 // Inline, like intersect_sphere: a call into another file returns the optional through memory, and reading it
 // back costs a store-forwarding stall on every test (the lesson measures it).
 inline std::optional<QuadHit> intersect_quad(const Ray& ray, const Quad& quad, Real t_max) {
-    // EXERCISE(ch02.quad)
+    // EXERCISE(ch02.quad) § Each shape's equation
     const Real denominator = glm::dot(quad.normal, ray.direction);
     if (denominator == 0 || quad.a_axis == Vec3{0}) return std::nullopt;
     const Real t = glm::dot(quad.normal, quad.origin - ray.origin) / denominator;

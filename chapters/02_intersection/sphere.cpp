@@ -5,7 +5,7 @@
 namespace rt {
 
 std::optional<SphereRoots> sphere_roots_textbook(const Ray& ray, const Sphere& sphere) {
-    // EXERCISE(ch02.sphere_textbook)
+    // EXERCISE(ch02.sphere_textbook) § Each shape's equation
     const Vec3 f = ray.origin - sphere.center;
     const Real b = glm::dot(f, ray.direction);
     const Real c = glm::dot(f, f) - sphere.radius * sphere.radius;

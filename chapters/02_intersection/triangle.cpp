@@ -26,7 +26,7 @@ WatertightRay make_watertight_ray(const Ray& ray) {
 
 std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const WatertightRay& s,
                                                          const Triangle& triangle, Real t_max) {
-    // EXERCISE(ch02.triangle_watertight)
+    // EXERCISE(ch02.triangle_watertight) § Each shape's equation
     // Translate: the vertices relative to the ray's origin.
     const Vec3 a = triangle.p0 - ray.origin;
     const Vec3 b = triangle.p1 - ray.origin;
@@ -73,7 +73,7 @@ std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const W
 }
 
 std::optional<TriangleHit> intersect_triangle_moller(const Ray& ray, const Triangle& triangle, Real t_max) {
-    // EXERCISE(ch02.triangle_moller)
+    // EXERCISE(ch02.triangle_moller) § Each shape's equation
     const Vec3 e1 = triangle.p1 - triangle.p0;
     const Vec3 e2 = triangle.p2 - triangle.p0;
     const Vec3 p = glm::cross(ray.direction, e2);

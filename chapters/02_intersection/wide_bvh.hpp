@@ -130,7 +130,7 @@ class WideBvh {
 
 template <typename Test>
 bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test, TraversalStats* stats) const {
-    // EXERCISE(ch02.wide_bvh_traversal)
+    // EXERCISE(ch02.wide_bvh_traversal) § Which tree draws the picture, and the exercise wide_bvh_traversal
     if (nodes_.empty()) return false;
     // A child still to visit: a node (count 0) or a leaf's items, and the distance at which its box is entered.
     struct Pending {

@@ -3,7 +3,7 @@
 namespace rt {
 
 Color point_light_irradiance(const PointLight& light, const Vec3& p, const Vec3& n) {
-    // EXERCISE(ch03.point_light)
+    // EXERCISE(ch03.point_light) § Light from a point light
     const Vec3 to_light = light.position - p;
     const Real r2 = glm::dot(to_light, to_light);
     if (!(r2 > 0)) return Color(0);

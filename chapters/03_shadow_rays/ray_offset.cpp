@@ -28,7 +28,7 @@ OffsetMethod offset_method_from_string(std::string_view name) {
 }
 
 Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction) {
-    // EXERCISE(ch03.robust_offset)
+    // EXERCISE(ch03.robust_offset) § Leaving a surface: shadow acne
     const Real delta = glm::dot(abs(n), point_error);  // δ = |n| · e
     Vec3 offset = delta * n;
     if (glm::dot(direction, n) < 0) offset = -offset;

@@ -23,7 +23,7 @@ ShadowRay segment(const Vec3& origin, const Vec3& target, const Vec3& fallback_d
 }  // namespace
 
 ShadowRay spawn_shadow_ray(const Hit& hit, const Vec3& target, const RayOffset& offset) {
-    // EXERCISE(ch03.shadow_ray)
+    // EXERCISE(ch03.shadow_ray) § The shadow ray
     return segment(offset_origin(hit, target - hit.point, offset), target, hit.normal);
     // END EXERCISE
 }

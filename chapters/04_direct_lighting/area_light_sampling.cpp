@@ -26,7 +26,7 @@ std::optional<LightSample> toward(const Vec3& x, const Vec3& error, const Vec3& 
 }  // namespace
 
 std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u) {
-    // EXERCISE(ch04.sample_quad_light)
+    // EXERCISE(ch04.sample_quad_light) § Sampling the lights
     const Vec3 along_u = u.x * light.u, along_v = u.y * light.v;
     const Vec3 x = light.origin + along_u + along_v;
     const Vec3 error = gamma_bound(3) * (abs(light.origin) + abs(along_u) + abs(along_v));

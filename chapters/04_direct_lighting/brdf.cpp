@@ -21,7 +21,7 @@ Real lobe_power(const Vec3& wi, const Vec3& axis, Real exponent) {
 
 // Lambert: f = ρ / π when wo and wi are both above the surface, else 0.
 Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, const Vec3& n) {
-    // EXERCISE(ch04.lambert)
+    // EXERCISE(ch04.lambert) § Four BRDFs
     return above(wo, wi, n) ? lambert.albedo * kInvPi : Color(0);
     // END EXERCISE
 }
@@ -29,7 +29,7 @@ Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, c
 // The mirror's one direction wi = r(wo), with f = R / cos θ_i and pdf 1 (a delta), so that f cos θ_i / pdf =
 // R; nothing (f = 0) when r(wo) is not above the surface.
 BsdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
-    // EXERCISE(ch04.mirror)
+    // EXERCISE(ch04.mirror) § Four BRDFs
     BsdfSample s;
     s.wi = reflect(wo, n);
     const Real cos_i = glm::dot(s.wi, n);
@@ -44,7 +44,7 @@ BsdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n
 // wo and wi are both above the surface.
 Color lobe_eval(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& wi,
                 const Vec3& n) {
-    // EXERCISE(ch04.glossy)
+    // EXERCISE(ch04.glossy) § Four BRDFs
     if (!above(wo, wi, n)) return Color(0);
     return albedo * ((exponent + 2) * Real(0.5) * kInvPi * lobe_power(wi, axis, exponent));
     // END EXERCISE
@@ -52,7 +52,7 @@ Color lobe_eval(const Color& albedo, Real exponent, const Vec3& axis, const Vec3
 
 // Retro-reflective: the same normalized lobe, around wo itself.
 Color retroreflective_eval(const RetroreflectiveBrdf& retro, const Vec3& wo, const Vec3& wi, const Vec3& n) {
-    // EXERCISE(ch04.retroreflective)
+    // EXERCISE(ch04.retroreflective) § Four BRDFs
     return lobe_eval(retro.albedo, retro.exponent, wo, wo, wi, n);
     // END EXERCISE
 }

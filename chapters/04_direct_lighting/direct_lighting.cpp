@@ -87,7 +87,7 @@ Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCoun
 
 Color DirectLighting::every_light(const Hit& hit, const Vec3& wo, const Bsdf& b, Pcg32& rng,
                                   RayCounts& rays) const {
-    // EXERCISE(ch04.direct_light)
+    // EXERCISE(ch04.direct_light) § The BRDF and the direct term
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
     Color sum(0);

@@ -24,7 +24,7 @@ std::vector<Vec3d> clip_to_horizon(std::span<const Vec3d> polygon, const Vec3d& 
 }  // namespace
 
 double polygon_irradiance(std::span<const Vec3d> vertices, const Vec3d& p, const Vec3d& n, double radiance) {
-    // EXERCISE(ch04.lambert_polygon)
+    // EXERCISE(ch04.lambert_polygon) § Exact answers
     const std::vector<Vec3d> polygon = clip_to_horizon(vertices, p, n);
     double sum = 0;
     for (std::size_t i = 0; i < polygon.size(); ++i) {

@@ -15,21 +15,21 @@ Vec3 spherical(Real cos_theta, Real sin_theta, Real u) {
 }  // namespace
 
 Vec3 sample_uniform_hemisphere(Vec2 u) {
-    // EXERCISE(ch04.uniform_hemisphere)
+    // EXERCISE(ch04.uniform_hemisphere) § Four BRDFs
     const Real z = u.x;
     return spherical(z, std::sqrt(std::max(Real(0), 1 - z * z)), u.y);
     // END EXERCISE
 }
 
 Vec3 sample_cosine_hemisphere(Vec2 u) {
-    // EXERCISE(ch04.cosine_hemisphere)
+    // EXERCISE(ch04.cosine_hemisphere) § Four BRDFs
     const Real r = std::sqrt(u.x);
     return spherical(std::sqrt(std::max(Real(0), 1 - u.x)), r, u.y);
     // END EXERCISE
 }
 
 Vec3 sample_uniform_cone(Vec2 u, Real one_minus_cos_max) {
-    // EXERCISE(ch04.uniform_cone)
+    // EXERCISE(ch04.uniform_cone) § Sampling the lights
     const Real one_minus_cos = u.x * one_minus_cos_max;
     const Real cos_theta = 1 - one_minus_cos;
     // sin²θ = (1 − cos θ)(1 + cos θ): exact where 1 − cos² θ would cancel.
@@ -39,7 +39,7 @@ Vec3 sample_uniform_cone(Vec2 u, Real one_minus_cos_max) {
 }
 
 Vec3 sample_power_cosine(Vec2 u, Real exponent) {
-    // EXERCISE(ch04.power_cosine)
+    // EXERCISE(ch04.power_cosine) § Four BRDFs
     // 1 − cos α = 1 − exp(ln(1 − u₁) / (e + 1)) through expm1 and log1p, so a sharp lobe (large e, cos α
     // within an ulp of 1) keeps sin α instead of rounding it to 0.
     const Real one_minus_cos = -std::expm1(std::log1p(-u.x) / (exponent + 1));
@@ -49,20 +49,20 @@ Vec3 sample_power_cosine(Vec2 u, Real exponent) {
 }
 
 Vec2 sample_uniform_triangle(Vec2 u) {
-    // EXERCISE(ch04.uniform_triangle)
+    // EXERCISE(ch04.uniform_triangle) § Sampling the lights
     const Real s = std::sqrt(u.x);
     return {1 - s, u.y * s};
     // END EXERCISE
 }
 
 Real uniform_hemisphere_pdf(const Vec3& w) {
-    // EXERCISE(ch04.uniform_hemisphere_pdf)
+    // EXERCISE(ch04.uniform_hemisphere_pdf) § Four BRDFs
     return w.z >= 0 ? kUniformHemispherePdf : Real(0);
     // END EXERCISE
 }
 
 Real uniform_cone_pdf(const Vec3& w, Real one_minus_cos_max) {
-    // EXERCISE(ch04.uniform_cone_pdf)
+    // EXERCISE(ch04.uniform_cone_pdf) § Sampling the lights
     if (!(one_minus_cos_max > 0)) return 0;
     // 1 − z from sin²θ / (1 + z) when z > 0, so a narrow cone keeps its digits.
     const Real sin2 = w.x * w.x + w.y * w.y;
@@ -72,7 +72,7 @@ Real uniform_cone_pdf(const Vec3& w, Real one_minus_cos_max) {
 }
 
 Real power_cosine_pdf(Real cos_alpha, Real exponent) {
-    // EXERCISE(ch04.power_cosine_pdf)
+    // EXERCISE(ch04.power_cosine_pdf) § Four BRDFs
     if (!(cos_alpha > 0)) return 0;
     return (exponent + 1) * Real(0.5) * kInvPi * std::pow(std::min(Real(1), cos_alpha), exponent);
     // END EXERCISE

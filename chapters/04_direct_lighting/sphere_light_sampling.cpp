@@ -27,7 +27,7 @@ std::optional<Cone> cone_of(const SphereLight& light, const Vec3& p) {
 }  // namespace
 
 Real one_minus_cos_stable(Real sin2_max) {
-    // EXERCISE(ch04.cone_solid_angle)
+    // EXERCISE(ch04.cone_solid_angle) § Sampling the lights
     const Real cos_max = std::sqrt(std::max(Real(0), 1 - sin2_max));
     return sin2_max / (1 + cos_max);
     // END EXERCISE

@@ -23,7 +23,7 @@ Color RecursiveTracer::radiance(const Ray& ray, Pcg32& rng, RayCounts& rays) con
 
 Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color throughput, Pcg32& rng,
                              RayCounts& rays) const {
-    // EXERCISE(ch05.trace)
+    // EXERCISE(ch05.trace) § The rendering equation, as a recursion
     const auto hit = shading_.world().intersect(ray);
     const bool counts_emission = kind != RayKind::kIndirect;  // camera rays and mirror bounces
     if (!hit) {

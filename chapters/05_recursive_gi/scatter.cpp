@@ -5,7 +5,7 @@
 
 namespace rt {
 std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
-    // EXERCISE(ch05.mirror_scatter)
+    // EXERCISE(ch05.mirror_scatter) § The rendering equation, as a recursion
     if (is_black(mirror.reflectance)) return std::nullopt;
     const Vec3 r = reflect(wo, n);
     const Real length = glm::length(r);
@@ -17,7 +17,7 @@ std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, 
 }
 
 std::optional<Scatter> uniform_scatter(const Bsdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u) {
-    // EXERCISE(ch05.uniform_scatter)
+    // EXERCISE(ch05.uniform_scatter) § The rendering equation, as a recursion
     const Vec3 wi = glm::normalize(make_frame(n).to_world(sample_uniform_hemisphere(u)));
     const Real cos_i = glm::dot(wi, n);
     if (!(cos_i > 0)) return std::nullopt;

@@ -30,7 +30,7 @@ Termination termination_from_string(std::string_view name) {
 }
 
 Real survival_probability(const TerminationSettings& settings, int depth, const Color& throughput) {
-    // EXERCISE(ch05.termination)
+    // EXERCISE(ch05.termination) § Stopping the recursion
     if (depth >= settings.max_depth) return 0;
     if (!is_finite(throughput)) return 0;
     const Real largest = std::max({throughput.r, throughput.g, throughput.b});

@@ -16,7 +16,7 @@ namespace rt {
 // w_a + w_b = 1 always and nothing is NaN: p_a = ∞ (a delta, or a light seen edge-on) against a finite p_b
 // gives 1; p_a = 0 against p_b > 0 gives 0; both 0 or both ∞ give ½.
 inline Real mis_weight(Real n_a, Real p_a, Real n_b, Real p_b, int beta) {
-    // EXERCISE(ch06.mis_weight)
+    // EXERCISE(ch06.mis_weight) § Light sampling, BRDF sampling, and MIS
     const Real a = n_a * p_a, b = n_b * p_b;
     if (a == b) return Real(0.5);  // also both 0 and both ∞
     if (std::isinf(a)) return 1;

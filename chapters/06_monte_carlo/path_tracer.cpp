@@ -139,7 +139,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, S
 
 Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays, PathFeatures* features,
                            PathParts* parts) const {
-    // EXERCISE(ch06.path_tracer)
+    // EXERCISE(ch06.path_tracer) § The path tracer
     const SamplingStrategy strategy = options_.strategy;
     const bool direct = options_.simulates(Effect::kDirect);
     const bool indirect = options_.simulates(Effect::kIndirect);

@@ -8,7 +8,7 @@
 namespace rt {
 
 Vec3 sample_uniform_sphere(Vec2 u) {
-    // EXERCISE(ch06.uniform_sphere)
+    // EXERCISE(ch06.uniform_sphere) § Sampling routines and their densities
     const Real z = 1 - 2 * u.x;
     // sin²θ = (1 − z)(1 + z) = 4 u₁ (1 − u₁): no cancellation near the poles.
     const Real r = 2 * std::sqrt(std::max(Real(0), u.x * (1 - u.x)));

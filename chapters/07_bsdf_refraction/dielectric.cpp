@@ -9,7 +9,7 @@
 namespace rt {
 
 DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real u) {
-    // EXERCISE(ch07.dielectric_sample)
+    // EXERCISE(ch07.dielectric_sample) § The sampled dielectric
     const Real cos_o = glm::dot(n, wo);
     const Real R = fresnel_dielectric(cos_o, eta);
     if (u >= R) {
@@ -43,7 +43,7 @@ BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_
 }
 
 Color beer_lambert(const Color& absorption, Real distance) {
-    // EXERCISE(ch07.beer_lambert)
+    // EXERCISE(ch07.beer_lambert) § Beer–Lambert: coloured glass
     Color t(1);
     for (int c = 0; c < 3; ++c) {
         if (absorption[c] > 0) t[c] = std::exp(-absorption[c] * distance);

@@ -20,7 +20,7 @@ void face_incident_side(Real& cos_i, Real& eta) {
 }
 
 Real fresnel_dielectric(Real cos_i, Real eta) {
-    // EXERCISE(ch07.fresnel_exact)
+    // EXERCISE(ch07.fresnel_exact) § Fresnel: how much reflects
     face_incident_side(cos_i, eta);
     const Real cos2_t = cos2_transmitted(cos_i, eta);
     if (cos2_t <= kTirCos2) return 1;
@@ -33,7 +33,7 @@ Real fresnel_dielectric(Real cos_i, Real eta) {
 }
 
 Real fresnel_schlick(Real cos_i, Real eta) {
-    // EXERCISE(ch07.fresnel_schlick)
+    // EXERCISE(ch07.fresnel_schlick) § Fresnel: how much reflects
     face_incident_side(cos_i, eta);
     const Real cos2_t = cos2_transmitted(cos_i, eta);
     if (cos2_t <= kTirCos2) return 1;

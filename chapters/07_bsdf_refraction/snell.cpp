@@ -7,7 +7,7 @@
 namespace rt {
 
 std::optional<Vec3> refract(const Vec3& wo, const Vec3& n, Real eta) {
-    // EXERCISE(ch07.refract)
+    // EXERCISE(ch07.refract) § Snell's law
     Real cos_i = glm::dot(n, wo);
     const Vec3 normal = cos_i < 0 ? -n : n;
     face_incident_side(cos_i, eta);

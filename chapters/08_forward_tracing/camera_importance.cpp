@@ -6,7 +6,7 @@
 namespace rt {
 
 std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Vec3& d) {
-    // EXERCISE(ch08.project_direction)
+    // EXERCISE(ch08.project_direction) § The measurement equation and the importance of a pinhole
     const Real z = glm::dot(d, camera.forward);
     const Real length = glm::length(d);
     if (!(z > 0) || !(length > 0)) return std::nullopt;
@@ -35,7 +35,7 @@ Real pixel_area(const PinholeCamera& camera) {
 }
 
 Real pinhole_importance(const PinholeCamera& camera, Real cos_theta) {
-    // EXERCISE(ch08.pinhole_importance)
+    // EXERCISE(ch08.pinhole_importance) § The measurement equation and the importance of a pinhole
     const Real c2 = cos_theta * cos_theta;
     return 1 / (pixel_area(camera) * c2 * c2);
     // END EXERCISE

@@ -37,7 +37,7 @@ LightTracer::LightTracer(const World& world, const MaterialTable& materials, con
 
 bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, const Color& beta, Image& film,
                           RayCounts& rays) const {
-    // EXERCISE(ch08.connect)
+    // EXERCISE(ch08.connect) § Reaching the camera
     const Vec3 to_eye = camera_.eye - hit.point;
     const Real r2 = glm::dot(to_eye, to_eye);
     if (!(r2 > 0)) return false;

@@ -15,7 +15,7 @@ Real henyey_greenstein(Real cos_theta, Real g) {
 }
 
 Real sample_henyey_greenstein_cos(Real g, Real u) {
-    // EXERCISE(ch09.hg_sample)
+    // EXERCISE(ch09.hg_sample) § 3. The Henyey–Greenstein phase function
     if (std::abs(g) < Real(1e-3)) return 1 - 2 * u;
     const double gd = g;
     const double s = (1 - gd * gd) / (1 - gd + 2 * gd * double(u));

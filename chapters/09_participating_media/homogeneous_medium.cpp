@@ -8,7 +8,7 @@
 namespace rt {
 
 FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, int channel, Real u) {
-    // EXERCISE(ch09.free_flight)
+    // EXERCISE(ch09.free_flight) § 2. Free flight
     // t = −ln(1 − u) / σ_c: exponentially distributed; a channel that does not interact never stops.
     const Real sigma = sigma_t[channel];
     const Real t = sigma > 0 ? -std::log1p(-u) / sigma : kInfinity;
@@ -27,7 +27,7 @@ HomogeneousMedium::HomogeneousMedium(const MediumDesc& desc)
     : sigma_a(desc.sigma_a), sigma_s(desc.sigma_s), sigma_t(desc.sigma_t()), phase_(desc.g) {}
 
 Color HomogeneousMedium::transmittance(Real distance) const {
-    // EXERCISE(ch09.transmittance)
+    // EXERCISE(ch09.transmittance) § 1. The radiative transfer equation
     // Extinction, not absorption alone, takes light out of a ray: scattering sends it elsewhere.
     return beer_lambert(sigma_t, distance);
     // END EXERCISE

@@ -6,7 +6,7 @@ namespace rt {
 
 GuidePixel atrous_pixel(const std::vector<GuidePixel>& level, int width, int height, int x, int y, int step,
                         const EdgeStopping& edges, Real* weights) {
-    // EXERCISE(ch10.atrous_pixel)
+    // EXERCISE(ch10.atrous_pixel) § The à-trous wavelet filter
     const GuidePixel& p = level[std::size_t(y) * std::size_t(width) + std::size_t(x)];
     Color sum(0);
     Real total = 0, variance = 0;

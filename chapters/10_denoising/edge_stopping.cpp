@@ -21,7 +21,7 @@ Real spread(Real sigma, Real scale) {
 }  // namespace
 
 Real edge_stopping_weight(const GuidePixel& p, const GuidePixel& q, const EdgeStopping& sigma) {
-    // EXERCISE(ch10.edge_stopping)
+    // EXERCISE(ch10.edge_stopping) § Edge-stopping weights
     const Color dc = p.colour - q.colour;
     const Vec3 dn = p.normal - q.normal;
     const Color da = p.albedo - q.albedo;

@@ -52,7 +52,9 @@ class Marks(unittest.TestCase):
     def test_finds_every_mark_with_its_function_parameters_and_locals(self):
         found = {e.name: e for e in marks.find_exercises(self.root)}
         self.assertEqual(sorted(found), ["ch07.counter", "ch07.counter_start", "ch07.hypotenuse", "ch07.increment",
-                                         "ch07.integrate"])
+                                         "ch07.integrate", "ch07.shader_square"])
+        self.assertTrue(found["ch07.shader_square"].glsl)
+        self.assertFalse(found["ch07.hypotenuse"].glsl)
         h = found["ch07.hypotenuse"]
         self.assertEqual(h.function, "hypotenuse")
         self.assertEqual(h.parameters, ["a", "b", "scale"])  # the unnamed int has no name to cast
@@ -62,12 +64,26 @@ class Marks(unittest.TestCase):
         self.assertEqual(found["ch07.counter_start"].parameters, ["start", "stride"])
         self.assertEqual(found["ch07.integrate"].parameters, ["interval", "steps", "f"])
 
-    def test_names_the_lesson_section(self):
+    def test_names_the_lesson_section_its_mark_names(self):
         found = {e.name: e for e in marks.find_exercises(self.root)}
         lesson = "chapters/07_fixture/README.md"
-        self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")  # heading
-        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")  # code names integrate
-        self.assertEqual(found["ch07.counter"].reference(), lesson + " § Exercises")  # neither: the exercises
+        self.assertEqual(found["ch07.hypotenuse"].reference(), lesson + " § The hypotenuse")
+        self.assertEqual(found["ch07.integrate"].reference(), lesson + " § Integrals")
+        self.assertEqual(found["ch07.counter"].reference(), lesson + " § Counting, `next` and all")  # backticks kept
+
+    def test_refuses_a_mark_without_a_section_or_naming_no_heading_of_its_lesson(self):
+        self.rewrite("EXERCISE(ch07.counter) § Counting, `next` and all", "EXERCISE(ch07.counter)")
+        with self.assertRaisesRegex(marks.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) names no lesson "
+                                    r"section: add § and a heading of chapters/07_fixture/README.md"):
+            marks.find_exercises(self.root)
+        self.rewrite("EXERCISE(ch07.counter)", "EXERCISE(ch07.counter) § Files")
+        with self.assertRaisesRegex(marks.ToolError, r"fixture.cpp:\d+: EXERCISE\(ch07.counter\) names § Files, "
+                                    r"but chapters/07_fixture/README.md has no such heading"):
+            marks.find_exercises(self.root)
+        # A heading inside a code block is no heading.
+        self.rewrite("EXERCISE(ch07.counter) § Files", "EXERCISE(ch07.counter) § Not a heading")
+        with self.assertRaisesRegex(marks.ToolError, "names § Not a heading, but"):
+            marks.find_exercises(self.root)
 
     def test_the_stubbed_sources_compile_with_warnings_as_errors(self):
         out = self.folder / "edition"
@@ -90,6 +106,27 @@ class Marks(unittest.TestCase):
         compiled = subprocess.run([COMPILER, "-std=c++20", "-fsyntax-only", *WARNINGS, "fixture.cpp"],
                                   cwd=self.root / "chapters/07_fixture", capture_output=True, text=True)
         self.assertEqual(compiled.returncode, 0, compiled.stderr)
+
+    def test_a_shader_exercise_is_stubbed_by_an_error_line_and_switched_by_a_define(self):
+        message = ("not implemented: ch07.shader_square — see chapters/07_fixture/README.md § Counting, `next` and "
+                   "all")
+        stubbed = self.folder / "edition"
+        edition.generate(self.root, stubbed, [], force=False)
+        shader = (stubbed / "chapters/07_fixture/fixture.glsl").read_text(encoding="utf-8")
+        self.assertIn(f"    // EXERCISE(ch07.shader_square) § Counting, `next` and all\n#error {message}\n"
+                      "    // END EXERCISE\n", shader)
+        self.assertNotIn("x * x", shader)
+        self.assertTrue({e.name: e for e in marks.find_exercises(stubbed)}["ch07.shader_square"].stubbed)
+        switchable = self.folder / "switchable"
+        chosen = {e.name: e for e in edition.generate(self.root, switchable, [], force=False, switchable=True)}
+        path = switchable / "chapters/07_fixture/fixture.glsl"
+        shader = path.read_text(encoding="utf-8")
+        self.assertIn("#define RT_EXERCISE_ch07_shader_square 0\n#if RT_EXERCISE_ch07_shader_square == -1\n"
+                      f"#error {message}\n", shader)
+        self.assertIn("#else\n    return x * x;\n#endif\n", shader)
+        self.assertFalse({e.name: e for e in marks.find_exercises(switchable)}["ch07.shader_square"].stubbed)
+        edition.set_shader_switch(switchable, chosen["ch07.shader_square"], -1)
+        self.assertIn("#define RT_EXERCISE_ch07_shader_square -1\n", path.read_text(encoding="utf-8"))
 
     def test_only_stubs_the_chosen_exercises_and_refuses_unknown_ones(self):
         out = self.folder / "edition"
@@ -127,7 +164,7 @@ class Marks(unittest.TestCase):
     def test_the_switchable_edition_runs_as_written_or_stubs_the_exercise_named_at_run_time(self):
         out = self.folder / "switchable"
         chosen = edition.generate(self.root, out, [], force=False, switchable=True)
-        self.assertEqual(len(chosen), 5)
+        self.assertEqual(len(chosen), 6)
         source = (out / "chapters/07_fixture/fixture.cpp").read_text(encoding="utf-8")
         self.assertIn('#include "rt/exercise_switch.hpp"', source)
         self.assertIn("std::sqrt(square(p)", source)  # every body kept, after its switch
@@ -189,6 +226,12 @@ class Marks(unittest.TestCase):
 class Results(unittest.TestCase):
     def result(self, name, passed, output, tags):
         return test_runs.TestResult(name, "ch07_test", "ch07", passed, output, tags)
+
+    def test_a_not_implemented_message_is_found_where_catch_wrapped_it(self):
+        # A shader's #error reaches the test's output inside the driver's message, which Catch2 wraps.
+        output = ("  the driver did not compile probe.comp: 0:46(1): preprocessor error: #error not\n"
+                  "  implemented: ch07.a — see chapters/07_fixture/README.md § Integrals")
+        self.assertEqual(self.result("t", False, output, ["ch07.a"]).not_implemented(), ["ch07.a"])
 
     def test_an_exercise_is_left_failing_or_done(self):
         found = [marks.Exercise(n, Path("x.cpp"), 0, 1) for n in ("ch07.a", "ch07.b", "ch07.c", "ch07.d")]

@@ -5,15 +5,20 @@ exercises are done.
 A chapter source marks the statements a student writes, inside one function body:
 
     Vec3 sphere_normal(const Sphere& sphere, const Vec3& p) {
-        // EXERCISE(ch02.sphere_normal)
+        // EXERCISE(ch02.sphere_normal) § Each shape's equation
         ...the statements...
         // END EXERCISE
     }
 
-The END line must be followed by the closing brace of the function. Tests that depend on an exercise carry
+After § comes the heading of the lesson's section that teaches it (the chapter's README.md; it must exist,
+or every command stops with the mark's file and line). The END line must be followed by the closing brace of
+the function. A shader's function (chapter 11's .glsl files) is marked the same way: its stub is an #error line
+with the message, which the driver prints when it refuses the shader; `deps` and `wrong` switch its body by a
+#define in the edition's source and rebuild the chapter's test program. Tests that depend on an exercise carry
 the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
 
-  exercises.py list                     every exercise: name, file:line, function, lesson section
+  exercises.py list                     every exercise: name, file:line, function, lesson section (fails when
+                                        a mark names no section or one its lesson lacks)
   exercises.py generate OUT             the student edition in OUT: each marked body becomes a line that
                                         throws "not implemented: chNN.name — see <lesson> § <section>"
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
@@ -42,7 +47,7 @@ import sys
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
-from exercise_tool.edition import generate  # noqa: E402
+from exercise_tool.edition import generate, set_shader_switch  # noqa: E402
 from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
 from exercise_tool.test_runs import (UnitTest, exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
                                      source_of_build, summarise, unit_tests)
@@ -223,9 +228,13 @@ def command_deps(args: argparse.Namespace) -> int:
                for i in range(len(tests))]
     needs: dict[int, list[str]] = {i: [] for i in range(len(tests))}
     for e in exercises:
-        reaching = [i for i in range(len(tests)) if e.name in reached[i] and baseline[i][0]]
-        outcomes = run_each([tests[i] for i in reaching], args.jobs,
-                            environment_of=lambda _: {"RT_STUB_EXERCISE": e.name})
+        if e.glsl:  # a shader logs nothing when it runs: every test of its chapter's program, stubbed at once
+            reaching = [i for i in range(len(tests)) if tests[i].program == f"{e.chapter}_test" and baseline[i][0]]
+            outcomes = run_with_shader_switch(out, e, -1, [tests[i] for i in reaching], args)
+        else:
+            reaching = [i for i in range(len(tests)) if e.name in reached[i] and baseline[i][0]]
+            outcomes = run_each([tests[i] for i in reaching], args.jobs,
+                                environment_of=lambda _: {"RT_STUB_EXERCISE": e.name})
         failing = [i for i, (passed, _) in zip(reaching, outcomes) if not passed]
         print(f"{e.name}: reached by {len(reaching)} tests, {len(failing)} fail without it", flush=True)
         for i in failing:
@@ -296,8 +305,17 @@ def command_wrong(args: argparse.Namespace) -> int:
           f"of its {sum(len(wrong.get(e.name, [])) for e in exercises)} wrong solutions ...", flush=True)
     tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]",
                                                   "--abort"], str(build), e.chapter) for e, _ in runs]
-    outcomes = run_each(tests, args.jobs, args.timeout,
-                        environment_of=lambda i: {"RT_WRONG_SOLUTION": runs[i][1].key} if runs[i][1] else {})
+    # A shader's exercise is switched in its source, then rebuilt: those runs one at a time, the others at once.
+    in_shader = [i for i, (e, _) in enumerate(runs) if e.glsl]
+    in_cpp = [i for i in range(len(runs)) if not runs[i][0].glsl]
+    outcomes = [(False, "")] * len(runs)
+    for i, outcome in zip(in_cpp, run_each([tests[i] for i in in_cpp], args.jobs, args.timeout,
+                                           environment_of=lambda k: {"RT_WRONG_SOLUTION": runs[in_cpp[k]][1].key}
+                                           if runs[in_cpp[k]][1] else {})):
+        outcomes[i] = outcome
+    for i in in_shader:
+        e, s = runs[i]
+        outcomes[i] = run_with_shader_switch(out, e, s.number if s else 0, [tests[i]], args)[0]
     caught = 0
     for (e, s), (passed, output) in zip(runs, outcomes):
         if s is None:
@@ -316,6 +334,19 @@ def command_wrong(args: argparse.Namespace) -> int:
     for p in problems:
         print("  " + p)
     return 1 if problems else 0
+
+
+def run_with_shader_switch(edition: Path, exercise, value: int, tests: list[UnitTest],
+                           args: argparse.Namespace) -> list[tuple[bool, str]]:
+    """Runs `tests` with a shader exercise's body switched to `value` (0 right, K the K-th wrong solution, -1 the
+    stub): the edition's shader source is changed and its chapter's test program rebuilt (the shaders are
+    embedded when it is built), then switched back."""
+    set_shader_switch(edition, exercise, value)
+    try:
+        build_test_programs(edition, args.jobs, {f"{exercise.chapter}_test"})
+        return run_each(tests, args.jobs, getattr(args, "timeout", 300))
+    finally:
+        set_shader_switch(edition, exercise, 0)
 
 
 def failed_test(output: str) -> str:

@@ -8,11 +8,13 @@ struct Pcg32 {
 };
 
 uint pcg_next_uint(inout Pcg32 rng) {
+    // EXERCISE(ch11.pcg32) § The same estimator
     const uint64_t old = rng.state;
     rng.state = old * 6364136223846793005UL + rng.increment;
     const uint xorshifted = uint(((old >> 18u) ^ old) >> 27u);
     const uint rotation = uint(old >> 59u);
     return (xorshifted >> rotation) | (xorshifted << ((32u - rotation) & 31u));
+    // END EXERCISE
 }
 
 Pcg32 pcg_new(uint64_t seed, uint64_t stream) {
@@ -35,9 +37,11 @@ Pcg32 pcg_for_sample(uint64_t pixel, uint64_t s, uint64_t seed) {
     return pcg_new(pcg_mix(seed ^ pcg_mix(pixel + 0x9e3779b97f4a7c15UL * (s + 1UL))), pcg_mix(pixel) ^ s);
 }
 
-// Uniform in [0, 1): the top 24 bits times 2^-24, exact in float.
+// Uniform in [0, 1), every value exact in float: Pcg32::next_real's bits.
 float pcg_next_real(inout Pcg32 rng) {
+    // EXERCISE(ch11.next_real) § The same estimator
     return float(pcg_next_uint(rng) >> 8u) * (1.0 / 16777216.0);
+    // END EXERCISE
 }
 
 vec2 pcg_next_vec2(inout Pcg32 rng) {

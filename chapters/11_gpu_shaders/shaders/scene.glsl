@@ -239,6 +239,7 @@ bool search(Ray ray, float t_max, bool any_hit, inout Candidate found) {
     if (slab_entry(nodes[0].min_max_x.xyz, vec3(nodes[0].min_max_x.w, nodes[0].max_yz_offset_count.xy), ray,
                    inverse_d, t_max) == kInfinity)
         return hit;
+    // EXERCISE(ch11.bvh_traversal) § The scene as GPU memory
     uint stack_node[64];
     float stack_t[64];
     int top = 0;
@@ -287,6 +288,7 @@ bool search(Ray ray, float t_max, bool any_hit, inout Candidate found) {
         current = stack_node[top];
     }
     return hit;
+    // END EXERCISE
 }
 
 // ---- the hit record (chapter 02's hit.hpp and World::make_hit) ----

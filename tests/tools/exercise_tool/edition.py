@@ -25,7 +25,10 @@ def cpp_string(text: str) -> str:
 
 def stub_file(text: str, exercises: list[Exercise]) -> str:
     """The file with each exercise's marked lines replaced by a throw (the marks themselves are kept, so the
-    student sees where to write and the tools still find the exercise)."""
+    student sees where to write and the tools still find the exercise); a shader's by an #error line, which
+    makes the driver refuse the shader with the message, and so the C++ that compiles it throw."""
+    if exercises and exercises[0].glsl:
+        return stub_shader(text, exercises)
     lines = text.split("\n")
     tokens = tokenize(text)
     removed: set[str] = set()
@@ -61,10 +64,49 @@ def stub_file(text: str, exercises: list[Exercise]) -> str:
     return add_include("\n".join(out), "<stdexcept>")
 
 
+def stub_shader(text: str, exercises: list[Exercise]) -> str:
+    lines = text.split("\n")
+    for exercise in sorted(exercises, key=lambda e: e.begin, reverse=True):
+        lines[exercise.begin + 1 : exercise.end] = [f"#error {not_implemented(exercise)}"]
+    return "\n".join(lines)
+
+
+def shader_switch(exercise: Exercise) -> str:
+    """The preprocessor name that chooses a shader exercise's body in the switchable edition: 0 the right body,
+    K its K-th wrong solution, -1 the stub. A shader is compiled when the program runs, from text embedded when
+    it is built, so `deps` and `wrong` set it in the edition's source and rebuild (set_shader_switch)."""
+    return "RT_EXERCISE_" + exercise.name.replace(".", "_")
+
+
+def set_shader_switch(edition: Path, exercise: Exercise, value: int) -> None:
+    path = edition / exercise.file
+    name = shader_switch(exercise)
+    text, count = re.subn(rf"^#define {name} -?\d+$", f"#define {name} {value}", path.read_text(encoding="utf-8"),
+                          flags=re.MULTILINE)
+    if count != 1:
+        raise ToolError(f"{path}: no switch #define {name} (not a switchable edition?)")
+    path.write_text(text, encoding="utf-8")
+
+
+def switch_shader(text: str, exercises: list[Exercise], wrong: dict[str, list[WrongSolution]]) -> str:
+    lines = text.split("\n")
+    for exercise in sorted(exercises, key=lambda e: e.begin, reverse=True):
+        name = shader_switch(exercise)
+        switch = [f"#define {name} 0", f"#if {name} == -1", f"#error {not_implemented(exercise)}"]
+        for s in wrong.get(exercise.name, []):
+            switch += [f"#elif {name} == {s.number}"] + s.body
+        switch += ["#else"] + lines[exercise.begin + 1 : exercise.end] + ["#endif"]
+        lines[exercise.begin + 1 : exercise.end] = switch
+    return "\n".join(lines)
+
+
 def switch_file(text: str, exercises: list[Exercise], wrong: dict[str, list[WrongSolution]] | None = None) -> str:
     """For `deps` and `wrong`: each exercise keeps its body, which first throws as the student edition's does
     when the environment variable RT_STUB_EXERCISE names it, and beside which its wrong solutions are compiled,
-    the K-th run instead when RT_WRONG_SOLUTION is chNN.name:K (see exercise_switch.hpp)."""
+    the K-th run instead when RT_WRONG_SOLUTION is chNN.name:K (see exercise_switch.hpp). A shader's exercises
+    are chosen by a #define instead (shader_switch)."""
+    if exercises and exercises[0].glsl:
+        return switch_shader(text, exercises, wrong or {})
     lines = text.split("\n")
     for exercise in sorted(exercises, key=lambda e: e.begin, reverse=True):
         indent = re.match(r"\s*", lines[exercise.begin + 1]).group(0)

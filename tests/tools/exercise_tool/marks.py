@@ -8,12 +8,13 @@ from pathlib import Path
 
 from .cpp_reader import Token, enclosing_function, locals_before, matching, tokenize
 
-SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"}
+GLSL_SUFFIXES = {".glsl", ".comp", ".frag", ".vert"}  # a shader's exercises are stubbed by #error, not a throw
+SOURCE_SUFFIXES = {".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx", ".inl"} | GLSL_SUFFIXES
 SCANNED_FOLDERS = ("chapters", "common")  # where marks may be; tests/ holds none
-MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)")
+MARK_RE = re.compile(r"^\s*//\s*EXERCISE\(([^)]*)\)(?:\s*§\s*(.*?))?\s*$")
 END_RE = re.compile(r"^\s*//\s*END EXERCISE\b")
 NAME_RE = re.compile(r"^ch(\d\d)\.[a-z][a-z0-9_]*$")
-NOT_IMPLEMENTED_RE = re.compile(r"not implemented: (ch\d\d\.[a-z][a-z0-9_]*)")
+NOT_IMPLEMENTED_RE = re.compile(r"not\s+implemented:\s+(ch\d\d\.[a-z][a-z0-9_]*)")  # a report may wrap its lines
 TAG_PREFIX = "ex:"
 
 
@@ -32,7 +33,11 @@ class Exercise:
     locals: list[str] = field(default_factory=list)
     stubbed: bool = False  # its body is still the student edition's throw: not written yet
     lesson: str = ""  # "chapters/02_intersection/README.md"
-    section: str = ""  # "Spheres", or "" when the lesson has no fitting heading
+    section: str = ""  # "Spheres": the heading of the lesson's section that teaches it, named by the mark
+
+    @property
+    def glsl(self) -> bool:  # in a shader, which C++ compiles when it runs (chapter 11)
+        return self.file.suffix in GLSL_SUFFIXES
 
     @property
     def chapter(self) -> str:
@@ -55,48 +60,34 @@ def chapter_folder(root: Path, chapter: str) -> Path | None:
     return found[0] if found else None
 
 
-def lesson_section(root: Path, exercise: Exercise) -> tuple[str, str]:
-    """Where the lesson explains an exercise: the chapter's README and its heading that names the exercise
-    or function; else the section whose text names the function; else its "Exercises" section."""
-    folder = chapter_folder(root, exercise.chapter)
-    if folder is None:
-        return "", ""
-    readme = folder / "README.md"
-    lesson = readme.relative_to(root).as_posix()
-    if not readme.is_file():
-        return lesson, "Exercises"
-    sections: list[tuple[str, list[str]]] = []
+def lesson_headings(readme: Path) -> set[str]:
+    """The headings (## to ####, outside code blocks) of a lesson, without their backticks."""
+    headings = set()
     in_code = False
     for line in readme.read_text(encoding="utf-8").splitlines():
         if line.lstrip().startswith("```"):
             in_code = not in_code
         m = None if in_code else re.match(r"^#{2,4}\s+(.*?)\s*#*\s*$", line)
         if m:
-            sections.append((m.group(1), []))
-        elif sections:
-            sections[-1][1].append(line)
-    def names(text: str, words: list[str]) -> bool:
-        return any(re.search(r"(?<![\w.])" + re.escape(w) + r"(?![\w])", text) for w in words if w)
+            headings.add(m.group(1).replace("`", ""))
+    return headings
 
-    def code(text: str) -> str:  # the code blocks and `code spans` of a section
-        return "\n".join(re.findall(r"```.*?```|`[^`\n]+`", text, re.DOTALL))
 
-    function = exercise.function if exercise.function != "lambda" else ""
-    file_names = [exercise.file.name, exercise.file.stem + ".hpp", exercise.file.stem + ".cpp"]
-    ordinary = [(h, "\n".join(b)) for h, b in sections if not h.lower().startswith("exercises")]
-    # The heading that names the exercise or its function; the section whose code, then whose text, names the
-    # function (or the exercise); the section that names its file; the lesson's exercises.
-    for heading, _ in sections:
-        if names(heading, [exercise.short, exercise.name, function]):
-            return lesson, heading.replace("`", "")
-    for words, part in (([function, exercise.name], code), ([function, exercise.name], str), (file_names, str)):
-        for heading, body in ordinary:
-            if names(part(body), words):
-                return lesson, heading.replace("`", "")
-    for heading, _ in sections:
-        if heading.lower().startswith("exercises"):
-            return lesson, heading.replace("`", "")
-    return lesson, ""
+def lesson_section(root: Path, exercise: Exercise, section: str) -> tuple[str, str | None]:
+    """The lesson of an exercise (its chapter's README) and the section its mark names (`// EXERCISE(name) §
+    heading`), or an error: the mark names none, or the lesson has no such heading."""
+    folder = chapter_folder(root, exercise.chapter)
+    if folder is None:
+        return "", None
+    readme = folder / "README.md"
+    lesson = readme.relative_to(root).as_posix()
+    if not section:
+        return lesson, (f"{exercise.where()}: EXERCISE({exercise.name}) names no lesson section: add § and a heading "
+                        f"of {lesson}, the section that teaches it (// EXERCISE({exercise.name}) § Heading)")
+    if not readme.is_file() or section.replace("`", "") not in lesson_headings(readme):
+        return lesson, (f"{exercise.where()}: EXERCISE({exercise.name}) names § {section}, but {lesson} has no such "
+                        "heading: name the heading of the section that teaches it")
+    return lesson, None
 
 
 def source_files(root: Path) -> list[Path]:
@@ -135,7 +126,7 @@ def find_exercises(root: Path) -> list[Exercise]:
                 parts = relative.parts
                 if name_match and parts[0] == "chapters" and not parts[1].startswith(name_match.group(1) + "_"):
                     errors.append(f"{where}: exercise {name} is in chapter folder {parts[1]}; name it ch{parts[1][:2]}.…")
-                open_mark = Exercise(name, relative, number, -1)
+                open_mark = Exercise(name, relative, number, -1, section=m.group(2) or "")
             elif END_RE.match(line):
                 if open_mark is None:
                     errors.append(f"{relative.as_posix()}:{number + 1}: END EXERCISE without an EXERCISE(...) before it")
@@ -166,11 +157,17 @@ def find_exercises(root: Path) -> list[Exercise]:
                 continue
             body = "\n".join(lines[exercise.begin + 1 : exercise.end])
             # (The switchable edition of `deps` keeps the body after its throw: not stubbed.)
-            exercise.stubbed = f'"not implemented: {exercise.name} ' in body and "exercise_switch::" not in body
+            # (A shader's stub is an #error line; its switchable body an #if on RT_EXERCISE_chNN_name.)
+            exercise.stubbed = (f'"not implemented: {exercise.name} ' in body
+                                or f"#error not implemented: {exercise.name} " in body) and \
+                "exercise_switch::" not in body and not re.search(r"^\s*#if RT_EXERCISE_", body, re.MULTILINE)
             exercise.function = function.name
             exercise.parameters = function.parameters
             exercise.locals = locals_before(tokens, function, exercise.begin)
-            exercise.lesson, exercise.section = lesson_section(root, exercise)
+            exercise.lesson, error = lesson_section(root, exercise, exercise.section)
+            if error:
+                errors.append(error)
+                continue
             exercises.append(exercise)
     if errors:
         raise ToolError("\n".join(errors))
