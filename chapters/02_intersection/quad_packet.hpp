@@ -38,7 +38,7 @@ struct PacketHit {
 
 // Inline for the reason intersect_quad is.
 inline std::optional<PacketHit> intersect_quad_packet(const Ray& ray, const QuadPacket& packet, Real t_max) {
-    // EXERCISE(ch02.quad_packet) § What the BVH buys, measured
+    // EXERCISE(ch02.quad_packet) § Quads four at a time
     const Vec3& o = ray.origin;
     const Vec3& d = ray.direction;
     const auto& origin = packet.origin;
