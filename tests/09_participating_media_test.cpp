@@ -188,6 +188,17 @@ Scene scene_from(const std::string& json) {
     return parse_scene(json, "test.json");
 }
 
+// A square render of `size` pixels a side, quiet, on two threads.
+RenderSettings small_render(int size, int spp, std::uint64_t seed) {
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.samples_per_pixel = spp;
+    settings.seed = seed;
+    settings.threads = 2;
+    settings.progress = ProgressStyle::kNone;
+    return settings;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------
@@ -564,12 +575,7 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
         {{Color(1e-6f), Color(1e-6f), 0.5f}, 1.5f}, {{Color(0), Color(1e-6f, 1, 1e6f), 0}, 1},
         {{Color(1e6f), Color(1e6f), -0.5f}, 1.5f},  {{Color(0), Color(1e6f), 0.9f}, 1},
     };
-    RenderSettings settings;
-    settings.width = settings.height = 8;
-    settings.samples_per_pixel = 4;
-    settings.seed = 3;
-    settings.threads = 2;
-    settings.progress = ProgressStyle::kNone;
+    const RenderSettings settings = small_render(8, 4, 3);
     for (const Case& c : cases) {
         PathOptions options;
         options.walk.max_events = 2000;
@@ -602,12 +608,7 @@ TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a 
             R"(, "milk": {"type": "dielectric", "ior": 1.3, "medium": {"sigma_a": [0.01, 0.01, 0.01],
                "sigma_s": [3, 3, 3]}}}, "shapes": [)" +
             lamp + R"(, {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "milk"}]})"};
-    RenderSettings settings;
-    settings.width = settings.height = 16;
-    settings.samples_per_pixel = 16;
-    settings.seed = 2;
-    settings.threads = 2;
-    settings.progress = ProgressStyle::kNone;
+    const RenderSettings settings = small_render(16, 16, 2);
     for (const std::string& text : scenes) {
         const Scene scene = scene_from(text);
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
@@ -711,12 +712,7 @@ TEST_CASE(
     "exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const Scene scene = load_scene(scene_path("ch09_default.json"));
     CHECK(needed(scene).contains(Effect::kMedia));
-    RenderSettings settings;
-    settings.width = settings.height = 16;
-    settings.samples_per_pixel = 2;
-    settings.seed = 1;
-    settings.threads = 2;
-    settings.progress = ProgressStyle::kNone;
+    const RenderSettings settings = small_render(16, 2, 1);
     const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
     const RenderResult r =
         render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials());
