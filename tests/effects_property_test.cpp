@@ -2,8 +2,9 @@
 // shipped scene and for 400 scenes drawn at random from the scene format, a chapter's render with what
 // run_chapter() simulates, simulated_effects(scene, supported) = needed(scene) ∩ supported, gives the same
 // image within noise as its render with everything it supports (narrowed by the scene's "effects" list when
-// it has one: the list is the user's choice, printed by the run). Chapters 03 (point lights), 07 (paths,
-// dielectrics) and 09 (media) render each scene as their executables do.
+// it has one: the list is the user's choice, printed by the run). Chapters 03 (point lights), 04 (direct
+// light, stand-ins for mirrors and glass), 07 (paths, dielectrics) and 09 (media) render each scene as their
+// executables do.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "01_ray_generation/camera.hpp"
 #include "03_shadow_rays/shadow_render.hpp"
+#include "04_direct_lighting/direct_render.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/media_materials.hpp"
@@ -41,6 +43,16 @@ const std::vector<Chapter>& chapters() {
              const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
              return render_shadows(world, scene, camera, shadow_options(simulated, RayOffset{}), settings)
                  .image;
+         }},
+        {"ch04", kDirectChapterEffects,
+         [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
+             DirectOptions options;
+             options.simulated = simulated;
+             const World world(scene);
+             const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+             const MaterialTable materials(scene, simulated);
+             const DirectLighting shading(world, materials, collect_lights(scene), options);
+             return render_direct(shading, camera, settings, FilmPoints::kStratified).image;
          }},
         {"ch07", kRefractionChapterEffects,
          [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {

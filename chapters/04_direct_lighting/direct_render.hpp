@@ -7,9 +7,15 @@
 #include "01_ray_generation/camera.hpp"
 #include "analytic_scene.hpp"
 #include "direct_lighting.hpp"
+#include "rt/effect_set.hpp"
 #include "rt/render_loop.hpp"
 
 namespace rt {
+
+// What chapter 04 simulates: chapter 03's point lights and shadows, area lights and the environment, and the
+// glossy lobes.
+inline constexpr EffectSet kDirectChapterEffects{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
+                                                 Effect::kGlossy};
 
 // Where a pixel's camera rays pass: stratified jitter (anti-aliased), or the pixel centre (for comparing
 // with an exact image computed at the centres).

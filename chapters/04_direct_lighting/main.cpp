@@ -34,8 +34,7 @@ int main(int argc, char** argv) {
     std::string csv;
     const ChapterInfo chapter{
         "ch04_direct_lighting", "Chapter 04: direct lighting, four BRDFs, area lights and soft shadows",
-        "ch04_default.json",
-        EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect, Effect::kGlossy}};
+        "ch04_default.json", kDirectChapterEffects};
     auto flags = [&](CLI::App& app) {
         app.add_option("--shadow-samples", shadow_samples,
                        "Shadow rays per light per hit (N; soft shadows converge as N grows)")
