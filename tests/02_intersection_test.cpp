@@ -375,8 +375,8 @@ TEST_CASE("The wide BVH holds every leaf of the binary one once, in the binary n
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-          "[ex:ch02.wide_bvh_traversal]") {
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal]") {
     const Scene scene = load_scene(scene_path("ch02_default.json"));
     const World world(scene);
     RenderSettings settings{64, 36, 1, 1, 1, ProgressStyle::kNone};
@@ -729,8 +729,8 @@ TEST_CASE("The slab test handles zero direction components of either sign and fl
 }
 
 TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
-          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.slab_test][ex:ch02.sphere_stable]"
-          "[ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]") {
+          "[stability][bvh][ex:ch02.bvh_traversal][ex:ch02.quad][ex:ch02.quad_packet][ex:ch02.slab_test]"
+          "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]") {
     Pcg32 rng(41, 7);
     std::vector<Shape> shapes;
     auto random_point = [&](Real size) {

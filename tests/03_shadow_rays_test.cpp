@@ -154,8 +154,8 @@ TEST_CASE("The exact visibility leaves out the shape the point lies on, and only
 }
 
 TEST_CASE("Scaling a scene changes its numbers, not its picture",
-          "[ch03][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-          "[ex:ch02.wide_bvh_traversal][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
+          "[ch03][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     const Scene scene = load_scene(scene_path("ch03_default.json"));
     const RenderSettings settings = small_settings(64, 36, 1, 2);
     double means[2];
@@ -215,8 +215,8 @@ TEST_CASE("Materials and lights this chapter does not simulate are named with th
 }
 
 TEST_CASE("A scene without lights, or without the shadows effect, traces no shadow rays",
-          "[ch03][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-          "[ex:ch02.wide_bvh_traversal][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
+          "[ch03][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     Scene scene = load_scene(scene_path("ch03_default.json"));
     const World world(scene);
     const RenderSettings settings = small_settings(48, 27, 1, 2);
@@ -238,8 +238,8 @@ TEST_CASE("A scene without lights, or without the shadows effect, traces no shad
 TEST_CASE(
     "The default scene renders finite, plausible, identical on 1 and 2 threads, one shadow ray per light in "
     "front",
-    "[ch03][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-    "[ex:ch02.wide_bvh_traversal][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
+          "[ch03][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     const Scene scene = load_scene(scene_path("ch03_default.json"));
     const World world(scene);
     RenderSettings settings = small_settings(80, 45, 2, 1);
@@ -564,8 +564,8 @@ TEST_CASE("A shadow ray to a point on a light stops before the light's own surfa
 }
 
 TEST_CASE("On the default scene at scales 1e-3 to 1e5 the robust offset makes no acne and no leaks",
-          "[ch03][stability][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.sphere_stable]"
-          "[ex:ch02.wide_bvh_traversal][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
+          "[ch03][stability][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     const Scene scene = load_scene(scene_path("ch03_default.json"));
     const RenderSettings settings = small_settings(96, 54, 1, 2);
     const std::vector<Real> scales{Real(1e-3), Real(1), Real(1e3), Real(1e5)};

@@ -868,7 +868,7 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
 }
 
 TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hit, for every kind of emitter",
-          "[lights][ex:ch02.plane][ex:ch02.slab_test][ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal]") {
+          "[lights][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
     // Emitters of every kind among surfaces that emit nothing: a box (6 faces), a triangle, a sphere, a quad,
     // and an emissive plane (no light: infinite area).
     const Scene scene = parse_scene(R"({
@@ -931,7 +931,7 @@ TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hi
 }
 
 TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 threads",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch02.wide_bvh_traversal][ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light]"
           "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective][ex:ch04.sample_quad_light]"
           "[ex:ch04.uniform_cone]") {

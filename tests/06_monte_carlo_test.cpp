@@ -555,7 +555,7 @@ TEST_CASE("Sobol points are a pure function of (pixel, sample, dimension, seed)"
 }
 
 TEST_CASE("Sobol points: the irradiance error falls faster than 1/sqrt(N)",
-          "[statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
+          "[statistical][ex:ch01.pixel_sample][ex:ch04.cosine_hemisphere][ex:ch04.lambert_polygon]") {
     const double s64 = quad_irradiance_rmse(64, PointSet::kSobol);
     const double s1024 = quad_irradiance_rmse(1024, PointSet::kSobol);
     INFO("Sobol RMSE " << s64 << " at N = 64, " << s1024 << " at N = 1024");

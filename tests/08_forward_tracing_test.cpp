@@ -367,7 +367,9 @@ TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threa
 }
 
 TEST_CASE("Under an environment light the combined tracer is chapter 06's loop alone, bit for bit",
-          "[ch08]" kCombinedTracerExercises) {
+          "[ch08][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract]") {
     // Light paths do not start at the environment, so no path may be left to them.
     const Scene scene = load_scene(scene_path("ch07_furnace_glass.json"));
     const EffectSet all = needed(scene) & EffectSet::all();

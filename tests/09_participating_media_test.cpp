@@ -368,8 +368,9 @@ TEST_CASE(
 }
 
 TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera rays and shadow rays",
-          "[ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04."
-          "lambert][ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
+          "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+          "[ex:ch07.beer_lambert]") {
     // An emitter of radiance 1 at z = −5 facing the camera at the origin; fog of σ_a = 0.3 everywhere.
     const Scene seen = scene_from(R"({
       "camera": {"from": [0, 0, 0], "at": [0, 0, -1]},
@@ -400,8 +401,9 @@ TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera
 }
 
 TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to camera rays and shadow rays",
-          "[ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04."
-          "lambert][ex:ch05.termination][ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
+          "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+          "[ex:ch07.beer_lambert]") {
     // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing
     // fog (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
     // boundaries.
@@ -507,8 +509,9 @@ TEST_CASE(
 TEST_CASE(
     "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
     "and T1 = 0.10617, by quadrature and by the walk cut after one event",
-    "[statistical][ex:ch02.plane][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06."
-    "uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
     gauss_legendre(200, mu, w);
@@ -537,8 +540,9 @@ TEST_CASE(
 TEST_CASE(
     "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
     "0.5, 0.9 and 0.99",
-    "[statistical][ex:ch02.plane][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06."
-    "uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
     for (double omega : {0.5, 0.9, 0.99}) {
@@ -590,7 +594,10 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
 }
 
 TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a lamp, milk under a lamp",
-          "[effects]") {
+          "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     // As a user's scene file is rendered: simulating simulated_effects(scene, supported). Before media called
     // for lighting these rendered black (fog under a point light: 0 shadow rays), or only what glass
     // reflects.
@@ -706,10 +713,11 @@ TEST_CASE(
 
 TEST_CASE(
     "The default scene renders finite and calls for media",
-    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_"
-    "ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:"
-    "ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_"
-    "exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     const Scene scene = load_scene(scene_path("ch09_default.json"));
     CHECK(needed(scene).contains(Effect::kMedia));
     const RenderSettings settings = small_render(16, 2, 1);

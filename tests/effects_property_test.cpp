@@ -243,7 +243,14 @@ class SceneDraw {
 }  // namespace
 
 TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ supported as with all supported",
-          "[effects][property]") {
+          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere][ex:ch04.direct_light][ex:ch04.glossy]"
+          "[ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]"
+          "[ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
+          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
     int scenes = 0;
     for (const auto& entry : std::filesystem::directory_iterator(assets_dir() / "scenes")) {
         if (entry.path().extension() != ".json") continue;
@@ -255,7 +262,14 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
 }
 
 TEST_CASE("400 random scenes render the same, within noise, with needed ∩ supported as with all supported",
-          "[effects][property]") {
+          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine]"
+          "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+          "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
     int compared = 0;
     for (std::uint64_t i = 0; i < 400; ++i) {
         const std::string text = SceneDraw(i).text();
