@@ -20,7 +20,7 @@ from pathlib import Path
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 
 HERE = Path(__file__).resolve().parent
-CHAPTERS = HERE.parent.parent / "chapters"
+CHAPTERS = HERE.parent
 SKIPPED = 77
 
 
@@ -60,8 +60,8 @@ def main() -> int:
             if not committed.is_file() or committed.read_bytes() != fresh.read_bytes():
                 stale.append(path)
     for path in stale:
-        print(f"make_diagrams: chapters/{path} differs from what docs/diagrams draws "
-              f"(run docs/diagrams/make_diagrams.py and commit it)")
+        print(f"make_diagrams: chapters/{path} differs from what chapters/diagrams draws "
+              f"(run chapters/diagrams/make_diagrams.py and commit it)")
     print(f"make_diagrams: {len(diagrams) - len(stale)} of {len(diagrams)} diagrams as committed")
     return 1 if stale else 0
 
