@@ -7,26 +7,25 @@
 #include "edge_coverage.hpp"
 #include "ray_generation_render.hpp"
 #include "rt/app.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/image_io.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
-    std::string sampler_name = "stratified";
+    PixelSampler sampler = PixelSampler::kStratified;
     Real tilt_degrees = 20;
     bool study = false;
     std::string csv;
     const ChapterInfo chapter{"ch01_ray_generation", "Chapter 01: ray generation with a pinhole camera",
                               "ch01_default.json", EffectSet{Effect::kCameraRays}};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--pixel-sampler", sampler_name, "Where samples fall in a pixel: center|uniform|stratified")
-            ->check(CLI::IsMember({"center", "uniform", "stratified"}));
+        add_enum_option(app, sampler, "Where samples fall in a pixel: " + joined_names<PixelSampler>());
         app.add_option("--edge-tilt", tilt_degrees, "Tilt of the edge from the vertical, degrees");
         CLI::Option* study_flag =
             app.add_flag("--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
         app.add_option("--csv", csv, "With --aa-study: also write the table as CSV")->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
-        const PixelSampler sampler = pixel_sampler_from_string(sampler_name);
         const RenderSettings& settings = context.settings;
         const PinholeCamera camera = make_pinhole_camera(context.scene.camera, settings.width, settings.height);
         const FilmEdge edge = make_film_edge(camera, tilt_degrees);

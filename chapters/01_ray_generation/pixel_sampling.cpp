@@ -1,27 +1,8 @@
 #include "pixel_sampling.hpp"
 
 #include <cmath>
-#include <string>
-
-#include "rt/errors.hpp"
 
 namespace rt {
-
-std::string_view to_string(PixelSampler sampler) {
-    switch (sampler) {
-        case PixelSampler::kCenter: return "center";
-        case PixelSampler::kUniform: return "uniform";
-        case PixelSampler::kStratified: return "stratified";
-    }
-    return "?";
-}
-
-PixelSampler pixel_sampler_from_string(std::string_view name) {
-    for (PixelSampler s : {PixelSampler::kCenter, PixelSampler::kUniform, PixelSampler::kStratified}) {
-        if (to_string(s) == name) return s;
-    }
-    throw InputError("--pixel-sampler: unknown sampler \"" + std::string(name) + "\"; expected center, uniform or stratified");
-}
 
 namespace {
 

@@ -2,18 +2,18 @@
 // point in its own stratum. Pixel (x, y) covers film points [x, x+1) × [y, y+1).
 #pragma once
 
-#include <string_view>
-
+#include "rt/enum_names.hpp"
 #include "rt/math.hpp"
 
 namespace rt {
 
 enum class PixelSampler { kCenter, kUniform, kStratified };
 
-// "center", "uniform" or "stratified".
-std::string_view to_string(PixelSampler sampler);
-// The sampler of that name; throws InputError for any other name.
-PixelSampler pixel_sampler_from_string(std::string_view name);
+constexpr auto names_of(PixelSampler) {
+    return enum_names<PixelSampler>("--pixel-sampler", {{PixelSampler::kCenter, "center"},
+                                                        {PixelSampler::kUniform, "uniform"},
+                                                        {PixelSampler::kStratified, "stratified"}});
+}
 
 // The film point of sample `index` of `count` in pixel (x, y), from a uniform random pair u in [0, 1)².
 // center: (x + ½, y + ½). uniform: (x + u₁, y + u₂). stratified: the pixel is cut into n×n strata,

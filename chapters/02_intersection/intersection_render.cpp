@@ -5,17 +5,9 @@
 #include <string>
 
 #include "01_ray_generation/pixel_sampling.hpp"
-#include "rt/errors.hpp"
 #include "rt/interrupt.hpp"
 
 namespace rt {
-
-ShowMode show_mode_from_string(std::string_view name) {
-    if (name == "normal") return ShowMode::kNormal;
-    if (name == "distance") return ShowMode::kDistance;
-    if (name == "cost") return ShowMode::kCost;
-    throw InputError("--show: expected normal, distance or cost, got " + std::string(name));
-}
 
 Color normal_colour(const Vec3& n) {
     return (n + Real(1)) * Real(0.5);

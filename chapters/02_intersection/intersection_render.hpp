@@ -5,7 +5,6 @@
 #include <optional>
 
 #include <cstdint>
-#include <string_view>
 
 #include "01_ray_generation/camera.hpp"
 #include "rt/render_loop.hpp"
@@ -15,7 +14,10 @@ namespace rt {
 
 enum class ShowMode { kNormal, kDistance, kCost };
 
-ShowMode show_mode_from_string(std::string_view name);
+constexpr auto names_of(ShowMode) {
+    return enum_names<ShowMode>("--show",
+                                {{ShowMode::kNormal, "normal"}, {ShowMode::kDistance, "distance"}, {ShowMode::kCost, "cost"}});
+}
 
 // The normal n as the colour (n + 1) / 2.
 Color normal_colour(const Vec3& n);

@@ -94,4 +94,12 @@ void write_obj(const MeshShape& mesh, const std::filesystem::path& path) {
     obj.commit();
 }
 
+void write_default_mesh(const std::filesystem::path& path) {
+    MeshShape mesh = make_icosphere(3);
+    jitter_radii(mesh, Real(0.05), 2);
+    write_obj(mesh, path);
+    std::printf("wrote %s: %zu vertices, %zu triangles\n", path.string().c_str(), mesh.positions.size(),
+                mesh.triangles.size());
+}
+
 }  // namespace rt

@@ -25,4 +25,8 @@ void jitter_radii(MeshShape& mesh, Real amount, std::uint64_t seed);
 // (staged_file.hpp). Throws InputError when `path` cannot be written, std::runtime_error when a write fails.
 void write_obj(const MeshShape& mesh, const std::filesystem::path& path);
 
+// Writes chapter 02's default mesh (the icosphere of 3 subdivisions, radii jittered by 5%, seed 2) as OBJ and
+// prints what it wrote.
+void write_default_mesh(const std::filesystem::path& path);
+
 }  // namespace rt

@@ -12,12 +12,18 @@
 
 #include <optional>
 
+#include "rt/enum_names.hpp"
 #include "rt/math.hpp"
 #include "rt/ray.hpp"
 
 namespace rt {
 
 enum class TriangleTest { kWatertight, kMollerTrumbore };
+
+constexpr auto names_of(TriangleTest) {
+    return enum_names<TriangleTest>("--triangle-test",
+                                    {{TriangleTest::kWatertight, "watertight"}, {TriangleTest::kMollerTrumbore, "moller"}});
+}
 
 struct Triangle {
     Vec3 p0{0};

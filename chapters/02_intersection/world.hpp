@@ -29,6 +29,11 @@ namespace rt {
 // kNone: every primitive tested.
 enum class Acceleration { kBvh, kBinaryBvh, kNone };
 
+constexpr auto names_of(Acceleration) {
+    return enum_names<Acceleration>(
+        "--accel", {{Acceleration::kBvh, "bvh"}, {Acceleration::kBinaryBvh, "binary"}, {Acceleration::kNone, "none"}});
+}
+
 struct WorldOptions {
     TriangleTest triangle_test = TriangleTest::kWatertight;
     Acceleration acceleration = Acceleration::kBvh;
