@@ -81,11 +81,11 @@ TEST_CASE("A point light gives E = I cos theta / r^2, and nothing from behind",
 }
 
 TEST_CASE("Offset methods are parsed by name and anything else is refused", "[ch03]") {
-    CHECK(offset_method_from_string("none") == OffsetMethod::kNone);
-    CHECK(offset_method_from_string("epsilon") == OffsetMethod::kEpsilon);
-    CHECK(offset_method_from_string("robust") == OffsetMethod::kRobust);
-    CHECK_THROWS_AS(offset_method_from_string("robustt"), InputError);
-    CHECK_THROWS_WITH(offset_method_from_string(""), Catch::Contains("--offset"));
+    CHECK(from_string<OffsetMethod>("none") == OffsetMethod::kNone);
+    CHECK(from_string<OffsetMethod>("epsilon") == OffsetMethod::kEpsilon);
+    CHECK(from_string<OffsetMethod>("robust") == OffsetMethod::kRobust);
+    CHECK_THROWS_AS(from_string<OffsetMethod>("robustt"), InputError);
+    CHECK_THROWS_WITH(from_string<OffsetMethod>(""), Catch::Contains("--offset"));
 }
 
 TEST_CASE("Each offset moves the origin to the side the new ray goes, by its own distance",

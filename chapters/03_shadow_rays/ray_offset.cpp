@@ -1,30 +1,20 @@
 #include "ray_offset.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "rt/errors.hpp"
 
 namespace rt {
 
-std::string_view to_string(OffsetMethod method) {
-    switch (method) {
-        case OffsetMethod::kNone:
-            return "none";
-        case OffsetMethod::kEpsilon:
-            return "epsilon";
-        case OffsetMethod::kRobust:
-            return "robust";
+RayOffset make_ray_offset(OffsetMethod method, Real epsilon) {
+    if (!(epsilon > 0 && std::isfinite(epsilon))) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%g", double(epsilon));
+        throw InputError(std::string("--epsilon: must be a finite number > 0, got ") + text);
     }
-    return "?";
-}
-
-OffsetMethod offset_method_from_string(std::string_view name) {
-    for (OffsetMethod m : {OffsetMethod::kNone, OffsetMethod::kEpsilon, OffsetMethod::kRobust}) {
-        if (to_string(m) == name) return m;
-    }
-    throw InputError("--offset: unknown method \"" + std::string(name) +
-                     "\"; expected none, epsilon or robust");
+    return {method, epsilon};
 }
 
 Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction) {

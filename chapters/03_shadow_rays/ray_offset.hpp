@@ -10,9 +10,8 @@
 //             further away from the surface (PBRT 4 §6.8.6): scale-free, and never short.
 #pragma once
 
-#include <string_view>
-
 #include "02_intersection/hit.hpp"
+#include "rt/enum_names.hpp"
 #include "rt/math.hpp"
 #include "rt/ray.hpp"
 
@@ -25,10 +24,13 @@ struct RayOffset {
     Real epsilon = Real(1e-4);  // the fixed distance of OffsetMethod::kEpsilon
 };
 
-// "none", "epsilon" or "robust".
-std::string_view to_string(OffsetMethod method);
-// The method of that name ("none"|"epsilon"|"robust"); throws InputError for any other name.
-OffsetMethod offset_method_from_string(std::string_view name);
+constexpr auto names_of(OffsetMethod) {
+    return enum_names<OffsetMethod>(
+        "--offset", {{OffsetMethod::kNone, "none"}, {OffsetMethod::kEpsilon, "epsilon"}, {OffsetMethod::kRobust, "robust"}});
+}
+
+// The offset of that method and epsilon; throws InputError unless epsilon is finite and > 0.
+RayOffset make_ray_offset(OffsetMethod method, Real epsilon);
 
 // The robust origin: δ = |n| · e, o = p + s δ n (s = sign(d · n), +1 when d · n = 0), then every component of
 // o that moved is stepped one ulp further in the direction it moved (std::nextafter).

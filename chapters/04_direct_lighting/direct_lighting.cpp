@@ -6,40 +6,11 @@
 #include "03_shadow_rays/shadow_ray.hpp"
 #include "area_light_sampling.hpp"
 #include "frame.hpp"
-#include "rt/errors.hpp"
 #include "point_light_sampling.hpp"
 #include "sampling.hpp"
 #include "sphere_light_sampling.hpp"
 
 namespace rt {
-std::string_view to_string(LightSampler sampler) {
-    return sampler == LightSampler::kIndependent ? "independent" : "stratified";
-}
-
-LightSampler light_sampler_from_string(std::string_view name) {
-    if (name == "independent") return LightSampler::kIndependent;
-    if (name == "stratified") return LightSampler::kStratified;
-    throw InputError("--light-sampler: expected independent or stratified, got '" + std::string(name) + "'");
-}
-
-std::string_view to_string(LightSelection selection) {
-    switch (selection) {
-        case LightSelection::kAuto:
-            return "auto";
-        case LightSelection::kEvery:
-            return "every";
-        case LightSelection::kPower:
-            return "power";
-    }
-    return "?";
-}
-
-LightSelection light_selection_from_string(std::string_view name) {
-    if (name == "auto") return LightSelection::kAuto;
-    if (name == "every") return LightSelection::kEvery;
-    if (name == "power") return LightSelection::kPower;
-    throw InputError("--light-selection: expected auto, every or power, got '" + std::string(name) + "'");
-}
 
 DirectLighting::DirectLighting(const World& world, const MaterialTable& materials, LightSet lights,
                                DirectOptions options)

@@ -8,7 +8,6 @@
 #pragma once
 
 #include <optional>
-#include <string_view>
 
 #include "02_intersection/hit.hpp"
 #include "02_intersection/world.hpp"
@@ -17,6 +16,7 @@
 #include "light_sample.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
+#include "rt/enum_names.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "trace_options.hpp"
@@ -27,9 +27,10 @@ namespace rt {
 // in each cell of an m × m grid (m = ⌊√N⌋; the rest independent), which evens out where the samples land.
 enum class LightSampler { kIndependent, kStratified };
 
-std::string_view to_string(LightSampler sampler);
-// "independent" or "stratified"; throws InputError for any other name.
-LightSampler light_sampler_from_string(std::string_view name);
+constexpr auto names_of(LightSampler) {
+    return enum_names<LightSampler>(
+        "--light-sampler", {{LightSampler::kIndependent, "independent"}, {LightSampler::kStratified, "stratified"}});
+}
 
 // Which lights a hit samples. Every light, N samples each, is this chapter's estimator; its cost grows with
 // the number of lights (50 000 emissive spheres: 50 000 N shadow rays per hit). Picking N lights with
@@ -39,9 +40,11 @@ LightSampler light_sampler_from_string(std::string_view name);
 enum class LightSelection { kAuto, kEvery, kPower };
 inline constexpr std::size_t kEveryLightLimit = 16;
 
-std::string_view to_string(LightSelection selection);
-// "auto", "every" or "power"; throws InputError for any other name.
-LightSelection light_selection_from_string(std::string_view name);
+constexpr auto names_of(LightSelection) {
+    return enum_names<LightSelection>(
+        "--light-selection",
+        {{LightSelection::kAuto, "auto"}, {LightSelection::kEvery, "every"}, {LightSelection::kPower, "power"}});
+}
 
 // Effects read: "direct" (sample the lights at all), "shadows" (trace shadow rays; without it every light
 // counts as visible). The material table holds what "glossy" changes.
