@@ -116,15 +116,15 @@ Estimate furnace_estimate(const Setup& setup, int n, std::uint64_t seed, RayCoun
 
 TEST_CASE("Termination rules are named depth, throughput and roulette, and other names are refused",
           "[termination]") {
-    CHECK(termination_from_string("depth") == Termination::kMaxDepth);
-    CHECK(termination_from_string("throughput") == Termination::kMinThroughput);
-    CHECK(termination_from_string("roulette") == Termination::kRussianRoulette);
+    CHECK(from_string<Termination>("depth") == Termination::kMaxDepth);
+    CHECK(from_string<Termination>("throughput") == Termination::kMinThroughput);
+    CHECK(from_string<Termination>("roulette") == Termination::kRussianRoulette);
     for (Termination t :
          {Termination::kMaxDepth, Termination::kMinThroughput, Termination::kRussianRoulette}) {
-        CHECK(termination_from_string(to_string(t)) == t);
+        CHECK(from_string<Termination>(to_string(t)) == t);
     }
-    CHECK_THROWS_AS(termination_from_string("Depth"), InputError);
-    CHECK_THROWS_WITH(termination_from_string("rr"),
+    CHECK_THROWS_AS(from_string<Termination>("Depth"), InputError);
+    CHECK_THROWS_WITH(from_string<Termination>("rr"),
                       Catch::Contains("--termination") && Catch::Contains("rr"));
     const TerminationSettings defaults;
     CHECK(defaults.rule == Termination::kRussianRoulette);

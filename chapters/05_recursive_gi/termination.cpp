@@ -2,32 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
-
-#include "rt/errors.hpp"
 
 namespace rt {
-
-std::string_view to_string(Termination rule) {
-    switch (rule) {
-        case Termination::kMaxDepth:
-            return "depth";
-        case Termination::kMinThroughput:
-            return "throughput";
-        case Termination::kRussianRoulette:
-            return "roulette";
-    }
-    return "?";
-}
-
-Termination termination_from_string(std::string_view name) {
-    for (Termination t :
-         {Termination::kMaxDepth, Termination::kMinThroughput, Termination::kRussianRoulette}) {
-        if (to_string(t) == name) return t;
-    }
-    throw InputError("--termination: unknown rule \"" + std::string(name) +
-                     "\"; expected depth, throughput or roulette");
-}
 
 Real survival_probability(const TerminationSettings& settings, int depth, const Color& throughput) {
     // EXERCISE(ch05.termination) § Stopping the recursion

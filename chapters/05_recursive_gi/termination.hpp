@@ -9,18 +9,18 @@
 // max_depth is a hard cap for every rule, so a path between two perfect mirrors ends too.
 #pragma once
 
-#include <string_view>
-
+#include "rt/enum_names.hpp"
 #include "rt/math.hpp"
 
 namespace rt {
 
 enum class Termination { kMaxDepth, kMinThroughput, kRussianRoulette };
 
-// "depth", "throughput" or "roulette".
-std::string_view to_string(Termination rule);
-// The rule of that name ("depth"|"throughput"|"roulette"); throws InputError for any other name.
-Termination termination_from_string(std::string_view name);
+constexpr auto names_of(Termination) {
+    return enum_names<Termination>("--termination", {{Termination::kMaxDepth, "depth"},
+                                                     {Termination::kMinThroughput, "throughput"},
+                                                     {Termination::kRussianRoulette, "roulette"}});
+}
 
 struct TerminationSettings {
     Termination rule = Termination::kRussianRoulette;
