@@ -770,6 +770,6 @@ TEST_CASE("An emissive plane, which no light sample can reach, is seen by every 
 }
 
 TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
-    for (SamplingStrategy s : kAllStrategies) CHECK(sampling_strategy_from_string(to_string(s)) == s);
-    CHECK_THROWS_AS(sampling_strategy_from_string("importance"), InputError);
+    for (SamplingStrategy s : kAllStrategies) CHECK(from_string<SamplingStrategy>(to_string(s)) == s);
+    CHECK_THROWS_AS(from_string<SamplingStrategy>("importance"), InputError);
 }

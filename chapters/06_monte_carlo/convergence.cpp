@@ -259,4 +259,17 @@ void print_convergence_study(const RenderScene& prepared, const PathOptions& opt
     }
 }
 
+void run_convergence_study(const RenderScene& prepared, const PathOptions& options, const PinholeCamera& camera,
+                           const RenderSettings& settings, const ConvergenceRequest& request) {
+    check_writable("--csv", request.csv);
+    std::printf("converged reference: %d spp (MIS), %dx%d ...\n", request.reference_spp, settings.width,
+                settings.height);
+    std::fflush(stdout);
+    const Reference ref =
+        converged_reference(prepared, options, camera, settings, request.reference_spp, request.cache);
+    std::printf("  %s %s; its own noise: MSE %.3e (RMSE %.3e)\n", ref.cached ? "read" : "rendered and wrote",
+                ref.file.string().c_str(), ref.noise_mse, std::sqrt(ref.noise_mse));
+    print_convergence_study(prepared, options, camera, settings, ref, request.max_spp, request.csv);
+}
+
 }  // namespace rt

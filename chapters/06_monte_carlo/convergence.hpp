@@ -82,4 +82,16 @@ void print_convergence_study(const RenderScene& prepared, const PathOptions& opt
                              const PinholeCamera& camera, const RenderSettings& settings,
                              const Reference& ref, int max_spp, const std::string& csv);
 
+struct ConvergenceRequest {
+    int max_spp = 1024;
+    int reference_spp = 8192;
+    std::string cache = ".";                    // the folder of the cached reference
+    std::string csv = "ch06_convergence.csv";  // the plots go beside it
+};
+
+// `--converge` as chapter 06's executable runs it: the CSV file probed, the converged reference read or
+// rendered (and its own noise reported), then print_convergence_study.
+void run_convergence_study(const RenderScene& prepared, const PathOptions& options, const PinholeCamera& camera,
+                           const RenderSettings& settings, const ConvergenceRequest& request);
+
 }  // namespace rt

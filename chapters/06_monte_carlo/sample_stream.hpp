@@ -9,9 +9,8 @@
 // from the sample's Pcg32 in every case.
 #pragma once
 
-#include <string_view>
-
 #include "owen_sobol.hpp"
+#include "rt/enum_names.hpp"
 #include "rt/random.hpp"
 
 namespace rt {
@@ -19,10 +18,11 @@ namespace rt {
 enum class PointSet { kIndependent, kStratified, kSobol };
 inline constexpr PointSet kAllPointSets[] = {PointSet::kIndependent, PointSet::kStratified, PointSet::kSobol};
 
-// "independent", "stratified" or "sobol".
-std::string_view to_string(PointSet points);
-// The point set of that name; throws InputError for any other name.
-PointSet point_set_from_string(std::string_view name);
+constexpr auto names_of(PointSet) {
+    return enum_names<PointSet>("--sampler", {{PointSet::kIndependent, "independent"},
+                                              {PointSet::kStratified, "stratified"},
+                                              {PointSet::kSobol, "sobol"}});
+}
 
 // A handle on a sample's stream (cheap to copy: copies draw from the same stream).
 class SampleStream {

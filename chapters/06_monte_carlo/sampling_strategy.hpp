@@ -8,7 +8,8 @@
 #pragma once
 
 #include <array>
-#include <string_view>
+
+#include "rt/enum_names.hpp"
 
 namespace rt {
 
@@ -18,10 +19,13 @@ inline constexpr std::array<SamplingStrategy, 5> kAllStrategies = {
     SamplingStrategy::kUniform, SamplingStrategy::kCosine, SamplingStrategy::kBrdf, SamplingStrategy::kLight,
     SamplingStrategy::kMis};
 
-// "uniform", "cosine", "brdf", "light" or "mis".
-std::string_view to_string(SamplingStrategy strategy);
-// The strategy of that name; throws InputError for any other name.
-SamplingStrategy sampling_strategy_from_string(std::string_view name);
+constexpr auto names_of(SamplingStrategy) {
+    return enum_names<SamplingStrategy>("--sampling", {{SamplingStrategy::kUniform, "uniform"},
+                                                       {SamplingStrategy::kCosine, "cosine"},
+                                                       {SamplingStrategy::kBrdf, "brdf"},
+                                                       {SamplingStrategy::kLight, "light"},
+                                                       {SamplingStrategy::kMis, "mis"}});
+}
 // Whether the strategy samples the lights directly (next-event estimation): light and mis.
 inline bool samples_lights(SamplingStrategy s) {
     return s == SamplingStrategy::kLight || s == SamplingStrategy::kMis;

@@ -1,5 +1,6 @@
 #include "depth_study.hpp"
 
+#include <cstdio>
 #include <fstream>
 
 #include "bsdf_render.hpp"
@@ -60,6 +61,26 @@ void write_glass_depth_csv(const std::vector<GlassDepthRow>& rows, int spp, cons
     for (const GlassDepthRow& r : rows)
         file << r.max_depth << ',' << spp << ',' << r.rmse << ',' << r.relative_mse << ',' << r.mean_error << ','
              << r.seconds << ',' << r.rays << '\n';
+}
+
+void run_glass_depth_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                           const GlassDepthRequest& request) {
+    if (!request.csv.empty()) check_writable("--csv", request.csv);
+    bool cached = false;
+    std::printf("reference: %d spp, Russian roulette, %dx%d ...\n", request.reference_spp, settings.width,
+                settings.height);
+    std::fflush(stdout);
+    const Image reference =
+        glass_depth_reference(scene, settings, options, request.reference_spp, request.cache, cached);
+    std::printf("  %s\n", cached ? "read from the cache" : "rendered and cached");
+    const auto rows = glass_depth_study(scene, settings, options, reference, request.depths);
+    std::printf("%9s %5s %12s %12s %12s %10s %12s\n", "max depth", "spp", "RMSE", "rel. MSE", "mean error",
+                "time (s)", "rays");
+    for (const GlassDepthRow& r : rows) {
+        std::printf("%9d %5d %12.4e %12.4e %+12.4e %10.3f %12llu\n", r.max_depth, settings.samples_per_pixel,
+                    r.rmse, r.relative_mse, r.mean_error, r.seconds, static_cast<unsigned long long>(r.rays));
+    }
+    if (!request.csv.empty()) write_glass_depth_csv(rows, settings.samples_per_pixel, request.csv);
 }
 
 }  // namespace rt

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "06_monte_carlo/path_tracer.hpp"
@@ -35,5 +36,17 @@ std::vector<GlassDepthRow> glass_depth_study(const Scene& scene, const RenderSet
 // The rows as CSV (max_depth,spp,rmse,relative_mse,mean_error,seconds,rays), `spp` samples per pixel each.
 // Throws InputError when the file cannot be written.
 void write_glass_depth_csv(const std::vector<GlassDepthRow>& rows, int spp, const std::filesystem::path& csv);
+
+struct GlassDepthRequest {
+    std::vector<int> depths{1, 2, 4, 8, 16};
+    int reference_spp = 4096;
+    std::string cache = ".";  // the folder of the cached reference
+    std::string csv;          // empty: no CSV
+};
+
+// `--depth-study` as chapter 07's executable runs it: the CSV file probed, the reference read or rendered,
+// every depth measured, the table on stdout and, when asked, as CSV.
+void run_glass_depth_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                           const GlassDepthRequest& request);
 
 }  // namespace rt

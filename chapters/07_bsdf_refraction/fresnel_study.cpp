@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "fresnel.hpp"
+#include "rt/effects.hpp"
 #include "rt/errors.hpp"
 
 namespace rt {
@@ -72,6 +74,38 @@ void write_fresnel_csv(Real ior, int angles, const std::filesystem::path& csv) {
             << fresnel_schlick(cos_i[i], 1 / ior) << '\n';
     }
     if (!out) throw InputError("--csv: cannot write " + csv.string());
+}
+
+namespace {
+
+// The index of the scene's first dielectric (1.5 without one).
+Real scene_ior(const Scene& scene) {
+    for (const Material& m : scene.materials)
+        if (effect_of(m) == Effect::kRefraction) return m.ior;
+    return Real(1.5);
+}
+
+}  // namespace
+
+void run_fresnel_study(const Scene& scene, const std::string& csv) {
+    const Real ior = scene_ior(scene);
+    const int angles = 100001;
+    const auto rows = fresnel_study(ior, angles, 15);
+    std::printf(
+        "Schlick against the exact Fresnel reflectance, %d angles in [0, 90] degrees; time: median of 15 "
+        "sweeps\n",
+        angles);
+    std::printf("%-8s %-10s %12s %12s %14s %12s %12s\n", "eta", "side", "max error", "mean error",
+                "at theta (deg)", "exact ns", "schlick ns");
+    for (const FresnelStudyRow& r : rows) {
+        std::printf("%-8.4f %-10s %12.4e %12.4e %14.3f %12.2f %12.2f\n", double(r.eta),
+                    r.eta >= 1 ? "entering" : "leaving", r.max_error, r.mean_error, r.max_error_angle,
+                    r.exact_ns, r.schlick_ns);
+    }
+    if (!csv.empty()) {
+        write_fresnel_csv(ior, 91, csv);
+        std::printf("wrote %s\n", csv.c_str());
+    }
 }
 
 }  // namespace rt

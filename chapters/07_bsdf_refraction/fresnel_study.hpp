@@ -4,9 +4,11 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "rt/math.hpp"
+#include "rt/scene.hpp"
 
 namespace rt {
 
@@ -23,5 +25,9 @@ std::vector<FresnelStudyRow> fresnel_study(Real ior, int angles, int repeats);
 
 // θ (degrees), then exact and Schlick R for η = ior and for η = 1 / ior, one line per angle.
 void write_fresnel_csv(Real ior, int angles, const std::filesystem::path& csv);
+
+// `--fresnel-study` as chapter 07's executable runs it: the study at the index of the scene's first dielectric
+// (1.5 without one), 100 001 angles, 15 timed sweeps, its table on stdout; with `csv`, R(θ) both ways there.
+void run_fresnel_study(const Scene& scene, const std::string& csv);
 
 }  // namespace rt

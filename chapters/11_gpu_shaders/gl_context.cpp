@@ -75,14 +75,6 @@ EGLDisplay open_display(EglPlatform platform, std::string& why, std::string& use
 
 }  // namespace
 
-EglPlatform egl_platform_from_string(std::string_view name) {
-    if (name == "auto") return EglPlatform::kAuto;
-    if (name == "surfaceless") return EglPlatform::kSurfaceless;
-    if (name == "device") return EglPlatform::kDevice;
-    throw InputError("--egl: unknown platform \"" + std::string(name) +
-                     "\"; expected auto, surfaceless or device");
-}
-
 GlContext::GlContext(EglPlatform platform) {
     std::string why, used;
     EGLDisplay display = open_display(platform, why, used);

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "rt/enum_names.hpp"
+
 namespace rt {
 
 // No usable OpenGL: what is missing, and how to install it.
@@ -17,9 +19,14 @@ class GlUnavailable : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// kAuto: surfaceless, then device.
 enum class EglPlatform { kAuto, kSurfaceless, kDevice };
-// "auto" (surfaceless, then device), "surfaceless" or "device"; throws InputError for any other name.
-EglPlatform egl_platform_from_string(std::string_view name);
+
+constexpr auto names_of(EglPlatform) {
+    return enum_names<EglPlatform>("--egl", {{EglPlatform::kAuto, "auto"},
+                                             {EglPlatform::kSurfaceless, "surfaceless"},
+                                             {EglPlatform::kDevice, "device"}});
+}
 
 class GlContext {
   public:

@@ -85,16 +85,6 @@ void check_image_size(int width, int height, ShaderKind kind) {
     }
 }
 
-ShaderKind shader_kind_from_string(std::string_view name) {
-    if (name == "compute") return ShaderKind::kCompute;
-    if (name == "fragment") return ShaderKind::kFragment;
-    throw InputError("--shader: unknown shader \"" + std::string(name) + "\"; expected compute or fragment");
-}
-
-std::string_view to_string(ShaderKind kind) {
-    return kind == ShaderKind::kCompute ? "compute" : "fragment";
-}
-
 struct GpuRenderer::State {
     State(const Scene& scene_, const GpuScene& gpu, ShaderKind kind_)
         : scene(scene_),

@@ -21,9 +21,9 @@ namespace rt {
 
 enum class ShaderKind { kCompute, kFragment };
 
-// "compute" or "fragment"; throws InputError for any other name.
-ShaderKind shader_kind_from_string(std::string_view name);
-std::string_view to_string(ShaderKind kind);
+constexpr auto names_of(ShaderKind) {
+    return enum_names<ShaderKind>("--shader", {{ShaderKind::kCompute, "compute"}, {ShaderKind::kFragment, "fragment"}});
+}
 
 // Throws InputError, naming the limit, when this OpenGL (its context current on this thread) cannot hold an
 // image of width × height for the `kind` shader: beyond its limits a texture or a dispatch silently fails and

@@ -2,17 +2,16 @@
 // compute shader (`--shader compute`, the default) or as a fragment shader over a full-screen triangle
 // (`--shader fragment`), on whatever EGL offers without a display: a GPU's driver, or Mesa's llvmpipe on the
 // CPU. Without a usable OpenGL it says what is missing and how to install it, and exits 2.
-#include <string>
-
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
 #include "rt/app.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/errors.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
-    std::string shader = "compute";
-    std::string egl = "auto";
+    ShaderKind shader = ShaderKind::kCompute;
+    EglPlatform egl = EglPlatform::kAuto;
     const ChapterInfo chapter{"ch11_gpu_shaders",
                               "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
                               "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
@@ -22,17 +21,15 @@ int main(int argc, char** argv) {
                                          "several ranks)";
                               }};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--shader", shader, "Which shader traces the paths: compute|fragment")
-            ->check(CLI::IsMember({"compute", "fragment"}));
-        app.add_option("--egl", egl,
-                       "EGL platform: auto (surfaceless, then device), surfaceless, or device (a GPU's "
-                       "driver where Mesa would take the surfaceless one)")
-            ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
+        add_enum_option(app, shader, "Which shader traces the paths: " + joined_names<ShaderKind>());
+        add_enum_option(app, egl,
+                        "EGL platform: auto (surfaceless, then device), surfaceless, or device (a GPU's "
+                        "driver where Mesa would take the surfaceless one)");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         try {
-            const GlContext gl(egl_platform_from_string(egl));
-            const GpuRenderer renderer(gl, context.scene, context.simulated, shader_kind_from_string(shader));
+            const GlContext gl(egl);
+            const GpuRenderer renderer(gl, context.scene, context.simulated, shader);
             ChapterRun run{renderer.render(context.settings), renderer.notes(), std::nullopt};
             run.notes.push_back("--threads does not apply: the GPU (llvmpipe: LP_NUM_THREADS) decides");
             return run;

@@ -19,6 +19,7 @@
 #include "convergence.hpp"
 #include "path_tracer.hpp"
 #include "rt/assets.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/scene_loader.hpp"
@@ -62,14 +63,14 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(2, 1 << 20));
     app.add_option("--cache", cache, "Folder of the cached reference PFM");
     app.add_option("--sampling", sampling, "uniform|cosine|brdf|light|mis")
-        ->check(CLI::IsMember({"uniform", "cosine", "brdf", "light", "mis"}));
+        ->check(choices<SamplingStrategy>());
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
     CLI11_PARSE(app, argc, argv);
     try {
         const Scene scene = load_scene(scene_file);
         const RenderScene prepared(scene, EffectSet::all());
         PathOptions options;
-        options.strategy = sampling_strategy_from_string(sampling);
+        options.strategy = from_string<SamplingStrategy>(sampling);
         const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
         RenderSettings settings;
         settings.width = settings.height = size;

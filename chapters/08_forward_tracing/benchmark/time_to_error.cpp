@@ -23,6 +23,7 @@
 #include "combined_render.hpp"
 #include "forward_study.hpp"
 #include "rt/assets.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/median.hpp"
 #include "rt/scene_loader.hpp"
@@ -95,7 +96,7 @@ int main(int argc, char** argv) {
                    "The combined tracer's K to try (light paths carry the paths E D{1..K} S ...)")
         ->check(CLI::Range(1, kSafetyDepthCap));
     app.add_option("--samplers", samplers, "The samplers to try")
-        ->check(CLI::IsMember({"independent", "stratified", "sobol"}));
+        ->check(choices<PointSet>());
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     CLI11_PARSE(app, argc, argv);
 
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
         std::vector<Strategy> strategies;
         for (const std::string& sampler : samplers) {
             PathOptions options;
-            options.sampler = point_set_from_string(sampler);
+            options.sampler = from_string<PointSet>(sampler);
             strategies.push_back({"paths, " + sampler, [&scene, simulated, options](const RenderSettings& s) {
                                       return render_with(Renderer::kPaths, scene, simulated, s, options);
                                   }});
@@ -123,7 +124,7 @@ int main(int argc, char** argv) {
             for (int bounces : caustic_bounces) {
                 for (double ratio : light_paths) {
                     CombinedOptions options;
-                    options.paths.sampler = point_set_from_string(sampler);
+                    options.paths.sampler = from_string<PointSet>(sampler);
                     options.caustic_bounces = bounces;
                     options.light_paths_per_sample = Real(ratio);
                     char name[96];

@@ -17,6 +17,7 @@
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
 #include "rt/assets.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
 #include "rt/median.hpp"
@@ -65,10 +66,10 @@ int main(int argc, char** argv) {
     app.add_option("--rounds", rounds, "Rounds of the three renders, alternately")->check(CLI::Range(1, 100));
     app.add_option("--threads", threads, "The C++ renderer's threads")->check(CLI::Range(1, 1024));
     app.add_option("--egl", egl, "EGL platform: auto|surfaceless|device")
-        ->check(CLI::IsMember({"auto", "surfaceless", "device"}));
+        ->check(choices<EglPlatform>());
     CLI11_PARSE(app, argc, argv);
     try {
-        const GlContext gl(egl_platform_from_string(egl));
+        const GlContext gl(from_string<EglPlatform>(egl));
         const char* lp_threads = std::getenv("LP_NUM_THREADS");
         std::printf("OpenGL: %s%s%s\n", gl.description().c_str(), gl.software() ? "; LP_NUM_THREADS=" : "",
                     gl.software() ? (lp_threads ? lp_threads : "unset (one thread per core)") : "");

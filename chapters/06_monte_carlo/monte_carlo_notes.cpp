@@ -1,0 +1,19 @@
+#include "monte_carlo_notes.hpp"
+
+namespace rt {
+
+std::vector<std::string> monte_carlo_notes(const RenderScene& prepared, const PathOptions& options) {
+    std::vector<std::string> notes = prepared.materials.notes();
+    if (!prepared.scene.point_lights.empty()) {
+        notes.push_back(
+            "point lights are deltas: only the light and mis strategies see them (no sampled direction hits "
+            "a point)");
+    }
+    notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
+                    ", sampler: " + std::string(to_string(options.sampler)) +
+                    ", termination: " + std::string(to_string(options.termination.rule)));
+    for (const std::string& u : prepared.lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
+    return notes;
+}
+
+}  // namespace rt
