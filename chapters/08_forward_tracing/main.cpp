@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
             CombinedOptions options;
             options.light_paths_per_sample = light_paths;
             options.caustic_bounces = caustic_bounces;
-            options.paths.sampler = point_set_from_string(sampler);
+            options.paths.sampler = from_string<PointSet>(sampler);
             const CombinedResult r = render_combined(scene, context.simulated, settings, options);
             const MaterialTable materials(scene, context.simulated, refraction_materials());
             ChapterRun run{r.render, scene_notes(scene, materials, collect_lights(scene), false), std::nullopt};

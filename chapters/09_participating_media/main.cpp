@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
         }
         PathOptions options;
         options.simulated = context.simulated;
-        options.strategy = sampling_strategy_from_string(sampling);
+        options.strategy = from_string<SamplingStrategy>(sampling);
         options.walk = {max_events, !no_roulette};
         const MaterialHooks hooks = media_materials();
         if (knob_study) {

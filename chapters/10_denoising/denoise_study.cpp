@@ -208,6 +208,8 @@ Image crop(const Image& image, const PixelRect& rect) {
 
 void run_denoise_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        const DenoiseSettings& denoise_settings, const StudyOptions& study) {
+    // Its outputs are probed before it renders (its cached reference: chapter 07's depth study).
+    if (!study.crops.empty()) check_writable("--crops", std::filesystem::path(study.crops) / "ch10_whole.png");
     const int spp = settings.samples_per_pixel;
     std::printf("denoising study: %s, %dx%d, %d spp, seed %llu, %d threads\n", scene.file.c_str(),
                 settings.width, settings.height, spp, static_cast<unsigned long long>(settings.seed),

@@ -44,7 +44,7 @@ PixelRect pixels_of(const StudyRegion& region, int width, int height);
 // Image `image` cut to `rect`.
 Image crop(const Image& image, const PixelRect& rect);
 
-// Prints the study (stdout).
+// Probes --crops, then prints the study (stdout).
 void run_denoise_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        const DenoiseSettings& denoise_settings, const StudyOptions& study);
 

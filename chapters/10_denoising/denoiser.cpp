@@ -1,27 +1,37 @@
 #include "denoiser.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 
-#include "rt/errors.hpp"
 
 namespace rt {
 
-std::string_view to_string(Denoiser denoiser) {
-    switch (denoiser) {
-        case Denoiser::kNone:
-            return "none";
-        case Denoiser::kBilateral:
-            return "bilateral";
-        case Denoiser::kAtrous:
-            return "atrous";
+namespace {
+
+std::string describe(Denoiser denoiser, const DenoiseSettings& s) {
+    if (denoiser == Denoiser::kNone) return "none";
+    char text[200];
+    const EdgeStopping& e = denoiser == Denoiser::kBilateral ? s.bilateral.edges : s.atrous.edges;
+    if (denoiser == Denoiser::kAtrous) {
+        std::snprintf(text, sizeof text, "atrous (%d levels", s.atrous.levels);
+    } else {
+        std::snprintf(text, sizeof text, "bilateral (sigma_s %g px", double(s.bilateral.spatial));
     }
-    return "?";
+    std::string out = text;
+    std::snprintf(text, sizeof text, ", sigma colour %g, normal %g, depth %g, albedo %g)", double(e.colour),
+                  double(e.normal), double(e.depth), double(e.albedo));
+    return out + text;
 }
 
-Denoiser denoiser_from_string(const std::string& name) {
-    for (Denoiser d : {Denoiser::kNone, Denoiser::kBilateral, Denoiser::kAtrous})
-        if (name == to_string(d)) return d;
-    throw InputError("--denoiser: expected none, bilateral or atrous, got '" + name + "'");
+}  // namespace
+
+std::vector<std::string> denoise_notes(Denoiser denoiser, const DenoiseSettings& settings, const Denoised& denoised,
+                                       double render_seconds) {
+    char time[160];
+    std::snprintf(time, sizeof time, "filter time %.3f s (the render %.3f s: %.1f%% more)", denoised.seconds,
+                  render_seconds, 100.0 * denoised.seconds / std::max(render_seconds, 1e-9));
+    return {"denoiser " + describe(denoiser, settings), time};
 }
 
 Denoised denoise(const FeatureBuffers& buffers, Denoiser denoiser, const DenoiseSettings& settings) {

@@ -3,21 +3,22 @@
 #pragma once
 
 #include <string>
-#include <string_view>
+#include <vector>
 
 #include "atrous.hpp"
 #include "bilateral.hpp"
 #include "feature_buffers.hpp"
+#include "rt/enum_names.hpp"
 #include "rt/image.hpp"
 
 namespace rt {
 
 enum class Denoiser { kNone, kBilateral, kAtrous };
 
-// "none", "bilateral", "atrous".
-std::string_view to_string(Denoiser denoiser);
-// Throws InputError for another name.
-Denoiser denoiser_from_string(const std::string& name);
+constexpr auto names_of(Denoiser) {
+    return enum_names<Denoiser>(
+        "--denoiser", {{Denoiser::kNone, "none"}, {Denoiser::kBilateral, "bilateral"}, {Denoiser::kAtrous, "atrous"}});
+}
 
 struct DenoiseSettings {
     BilateralSettings bilateral;
@@ -32,5 +33,9 @@ struct Denoised {
 
 // buffers.colour filtered by `denoiser` (kNone: as it is, in no time).
 Denoised denoise(const FeatureBuffers& buffers, Denoiser denoiser, const DenoiseSettings& settings);
+
+// What the summary says: the denoiser with its parameters, and its time against the render's.
+std::vector<std::string> denoise_notes(Denoiser denoiser, const DenoiseSettings& settings, const Denoised& denoised,
+                                       double render_seconds);
 
 }  // namespace rt
