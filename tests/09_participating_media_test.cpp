@@ -16,6 +16,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/henyey_greenstein.hpp"
@@ -54,13 +55,13 @@ double hg_moment(double g, K k) {
     return 2 * kPiD * sum;
 }
 
-// The radiance a PathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
+// The radiance a VolumePathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
 // (the green channel unless asked).
 struct Estimate {
     double means[3] = {0, 0, 0}, errors[3] = {0, 0, 0};
     double mean = 0, error = 0;  // of the green channel
 };
-Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed) {
+Estimate estimate(const VolumePathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed) {
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
     RayCounts rays;
     for (int i = 0; i < paths; ++i) {
@@ -84,11 +85,11 @@ Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint
 // A scene prepared as a run of chapter 09 prepares it: simulating what run_chapter() computes from the scene
 // (needed ∩ supported), not every effect, so an exact answer checks the path a user's scene file takes.
 struct Prepared {
-    explicit Prepared(const Scene& s, PathOptions options = {})
+    explicit Prepared(const Scene& s, PathOptions options = {}, MediumWalk walk = {})
         : scene(s),
           simulated(simulated_effects(scene, kMediaChapterEffects)),
           render(scene, simulated, media_materials()),
-          tracer(render.world, render.materials, render.lights, simulating(options, simulated)) {}
+          tracer(render.world, render.materials, render.lights, simulating(options, simulated), walk) {}
     static PathOptions simulating(PathOptions options, const EffectSet& simulated) {
         options.simulated = simulated;
         return options;
@@ -96,7 +97,7 @@ struct Prepared {
     Scene scene;
     EffectSet simulated;
     RenderScene render;
-    PathTracer tracer;
+    VolumePathTracer tracer;
 };
 
 // Every pixel of an 6×6 view of the furnace sphere (the corners see the sky): the largest deviation from 1
@@ -523,9 +524,7 @@ TEST_CASE(
     }
     CHECK(R1 == Approx(0.14202).margin(1e-5));
     CHECK(T1 == Approx(0.10617).margin(1e-5));
-    PathOptions one_event;
-    one_event.walk.max_events = 1;
-    const Prepared p(medium_slab_scene({Color(0), Color(1), 0}, 1), one_event);
+    const Prepared p(medium_slab_scene({Color(0), Color(1), 0}, 1), {}, MediumWalk{1, true});
     // Straight down from above (what the slab reflects; the black floor takes what passes), and straight up
     // from below it (the sky seen through it, e^−τ unscattered, and what it scatters down once).
     const Estimate R = estimate(p.tracer, {{0, 2, 0}, {0, -1, 0}}, 50000, 1);
@@ -581,12 +580,10 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
     };
     const RenderSettings settings = small_render(8, 4, 3);
     for (const Case& c : cases) {
-        PathOptions options;
-        options.walk.max_events = 2000;
         const Scene scene = medium_sphere_scene(c.medium, c.ior);
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
         const RenderResult r =
-            render_with(choose_renderer(simulated), scene, simulated, settings, options, media_materials());
+            render_with_media(choose_renderer(simulated), scene, simulated, settings, {}, {2000, true});
         INFO("sigma_s " << c.medium.sigma_s.g << ", g " << c.medium.g << ", ior " << c.ior);
         CHECK(r.image.all_finite());
         CHECK(r.image.mean() <= 1.5);
@@ -621,9 +618,9 @@ TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a 
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
         INFO(text << "\nsimulated: " << simulated.to_string());
         const RenderResult r =
-            render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials());
-        const RenderResult every = render_with(choose_renderer(EffectSet::all()), scene, EffectSet::all(),
-                                               settings, {}, media_materials());
+            render_with_media(choose_renderer(simulated), scene, simulated, settings);
+        const RenderResult every = render_with_media(choose_renderer(EffectSet::all()), scene, EffectSet::all(),
+                                                     settings);
         CHECK(r.rays[RayKind::kShadow] > 0);
         // The same image as with every effect simulated: here the same random numbers, so the same bits.
         CHECK(r.image.pixels() == every.image.pixels());
@@ -723,7 +720,7 @@ TEST_CASE(
     const RenderSettings settings = small_render(16, 2, 1);
     const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
     const RenderResult r =
-        render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials());
+        render_with_media(choose_renderer(simulated), scene, simulated, settings);
     CHECK(r.image.all_finite());
     CHECK(r.image.mean() > 0.02);
 }

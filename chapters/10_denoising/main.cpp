@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
-#include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "denoise_study.hpp"
 #include "denoiser.hpp"
 #include "feature_buffers.hpp"
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         const SampleRange all{0, settings.samples_per_pixel};
         if (settings.resume || (settings.samples && *settings.samples != all)) {
             return ChapterRun{
-                render_with(Renderer::kPaths, context.scene, context.simulated, settings, options, media_materials()),
+                render_with_media(Renderer::kPaths, context.scene, context.simulated, settings, options),
                 {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media; a piece of the render: "
                  "no features, not denoised"},
                 std::nullopt};
