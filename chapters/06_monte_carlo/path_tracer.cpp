@@ -28,7 +28,8 @@ Color PathTracer::unoccluded(const Ray& ray, Real t_max, RayCounts& rays) const 
 
 Color PathTracer::segment_transmittance(const Hit& hit) const {
     const Medium* inside = materials_.interior(hit.material);
-    if (!inside || hit.front_face || !materials_.bsdf(hit.material, false).flags().transmission) return Color(1);
+    if (!inside || hit.front_face || !materials_.bsdf(hit.material, false).flags().transmission)
+        return Color(1);
     return inside->transmittance(hit.t);
 }
 
@@ -62,6 +63,12 @@ std::optional<Continuation> PathTracer::continuation(const Hit& hit, const Vec3&
     c.cos_i = scattering_cosine(s.wi, n, s.transmitted);
     if (!(c.cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) return std::nullopt;
     return c;
+}
+
+Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,
+                             RayCounts& rays) const {
+    return next_event(hit, wo, bsdf, rng, rays,
+                      [this](const Ray& ray, Real t_max, RayCounts& n) { return unoccluded(ray, t_max, n); });
 }
 
 bool PathTracer::roulette(int depth, Color& beta, Real eta_scale, SampleStream rng) const {
@@ -101,9 +108,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
         if ((observer && !observer->reached(*hit, flags, bounces)) || flags.black) break;
         const Vec3 wo = -ray.direction;
         if (nee_ && !flags.delta) {
-            L += beta * next_event(*hit, wo, bsdf, rng, rays, [this](const Ray& r, Real t, RayCounts& n) {
-                return unoccluded(r, t, n);
-            });
+            L += beta * next_event(*hit, wo, bsdf, rng, rays);
             if (observer) observer->light_estimated(L);
         }
         // Without the indirect effect the path ends at the vertex it reaches next, where light sampling alone

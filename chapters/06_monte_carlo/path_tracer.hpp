@@ -50,8 +50,8 @@ struct PathOptions : TraceOptions {
 struct PathVertex {
     Vec3 point{0};
     Vec3 normal{0};
-    Real pdf = 0;           // the density the ray's direction was drawn with
-    bool specular = true;   // the camera, or a delta bounce: what the ray meets counts in full
+    Real pdf = 0;          // the density the ray's direction was drawn with
+    bool specular = true;  // the camera, or a delta bounce: what the ray meets counts in full
 };
 
 // The direction that continues a path, and the cosine that weighs it.
@@ -77,6 +77,9 @@ class PathTracer {
     template <class Seen>
     Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng, RayCounts& rays,
                      const Seen& seen) const;
+    // The same, its shadow rays unoccluded() or not.
+    Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,
+                     RayCounts& rays) const;
     // What a shadow ray sees of the light at t_max: 1 when nothing blocks it, 0 otherwise.
     Color unoccluded(const Ray& ray, Real t_max, RayCounts& rays) const;
     // The MIS weight of light met by a ray from `from` that the next-event estimate there would have drawn

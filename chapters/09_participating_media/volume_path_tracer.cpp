@@ -12,8 +12,8 @@ namespace rt {
 namespace {
 
 // A walk's Russian roulette: chapter 05's rule from its first event, under no depth cap.
-constexpr TerminationSettings kWalkRoulette{Termination::kRussianRoulette, std::numeric_limits<int>::max(),
-                                            0, 0};
+constexpr TerminationSettings kWalkRoulette{Termination::kRussianRoulette, std::numeric_limits<int>::max(), 0,
+                                            0};
 
 }  // namespace
 
@@ -53,7 +53,7 @@ Color VolumePathTracer::transmittance(Ray ray, Real t_max, RayCounts& rays) cons
     }
 }
 
-Color VolumePathTracer::seen(const Ray& ray, Real t_max, RayCounts& rays) const {
+Color VolumePathTracer::shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const {
     return media_ ? transmittance(ray, t_max, rays) : steps_.unoccluded(ray, t_max, rays);
 }
 
@@ -116,7 +116,8 @@ bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, R
     path.beta *= s.p / s.pdf;
     ++path.bounces;
     path.from = {p, Vec3(0), s.pdf, false};
-    if (walk_.roulette && !continue_path(kWalkRoulette, path.events, path.beta, rng.next_real())) return false;
+    if (walk_.roulette && !continue_path(kWalkRoulette, path.events, path.beta, rng.next_real()))
+        return false;
     ray = Ray{p, s.wi};
     rays.add(RayKind::kIndirect);
     return true;
@@ -126,6 +127,9 @@ bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, R
 Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays,
                                  PathObserver* observer) const {
     const PathTracer& steps = steps_;
+    const auto seen = [this](const Ray& shadow, Real t_max, RayCounts& n) {
+        return shadow_seen(shadow, t_max, n);
+    };
     VolumePath path;
     Ray ray = camera_ray;
     for (;;) {
@@ -172,8 +176,7 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         if (flags.black) break;
         const Vec3 wo = -ray.direction;
         if (steps.estimates() && !flags.delta) {
-            path.L += path.beta * steps.next_event(*hit, wo, bsdf, rng, rays,
-                                                   [this](const Ray& r, Real t, RayCounts& n) { return seen(r, t, n); });
+            path.L += path.beta * steps.next_event(*hit, wo, bsdf, rng, rays, seen);
             if (observer) observer->light_estimated(path.L);
         }
         if (!steps.indirect() && !flags.delta && steps.estimates() && !steps.weighs() &&
@@ -204,7 +207,8 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
 RenderResult render_with_media(Renderer renderer, const Scene& scene, const EffectSet& simulated,
                                const RenderSettings& settings, PathOptions options, MediumWalk walk,
                                const MaterialHooks& hooks) {
-    if (renderer == Renderer::kDirect) return render_with(renderer, scene, simulated, settings, options, hooks);
+    if (renderer == Renderer::kDirect)
+        return render_with(renderer, scene, simulated, settings, options, hooks);
     const RenderScene prepared(scene, simulated, hooks);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
     options.simulated = simulated;

@@ -23,7 +23,7 @@ namespace rt {
 struct MediumWalk {
     int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a
                              // walk's boundary): a bias when a path meets it
-    bool roulette = true;  // Russian roulette at every event: go on with q = min(1, max β), then β /= q
+    bool roulette = true;    // Russian roulette at every event: go on with q = min(1, max β), then β /= q
 };
 
 // The state of one volumetric path.
@@ -69,7 +69,7 @@ class VolumePathTracer {
     // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
     Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;
     // What a shadow ray sees: chapter 06's visibility in a scene without media, the transmittance with them.
-    Color seen(const Ray& ray, Real t_max, RayCounts& rays) const;
+    Color shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const;
 
     PathTracer steps_;  // chapter 06's loop, whose steps this one calls
     const World& world_;

@@ -49,7 +49,8 @@ struct PlainPoint {
 PlainPoint plain_point(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        int spp, const Image& reference) {
     const RenderResult r =
-        render_with_media(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed), options);
+        render_with_media(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed),
+                          options);
     return {spp, compare(r.image, reference).relative_mse, r.seconds, r.image};
 }
 
@@ -228,7 +229,7 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
         render = render_features(scene, with(settings, spp, settings.seed), options);
         feature_times.push_back(render.result.seconds);
         plain_times.push_back(render_with_media(Renderer::kPaths, scene, options.simulated,
-                                          with(settings, spp, settings.seed), options)
+                                                with(settings, spp, settings.seed), options)
                                   .seconds);
     }
     std::sort(feature_times.begin(), feature_times.end());

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
         if (settings.resume || (settings.samples && *settings.samples != all)) {
             return ChapterRun{
                 render_with_media(Renderer::kPaths, context.scene, context.simulated, settings, options),
-                {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media; a piece of the render: "
+                {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media; a piece of the render: "
                  "no features, not denoised"},
                 std::nullopt};
         }
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
         }
         FeatureRender rendered = render_features(context.scene, context.settings, options);
         ChapterRun run{rendered.result,
-                       {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media, recording "
+                       {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media, recording "
                         "albedo, normal and depth at the first non-delta vertex"},
                        std::nullopt};
         if (rendered.result.interrupted) {
