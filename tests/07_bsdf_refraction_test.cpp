@@ -25,6 +25,7 @@
 #include "04_direct_lighting/light_set.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
+#include "07_bsdf_refraction/benchmark/path_parts.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/depth_study.hpp"
 #include "07_bsdf_refraction/dielectric.hpp"
@@ -592,7 +593,7 @@ TEST_CASE("Path parts: the glass box's estimate split by path kind sums to it an
                 Pcg32 rng = Pcg32::for_sample(std::uint64_t(y * size + x), std::uint64_t(s), 5);
                 Pcg32 same = rng;
                 PathParts parts;
-                const Color with = tracer.radiance(camera_ray(camera, u, v), rng, rays, nullptr, &parts);
+                const Color with = tracer.radiance(camera_ray(camera, u, v), rng, rays, &parts);
                 const Color without = tracer.radiance(camera_ray(camera, u, v), same, rays);
                 REQUIRE(with == without);
                 REQUIRE(rng.next_uint() == same.next_uint());  // the same numbers drawn

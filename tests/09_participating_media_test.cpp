@@ -22,6 +22,7 @@
 #include "09_participating_media/homogeneous_medium.hpp"
 #include "09_participating_media/media_materials.hpp"
 #include "09_participating_media/media_scenes.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/errors.hpp"
@@ -54,13 +55,13 @@ double hg_moment(double g, K k) {
     return 2 * kPiD * sum;
 }
 
-// The radiance a PathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
+// The radiance a VolumePathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
 // (the green channel unless asked).
 struct Estimate {
     double means[3] = {0, 0, 0}, errors[3] = {0, 0, 0};
     double mean = 0, error = 0;  // of the green channel
 };
-Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed) {
+Estimate estimate(const VolumePathTracer& tracer, const Ray& ray, int paths, std::uint64_t seed) {
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
     RayCounts rays;
     for (int i = 0; i < paths; ++i) {
@@ -84,11 +85,11 @@ Estimate estimate(const PathTracer& tracer, const Ray& ray, int paths, std::uint
 // A scene prepared as a run of chapter 09 prepares it: simulating what run_chapter() computes from the scene
 // (needed ∩ supported), not every effect, so an exact answer checks the path a user's scene file takes.
 struct Prepared {
-    explicit Prepared(const Scene& s, PathOptions options = {})
+    explicit Prepared(const Scene& s, PathOptions options = {}, MediumWalk walk = {})
         : scene(s),
           simulated(simulated_effects(scene, kMediaChapterEffects)),
           render(scene, simulated, media_materials()),
-          tracer(render.world, render.materials, render.lights, simulating(options, simulated)) {}
+          tracer(render.world, render.materials, render.lights, simulating(options, simulated), walk) {}
     static PathOptions simulating(PathOptions options, const EffectSet& simulated) {
         options.simulated = simulated;
         return options;
@@ -96,7 +97,7 @@ struct Prepared {
     Scene scene;
     EffectSet simulated;
     RenderScene render;
-    PathTracer tracer;
+    VolumePathTracer tracer;
 };
 
 // Every pixel of an 6×6 view of the furnace sphere (the corners see the sky): the largest deviation from 1
@@ -369,7 +370,7 @@ TEST_CASE(
 
 TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera rays and shadow rays",
           "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
           "[ex:ch07.beer_lambert]") {
     // An emitter of radiance 1 at z = −5 facing the camera at the origin; fog of σ_a = 0.3 everywhere.
     const Scene seen = scene_from(R"({
@@ -402,7 +403,7 @@ TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera
 
 TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to camera rays and shadow rays",
           "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
           "[ex:ch07.beer_lambert]") {
     // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing
     // fog (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
@@ -438,9 +439,9 @@ TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to 
 TEST_CASE(
     "Furnace: an index-matched sphere of albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 "
     "and 0.7",
-    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch06.mis_weight][ex:"
-    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample]["
-    "ex:ch09.transmittance]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch06.mis_weight]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample]"
+    "[ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -454,9 +455,9 @@ TEST_CASE(
 TEST_CASE(
     "Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 and "
     "0.7",
-    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
-    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
-    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1.5f, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -469,9 +470,9 @@ TEST_CASE(
 
 TEST_CASE(
     "Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
-    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
-    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
-    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const std::vector<FurnaceCheck> channels =
         furnace_channels({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000);
     for (int channel = 0; channel < 3; ++channel) {
@@ -486,9 +487,9 @@ TEST_CASE(
 
 TEST_CASE(
     "Energy: a medium of albedo 0.8 never returns more than the furnace gives in",
-    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination][ex:"
-    "ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
-    "fresnel_exact][ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+    "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const Prepared p(medium_sphere_scene({Color(0.4f), Color(1.6f), 0.5f}, 1.5f));
     const PinholeCamera camera = make_pinhole_camera(p.scene.camera, 6, 6);
     for (int y = 0; y < 6; ++y) {
@@ -510,8 +511,8 @@ TEST_CASE(
     "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
     "and T1 = 0.10617, by quadrature and by the walk cut after one event",
           "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
-          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+          "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
     gauss_legendre(200, mu, w);
@@ -523,9 +524,7 @@ TEST_CASE(
     }
     CHECK(R1 == Approx(0.14202).margin(1e-5));
     CHECK(T1 == Approx(0.10617).margin(1e-5));
-    PathOptions one_event;
-    one_event.walk.max_events = 1;
-    const Prepared p(medium_slab_scene({Color(0), Color(1), 0}, 1), one_event);
+    const Prepared p(medium_slab_scene({Color(0), Color(1), 0}, 1), {}, MediumWalk{1, true});
     // Straight down from above (what the slab reflects; the black floor takes what passes), and straight up
     // from below it (the sky seen through it, e^−τ unscattered, and what it scatters down once).
     const Estimate R = estimate(p.tracer, {{0, 2, 0}, {0, -1, 0}}, 50000, 1);
@@ -541,8 +540,8 @@ TEST_CASE(
     "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
     "0.5, 0.9 and 0.99",
           "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
-          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+          "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
     for (double omega : {0.5, 0.9, 0.99}) {
@@ -567,9 +566,9 @@ TEST_CASE(
 
 TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
           "[stability][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
-          "offset][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:"
+          "offset][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.uniform_sphere][ex:"
           "ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09."
-          "free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     struct Case {
         MediumDesc medium;
         Real ior;
@@ -581,12 +580,10 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
     };
     const RenderSettings settings = small_render(8, 4, 3);
     for (const Case& c : cases) {
-        PathOptions options;
-        options.walk.max_events = 2000;
         const Scene scene = medium_sphere_scene(c.medium, c.ior);
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
         const RenderResult r =
-            render_with(choose_renderer(simulated), scene, simulated, settings, options, media_materials());
+            render_with_media(choose_renderer(simulated), scene, simulated, settings, {}, {2000, true});
         INFO("sigma_s " << c.medium.sigma_s.g << ", g " << c.medium.g << ", ior " << c.ior);
         CHECK(r.image.all_finite());
         CHECK(r.image.mean() <= 1.5);
@@ -596,8 +593,8 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
 TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a lamp, milk under a lamp",
           "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // As a user's scene file is rendered: simulating simulated_effects(scene, supported). Before media called
     // for lighting these rendered black (fog under a point light: 0 shadow rays), or only what glass
     // reflects.
@@ -621,9 +618,9 @@ TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a 
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
         INFO(text << "\nsimulated: " << simulated.to_string());
         const RenderResult r =
-            render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials());
-        const RenderResult every = render_with(choose_renderer(EffectSet::all()), scene, EffectSet::all(),
-                                               settings, {}, media_materials());
+            render_with_media(choose_renderer(simulated), scene, simulated, settings);
+        const RenderResult every = render_with_media(choose_renderer(EffectSet::all()), scene, EffectSet::all(),
+                                                     settings);
         CHECK(r.rays[RayKind::kShadow] > 0);
         // The same image as with every effect simulated: here the same random numbers, so the same bits.
         CHECK(r.image.pixels() == every.image.pixels());
@@ -715,15 +712,37 @@ TEST_CASE(
     "The default scene renders finite and calls for media",
           "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
           "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
-          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const Scene scene = load_scene(scene_path("ch09_default.json"));
     CHECK(needed(scene).contains(Effect::kMedia));
     const RenderSettings settings = small_render(16, 2, 1);
     const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
-    const RenderResult r =
-        render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials());
+    const RenderResult r = render_with_media(choose_renderer(simulated), scene, simulated, settings);
     CHECK(r.image.all_finite());
     CHECK(r.image.mean() > 0.02);
+}
+
+TEST_CASE("Without media the volumetric loop is chapter 06's: the same image to the bit, the same rays",
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    // The glass box: glass, a lamp, diffuse walls; each strategy and sampler draws its numbers its own way.
+    const Scene scene = load_scene(scene_path("cornell.json"));
+    REQUIRE_FALSE(needed(scene).contains(Effect::kMedia));
+    const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
+    const RenderSettings settings = small_render(24, 4, 5);
+    for (const SamplingStrategy strategy : {SamplingStrategy::kMis, SamplingStrategy::kLight}) {
+        for (const PointSet sampler : {PointSet::kStratified, PointSet::kSobol}) {
+            PathOptions options;
+            options.strategy = strategy;
+            options.sampler = sampler;
+            const RenderResult ch06 = render_with(Renderer::kPaths, scene, simulated, settings, options);
+            const RenderResult ch09 = render_with_media(Renderer::kPaths, scene, simulated, settings, options);
+            CHECK(ch06.image.pixels() == ch09.image.pixels());
+            CHECK(ch06.rays.total() == ch09.rays.total());
+        }
+    }
 }

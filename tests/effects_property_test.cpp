@@ -20,6 +20,7 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/random.hpp"
@@ -62,8 +63,7 @@ const std::vector<Chapter>& chapters() {
          }},
         {"ch09", kMediaChapterEffects,
          [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
-             return render_with(choose_renderer(simulated), scene, simulated, settings, {}, media_materials())
-                 .image;
+             return render_with_media(choose_renderer(simulated), scene, simulated, settings).image;
          }},
     };
     return list;

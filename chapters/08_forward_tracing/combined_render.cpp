@@ -5,6 +5,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "camera_caustic_cut.hpp"
 
 namespace rt {
 
@@ -21,7 +22,6 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
                        !simulated.contains(Effect::kMedia);
     PathOptions path_options = options.paths;
     path_options.simulated = simulated;
-    path_options.camera_caustic_bounces = split ? options.caustic_bounces : 0;
     const PathTracer paths(prepared.world, prepared.materials, prepared.lights, path_options);
 
     LightTracerOptions light_options;
@@ -33,7 +33,8 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
 
     CombinedResult r;
     r.split = split;
-    r.paths = render_paths(paths, camera, settings);
+    r.paths = split ? render_paths(paths, camera, settings, CameraCausticCut(options.caustic_bounces))
+                    : render_paths(paths, camera, settings);
     // The light paths draw from streams of their own seed, not the camera samples' (path i and pixel i
     // would otherwise share their numbers). The live view follows the camera's passes only.
     RenderSettings light_settings = settings;

@@ -10,7 +10,7 @@
 //            camera sees with nothing delta in between), found by light paths (LightPathSet::kCaustics),
 //            R of them per camera sample;
 //   I_paths: every other path, found by chapter 06's loop, which ends a path where it would enter one of
-//            the light tracer's (PathOptions::camera_caustic_bounces = K).
+//            the light tracer's (camera_caustic_cut.hpp, with the same K).
 //
 // Each path is counted by exactly one of the two, at its full weight, so the sum is unbiased for any R and
 // K (a partition of path space; multiple importance sampling would weigh both, at the cost of each tracer

@@ -44,7 +44,7 @@ CameraVariant camera_variant_from_string(std::string_view name);
 //   caustics: light that reached the camera through at most K = caustic_bounces non-delta vertices after a
 //             delta one, L…S D{1..K} E (K = 1: light that arrived at the connected vertex straight from a
 //             mirror or glass). They are the paths chapter 06's loop leaves out with
-//             PathOptions::camera_caustic_bounces = K.
+//             CameraCausticCut(K) (camera_caustic_cut.hpp).
 enum class LightPathSet { kAll, kCaustics };
 
 // Effects read: "camera" (the emitters themselves, seen by the camera), "direct" (vertices after no diffuse

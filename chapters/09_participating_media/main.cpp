@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "07_bsdf_refraction/bsdf_render.hpp"
 #include "media_materials.hpp"
 #include "rt/app.hpp"
 #include "rt/errors.hpp"
+#include "volume_path_tracer.hpp"
 #include "walk_study.hpp"
 
 namespace {
@@ -50,7 +50,7 @@ void print_free_flight_study(std::uint64_t seed) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int max_events = PathOptions{}.walk.max_events;
+    int max_events = MediumWalk{}.max_events;
     bool no_roulette = false;
     std::string sampling = "mis";
     bool walk_study = false, knob_study = false, flight_study = false;
@@ -99,19 +99,17 @@ int main(int argc, char** argv) {
         PathOptions options;
         options.simulated = context.simulated;
         options.strategy = from_string<SamplingStrategy>(sampling);
-        options.walk = {max_events, !no_roulette};
-        const MaterialHooks hooks = media_materials();
+        const MediumWalk walk{max_events, !no_roulette};
         if (knob_study) {
             RenderSettings reference_settings = context.settings;
             reference_settings.samples_per_pixel = reference_spp;
             reference_settings.seed = context.settings.seed + 1000;
-            PathOptions uncapped = options;
-            uncapped.walk = {1 << 30, true};
             std::printf("reference: %d spp, no cap, %dx%d ...\n", reference_spp, context.settings.width,
                         context.settings.height);
             std::fflush(stdout);
             const Image reference =
-                render_with(Renderer::kPaths, scene, context.simulated, reference_settings, uncapped, hooks)
+                render_with_media(Renderer::kPaths, scene, context.simulated, reference_settings, options,
+                                  {1 << 30, true})
                     .image;
             std::printf("%10s %9s %5s %12s %13s %10s\n", "max events", "roulette", "spp", "RMSE",
                         "mean error", "time (s)");
@@ -122,14 +120,14 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         const Renderer renderer = choose_renderer(context.simulated);
-        ChapterRun run{render_with(renderer, scene, context.simulated, context.settings, options, hooks),
+        ChapterRun run{render_with_media(renderer, scene, context.simulated, context.settings, options, walk),
                        {},
                        std::nullopt};
         run.notes.push_back(
             renderer == Renderer::kDirect
                 ? std::string(to_string(renderer))
-                : "renderer: paths (chapter 06's loop, chapter 07's BSDFs, chapter 09's media)");
-        const MaterialTable materials(scene, context.simulated, hooks);
+                : "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)");
+        const MaterialTable materials(scene, context.simulated, media_materials());
         for (const std::string& note : materials.notes()) run.notes.push_back(note);
         run.notes.push_back("sampling: " + sampling + ", walk: at most " + std::to_string(max_events) +
                             " scattering events, roulette " + (no_roulette ? "off" : "on"));

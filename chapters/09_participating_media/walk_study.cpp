@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "04_direct_lighting/render_scene.hpp"
-#include "07_bsdf_refraction/bsdf_render.hpp"
 #include "homogeneous_medium.hpp"
 #include "media_materials.hpp"
 #include "media_scenes.hpp"
 #include "rt/error_metrics.hpp"
+#include "volume_path_tracer.hpp"
 
 namespace rt {
 
@@ -22,9 +22,8 @@ std::vector<WalkLengthRow> walk_lengths(const std::vector<double>& mean_free_pat
             const Scene scene =
                 medium_sphere_scene({Color(sigma_t * Real(1 - albedo)), Color(sigma_t * Real(albedo)), 0});
             const RenderScene prepared(scene, EffectSet::all(), media_materials());
-            PathOptions options;
-            options.walk.max_events = 1 << 30;
-            const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+            const VolumePathTracer tracer(prepared.world, prepared.materials, prepared.lights, PathOptions{},
+                                          {1 << 30, true});
             WalkLengthRow row{mfp, albedo, 0, 0, 0, 0};
             double events = 0, radiance = 0;
             const auto start = std::chrono::steady_clock::now();
@@ -57,10 +56,8 @@ std::vector<WalkKnobRow> walk_knobs(const Scene& scene, const RenderSettings& se
     std::vector<WalkKnobRow> rows;
     for (bool roulette : {true, false}) {
         for (int cap : caps) {
-            PathOptions o = options;
-            o.walk = {cap, roulette};
             const RenderResult r =
-                render_with(Renderer::kPaths, scene, o.simulated, settings, o, media_materials());
+                render_with_media(Renderer::kPaths, scene, options.simulated, settings, options, {cap, roulette});
             const ErrorMetrics e = compare(r.image, reference);
             rows.push_back({cap, roulette, e.rmse, e.mean_error, r.seconds});
         }

@@ -7,7 +7,7 @@
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/depth_study.hpp"
-#include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "feature_buffers.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/image_io.hpp"
@@ -49,8 +49,8 @@ struct PlainPoint {
 PlainPoint plain_point(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        int spp, const Image& reference) {
     const RenderResult r =
-        render_with(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed), options,
-                    media_materials());
+        render_with_media(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed),
+                          options);
     return {spp, compare(r.image, reference).relative_mse, r.seconds, r.image};
 }
 
@@ -230,8 +230,8 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
     for (int i = 0; i < 3; ++i) {
         render = render_features(scene, with(settings, spp, settings.seed), options);
         feature_times.push_back(render.result.seconds);
-        plain_times.push_back(render_with(Renderer::kPaths, scene, options.simulated,
-                                          with(settings, spp, settings.seed), options, media_materials())
+        plain_times.push_back(render_with_media(Renderer::kPaths, scene, options.simulated,
+                                                with(settings, spp, settings.seed), options)
                                   .seconds);
     }
     std::sort(feature_times.begin(), feature_times.end());

@@ -3,14 +3,15 @@
 #include "01_ray_generation/camera.hpp"
 #include "01_ray_generation/camera_render.hpp"
 #include "04_direct_lighting/render_scene.hpp"
-#include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
+#include "path_features.hpp"
 
 namespace rt {
 
 FeatureRender render_features(const Scene& scene, const RenderSettings& settings, PathOptions options) {
     const RenderScene prepared(scene, options.simulated, media_materials());
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
-    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    const VolumePathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     const int count = settings.samples_per_pixel;
     // Layers beside the image: L², albedo, albedo², normal, normal², depth, depth².
     std::array<PixelSums, 7> layers;

@@ -1,5 +1,5 @@
 // The feature buffers (AOVs) of a render: beside the noisy image, what each pixel's paths met at their first
-// vertex that is not a delta bounce (chapter 06's PathFeatures, recorded by the one path loop): the albedo,
+// vertex that is not a delta bounce (path_features.hpp, watching chapter 09's path loop): the albedo,
 // the shading normal and the depth, having followed mirrors and glass as production renderers do. Each is the
 // mean over the pixel's samples, with the variance of that mean, from exact sums of the samples and of their
 // squares (rt/pixel_sums.hpp's variance_of_mean):
@@ -26,7 +26,7 @@ struct FeatureRender {
     FeatureBuffers buffers;
 };
 
-// Renders `scene` through chapter 06's path loop on chapter 07's material table (as ch07_bsdf_refraction does
+// Renders `scene` through chapter 09's path loop on its material table (as ch09_participating_media does
 // when it traces paths), recording the features of every sample. Refuses (std::logic_error) a resumed render.
 FeatureRender render_features(const Scene& scene, const RenderSettings& settings, PathOptions options);
 

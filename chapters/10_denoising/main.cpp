@@ -5,7 +5,7 @@
 // `--study` measures what the filters buy against a converged reference: error, SSIM, time, the samples plain
 // path tracing needs for the same error, the bias, and where denoising loses.
 #include "07_bsdf_refraction/bsdf_render.hpp"
-#include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/volume_path_tracer.hpp"
 #include "denoise_flags.hpp"
 #include "denoise_study.hpp"
 #include "denoiser.hpp"
@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
         const SampleRange all{0, settings.samples_per_pixel};
         if (settings.resume || (settings.samples && *settings.samples != all)) {
             return ChapterRun{
-                render_with(Renderer::kPaths, context.scene, context.simulated, settings, options, media_materials()),
-                {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media; a piece of the render: "
+                render_with_media(Renderer::kPaths, context.scene, context.simulated, settings, options),
+                {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media; a piece of the render: "
                  "no features, not denoised"},
                 std::nullopt};
         }
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
         }
         FeatureRender rendered = render_features(context.scene, settings, options);
         ChapterRun run{rendered.result,
-                       {"renderer: chapter 06's path loop with chapter 07's BSDFs and chapter 09's media, recording "
+                       {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media, recording "
                         "albedo, normal and depth at the first non-delta vertex"},
                        std::nullopt};
         if (rendered.result.interrupted) {

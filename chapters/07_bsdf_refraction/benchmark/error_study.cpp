@@ -25,6 +25,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
+#include "path_parts.hpp"
 #include "reference_halves.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
@@ -99,8 +100,7 @@ int main(int argc, char** argv) {
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     app.add_option("--error-png", error_png,
-                   "Write the per-pixel relative squared error (false colour, log10 from 1e-5 to 10) beside "
-                   "this name, _before.png and _after.png");
+                   "Write the per-pixel relative squared error (false colour, log10 from 1e-5 to 10) there");
     CLI11_PARSE(app, argc, argv);
     try {
         run(size, spp, reference_spp, threads, repeats, target, cache, error_png);
@@ -127,7 +127,7 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
         render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
             PathParts parts;
             const Ray ray = camera_ray_of(camera, PixelSampler::kStratified, s, spp, rng, rays);
-            const Color L = finite_or_black(tracer.radiance(ray, rng, rays, nullptr, &parts));
+            const Color L = finite_or_black(tracer.radiance(ray, rng, rays, &parts));
             std::array<Color, 2 + 2 * kPathPartCount> out;
             out[0] = L;
             out[1] = L * L;
@@ -200,20 +200,7 @@ void run(int size, int spp, int reference_spp, int threads, int repeats, double 
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     PathOptions options;
     options.simulated = simulated;
-    // Before (Russian roulette judging β itself, as the course did) and after (refraction's η² divided out).
-    for (bool eta_scale : {false, true}) {
-        PathOptions measured = options;
-        measured.roulette_eta_scale = eta_scale;
-        std::printf("\n%s\n", eta_scale ? "after: roulette judging beta eta^2 (the default)"
-                                        : "before: roulette judging beta itself");
-        const std::filesystem::path png(error_png);
-        split_by_path_kind(
-            prepared, camera, measured, settings, spp, r, noise,
-            error_png.empty()
-                ? std::string()
-                : (png.parent_path() / (png.stem().string() + (eta_scale ? "_after" : "_before") + ".png"))
-                      .string());
-    }
+    split_by_path_kind(prepared, camera, options, settings, spp, r, noise, error_png);
 
     // 3. The candidate causes.
     settings.samples_per_pixel = spp;
@@ -222,11 +209,6 @@ void run(int size, int spp, int reference_spp, int threads, int repeats, double 
     for (int start : {1, 5, 8}) {
         Variant v{nullptr, options};
         v.options.termination.roulette_start_depth = start;
-        variants.push_back(v);
-    }
-    {
-        Variant v{"roulette judging β itself", options};
-        v.options.roulette_eta_scale = false;
         variants.push_back(v);
     }
     for (PointSet points : {PointSet::kIndependent, PointSet::kSobol}) {

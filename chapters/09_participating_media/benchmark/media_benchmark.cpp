@@ -1,5 +1,5 @@
-// What the volume hooks cost a scene without media: chapter 09's render (chapter 07's renderer on the
-// material table with chapter 09's media hooks) against chapter 07's on assets/scenes/cornell.json, run
+// What the volumetric loop costs a scene without media: chapter 09's render (its own loop on the material
+// table with its media hooks) against chapter 07's (chapter 06's loop) on assets/scenes/cornell.json, run
 // alternately, each time the median of the runs. Not a test: `ch09_benchmark [runs] [size] [spp]`.
 #include <algorithm>
 #include <cstdio>
@@ -7,15 +7,11 @@
 #include <vector>
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
-#include "media_materials.hpp"
 #include "rt/assets.hpp"
 #include "rt/effects.hpp"
 #include "rt/scene_loader.hpp"
 #include "rt/median.hpp"
-
-namespace {
-
-}  // namespace
+#include "volume_path_tracer.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
@@ -31,12 +27,11 @@ int main(int argc, char** argv) {
     settings.progress = ProgressStyle::kNone;
     const EffectSet ch07 = needed(scene) & EffectSet::all().without({Effect::kMedia});
     const EffectSet ch09 = needed(scene) & EffectSet::all();
-    const MaterialHooks media = media_materials();
     std::vector<double> t07, t09;
     double mean07 = 0, mean09 = 0;  // the two images agree: no media here
     for (int i = 0; i < runs; ++i) {
         const RenderResult a = render_with(choose_renderer(ch07), scene, ch07, settings, {});
-        const RenderResult b = render_with(choose_renderer(ch09), scene, ch09, settings, {}, media);
+        const RenderResult b = render_with_media(choose_renderer(ch09), scene, ch09, settings);
         t07.push_back(a.seconds);
         t09.push_back(b.seconds);
         mean07 = a.image.mean();

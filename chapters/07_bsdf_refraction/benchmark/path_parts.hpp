@@ -1,6 +1,6 @@
-// An analysis hook of the path loop: the estimate L of one path split by the kind of path each term of it
-// came from, so that a study can measure which kind of path carries a render's error. The loop is the same
-// with or without it (the same random numbers, the same L); handed a PathParts, it files each term it adds:
+// An analysis of chapter 06's path loop, as a PathObserver: the estimate L of one path split by the kind of
+// path each term of it came from, so that a study can measure which kind of path carries a render's error.
+// The loop is the same with or without it (the same random numbers, the same L); it files each term added:
 //   seen:       light met by the camera ray, or by a chain of delta bounces from the camera (L-S*-E);
 //   next event: light sampling at a non-delta vertex (chapter 04's estimate, MIS-weighted with BSDF hits);
 //   BSDF hit:   light met by a ray a non-delta vertex drew from its BSDF, MIS-weighted against light
@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 
+#include "06_monte_carlo/path_observer.hpp"
 #include "rt/math.hpp"
 
 namespace rt {
@@ -26,15 +27,23 @@ inline const char* to_string(PathPart part) {
     return names[std::size_t(part)];
 }
 
-struct PathParts {
+class PathParts final : public PathObserver {
+  public:
     std::array<Color, kPathPartCount> parts{};  // their sum is the path's L
-    Color filed{0};                             // the part of L filed so far
 
+    void light_met(const Color& L, bool specular, int bounces) override {
+        file(!specular ? PathPart::kBsdfHit : bounces == 0 ? PathPart::kSeen : PathPart::kCaustic, L);
+    }
+    void light_estimated(const Color& L) override { file(PathPart::kNextEvent, L); }
+
+  private:
     // Files what L gained since the last call as `part`.
     void file(PathPart part, const Color& L) {
-        parts[std::size_t(part)] += L - filed;
-        filed = L;
+        parts[std::size_t(part)] += L - filed_;
+        filed_ = L;
     }
+
+    Color filed_{0};  // the part of L filed so far
 };
 
 }  // namespace rt

@@ -1,0 +1,219 @@
+#include "volume_path_tracer.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "01_ray_generation/camera.hpp"
+#include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/warp_pdfs.hpp"
+
+namespace rt {
+
+namespace {
+
+// A walk's Russian roulette: chapter 05's rule from its first event, under no depth cap.
+constexpr TerminationSettings kWalkRoulette{Termination::kRussianRoulette, std::numeric_limits<int>::max(), 0,
+                                            0};
+
+}  // namespace
+
+VolumePathTracer::VolumePathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
+                                   PathOptions options, MediumWalk walk)
+    : steps_(world, materials, lights, options),
+      world_(world),
+      materials_(materials),
+      exterior_(materials.exterior()),
+      media_(exterior_ != nullptr),
+      walk_(walk) {
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        const Medium* inside = materials.interior(int(m));
+        media_ = media_ || (inside && inside->phase());
+    }
+}
+
+const Medium* VolumePathTracer::medium_along(const std::optional<Hit>& end) const {
+    if (end && !end->front_face && materials_.bsdf(end->material, false).flags().transmission)
+        return materials_.interior(end->material);
+    return exterior_;
+}
+
+Color VolumePathTracer::transmittance(Ray ray, Real t_max, RayCounts& rays) const {
+    // T = Π over the segments of exp(−σ_t d): each segment through the medium its end says, to the next
+    // surface before t_max, which the ray crosses only if it is an index-matched boundary.
+    Color T(1);
+    for (;;) {
+        rays.add(RayKind::kShadow);
+        const auto hit = world_.intersect(ray, t_max);
+        if (const Medium* medium = medium_along(hit)) T *= medium->transmittance(hit ? hit->t : t_max);
+        if (!hit) return T;
+        if (!materials_.bsdf(hit->material, hit->front_face).flags().index_matched || is_black(T))
+            return Color(0);
+        t_max -= hit->t;
+        ray = spawn_ray(*hit, ray.direction, steps_.options().offset);
+    }
+}
+
+Color VolumePathTracer::shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const {
+    return media_ ? transmittance(ray, t_max, rays) : steps_.unoccluded(ray, t_max, rays);
+}
+
+Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
+                                             SampleStream rng, RayCounts& rays) const {
+    const bool mis = steps_.weighs();
+    const bool shadows = steps_.options().simulates(Effect::kShadows);
+    Color sum(0);
+    if (!steps_.lights().empty()) {
+        const Real u_pick = rng.next_real();
+        const Vec2 u = rng.next_vec2();
+        if (const auto s = steps_.lights().sample(p, u_pick, u); s && s->pdf > 0) {
+            const Real f = phase.eval(wo, s->wi);
+            const Color T = f > 0 && shadows
+                                ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
+                                : Color(1);
+            if (f > 0 && !is_black(T)) {
+                const Real w =
+                    mis && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
+                sum += T * s->radiance * (f * w / s->pdf);
+            }
+        }
+    }
+    if (const auto& environment = steps_.environment()) {
+        const Vec3 wi = sample_uniform_sphere(rng.next_vec2());
+        const Real f = phase.eval(wo, wi);
+        const Color T = f > 0 && shadows ? transmittance({p, wi}, kInfinity, rays) : Color(1);
+        if (f > 0 && !is_black(T)) {
+            const Real w = mis ? power_heuristic(kUniformSpherePdf, phase.pdf(wo, wi)) : Real(1);
+            sum += T * environment->radiance * (f * w / kUniformSpherePdf);
+        }
+    }
+    return sum;
+}
+
+FreeFlight VolumePathTracer::fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const {
+    if (path.channel < 0 && medium.phase()) path.channel = pick_channel(rng.next_real());
+    const FreeFlight flight = medium.sample_free_flight(t_max, path.channel, rng.generator());
+    path.beta *= flight.weight;
+    if (flight.pdf_ratio != Color(1)) {
+        path.spectral_pdf *= flight.pdf_ratio;
+        const Real mean = (path.spectral_pdf.r + path.spectral_pdf.g + path.spectral_pdf.b) / 3;
+        path.beta /= mean;
+        path.spectral_pdf /= mean;
+    }
+    return flight;
+}
+
+bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path,
+                                         SampleStream rng, RayCounts& rays, PathObserver* observer) const {
+    // EXERCISE(ch09.volume_vertex) § 5. The volumetric path loop
+    const Vec3 p = ray.at(t);
+    const Vec3 wo = -ray.direction;
+    if (steps_.estimates()) {
+        path.L += path.beta * next_event_in_medium(p, wo, phase, rng, rays);
+        if (observer) observer->light_estimated(path.L);
+    }
+    const PhaseSample s = phase.sample(wo, rng.next_vec2());
+    if (!(s.pdf > 0) || !(s.p > 0)) return false;
+    path.beta *= s.p / s.pdf;
+    ++path.bounces;
+    path.from = {p, Vec3(0), s.pdf, false};
+    if (walk_.roulette && !continue_path(kWalkRoulette, path.events, path.beta, rng.next_real()))
+        return false;
+    ray = Ray{p, s.wi};
+    rays.add(RayKind::kIndirect);
+    return true;
+    // END EXERCISE
+}
+
+Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays,
+                                 PathObserver* observer) const {
+    const PathTracer& steps = steps_;
+    const auto seen = [this](const Ray& shadow, Real t_max, RayCounts& n) {
+        return shadow_seen(shadow, t_max, n);
+    };
+    VolumePath path;
+    Ray ray = camera_ray;
+    for (;;) {
+        const auto hit = world_.intersect(ray);
+        // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it
+        // early, at a vertex in the volume.
+        if (const Medium* medium = medium_along(hit)) {
+            const FreeFlight flight = fly(*medium, hit ? hit->t : kInfinity, path, rng);
+            if (flight.scattered) {
+                if ((!steps.indirect() && path.bounces >= 1) || ++path.events > walk_.max_events) break;
+                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer)) break;
+                continue;
+            }
+        }
+        const PathVertex& from = path.from;
+        if (!hit) {
+            if (steps.environment() && (from.specular || steps.direct())) {
+                // The next-event estimate drew this direction cosine-weighted about a surface's normal, or
+                // uniformly over the sphere in a medium.
+                const Real light_pdf = from.normal == Vec3(0)
+                                           ? kUniformSpherePdf
+                                           : cosine_hemisphere_pdf(glm::dot(ray.direction, from.normal));
+                path.L += path.beta * steps.environment()->radiance * steps.met_weight(from, light_pdf);
+                if (observer) observer->light_met(path.L, from.specular, path.bounces);
+            }
+            break;
+        }
+        const Color emitted = materials_.emission(hit->material, hit->front_face);
+        if (!is_black(emitted) && (from.specular || steps.direct())) {
+            path.L += path.beta * emitted * steps.emitter_weight(from, ray, *hit);
+            if (observer) observer->light_met(path.L, from.specular, path.bounces);
+        }
+        if (!steps.indirect() && path.bounces >= 1) break;
+        const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
+        const BsdfFlags& flags = bsdf.flags();
+        if (observer && !observer->reached(*hit, flags, path.bounces)) break;
+        // Shadow rays cross an index-matched boundary (transmittance()), so light sampling sees what lies
+        // beyond it: a path crossing one makes no vertex there and goes straight on.
+        if (media_ && flags.index_matched) {
+            ray = spawn_ray(*hit, ray.direction, steps.options().offset);
+            rays.add(RayKind::kRefraction);
+            continue;
+        }
+        if (flags.black) break;
+        const Vec3 wo = -ray.direction;
+        if (steps.estimates() && !flags.delta) {
+            path.L += path.beta * steps.next_event(*hit, wo, bsdf, rng, rays, seen);
+            if (observer) observer->light_estimated(path.L);
+        }
+        if (!steps.indirect() && !flags.delta && steps.estimates() && !steps.weighs() &&
+            !steps.has_unsampled_emitters())
+            break;
+        const std::optional<Continuation> next = steps.continuation(*hit, wo, bsdf, rng);
+        if (!next) break;
+        const BsdfSample& s = next->sample;
+        if (observer) observer->sampled(path.beta, s, next->cos_i);
+        path.beta *= s.f * (next->cos_i / s.pdf);
+        path.eta_scale /= s.radiance_scale;
+        path.from = {hit->point, hit->normal, flags.delta ? kInfinity : s.pdf, flags.delta};
+        if (!flags.delta) ++path.bounces;
+        // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
+        // refractions belong to the walk, which ends by the walk's rules, not by chapter 06's roulette.
+        const Medium* inside = hit->front_face ? nullptr : materials_.interior(hit->material);
+        if (inside && inside->phase()) {
+            if (++path.events > walk_.max_events) break;
+        } else if (!steps.roulette(++path.depth, path.beta, path.eta_scale, rng)) {
+            break;
+        }
+        ray = spawn_ray(*hit, s.wi, steps.options().offset);
+        rays.add(ray_kind(flags, s.transmitted));
+    }
+    return path.L;
+}
+
+RenderResult render_with_media(Renderer renderer, const Scene& scene, const EffectSet& simulated,
+                               const RenderSettings& settings, PathOptions options, MediumWalk walk,
+                               const MaterialHooks& hooks) {
+    if (renderer == Renderer::kDirect)
+        return render_with(renderer, scene, simulated, settings, options, hooks);
+    const RenderScene prepared(scene, simulated, hooks);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+    options.simulated = simulated;
+    const VolumePathTracer tracer(prepared.world, prepared.materials, prepared.lights, options, walk);
+    return render_paths(tracer, camera, settings);
+}
+
+}  // namespace rt

@@ -1,0 +1,88 @@
+// Chapter 06's path loop made volumetric (pbrt-v4's VolPathIntegrator beside its PathIntegrator). Built from
+// chapter 06's steps (the next-event estimate at a surface, the MIS weight of the light a path meets, the
+// BSDF-sampled continuation, Russian roulette) and this chapter's own:
+//   - free flight: along each segment, the medium that fills it samples the distance to a scattering event,
+//     drawn with one colour channel's density, spectral MIS over the whole path keeping the weight bounded;
+//   - the vertex in the volume: the phase function in the place of the BSDF, no surface, no cosine;
+//   - next-event estimation through media: shadow rays carry the transmittance of the media they cross,
+//     across index-matched boundaries (which the path also crosses without a vertex);
+//   - the walk inside a dielectric's medium (subsurface scattering), ended by its own two knobs.
+// A scene without media draws the random numbers chapter 06's loop draws, and renders the same image.
+#pragma once
+
+#include <optional>
+
+#include "06_monte_carlo/path_tracer.hpp"
+#include "07_bsdf_refraction/bsdf_render.hpp"
+#include "media_materials.hpp"
+
+namespace rt {
+
+// How a path that scatters in a medium ends. Its scattering events are not the bounces that chapter 06's
+// `termination` counts (a walk in milk makes hundreds of them): they have their own two knobs.
+struct MediumWalk {
+    int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a
+                             // walk's boundary): a bias when a path meets it
+    bool roulette = true;    // Russian roulette at every event: go on with q = min(1, max β), then β /= q
+};
+
+// The state of one volumetric path.
+struct VolumePath {
+    Color L{0}, beta{1};
+    PathVertex from;     // the vertex the ray left (normal 0: a vertex in a medium)
+    int bounces = 0;     // non-delta bounces so far, scattering events too
+    int depth = 0;       // what chapter 06's roulette counts: surface bounces outside walks
+    Real eta_scale = 1;  // Π of the samples' 1 / radiance_scale
+    int events = 0;      // the walks' events so far: scattering, and reflections at a walk's boundary
+    int channel = -1;    // the colour channel whose density draws the free flights (-1: none chosen yet)
+    // The path's densities under each channel's sampling, relative to the chosen one's, kept at mean 1.
+    Color spectral_pdf{1};
+};
+
+class VolumePathTracer {
+  public:
+    // `world` and `materials` must outlive it.
+    VolumePathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
+                     PathOptions options, MediumWalk walk = {});
+
+    // The radiance arriving along `ray` (a camera ray): one path, its estimate of L.
+    Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays, PathObserver* observer = nullptr) const;
+
+    const PathOptions& options() const { return steps_.options(); }
+
+  private:
+    // The medium a segment runs through, judged at its end: the inside of a shape when it ends on the back of
+    // a surface that lets light through, the medium between the shapes otherwise.
+    const Medium* medium_along(const std::optional<Hit>& end) const;
+    // The free flight through `medium` over [0, t_max): β takes its weight, divided by the mean of the
+    // path's relative densities (spectral MIS).
+    FreeFlight fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const;
+    // The vertex at a scattering event at distance t along `ray`: next-event estimation, then the direction
+    // drawn from `phase` continues the path (`ray` becomes it). false: the path ends there.
+    bool scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path, SampleStream rng,
+                           RayCounts& rays, PathObserver* observer) const;
+    // The next-event estimate at p in a medium: as chapter 06's, with the phase function for the BSDF, no
+    // cosine, and the environment sampled over the whole sphere.
+    Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, SampleStream rng,
+                               RayCounts& rays) const;
+    // The transmittance from ray.origin to ray.at(t_max) (a shadow ray): through media, across
+    // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
+    Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;
+    // What a shadow ray sees: chapter 06's visibility in a scene without media, the transmittance with them.
+    Color shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const;
+
+    PathTracer steps_;  // chapter 06's loop, whose steps this one calls
+    const World& world_;
+    const MaterialTable& materials_;
+    const Medium* exterior_;  // the medium between the shapes (null: empty space)
+    bool media_;              // a medium between the shapes, or one that scatters inside a shape
+    MediumWalk walk_;
+};
+
+// Renders as chapter 07's render_with does, with this chapter's volumetric loop for paths and its media on
+// the material table.
+RenderResult render_with_media(Renderer renderer, const Scene& scene, const EffectSet& simulated,
+                               const RenderSettings& settings, PathOptions options = {}, MediumWalk walk = {},
+                               const MaterialHooks& hooks = media_materials());
+
+}  // namespace rt
