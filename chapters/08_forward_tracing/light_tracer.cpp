@@ -18,12 +18,6 @@ bool splat(Image& film, const FilmPoint& p, const Color& c) {
 
 }  // namespace
 
-CameraVariant camera_variant_from_string(std::string_view name) {
-    if (name == "connect") return CameraVariant::kConnect;
-    if (name == "aperture") return CameraVariant::kAperture;
-    throw InputError("--variant: must be connect or aperture, got " + std::string(name));
-}
-
 LightTracer::LightTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
                          const PinholeCamera& camera, LightTracerOptions options)
     : world_(world), materials_(materials), camera_(camera), emitters_(lights), options_(options) {

@@ -27,6 +27,7 @@
 #include "05_recursive_gi/termination.hpp"
 #include "camera_importance.hpp"
 #include "light_emission.hpp"
+#include "rt/enum_names.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
 #include "splat_render.hpp"
@@ -35,8 +36,10 @@ namespace rt {
 
 enum class CameraVariant { kConnect, kAperture };
 
-// "connect" or "aperture"; the other name throws InputError.
-CameraVariant camera_variant_from_string(std::string_view name);
+constexpr auto names_of(CameraVariant) {
+    return enum_names<CameraVariant>("--variant",
+                                     {{CameraVariant::kConnect, "connect"}, {CameraVariant::kAperture, "aperture"}});
+}
 
 // Which light paths a tracer counts, by the vertices next to the camera (D a non-delta vertex, S a delta
 // one):
