@@ -13,6 +13,7 @@
 #include "rt/assets.hpp"
 #include "rt/did_you_mean.hpp"
 #include "rt/effects.hpp"
+#include "rt/enum_flag.hpp"
 #include "rt/error_metrics.hpp"
 #include "rt/errors.hpp"
 #include "rt/image_io.hpp"
@@ -280,6 +281,42 @@ TEST_CASE("A restart of the live view stops the render as an interrupt does, and
     CHECK(r.interrupted);
     CHECK(taken == 400);
     CHECK(r.samples == 256);  // the first tile's first pass; the second tile's, cut short, is dropped
+}
+
+namespace {
+
+enum class Fruit { kApple, kPear, kPlum };
+
+constexpr auto names_of(Fruit) {
+    return enum_names<Fruit>("--fruit", {{Fruit::kApple, "apple"}, {Fruit::kPear, "pear"}, {Fruit::kPlum, "plum"}});
+}
+
+}  // namespace
+
+TEST_CASE("An enum's one table of names gives to_string, parsing and its error, and the flag with its choices",
+          "[flags]") {
+    for (Fruit f : {Fruit::kApple, Fruit::kPear, Fruit::kPlum}) CHECK(from_string<Fruit>(to_string(f)) == f);
+    CHECK(to_string(Fruit::kPlum) == "plum");
+    CHECK(joined_names<Fruit>() == "apple|pear|plum");
+    CHECK_THROWS_AS(from_string<Fruit>("Apple"), InputError);
+    CHECK_THROWS_WITH(from_string<Fruit>("fig"), "--fruit: expected apple, pear or plum, got \"fig\"");
+    CHECK_THROWS_WITH(from_string<Fruit>("a\nb"), "--fruit: expected apple, pear or plum, got \"a\\nb\"");
+
+    CLI::App app("test", "test");
+    app.option_defaults()->always_capture_default();
+    Fruit fruit = Fruit::kPear;
+    add_enum_option(app, fruit, "Which fruit");
+    const std::vector<std::string> none;
+    app.parse(none);
+    CHECK(fruit == Fruit::kPear);
+    const LiveKnobs knobs(app, {"--help"}, none);
+    REQUIRE(knobs.knobs().size() == 1);
+    CHECK(knobs.knobs()[0].name == "--fruit");
+    CHECK(knobs.knobs()[0].choices == std::vector<std::string>{"apple", "pear", "plum"});
+    CHECK(knobs.knobs()[0].value == "pear");  // the default, by its name
+    app.parse(std::vector<std::string>{"plum", "--fruit"});  // CLI11 reads the vector last first
+    CHECK(fruit == Fruit::kPlum);
+    CHECK_THROWS_WITH(app.parse(std::vector<std::string>{"fig", "--fruit"}), "--fruit: fig not in {apple,pear,plum}");
 }
 
 TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as the command line sets them",

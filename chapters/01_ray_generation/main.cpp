@@ -21,26 +21,30 @@ int main(int argc, char** argv) {
     auto flags = [&](CLI::App& app) {
         add_enum_option(app, sampler, "Where samples fall in a pixel: " + joined_names<PixelSampler>());
         app.add_option("--edge-tilt", tilt_degrees, "Tilt of the edge from the vertical, degrees");
-        CLI::Option* study_flag =
-            app.add_flag("--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
-        app.add_option("--csv", csv, "With --aa-study: also write the table as CSV")->check(only_with({{study_flag}}));
+        CLI::Option* study_flag = app.add_flag(
+            "--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
+        app.add_option("--csv", csv, "With --aa-study: also write the table as CSV")
+            ->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;
-        const PinholeCamera camera = make_pinhole_camera(context.scene.camera, settings.width, settings.height);
+        const PinholeCamera camera =
+            make_pinhole_camera(context.scene.camera, settings.width, settings.height);
         const FilmEdge edge = make_film_edge(camera, tilt_degrees);
         if (!study) {
             ChapterRun run{render_directions(camera, edge, sampler, settings), {}, std::nullopt};
             run.notes.push_back(std::string("pixel sampler: ") + std::string(to_string(sampler)));
             if (!context.scene.shapes.empty()) {
-                run.notes.push_back("the scene's shapes are not intersected before chapter 02; rays show directions");
+                run.notes.push_back(
+                    "the scene's shapes are not intersected before chapter 02; rays show directions");
             }
             return run;
         }
         if (!csv.empty()) check_writable("--csv", csv);
         const auto rows = antialiasing_study(camera, edge, settings, {1, 4, 16, 64, 256});
-        std::printf("anti-aliasing on a straight edge, %dx%d, %d threads: RMSE of pixel coverage over the edge\n",
-                    settings.width, settings.height, settings.threads);
+        std::printf(
+            "anti-aliasing on a straight edge, %dx%d, %d threads: RMSE of pixel coverage over the edge\n",
+            settings.width, settings.height, settings.threads);
         std::printf("%-11s %5s %12s %10s\n", "sampler", "spp", "edge RMSE", "time (s)");
         std::ofstream out;
         if (!csv.empty()) {
@@ -50,7 +54,9 @@ int main(int argc, char** argv) {
         for (const auto& row : rows) {
             std::printf("%-11s %5d %12.5f %10.4f\n", to_string(row.sampler).data(), row.spp, row.edge_rmse,
                         row.seconds);
-            if (out) out << to_string(row.sampler) << ',' << row.spp << ',' << row.edge_rmse << ',' << row.seconds << '\n';
+            if (out)
+                out << to_string(row.sampler) << ',' << row.spp << ',' << row.edge_rmse << ',' << row.seconds
+                    << '\n';
         }
         return std::nullopt;
     };

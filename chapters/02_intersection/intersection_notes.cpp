@@ -38,8 +38,8 @@ std::string cost_note(const IntersectionRun& run, const RenderResult& result,
 
 }  // namespace
 
-std::vector<std::string> intersection_notes(const Scene& scene, const World& world, const IntersectionRun& run,
-                                            const RenderResult& result,
+std::vector<std::string> intersection_notes(const Scene& scene, const World& world,
+                                            const IntersectionRun& run, const RenderResult& result,
                                             const std::optional<MeanTraversalCost>& cost) {
     std::vector<std::string> notes{
         "showing " + std::string(to_string(run.show)) + "; materials are not shaded before chapter 03",

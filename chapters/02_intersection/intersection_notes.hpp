@@ -21,8 +21,8 @@ struct IntersectionRun {
 
 // The notes of a render; `cost` (none once the render was interrupted) also decides whether the leak probe
 // runs on each mesh of the scene.
-std::vector<std::string> intersection_notes(const Scene& scene, const World& world, const IntersectionRun& run,
-                                            const RenderResult& result,
+std::vector<std::string> intersection_notes(const Scene& scene, const World& world,
+                                            const IntersectionRun& run, const RenderResult& result,
                                             const std::optional<MeanTraversalCost>& cost);
 
 }  // namespace rt

@@ -21,8 +21,9 @@ int main(int argc, char** argv) {
                               "Chapter 02: the nearest intersection of a ray with a scene",
                               "ch02_default.json", EffectSet{Effect::kCameraRays}};
     auto flags = [&](CLI::App& app) {
-        add_enum_option(app, show,
-                        "What each pixel shows: " + joined_names<ShowMode>() + " (boxes and primitives tested)");
+        add_enum_option(
+            app, show,
+            "What each pixel shows: " + joined_names<ShowMode>() + " (boxes and primitives tested)");
         add_enum_option(app, options.triangle_test, "Ray–triangle test: " + joined_names<TriangleTest>());
         add_enum_option(app, options.acceleration,
                         "Acceleration: bvh (4-wide, collapsed from the binary one)|binary (the binary BVH "

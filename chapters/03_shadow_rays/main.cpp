@@ -23,17 +23,20 @@ int main(int argc, char** argv) {
     const ChapterInfo chapter{"ch03_shadow_rays", "Chapter 03: point lights, shadow rays and ray offsets",
                               "ch03_default.json", kShadowChapterEffects};
     auto flags = [&](CLI::App& app) {
-        CLI::Option* offset_flag =
-            add_enum_option(app, method, "How a shadow ray leaves its surface: " + joined_names<OffsetMethod>());
+        CLI::Option* offset_flag = add_enum_option(
+            app, method, "How a shadow ray leaves its surface: " + joined_names<OffsetMethod>());
         app.add_option(
             "--scale", scale,
             "Multiply every length of the scene by this, in [1e-12, 1e12] (intensities by its square)");
         CLI::Option* study_flag = app.add_flag(
-            "--offset-study", study, "Count self-hits, acne and leak pixels and time each offset at each of --study-scales");
-        app.add_option("--epsilon", epsilon, "The fixed distance of --offset epsilon and of the study's (default 1e-4)")
+            "--offset-study", study,
+            "Count self-hits, acne and leak pixels and time each offset at each of --study-scales");
+        app.add_option("--epsilon", epsilon,
+                       "The fixed distance of --offset epsilon and of the study's (default 1e-4)")
             ->check(only_with({{offset_flag, {"epsilon"}}, {study_flag}}));
         app.add_option("--study-scales", study_request.scales,
-                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)")->check(only_with({{study_flag}}));
+                       "With --offset-study: the scales (default 1e-3 1 1e3 1e5)")
+            ->check(only_with({{study_flag}}));
         app.add_option("--csv", study_request.csv, "With --offset-study: also write the table as CSV")
             ->check(only_with({{study_flag}}));
     };

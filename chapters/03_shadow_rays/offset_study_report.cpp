@@ -16,7 +16,8 @@ std::string format(const char* pattern, double a) {
     return text;
 }
 
-void print_study(const std::vector<OffsetStudyRow>& rows, const RenderSettings& settings, const std::string& csv) {
+void print_study(const std::vector<OffsetStudyRow>& rows, const RenderSettings& settings,
+                 const std::string& csv) {
     std::printf("ray offsets, %dx%d, %d spp, %d threads: shadow rays judged against the exact visibility\n",
                 settings.width, settings.height, settings.samples_per_pixel, settings.threads);
     std::printf("%8s %-8s %9s %11s %10s %10s %10s %10s %9s %10s\n", "scale", "offset", "epsilon",

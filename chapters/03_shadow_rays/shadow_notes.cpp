@@ -22,8 +22,9 @@ std::vector<std::string> shadow_notes(const Scene& scene, const RayOffset& offse
     if (scale != 1) method += format(", scene scaled by %g", double(scale));
     const double camera_rays = double(result.rays[RayKind::kCamera]);
     std::vector<std::string> notes{
-        method, format("%.0f point lights, %.3f shadow rays per camera ray", double(scene.point_lights.size()),
-                       camera_rays > 0 ? double(result.rays[RayKind::kShadow]) / camera_rays : 0)};
+        method,
+        format("%.0f point lights, %.3f shadow rays per camera ray", double(scene.point_lights.size()),
+               camera_rays > 0 ? double(result.rays[RayKind::kShadow]) / camera_rays : 0)};
     for (std::string& note : shading_notes(scene)) notes.push_back(std::move(note));
     return notes;
 }

@@ -1,5 +1,5 @@
-// What chapter 03's summary says about a render: the ray offset, the scene's scale, the shadow rays per camera
-// ray, and what the chapter does not simulate in the scene (shading_notes).
+// What chapter 03's summary says about a render: the ray offset, the scene's scale, the shadow rays per
+// camera ray, and what the chapter does not simulate in the scene (shading_notes).
 #pragma once
 
 #include <string>

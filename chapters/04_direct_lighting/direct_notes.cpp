@@ -16,7 +16,8 @@ std::string lights_note(const DirectLighting& shading, const DirectOptions& opti
            count_text(sampled.spheres.size(), "sphere") + ", " + count_text(sampled.points.size(), "point") +
            (sampled.environment ? ", an environment" : "") + "; " +
            count_text(std::size_t(options.shadow_samples), "shadow sample") +
-           (shading.picks_lights() ? " per hit, each from a light picked by power, " : " per light per hit, ") +
+           (shading.picks_lights() ? " per hit, each from a light picked by power, "
+                                   : " per light per hit, ") +
            std::string(to_string(options.light_sampler));
 }
 
@@ -25,11 +26,13 @@ std::string lights_note(const DirectLighting& shading, const DirectOptions& opti
 std::vector<std::string> direct_notes(const MaterialTable& materials, const DirectLighting& shading,
                                       const DirectOptions& options, bool analytic) {
     std::vector<std::string> notes = materials.notes();
-    for (const std::string& u : shading.lights().unsampled) notes.push_back("emitter not sampled as a light: " + u);
+    for (const std::string& u : shading.lights().unsampled)
+        notes.push_back("emitter not sampled as a light: " + u);
     notes.push_back(lights_note(shading, options));
     if (analytic) {
         notes.push_back(
-            "analytic scene (a diffuse plane under one quad light): rays through pixel centres, compared with "
+            "analytic scene (a diffuse plane under one quad light): rays through pixel centres, compared "
+            "with "
             "rho/pi * E from Lambert's polygon formula");
     }
     return notes;

@@ -18,23 +18,26 @@ int main(int argc, char** argv) {
     DirectOptions options;
     bool study = false;
     std::string csv;
-    const ChapterInfo chapter{
-        "ch04_direct_lighting", "Chapter 04: direct lighting, four BRDFs, area lights and soft shadows",
-        "ch04_default.json", kDirectChapterEffects};
+    const ChapterInfo chapter{"ch04_direct_lighting",
+                              "Chapter 04: direct lighting, four BRDFs, area lights and soft shadows",
+                              "ch04_default.json", kDirectChapterEffects};
     auto flags = [&](CLI::App& app) {
         app.add_option("--shadow-samples", options.shadow_samples,
                        "Shadow rays per light per hit (N; soft shadows converge as N grows)")
             ->check(CLI::Range(1, 1 << 16));
-        add_enum_option(app, options.light_sampler,
-                        "How a light's N samples are spread: independent|stratified (one per cell of a grid)");
-        add_enum_option(app, options.light_selection,
-                        "Which lights a hit samples: every (N samples each), power (N lights picked with "
-                        "probability proportional to power) or auto (every light up to 16 lights, else power)");
+        add_enum_option(
+            app, options.light_sampler,
+            "How a light's N samples are spread: independent|stratified (one per cell of a grid)");
+        add_enum_option(
+            app, options.light_selection,
+            "Which lights a hit samples: every (N samples each), power (N lights picked with "
+            "probability proportional to power) or auto (every light up to 16 lights, else power)");
         CLI::Option* study_flag = app.add_flag(
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
             "1, 4, 16, 64, 256 shadow samples per pixel, for both light samplers");
-        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV")->check(only_with({{study_flag}}));
+        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV")
+            ->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;

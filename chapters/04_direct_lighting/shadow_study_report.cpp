@@ -51,8 +51,9 @@ void run_shadow_study(const Scene& given, const DirectOptions& options, const Re
     const World world(scene);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
     const Image exact = exact_image(*analytic, world, camera);
-    const auto rows = shadow_study(world, materials, collect_lights(scene), options, camera, settings, exact,
-                                   {LightSampler::kIndependent, LightSampler::kStratified}, {1, 4, 16, 64, 256});
+    const auto rows =
+        shadow_study(world, materials, collect_lights(scene), options, camera, settings, exact,
+                     {LightSampler::kIndependent, LightSampler::kStratified}, {1, 4, 16, 64, 256});
     print_study(rows, scene, settings, csv);
 }
 

@@ -11,8 +11,9 @@
 
 namespace rt {
 
-void run_depth_study(const Scene& given, const CLI::App& cli, RenderSettings settings, const EffectSet& simulated,
-                     const TerminationFlags& termination, const DepthStudyRequest& request) {
+void run_depth_study(const Scene& given, const CLI::App& cli, RenderSettings settings,
+                     const EffectSet& simulated, const TerminationFlags& termination,
+                     const DepthStudyRequest& request) {
     if (!request.csv.empty()) check_writable("--csv", request.csv);
     std::optional<Scene> loaded;
     {
@@ -40,7 +41,8 @@ void run_depth_study(const Scene& given, const CLI::App& cli, RenderSettings set
     std::vector<DepthStudyRow> rows = depth_study(world, scene, *furnace, camera, settings, rules, direct);
     DirectOptions no_light_sampling = direct;
     no_light_sampling.simulated = direct.simulated.without({Effect::kDirect});
-    for (const DepthStudyRow& r : depth_study(world, scene, *furnace, camera, settings, rules, no_light_sampling))
+    for (const DepthStudyRow& r :
+         depth_study(world, scene, *furnace, camera, settings, rules, no_light_sampling))
         rows.push_back(r);
     print_depth_study(rows, scene, *furnace, settings, request.csv);
 }

@@ -23,7 +23,8 @@ struct DepthStudyRequest {
 
 // `cli` tells which of --width, --height and --spp were given; `termination` gives the cap (--max-depth),
 // the threshold and roulette's first depth.
-void run_depth_study(const Scene& given, const CLI::App& cli, RenderSettings settings, const EffectSet& simulated,
-                     const TerminationFlags& termination, const DepthStudyRequest& request);
+void run_depth_study(const Scene& given, const CLI::App& cli, RenderSettings settings,
+                     const EffectSet& simulated, const TerminationFlags& termination,
+                     const DepthStudyRequest& request);
 
 }  // namespace rt

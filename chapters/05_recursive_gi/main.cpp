@@ -31,21 +31,27 @@ int main(int argc, char** argv) {
         CLI::Option* rule_flag = add_termination_flags(app, termination);
         app.add_option("--min-throughput", termination.settings.min_throughput,
                        "The throughput rule's threshold on max(throughput) (default 0.01)")
-            ->check(CLI::Range(0.0, 1.0))->check(only_with({{rule_flag, {"throughput"}}}));
+            ->check(CLI::Range(0.0, 1.0))
+            ->check(only_with({{rule_flag, {"throughput"}}}));
         app.add_option("--roulette-start", termination.settings.roulette_start_depth,
                        "Bounces before Russian roulette starts (default 3)")
-            ->check(CLI::Range(0, 1024))->check(only_with({{rule_flag, {"roulette"}}, {study_flag}}));
-        app.add_option("--study-depths", study_request.depths, "With --depth-study: the depths (default 1 2 4 8 16)")
-            ->check(CLI::Range(0, 1024))->check(only_with({{study_flag}}));
+            ->check(CLI::Range(0, 1024))
+            ->check(only_with({{rule_flag, {"roulette"}}, {study_flag}}));
+        app.add_option("--study-depths", study_request.depths,
+                       "With --depth-study: the depths (default 1 2 4 8 16)")
+            ->check(CLI::Range(0, 1024))
+            ->check(only_with({{study_flag}}));
         app.add_option("--study-throughputs", study_request.throughputs,
                        "With --depth-study: the throughput rule's thresholds (default 0.01 0.1)")
-            ->check(CLI::Range(0.0, 1.0))->check(only_with({{study_flag}}));
+            ->check(CLI::Range(0.0, 1.0))
+            ->check(only_with({{study_flag}}));
         app.add_option("--csv", study_request.csv, "With --depth-study: also write the table as CSV")
             ->check(only_with({{study_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (study) {
-            run_depth_study(context.scene, *cli, context.settings, context.simulated, termination, study_request);
+            run_depth_study(context.scene, *cli, context.settings, context.simulated, termination,
+                            study_request);
             return std::nullopt;
         }
         const TerminationSettings rule = termination.resolved();

@@ -13,10 +13,11 @@ TerminationSettings TerminationFlags::resolved() const {
 }
 
 CLI::Option* add_termination_flags(CLI::App& app, TerminationFlags& flags) {
-    CLI::Option* rule = add_enum_option(app, flags.settings.rule,
-                                        "When a path stops: depth (after --max-depth bounces), throughput (when "
-                                        "max(throughput) falls below a threshold) or roulette (Russian "
-                                        "roulette, unbiased)");
+    CLI::Option* rule =
+        add_enum_option(app, flags.settings.rule,
+                        "When a path stops: depth (after --max-depth bounces), throughput (when "
+                        "max(throughput) falls below a threshold) or roulette (Russian "
+                        "roulette, unbiased)");
     app.add_option("--max-depth", flags.max_depth,
                    "Bounces after the camera ray: the depth rule's N (default 8), a hard cap for the others "
                    "(default 64)")

@@ -33,17 +33,24 @@ int main(int argc, char** argv) {
             "Estimate E = integral of L cos theta over the hemisphere with each strategy against its "
             "closed form (a quad, a sphere, the sky), independent, stratified and Sobol points");
         app.add_option("--irradiance-runs", irradiance_runs, "With --irradiance: runs per row")
-            ->check(CLI::Range(2, 100000))->check(only_with({{irradiance_flag}}));
-        CLI::Option* converge_flag =
-            app.add_flag("--converge", converge,
-                         "RMSE against spp 1..--max-spp and time for every strategy, against a cached converged "
-                         "reference: CSV, log-log plots (gnuplot) and the efficiency table");
+            ->check(CLI::Range(2, 100000))
+            ->check(only_with({{irradiance_flag}}));
+        CLI::Option* converge_flag = app.add_flag(
+            "--converge", converge,
+            "RMSE against spp 1..--max-spp and time for every strategy, against a cached converged "
+            "reference: CSV, log-log plots (gnuplot) and the efficiency table");
         const CLI::Validator with_converge = only_with({{converge_flag}});
-        app.add_option("--max-spp", converge_request.max_spp, "With --converge: the largest spp (a power of 2)")
-            ->check(CLI::Range(1, 1 << 16))->check(power_of_two())->check(with_converge);
-        app.add_option("--reference-spp", converge_request.reference_spp, "With --converge: spp of the reference")
-            ->check(CLI::Range(2, 1 << 20))->check(with_converge);
-        app.add_option("--cache", converge_request.cache, "With --converge: folder of the cached reference PFM")
+        app.add_option("--max-spp", converge_request.max_spp,
+                       "With --converge: the largest spp (a power of 2)")
+            ->check(CLI::Range(1, 1 << 16))
+            ->check(power_of_two())
+            ->check(with_converge);
+        app.add_option("--reference-spp", converge_request.reference_spp,
+                       "With --converge: spp of the reference")
+            ->check(CLI::Range(2, 1 << 20))
+            ->check(with_converge);
+        app.add_option("--cache", converge_request.cache,
+                       "With --converge: folder of the cached reference PFM")
             ->check(with_converge);
         app.add_option("--csv", converge_request.csv,
                        "With --converge: the CSV file; the plots go beside it (_spp.png, _time.png)")
@@ -58,7 +65,8 @@ int main(int argc, char** argv) {
         options.termination = termination.resolved();
         options.simulated = context.simulated;
         const RenderScene prepared(context.scene, context.simulated);
-        const PinholeCamera camera = make_pinhole_camera(context.scene.camera, settings.width, settings.height);
+        const PinholeCamera camera =
+            make_pinhole_camera(context.scene.camera, settings.width, settings.height);
         if (converge) {
             run_convergence_study(prepared, options, camera, settings, converge_request);
             return std::nullopt;

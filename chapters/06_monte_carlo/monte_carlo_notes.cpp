@@ -12,7 +12,8 @@ std::vector<std::string> monte_carlo_notes(const RenderScene& prepared, const Pa
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
                     ", sampler: " + std::string(to_string(options.sampler)) +
                     ", termination: " + std::string(to_string(options.termination.rule)));
-    for (const std::string& u : prepared.lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
+    for (const std::string& u : prepared.lights.unsampled)
+        notes.push_back("emitter not sampled as a light: " + u);
     return notes;
 }
 

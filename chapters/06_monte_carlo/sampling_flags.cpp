@@ -9,8 +9,9 @@ CLI::Option* add_sampling_flag(CLI::App& app, SamplingStrategy& strategy) {
 }
 
 CLI::Option* add_sampler_flag(CLI::App& app, PointSet& points) {
-    return add_enum_option(app, points,
-                           "Where a sample's numbers come from: independent|stratified|sobol (Owen-scrambled Sobol)");
+    return add_enum_option(
+        app, points,
+        "Where a sample's numbers come from: independent|stratified|sobol (Owen-scrambled Sobol)");
 }
 
 }  // namespace rt

@@ -27,18 +27,25 @@ int main(int argc, char** argv) {
         add_termination_flags(app, termination);
         add_sampling_flag(app, options.strategy);
         add_sampler_flag(app, options.sampler);
-        CLI::Option* fresnel_flag = app.add_flag("--fresnel-study", fresnel,
-                     "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
+        CLI::Option* fresnel_flag = app.add_flag(
+            "--fresnel-study", fresnel,
+            "Schlick against the exact Fresnel reflectance: max and mean error, ns per evaluation");
         CLI::Option* depth_flag = app.add_flag(
-            "--depth-study", depth, "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
+            "--depth-study", depth,
+            "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
         app.add_option("--csv", depth_request.csv,
                        "With --fresnel-study: write R(theta) both ways to this CSV file; with --depth-study: "
-                       "its table")->check(only_with({{fresnel_flag}, {depth_flag}}));
+                       "its table")
+            ->check(only_with({{fresnel_flag}, {depth_flag}}));
         app.add_option("--depths", depth_request.depths, "With --depth-study: the maximum depths")
-            ->check(CLI::Range(1, 1000))->check(only_with({{depth_flag}}));
-        app.add_option("--reference-spp", depth_request.reference_spp, "With --depth-study: spp of the reference")
-            ->check(CLI::Range(1, 1 << 20))->check(only_with({{depth_flag}}));
-        app.add_option("--cache", depth_request.cache, "With --depth-study: folder of the cached reference PFM")
+            ->check(CLI::Range(1, 1000))
+            ->check(only_with({{depth_flag}}));
+        app.add_option("--reference-spp", depth_request.reference_spp,
+                       "With --depth-study: spp of the reference")
+            ->check(CLI::Range(1, 1 << 20))
+            ->check(only_with({{depth_flag}}));
+        app.add_option("--cache", depth_request.cache,
+                       "With --depth-study: folder of the cached reference PFM")
             ->check(only_with({{depth_flag}}));
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {

@@ -33,21 +33,25 @@ void add_forward_flags(CLI::App& app, ForwardFlags& flags) {
     const CLI::Validator combined = only_with({{tracer_flag, {"combined"}}});
     app.add_option("--light-paths", flags.combined.light_paths_per_sample,
                    "With --tracer combined: light paths for the caustics per camera sample")
-        ->check(CLI::Range(0.0, 1024.0))->check(combined);
+        ->check(CLI::Range(0.0, 1024.0))
+        ->check(combined);
     app.add_option("--caustic-bounces", flags.combined.caustic_bounces,
                    "With --tracer combined: light paths carry the paths that meet glass or a mirror "
                    "after at most this many diffuse bounces from the camera (E D{1..K} S ...)")
-        ->check(CLI::Range(1, kSafetyDepthCap))->check(combined);
+        ->check(CLI::Range(1, kSafetyDepthCap))
+        ->check(combined);
     CLI::Option* sampler_flag = add_sampler_flag(app, flags.combined.paths.sampler);
-    sampler_flag->description("With --tracer combined: where a camera sample's numbers come from: " +
-                              joined_names<PointSet>())
+    sampler_flag
+        ->description("With --tracer combined: where a camera sample's numbers come from: " +
+                      joined_names<PointSet>())
         ->check(combined);
     CLI::Option* variant_flag =
         add_enum_option(app, flags.variant,
                         "How forward paths reach the camera: connect (every vertex to the pinhole) or "
                         "aperture (through a lens of radius --aperture)");
     app.add_option("--aperture", flags.aperture, "With --variant aperture: the lens radius, scene units")
-        ->check(CLI::PositiveNumber)->check(only_with({{variant_flag, {"aperture"}}}));
+        ->check(CLI::PositiveNumber)
+        ->check(only_with({{variant_flag, {"aperture"}}}));
     app.add_flag("--caustics-only", flags.caustics_only,
                  "Forward: only light that arrived straight from a mirror or glass (paths L...S D E)")
         ->check(only_with({{variant_flag, {"connect"}}}));
@@ -59,15 +63,19 @@ void add_forward_flags(CLI::App& app, ForwardFlags& flags) {
     const CLI::Validator with_study = only_with({{study_flag}});
     StudyOptions& study = flags.study_options;
     app.add_option("--study-size", study.size, "With --forward-study: image side in pixels")
-        ->check(CLI::Range(8, 1024))->check(with_study);
+        ->check(CLI::Range(8, 1024))
+        ->check(with_study);
     app.add_option("--study-paths", study.fraction_paths, "With --forward-study: light paths per fraction")
-        ->check(CLI::Range(1000, 1 << 30))->check(with_study);
+        ->check(CLI::Range(1000, 1 << 30))
+        ->check(with_study);
     app.add_option("--reference-spp", study.reference_spp,
                    "With --forward-study: spp of chapter 06's converged reference")
-        ->check(CLI::Range(2, 1 << 20))->check(with_study);
+        ->check(CLI::Range(2, 1 << 20))
+        ->check(with_study);
     app.add_option("--glass-reference-spp", study.glass_reference_spp,
                    "With --forward-study: spp of the mirror and glass scenes' references")
-        ->check(CLI::Range(2, 1 << 20))->check(with_study);
+        ->check(CLI::Range(2, 1 << 20))
+        ->check(with_study);
     app.add_option("--cache", study.cache,
                    "With --forward-study: folder of the converged references (chapter 06's cache files)")
         ->check(with_study);

@@ -15,8 +15,9 @@ namespace rt {
 enum class Tracer { kForward, kReverse, kCombined };
 
 constexpr auto names_of(Tracer) {
-    return enum_names<Tracer>("--tracer",
-                              {{Tracer::kForward, "forward"}, {Tracer::kReverse, "reverse"}, {Tracer::kCombined, "combined"}});
+    return enum_names<Tracer>(
+        "--tracer",
+        {{Tracer::kForward, "forward"}, {Tracer::kReverse, "reverse"}, {Tracer::kCombined, "combined"}});
 }
 
 struct ForwardFlags {

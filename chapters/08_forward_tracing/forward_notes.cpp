@@ -8,8 +8,8 @@
 namespace rt {
 namespace {
 
-std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& materials, const LightSet& lights,
-                                     bool forward) {
+std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& materials,
+                                     const LightSet& lights, bool forward) {
     std::vector<std::string> notes = materials.notes();
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < materials.size() && forward; ++i) {
@@ -48,21 +48,22 @@ std::vector<std::string> forward_notes(const RenderScene& prepared, const LightT
                   to_string(options.variant).data(), static_cast<unsigned long long>(result.render.samples),
                   reached(result.contributing_paths, result.render.samples));
     notes.push_back(line);
-    notes.push_back("rays: light-to-surface rays counted as shadow, connections to the camera as camera rays");
+    notes.push_back(
+        "rays: light-to-surface rays counted as shadow, connections to the camera as camera rays");
     return notes;
 }
 
 std::vector<std::string> reverse_notes(const Scene& scene, const EffectSet& simulated, Renderer renderer) {
-    std::vector<std::string> notes =
-        scene_notes(scene, MaterialTable(scene, simulated, refraction_materials()), collect_lights(scene), false);
+    std::vector<std::string> notes = scene_notes(
+        scene, MaterialTable(scene, simulated, refraction_materials()), collect_lights(scene), false);
     notes.push_back("tracer: reverse, chapter 07's renderer: " + std::string(to_string(renderer)));
     return notes;
 }
 
 std::vector<std::string> combined_notes(const Scene& scene, const EffectSet& simulated,
                                         const CombinedOptions& options, const CombinedResult& result) {
-    std::vector<std::string> notes =
-        scene_notes(scene, MaterialTable(scene, simulated, refraction_materials()), collect_lights(scene), false);
+    std::vector<std::string> notes = scene_notes(
+        scene, MaterialTable(scene, simulated, refraction_materials()), collect_lights(scene), false);
     const char* sampler = to_string(options.paths.sampler).data();
     char line[320];
     if (result.split) {
@@ -82,7 +83,8 @@ std::vector<std::string> combined_notes(const Scene& scene, const EffectSet& sim
                       sampler);
     }
     notes.push_back(line);
-    notes.push_back("rays: light paths' first rays counted as shadow, connections to the camera as camera rays");
+    notes.push_back(
+        "rays: light paths' first rays counted as shadow, connections to the camera as camera rays");
     return notes;
 }
 

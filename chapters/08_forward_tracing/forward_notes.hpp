@@ -1,6 +1,6 @@
 // What chapter 08's summary says about a render by each tracer: how materials are shaded, what a light path
-// cannot show (delta surfaces seen through a pinhole, the environment, point lights), the emitters not sampled
-// as lights, and what the tracer did and how its rays are counted.
+// cannot show (delta surfaces seen through a pinhole, the environment, point lights), the emitters not
+// sampled as lights, and what the tracer did and how its rays are counted.
 #pragma once
 
 #include <string>

@@ -22,7 +22,10 @@ int main(int argc, char** argv) {
         "ch08_forward_tracing",
         "Chapter 08: forward (light) tracing: paths from the lights, through an aperture or connected to the "
         "camera",
-        "ch08_default.json", kRefractionChapterEffects, {}, [&] { return forward.renders_whole_because(); }};
+        "ch08_default.json",
+        kRefractionChapterEffects,
+        {},
+        [&] { return forward.renders_whole_because(); }};
     auto flags = [&](CLI::App& app) { add_forward_flags(app, forward); };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const Scene& scene = context.scene;

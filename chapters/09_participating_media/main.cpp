@@ -23,9 +23,11 @@ int main(int argc, char** argv) {
         "next-event estimation through media, the random walk",
         "ch09_default.json", kMediaChapterEffects};
     auto flags = [&](CLI::App& app) {
-        app.add_option("--max-events", walk.max_events, "End a path after this many scattering events in media")
+        app.add_option("--max-events", walk.max_events,
+                       "End a path after this many scattering events in media")
             ->check(CLI::Range(1, 1 << 30));
-        app.add_flag("--no-medium-roulette", no_roulette, "No Russian roulette at scattering events in media");
+        app.add_flag("--no-medium-roulette", no_roulette,
+                     "No Russian roulette at scattering events in media");
         add_sampling_flag(app, options.strategy);
         add_media_study_flags(app, studies);
     };

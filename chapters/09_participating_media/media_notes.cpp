@@ -6,9 +6,9 @@ namespace rt {
 
 std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, const PathOptions& options,
                                      const MediumWalk& walk) {
-    std::vector<std::string> notes{renderer == Renderer::kDirect
-                                       ? std::string(to_string(renderer))
-                                       : "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"};
+    std::vector<std::string> notes{
+        renderer == Renderer::kDirect ? std::string(to_string(renderer))
+                                      : "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"};
     const MaterialTable materials(scene, options.simulated, media_materials());
     for (const std::string& note : materials.notes()) notes.push_back(note);
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) + ", walk: at most " +

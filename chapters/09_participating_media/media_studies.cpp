@@ -43,11 +43,12 @@ void print_knob_study(const MediaStudies& studies, const Scene& scene, const Ren
     RenderSettings reference_settings = settings;
     reference_settings.samples_per_pixel = studies.reference_spp;
     reference_settings.seed = settings.seed + 1000;
-    std::printf("reference: %d spp, no cap, %dx%d ...\n", studies.reference_spp, settings.width, settings.height);
+    std::printf("reference: %d spp, no cap, %dx%d ...\n", studies.reference_spp, settings.width,
+                settings.height);
     std::fflush(stdout);
-    const Image reference =
-        render_with_media(Renderer::kPaths, scene, options.simulated, reference_settings, options, {1 << 30, true})
-            .image;
+    const Image reference = render_with_media(Renderer::kPaths, scene, options.simulated, reference_settings,
+                                              options, {1 << 30, true})
+                                .image;
     std::printf("%10s %9s %5s %12s %13s %10s\n", "max events", "roulette", "spp", "RMSE", "mean error",
                 "time (s)");
     for (const WalkKnobRow& r : walk_knobs(scene, settings, options, reference, studies.caps)) {
@@ -63,14 +64,17 @@ void add_media_study_flags(CLI::App& app, MediaStudies& studies) {
         "--walk-study", studies.walk,
         "Walk lengths and time against the mean free path and the albedo (a sphere of radius 1)");
     app.add_option("--study-paths", studies.walk_paths, "With --walk-study: paths per row")
-        ->check(CLI::Range(1, 1 << 24))->check(only_with({{walk_flag}}));
+        ->check(CLI::Range(1, 1 << 24))
+        ->check(only_with({{walk_flag}}));
     CLI::Option* knob_flag = app.add_flag(
         "--knob-study", studies.knobs,
         "The scene's error (against an uncapped reference) and time for each --caps, roulette on and off");
     app.add_option("--caps", studies.caps, "With --knob-study: the caps on scattering events")
-        ->check(CLI::Range(1, 1 << 30))->check(only_with({{knob_flag}}));
+        ->check(CLI::Range(1, 1 << 30))
+        ->check(only_with({{knob_flag}}));
     app.add_option("--reference-spp", studies.reference_spp, "With --knob-study: spp of the reference")
-        ->check(CLI::Range(1, 1 << 20))->check(only_with({{knob_flag}}));
+        ->check(CLI::Range(1, 1 << 20))
+        ->check(only_with({{knob_flag}}));
     app.add_flag("--free-flight-study", studies.free_flight,
                  "Spectral MIS against the naive per-channel density on a chromatic medium");
 }

@@ -15,17 +15,18 @@
 int main(int argc, char** argv) {
     using namespace rt;
     DenoiseFlags denoising;
-    const ChapterInfo chapter{"ch10_denoising",
-                              "Chapter 10: denoising: feature buffers and per-pixel variance from the path "
-                              "tracer, a joint bilateral and the edge-avoiding a-trous filter, measured",
-                              "ch10_default.json",
-                              kMediaChapterEffects,
-                              {".noisy", ".albedo", ".normal"},
-                              [&] {
-                                  if (denoising.denoiser == Denoiser::kNone && !denoising.study) return "";
-                                  return "chapter 10 denoises the whole image, which a piece of it is not: "
-                                         "--samples, --resume and several MPI ranks only with --denoiser none";
-                              }};
+    const ChapterInfo chapter{
+        "ch10_denoising",
+        "Chapter 10: denoising: feature buffers and per-pixel variance from the path "
+        "tracer, a joint bilateral and the edge-avoiding a-trous filter, measured",
+        "ch10_default.json",
+        kMediaChapterEffects,
+        {".noisy", ".albedo", ".normal"},
+        [&] {
+            if (denoising.denoiser == Denoiser::kNone && !denoising.study) return "";
+            return "chapter 10 denoises the whole image, which a piece of it is not: "
+                   "--samples, --resume and several MPI ranks only with --denoiser none";
+        }};
     auto flags = [&](CLI::App& app) { add_denoise_flags(app, denoising); };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;
@@ -38,7 +39,8 @@ int main(int argc, char** argv) {
         if (settings.resume || (settings.samples && *settings.samples != all)) {
             return ChapterRun{
                 render_with_media(Renderer::kPaths, context.scene, context.simulated, settings, options),
-                {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media; a piece of the render: "
+                {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media; a piece of the "
+                 "render: "
                  "no features, not denoised"},
                 std::nullopt};
         }

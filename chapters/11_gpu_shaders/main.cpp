@@ -12,14 +12,18 @@ int main(int argc, char** argv) {
     using namespace rt;
     ShaderKind shader = ShaderKind::kCompute;
     EglPlatform egl = EglPlatform::kAuto;
-    const ChapterInfo chapter{"ch11_gpu_shaders",
-                              "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
-                              "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
-                              "ch07_default.json", EffectSet::all().without({Effect::kMedia}), {}, [] {
-                                  return "the GPU sums each pixel's samples in float, not in the exact sums a piece of "
-                                         "a render needs: it renders whole (no --samples, --resume or mpirun with "
-                                         "several ranks)";
-                              }};
+    const ChapterInfo chapter{
+        "ch11_gpu_shaders",
+        "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
+        "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
+        "ch07_default.json",
+        EffectSet::all().without({Effect::kMedia}),
+        {},
+        [] {
+            return "the GPU sums each pixel's samples in float, not in the exact sums a piece of "
+                   "a render needs: it renders whole (no --samples, --resume or mpirun with "
+                   "several ranks)";
+        }};
     auto flags = [&](CLI::App& app) {
         add_enum_option(app, shader, "Which shader traces the paths: " + joined_names<ShaderKind>());
         add_enum_option(app, egl,

@@ -19,8 +19,8 @@ CLI::Validator choices() {
 template <NamedEnum E>
 CLI::Option* add_enum_option(CLI::App& app, E& value, const std::string& help) {
     CLI::Option* option = app.add_option_function<std::string>(
-        std::string(names_of(value).flag), [&value](const std::string& name) { value = from_string<E>(name); },
-        help);
+        std::string(names_of(value).flag),
+        [&value](const std::string& name) { value = from_string<E>(name); }, help);
     return option->check(choices<E>())->default_str(std::string(to_string(value)));
 }
 

@@ -36,7 +36,9 @@ constexpr EnumNames<E, N> enum_names(std::string_view flag, const EnumName<E> (&
 
 // An enum with a names_of(E) table, found beside it by argument-dependent lookup.
 template <class E>
-concept NamedEnum = std::is_enum_v<E> && requires(E e) { names_of(e); };
+concept NamedEnum = std::is_enum_v<E> && requires(E e) {
+    names_of(e);
+};
 
 template <NamedEnum E>
 constexpr std::string_view to_string(E value) {
