@@ -27,10 +27,10 @@ Color PathTracer::unoccluded(const Ray& ray, Real t_max, RayCounts& rays) const 
 }
 
 Color PathTracer::segment_transmittance(const Hit& hit) const {
-    const Medium* inside = materials_.interior(hit.material);
-    if (!inside || hit.front_face || !materials_.bsdf(hit.material, false).flags().transmission)
+    const auto* filling = materials_.interior(hit.material);
+    if (!filling || hit.front_face || !materials_.bsdf(hit.material, false).flags().transmission)
         return Color(1);
-    return inside->transmittance(hit.t);
+    return filling->transmittance(hit.t);
 }
 
 Real PathTracer::met_weight(const PathVertex& from, Real light_pdf) const {
