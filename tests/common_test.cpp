@@ -306,17 +306,19 @@ TEST_CASE("An enum's one table of names gives to_string, parsing and its error, 
     app.option_defaults()->always_capture_default();
     Fruit fruit = Fruit::kPear;
     add_enum_option(app, fruit, "Which fruit");
-    const std::vector<std::string> none;
+    std::vector<std::string> none;
     app.parse(none);
     CHECK(fruit == Fruit::kPear);
-    const LiveKnobs knobs(app, {"--help"}, none);
+    const LiveKnobs knobs(app, {"--help"}, {});
     REQUIRE(knobs.knobs().size() == 1);
     CHECK(knobs.knobs()[0].name == "--fruit");
     CHECK(knobs.knobs()[0].choices == std::vector<std::string>{"apple", "pear", "plum"});
     CHECK(knobs.knobs()[0].value == "pear");  // the default, by its name
-    app.parse(std::vector<std::string>{"plum", "--fruit"});  // CLI11 reads the vector last first
+    std::vector<std::string> plum{"plum", "--fruit"};  // CLI11 reads the vector last first
+    app.parse(plum);
     CHECK(fruit == Fruit::kPlum);
-    CHECK_THROWS_WITH(app.parse(std::vector<std::string>{"fig", "--fruit"}), "--fruit: fig not in {apple,pear,plum}");
+    std::vector<std::string> fig{"fig", "--fruit"};
+    CHECK_THROWS_WITH(app.parse(fig), "--fruit: fig not in {apple,pear,plum}");
 }
 
 TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as the command line sets them",
