@@ -1,14 +1,10 @@
 // Chapter 01: ray generation. Renders each camera ray's direction as a colour over a sky gradient, split by
 // a straight edge; `--aa-study` measures what anti-aliasing costs against the edge's exact coverage.
-#include <cstdio>
-#include <fstream>
-
 #include "camera.hpp"
 #include "edge_coverage.hpp"
 #include "ray_generation_render.hpp"
 #include "rt/app.hpp"
 #include "rt/enum_flag.hpp"
-#include "rt/image_io.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
@@ -40,24 +36,7 @@ int main(int argc, char** argv) {
             }
             return run;
         }
-        if (!csv.empty()) check_writable("--csv", csv);
-        const auto rows = antialiasing_study(camera, edge, settings, {1, 4, 16, 64, 256});
-        std::printf(
-            "anti-aliasing on a straight edge, %dx%d, %d threads: RMSE of pixel coverage over the edge\n",
-            settings.width, settings.height, settings.threads);
-        std::printf("%-11s %5s %12s %10s\n", "sampler", "spp", "edge RMSE", "time (s)");
-        std::ofstream out;
-        if (!csv.empty()) {
-            out.open(csv);
-            out << "sampler,spp,edge_rmse,seconds\n";
-        }
-        for (const auto& row : rows) {
-            std::printf("%-11s %5d %12.5f %10.4f\n", to_string(row.sampler).data(), row.spp, row.edge_rmse,
-                        row.seconds);
-            if (out)
-                out << to_string(row.sampler) << ',' << row.spp << ',' << row.edge_rmse << ',' << row.seconds
-                    << '\n';
-        }
+        run_antialiasing_study(camera, edge, settings, csv);
         return std::nullopt;
     };
     return run_chapter(argc, argv, chapter, flags, render);

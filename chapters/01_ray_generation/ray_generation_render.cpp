@@ -1,9 +1,12 @@
 #include "ray_generation_render.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
 #include "camera_render.hpp"
 #include "direction_shading.hpp"
+#include "rt/image_io.hpp"
 
 namespace rt {
 namespace {
@@ -57,6 +60,28 @@ std::vector<AntialiasingRow> antialiasing_study(const PinholeCamera& camera, con
         }
     }
     return rows;
+}
+
+void run_antialiasing_study(const PinholeCamera& camera, const FilmEdge& edge, const RenderSettings& settings,
+                            const std::string& csv) {
+    if (!csv.empty()) check_writable("--csv", csv);
+    const auto rows = antialiasing_study(camera, edge, settings, {1, 4, 16, 64, 256});
+    std::printf("anti-aliasing on a straight edge, %dx%d, %d threads: RMSE of pixel coverage over the edge\n",
+                settings.width, settings.height, settings.threads);
+    std::printf("%-11s %5s %12s %10s\n", "sampler", "spp", "edge RMSE", "time (s)");
+    std::ofstream out;
+    if (!csv.empty()) {
+        out.open(csv);
+        out << "sampler,spp,edge_rmse,seconds\n";
+    }
+    for (const AntialiasingRow& row : rows) {
+        std::printf("%-11s %5d %12.5f %10.4f\n", to_string(row.sampler).data(), row.spp, row.edge_rmse,
+                    row.seconds);
+        if (out) {
+            out << to_string(row.sampler) << ',' << row.spp << ',' << row.edge_rmse << ',' << row.seconds
+                << '\n';
+        }
+    }
 }
 
 }  // namespace rt

@@ -1,7 +1,8 @@
 // Chapter 01's two renders: the picture (ray directions over the sky, split by the edge) and the coverage
-// image of the edge, whose exact value is known, for measuring anti-aliasing.
+// image of the edge, whose exact value is known, for measuring anti-aliasing (the study and its table).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "camera.hpp"
@@ -33,5 +34,10 @@ struct AntialiasingRow {
 // Every sampler at each sample count, timed, against the exact coverage.
 std::vector<AntialiasingRow> antialiasing_study(const PinholeCamera& camera, const FilmEdge& edge,
                                                 RenderSettings settings, const std::vector<int>& spp_values);
+
+// `--aa-study` as the executable runs it: the CSV file probed, the study at 1, 4, 16, 64 and 256 spp, its
+// table on stdout and, when `csv` is not empty, as CSV there.
+void run_antialiasing_study(const PinholeCamera& camera, const FilmEdge& edge, const RenderSettings& settings,
+                            const std::string& csv);
 
 }  // namespace rt
