@@ -399,7 +399,7 @@ if have 07_bsdf_refraction ch07_bsdf_refraction; then
         --cache "$cache" --csv ch07_depth.csv > ch07_depth.txt)
     (cd "$out" && "$(exe 07_bsdf_refraction ch07_bsdf_refraction)" --quiet --width 200 --height 200 --out ch07.png > /dev/null)
     (cd "$out" && "$(exe 07_bsdf_refraction ch07_bsdf_refraction)" --quiet --scene "$cornell" --width $side \
-        --height $side --spp $spp --max-depth 2 --out ch07_depth2.png > /dev/null)
+        --height $side --spp $spp --termination depth --max-depth 2 --out ch07_depth2.png > /dev/null)
     plot ch07_depth "set logscale x 2; set logscale y; set xlabel 'maximum depth'; set ylabel 'error';
         set y2label 'seconds'; set y2tics; set ytics nomirror; set key top center;
         set title 'Glass needs depth: error against a converged reference, and time ($spp spp, ${side}x$side)';
