@@ -1,9 +1,5 @@
 #include "path_tracer.hpp"
 
-#include <cmath>
-
-#include "warp_pdfs.hpp"
-
 namespace rt {
 
 PathTracer::PathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,

@@ -11,6 +11,7 @@
 // BSDF-sampled continuation and Russian roulette.
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "01_ray_generation/camera.hpp"
