@@ -250,7 +250,7 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
           "[ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone][ex:ch05.termination]"
           "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
-          "[ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     int scenes = 0;
     for (const auto& entry : std::filesystem::directory_iterator(assets_dir() / "scenes")) {
         if (entry.path().extension() != ".json") continue;
@@ -269,7 +269,8 @@ TEST_CASE("400 random scenes render the same, within noise, with needed ∩ supp
           "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
           "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
           "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]") {
+          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+          "[ex:ch09.volume_vertex]") {
     int compared = 0;
     for (std::uint64_t i = 0; i < 400; ++i) {
         const std::string text = SceneDraw(i).text();

@@ -1,9 +1,5 @@
 #include "path_tracer.hpp"
 
-#include <cmath>
-
-#include "warp_pdfs.hpp"
-
 namespace rt {
 
 PathTracer::PathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
@@ -27,9 +23,9 @@ Color PathTracer::unoccluded(const Ray& ray, Real t_max, RayCounts& rays) const 
 }
 
 Color PathTracer::segment_transmittance(const Hit& hit) const {
+    if (hit.front_face) return Color(1);
     const auto* filling = materials_.interior(hit.material);
-    if (!filling || hit.front_face || !materials_.bsdf(hit.material, false).flags().transmission)
-        return Color(1);
+    if (!filling || !materials_.bsdf(hit.material, false).flags().transmission) return Color(1);
     return filling->transmittance(hit.t);
 }
 
@@ -41,28 +37,6 @@ Real PathTracer::met_weight(const PathVertex& from, Real light_pdf) const {
 Real PathTracer::emitter_weight(const PathVertex& from, const Ray& ray, const Hit& hit) const {
     if (from.specular || !nee_ || hit.light < 0) return 1;
     return met_weight(from, picker_.pdf(from.point, ray.direction, hit));
-}
-
-std::optional<Continuation> PathTracer::continuation(const Hit& hit, const Vec3& wo, const Bsdf& bsdf,
-                                                     SampleStream rng) const {
-    const BsdfFlags& flags = bsdf.flags();
-    const Vec3& n = hit.normal;
-    Continuation c;
-    BsdfSample& s = c.sample;
-    const Vec2 u = rng.next_vec2();
-    if (flags.delta || options_.strategy == SamplingStrategy::kBrdf || nee_) {
-        // A BSDF with two lobes (reflection and transmission) takes one more number to choose between them.
-        s = bsdf.sample(wo, n, u, flags.transmission ? rng.next_real() : Real(0));
-    } else {
-        const bool uniform = options_.strategy == SamplingStrategy::kUniform;
-        const Vec3 local = uniform ? sample_uniform_hemisphere(u) : sample_cosine_hemisphere(u);
-        s.wi = glm::normalize(make_frame(n).to_world(local));
-        s.pdf = uniform ? uniform_hemisphere_pdf(local) : cosine_hemisphere_pdf(local.z);
-        s.f = bsdf.eval(wo, s.wi, n);
-    }
-    c.cos_i = scattering_cosine(s.wi, n, s.transmitted);
-    if (!(c.cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) return std::nullopt;
-    return c;
 }
 
 Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,

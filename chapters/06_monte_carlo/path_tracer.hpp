@@ -11,6 +11,7 @@
 // BSDF-sampled continuation and Russian roulette.
 #pragma once
 
+#include <cmath>
 #include <optional>
 
 #include "01_ray_generation/camera.hpp"
@@ -125,6 +126,29 @@ class PathTracer {
     PathOptions options_;
     bool direct_, indirect_, nee_, mis_;
 };
+
+// Inline: it runs at every vertex, and the loops that call it keep its sample in registers.
+inline std::optional<Continuation> PathTracer::continuation(const Hit& hit, const Vec3& wo, const Bsdf& bsdf,
+                                                            SampleStream rng) const {
+    const BsdfFlags& flags = bsdf.flags();
+    const Vec3& n = hit.normal;
+    Continuation c;
+    BsdfSample& s = c.sample;
+    const Vec2 u = rng.next_vec2();
+    if (flags.delta || options_.strategy == SamplingStrategy::kBrdf || nee_) {
+        // A BSDF with two lobes (reflection and transmission) takes one more number to choose between them.
+        s = bsdf.sample(wo, n, u, flags.transmission ? rng.next_real() : Real(0));
+    } else {
+        const bool uniform = options_.strategy == SamplingStrategy::kUniform;
+        const Vec3 local = uniform ? sample_uniform_hemisphere(u) : sample_cosine_hemisphere(u);
+        s.wi = glm::normalize(make_frame(n).to_world(local));
+        s.pdf = uniform ? uniform_hemisphere_pdf(local) : cosine_hemisphere_pdf(local.z);
+        s.f = bsdf.eval(wo, s.wi, n);
+    }
+    c.cos_i = scattering_cosine(s.wi, n, s.transmitted);
+    if (!(c.cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) return std::nullopt;
+    return c;
+}
 
 template <class Seen>
 Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng,

@@ -1,4 +1,4 @@
-// Chapter 09: participating media and subsurface scattering. Chapter 06's path loop made volumetric: free
+// Chapter 09: participating media and subsurface scattering, by its own volumetric path loop: free
 // flights through homogeneous media (spectral MIS for chromatic ones), the Henyey–Greenstein phase function,
 // next-event estimation through media, and the random walk inside a dielectric's medium (subsurface
 // scattering). `--walk-study` measures walk lengths against the mean free path and the albedo,

@@ -1,6 +1,5 @@
 #include "volume_path_tracer.hpp"
 
-#include <algorithm>
 #include <limits>
 
 #include "01_ray_generation/camera.hpp"
@@ -12,8 +11,9 @@ namespace rt {
 namespace {
 
 // A walk's Russian roulette: chapter 05's rule from its first event, under no depth cap.
-constexpr TerminationSettings kWalkRoulette{Termination::kRussianRoulette, std::numeric_limits<int>::max(), 0,
-                                            0};
+constexpr TerminationSettings kWalkRoulette{.rule = Termination::kRussianRoulette,
+                                            .max_depth = std::numeric_limits<int>::max(),
+                                            .roulette_start_depth = 0};
 
 }  // namespace
 
