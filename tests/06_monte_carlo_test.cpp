@@ -773,3 +773,42 @@ TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
     for (SamplingStrategy s : kAllStrategies) CHECK(from_string<SamplingStrategy>(to_string(s)) == s);
     CHECK_THROWS_AS(from_string<SamplingStrategy>("importance"), InputError);
 }
+
+TEST_CASE("Roulette judges beta with the samples' radiance scale divided out: a path through glass is not "
+          "made rarer and brighter, and either way the estimate stays unbiased",
+          "[roulette][ex:ch05.termination]") {
+    // Roulette reads no scene: an empty one, under chapter 06's default rule (from bounce 3).
+    const RenderScene prepared(Scene{}, EffectSet::all());
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, PathOptions{});
+    // A path of throughput 0.9 enters glass of η = 1.5: refraction scales its radiance by 1/η², so β is 0.4
+    // inside, and the η-scale the loop carries is η² = 2.25 (it leaves with β × η² again).
+    const Real eta2 = Real(2.25), inside = Real(0.9) / eta2;
+    // Judged as it will leave, it goes on with q = 0.9, at β / q; judged on β itself (the naive rule) with
+    // q = 0.4, and its survivors leave 1 / 0.4 times brighter than they came in.
+    int robust_survived = 0, naive_survived = 0;
+    double robust_sum = 0, naive_sum = 0;
+    Real robust_leaving = 0, naive_leaving = 0;  // the brightest survivor's β × η² once out of the glass
+    const int n = 200000;
+    for (int i = 0; i < n; ++i) {
+        Pcg32 a = Pcg32::for_sample(0, std::uint64_t(i), 7), b = a;
+        Color beta_robust(inside), beta_naive(inside);
+        if (tracer.roulette(5, beta_robust, eta2, a)) {
+            ++robust_survived;
+            robust_sum += double(beta_robust.g);
+            robust_leaving = std::max(robust_leaving, beta_robust.g * eta2);
+        }
+        if (tracer.roulette(5, beta_naive, 1, b)) {
+            ++naive_survived;
+            naive_sum += double(beta_naive.g);
+            naive_leaving = std::max(naive_leaving, beta_naive.g * eta2);
+        }
+    }
+    // A survivor leaves the glass with β η² = 0.9 / q: 1 judged as it will leave, 2.25 judged on β inside.
+    CHECK(robust_leaving == Approx(1.0));
+    CHECK(naive_leaving == Approx(2.25));
+    // Survival: 0.9 judged as it will leave, 0.4 judged on β inside; both unbiased: E[β'] = β.
+    CHECK(double(robust_survived) / n == Approx(0.9).margin(5 * std::sqrt(0.9 * 0.1 / n)));
+    CHECK(double(naive_survived) / n == Approx(0.4).margin(5 * std::sqrt(0.4 * 0.6 / n)));
+    CHECK(robust_sum / n == Approx(double(inside)).margin(5 * double(inside) * std::sqrt((1 / 0.9 - 1) / n)));
+    CHECK(naive_sum / n == Approx(double(inside)).margin(5 * double(inside) * std::sqrt((1 / 0.4 - 1) / n)));
+}
