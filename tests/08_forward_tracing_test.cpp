@@ -767,13 +767,14 @@ TEST_CASE("The light tracer reports its image after each wave of paths, and the 
     std::vector<std::uint64_t> samples;
     std::vector<std::uint32_t> fewest;
     Image last;
-    settings.after_pass = [&](const PassReport& pass) {
+    AfterEachPass watch([&](const PassReport& pass) {
         samples.push_back(pass.samples);
         fewest.push_back(pass.fewest_samples);
         CHECK(pass.samples_held == pass.samples);
         CHECK(pass.rays[RayKind::kCamera] == pass.samples);
         last = pass.image;
-    };
+    });
+    settings.observer = &watch;
     const SplatResult r = render_light_paths(settings, 20 * chunk, trace);
     CHECK(samples == std::vector<std::uint64_t>{8 * chunk, 16 * chunk, 20 * chunk});
     const auto per_pixel = [&](std::uint64_t paths) { return std::uint32_t(paths / pixels); };

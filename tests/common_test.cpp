@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -235,7 +236,7 @@ TEST_CASE("An interrupt after the first pass leaves every pixel the mean of whol
     CHECK(r.samples == std::uint64_t(first_pass));
 }
 
-TEST_CASE("The after-pass hook sees every pass's sums, and the image is the same with it", "[render][live]") {
+TEST_CASE("The observer sees every pass's sums, and the image is the same with it", "[render][live]") {
     auto sample = [](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
         rays.add(RayKind::kCamera);
         return Color(rng.next_real(), Real(s.index), 1);
@@ -246,13 +247,14 @@ TEST_CASE("The after-pass hook sees every pass's sums, and the image is the same
     std::vector<std::uint32_t> counts;
     std::vector<std::uint64_t> samples, camera_rays;
     Image last;
-    settings.after_pass = [&](const PassReport& pass) {
+    AfterEachPass watch([&](const PassReport& pass) {
         counts.push_back(pass.fewest_samples);
         samples.push_back(pass.samples);
         CHECK(pass.samples_held == pass.samples);
         camera_rays.push_back(pass.rays[RayKind::kCamera]);
         last = pass.image;
-    };
+    });
+    settings.observer = &watch;
     const RenderResult with = render(settings, sample);
     CHECK(counts == std::vector<std::uint32_t>{1, 4, 7, 10, 13, 16, 17});
     const std::uint64_t pixels = 20 * 18;
@@ -263,6 +265,55 @@ TEST_CASE("The after-pass hook sees every pass's sums, and the image is the same
         REQUIRE(with.image.pixels()[i] == without.image.pixels()[i]);
         REQUIRE(last.pixels()[i] == with.image.pixels()[i]);
     }
+}
+
+// Records what the loop measures of each pixel, as the app's heat maps do.
+class CostRecorder final : public RenderObserver {
+public:
+    CostRecorder(int width, bool measures) : width_(width), measures_(measures), cost_(std::size_t(width * width)) {}
+    bool measures_cost() const override { return measures_; }
+    void add_cost(int x, int y, const PixelCost& cost) override {
+        PixelCost& sum = cost_[std::size_t(y * width_ + x)];
+        sum.rays += cost.rays;
+        sum.bounces += cost.bounces;
+        sum.samples += cost.samples;
+        ++calls_;
+    }
+    const std::vector<PixelCost>& cost() const { return cost_; }
+    int calls() const { return calls_; }
+
+private:
+    int width_;
+    bool measures_;
+    std::vector<PixelCost> cost_;
+    std::atomic<int> calls_{0};
+};
+
+TEST_CASE("The observer is told each pixel's rays, bounces and samples, only when it measures them",
+          "[render][heat]") {
+    // Pixel (x, y) takes 1 + x camera rays and y indirect ones (its bounces) per sample.
+    auto sample = [](const PixelSample& s, Pcg32&, RayCounts& rays) {
+        rays.add(RayKind::kCamera, std::uint64_t(1 + s.x));
+        rays.add(RayKind::kIndirect, std::uint64_t(s.y));
+        return Color(1);
+    };
+    const int size = 20, spp = 9;
+    RenderSettings settings{size, size, spp, 1, 2, ProgressStyle::kNone};
+    CostRecorder measured(size, true);
+    settings.observer = &measured;
+    render(settings, sample);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const PixelCost& c = measured.cost()[std::size_t(y * size + x)];
+            REQUIRE(c.samples == std::uint64_t(spp));
+            REQUIRE(c.rays == std::uint64_t(spp * (1 + x + y)));
+            REQUIRE(c.bounces == std::uint64_t(spp * y));
+        }
+    }
+    CostRecorder unmeasured(size, false);
+    settings.observer = &unmeasured;
+    render(settings, sample);
+    CHECK(unmeasured.calls() == 0);
 }
 
 TEST_CASE("A restart of the live view stops the render as an interrupt does, and is no signal", "[render][live]") {

@@ -39,7 +39,7 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
     // would otherwise share their numbers). The live view follows the camera's passes only.
     RenderSettings light_settings = settings;
     light_settings.seed = settings.seed ^ 0x9e3779b97f4a7c15ULL;
-    light_settings.after_pass = nullptr;
+    light_settings.observer = nullptr;
     const auto light_paths = std::uint64_t(
         std::llround(double(options.light_paths_per_sample) * double(paths_per_image(settings))));
     r.render = r.paths;

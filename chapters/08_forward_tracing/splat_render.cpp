@@ -113,10 +113,10 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
             traced += std::min(path_count, (wave + c + 1) * chunk) - (wave + c) * chunk;
         }
         if (interrupted) break;
-        if (settings.after_pass && !interrupt_requested()) {
+        if (settings.observer && !interrupt_requested()) {
             const Image image = image_so_far();
-            settings.after_pass(PassReport{image, std::uint32_t(traced / pixels), traced, rays_so_far(), traced,
-                                           seconds_since(start)});
+            settings.observer->after_pass(PassReport{image, std::uint32_t(traced / pixels), traced,
+                                                     rays_so_far(), traced, seconds_since(start)});
         }
     }
 

@@ -257,10 +257,11 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
         }
         samples_kept += pass_taken;
         samples_per_pixel = end;
-        if (settings.after_pass && !interrupt_requested()) {
+        if (settings.observer && !interrupt_requested()) {
             const Image image = read_image();
-            settings.after_pass(PassReport{image, std::uint32_t(end), samples_kept, result.rays, samples_kept,
-                                           std::chrono::duration<double>(Clock::now() - start).count()});
+            settings.observer->after_pass(
+                PassReport{image, std::uint32_t(end), samples_kept, result.rays, samples_kept,
+                           std::chrono::duration<double>(Clock::now() - start).count()});
         }
     }
     progress.clear();

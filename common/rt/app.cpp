@@ -121,21 +121,30 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     std::printf("  wrote %s\n", written.c_str());
 }
 
-int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
-        const ChapterRender& render, const MpiSession& mpi) {
-    // From the start: a signal during the checks makes the render stop at once (nothing written), and a
-    // second one removes any staging file of the output probes.
-    install_interrupt_handler();
-    CLI::App app(chapter.description, chapter.executable);
-    app.option_defaults()->always_capture_default();  // --help shows each flag's default value
-    CoreOptions options;
-    add_core_flags(app, options, chapter);
+// The command line as read: the core flags, the split's, the live view's (the chapter's own stay in the
+// CLI::App).
+struct RunFlags {
+    CoreOptions core;
     SplitOptions split;
-    add_split_flags(app, split);
     LiveOptions live;
-    add_live_flags(app, live);
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
-    for (const CLI::Option* option : app.get_options()) core_flags.insert(option->get_name());
+};
+
+// What --reference gave: a PFM's radiance, or a PNG's picture.
+struct Reference {
+    std::optional<Image> image;
+    std::optional<Picture> picture;
+};
+
+// Adds every flag to `app` and reads the command line into `flags` and the chapter's own options. Returns
+// the exit status when the command line asked for help instead of a run.
+std::optional<int> read_command_line(CLI::App& app, RunFlags& flags, const ChapterInfo& chapter,
+                                     const ChapterFlags& add_flags, int argc, char** argv) {
+    app.option_defaults()->always_capture_default();  // --help shows each flag's default value
+    add_core_flags(app, flags.core, chapter);
+    add_split_flags(app, flags.split);
+    add_live_flags(app, flags.live);
+    for (const CLI::Option* option : app.get_options()) flags.core_flags.insert(option->get_name());
     if (add_flags) add_flags(app);
     make_values_strict(app);
     try {
@@ -147,10 +156,18 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     } catch (const CLI::ParseError& e) {
         throw InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
-    if (live.live) {
-        // The live view renders whole, in one process, and writes nothing (live_view.hpp).
-        const std::pair<const char*, bool> not_with[] = {{"--out", !options.out.empty()},
-                                                         {"--heat", !options.heat.empty()},
+    return std::nullopt;
+}
+
+// Refuses flags that cannot go together: the live view (which renders whole, in one process, and writes
+// nothing: live_view.hpp) with files or a split, --port without it, and a split of a render that renders
+// whole.
+void check_flag_combinations(CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter,
+                             const MpiSession& mpi) {
+    const SplitOptions& split = flags.split;
+    if (flags.live.live) {
+        const std::pair<const char*, bool> not_with[] = {{"--out", !flags.core.out.empty()},
+                                                         {"--heat", !flags.core.heat.empty()},
                                                          {"--samples", !split.samples.empty()},
                                                          {"--resume", !split.resume.empty()},
                                                          {"mpirun with several ranks", mpi.size() > 1}};
@@ -170,10 +187,11 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                                               : "mpirun with " + std::to_string(mpi.size()) + " ranks";
         throw InputError(split_by + ": " + renders_whole);
     }
+}
 
-    const fs::path scene_file =
-        options.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(options.scene);
-    const Scene scene = load_scene(scene_file);
+// The size, samples, seed and threads of the render: a flag overrides the scene's image. The size is checked
+// (check_image_size), naming whichever of the flags and the scene gave each side.
+RenderSettings render_settings(const CoreOptions& options, const Scene& scene, const MpiSession& mpi) {
     RenderSettings settings;
     settings.width = options.width.value_or(scene.image.width);
     settings.height = options.height.value_or(scene.image.height);
@@ -185,7 +203,6 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
             ? options.threads
             : std::max(1, int(std::thread::hardware_concurrency()) / mpi.ranks_on_this_machine());
     settings.progress = options.quiet || !mpi.is_root() ? ProgressStyle::kNone : ProgressStyle::kAuto;
-    // The size that will be rendered, whichever of the flags and the scene gave each side.
     try {
         check_image_size(settings.width, settings.height);
     } catch (const InputError& e) {
@@ -196,7 +213,11 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
                                                                    : from_scene;
         throw InputError(source + ": " + e.what());
     }
+    return settings;
+}
 
+// The image the run writes: --out, or <executable>.png in the current folder; a name ending in .png.
+fs::path output_png(const CoreOptions& options, const ChapterInfo& chapter) {
     const fs::path png =
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
     const std::string png_name = png.filename().string();
@@ -204,120 +225,145 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         throw InputError("--out: must name a file ending in .png, with a name before the .png, got " +
                          shown(png));
     }
-    const fs::path partial_png = with_suffix(png, ".partial", ".png");
+    return png;
+}
+
+// Every file this run may write, finished or partial, is one of its own and no input, and is probed before
+// the render starts: its staging file is created and removed (staged_file.hpp). (x.film only when the run
+// writes one: a piece of a render, or a resumed one.)
+void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter, const fs::path& png,
+                   const fs::path& scene_file) {
+    const CoreOptions& options = flags.core;
+    const SplitOptions& split = flags.split;
     if (!options.heat.empty() && fs::path(options.heat).extension() != ".png")
         throw InputError("--heat: must end in .png, got " + shown(options.heat));
-    if (!live.live) {  // the live view writes nothing
-        // Every file this run may write, finished or partial, is one of its own and no input, and is probed
-        // before the render starts: its staging file is created and removed (staged_file.hpp).
-        // (x.film only when the run writes one: a piece of a render, or a resumed one.)
-        std::vector<RunFile> outputs =
-            image_outputs(png, !split.samples.empty() || !split.resume.empty(), chapter.extra_images);
-        if (!options.heat.empty()) outputs.push_back({"--heat", "the heat maps", options.heat});
-        if (const CLI::Option* csv = app.get_option_no_throw("--csv"); csv && csv->count() > 0)
-            outputs.push_back({"--csv", "the table", csv->as<std::string>()});
-        std::vector<RunFile> inputs{{"--scene", "the scene", scene_file}};
-        if (!options.reference.empty()) inputs.push_back({"--reference", "the reference", options.reference});
-        // The film --resume continues may be replaced by this run's own film, which holds all of its samples.
-        const bool resume_replaced_by_film =
-            std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
-                return !split.resume.empty() && f.path.extension() == ".film" &&
-                       same_file(f.path, split.resume);
-            });
-        if (!split.resume.empty() && !resume_replaced_by_film)
-            inputs.push_back({"--resume", "the film to resume", split.resume});
-        check_outputs(outputs, inputs);
-    }
-    std::optional<Image> reference;
-    std::optional<Picture> reference_picture;  // a PNG reference
-    if (!options.reference.empty()) {
-        const fs::path reference_file = options.reference;
-        const bool png_reference = reference_file.extension() == ".png";
-        int width = 0, height = 0;
-        try {
-            if (png_reference) {
-                reference_picture = read_png(reference_file);
-                width = reference_picture->width;
-                height = reference_picture->height;
-            } else {
-                reference = read_pfm(reference_file, PfmPixels::kRadiance);
-                width = reference->width();
-                height = reference->height();
-            }
-        } catch (const InputError& e) {
-            throw InputError(std::string("--reference: ") + e.what());
-        }
-        if (width != settings.width || height != settings.height) {
-            throw InputError("--reference: " + shown(reference_file) + ": must be the size of the image, " +
-                             std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                             ", got " + std::to_string(width) + "x" + std::to_string(height));
-        }
-    }
+    std::vector<RunFile> outputs =
+        image_outputs(png, !split.samples.empty() || !split.resume.empty(), chapter.extra_images);
+    if (!options.heat.empty()) outputs.push_back({"--heat", "the heat maps", options.heat});
+    if (const CLI::Option* csv = app.get_option_no_throw("--csv"); csv && csv->count() > 0)
+        outputs.push_back({"--csv", "the table", csv->as<std::string>()});
+    std::vector<RunFile> inputs{{"--scene", "the scene", scene_file}};
+    if (!options.reference.empty()) inputs.push_back({"--reference", "the reference", options.reference});
+    // The film --resume continues may be replaced by this run's own film, which holds all of its samples.
+    const bool resume_replaced_by_film = std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
+        return !split.resume.empty() && f.path.extension() == ".film" && same_file(f.path, split.resume);
+    });
+    if (!split.resume.empty() && !resume_replaced_by_film)
+        inputs.push_back({"--resume", "the film to resume", split.resume});
+    check_outputs(outputs, inputs);
+}
 
-    const FilmIdentity identity{chapter.executable,
-                                scene_file.filename().string(),
-                                scene_fingerprint(scene, scene_file),
-                                chapter_flags_text(app, core_flags),
-                                settings.width,
-                                settings.height,
-                                settings.samples_per_pixel,
-                                settings.seed};
-    const SplitPlan plan = plan_split(split, identity, mpi, settings);
+// --reference: a PFM (radiance) or a PNG (a picture), of the image's size.
+Reference read_reference(const fs::path& file, const RenderSettings& settings) {
+    Reference reference;
+    if (file.empty()) return reference;
+    int width = 0, height = 0;
+    try {
+        if (file.extension() == ".png") {
+            reference.picture = read_png(file);
+            width = reference.picture->width;
+            height = reference.picture->height;
+        } else {
+            reference.image = read_pfm(file, PfmPixels::kRadiance);
+            width = reference.image->width();
+            height = reference.image->height();
+        }
+    } catch (const InputError& e) {
+        throw InputError(std::string("--reference: ") + e.what());
+    }
+    if (width != settings.width || height != settings.height) {
+        throw InputError("--reference: " + shown(file) + ": must be the size of the image, " +
+                         std::to_string(settings.width) + "x" + std::to_string(settings.height) + ", got " +
+                         std::to_string(width) + "x" + std::to_string(height));
+    }
+    return reference;
+}
 
-    std::vector<PixelHeat> heat;
-    if (!options.heat.empty()) {
-        heat.resize(std::size_t(settings.width) * std::size_t(settings.height));
-        settings.heat = heat.data();
-    }
-    const EffectSet needed_effects = needed(scene);
-    if (live.live) {
-        LiveKnobs knobs(app, core_flags, std::vector<std::string>(argv + 1, argv + argc));
-        return run_live(LiveRun{chapter, scene, settings, needed_effects, render, knobs, reference}, live.port);
-    }
-    const RunContext context{scene, settings, simulated_effects(scene, chapter.supported)};
-    std::optional<ChapterRun> result = render(context);
-    set_interrupt_phase(InterruptPhase::kWriting);
-    if (!result) return signal_received() ? interrupted_exit_status() : kExitOk;
-    mpi.gather(result->result);
-    if (!mpi.is_root()) return result->result.interrupted ? interrupted_exit_status() : kExitOk;
+// What a film of this run records to be told apart from other renders' (render_identity.hpp).
+FilmIdentity film_identity(const CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter,
+                           const Scene& scene, const fs::path& scene_file, const RenderSettings& settings) {
+    return FilmIdentity{chapter.executable,         scene_file.filename().string(),
+                        scene_fingerprint(scene, scene_file), chapter_flags_text(app, flags.core_flags),
+                        settings.width,             settings.height,
+                        settings.samples_per_pixel, settings.seed};
+}
+
+// The rendered run, on rank 0 (every rank's samples gathered): its files (PNG, PFM, film, further images,
+// heat maps), staged and renamed together, then the summary. Returns the exit status.
+int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, const RunContext& context,
+                            const SplitPlan& plan, const MpiSession& mpi, const Reference& reference,
+                            const HeatMaps* heat_maps, const fs::path& png, ChapterRun& run) {
     if (plan.writes_film) {
-        result->notes.push_back("samples " + to_string(plan.whole) + " of the " +
-                                std::to_string(settings.samples_per_pixel) + "-sample render" +
-                                (plan.resumed ? ", resumed from " + shown(split.resume) : std::string()));
+        run.notes.push_back("samples " + to_string(plan.whole) + " of the " +
+                            std::to_string(context.settings.samples_per_pixel) + "-sample render" +
+                            (plan.resumed ? ", resumed from " + shown(flags.split.resume) : std::string()));
     }
     if (mpi.size() > 1) {
-        result->notes.push_back("split among " + std::to_string(mpi.size()) + " MPI ranks, samples " +
-                                to_string(plan.whole) + " (rays and samples are every rank's)");
+        run.notes.push_back("split among " + std::to_string(mpi.size()) + " MPI ranks, samples " +
+                            to_string(plan.whole) + " (rays and samples are every rank's)");
     }
-
-    const RenderResult& r = result->result;
+    const RenderResult& r = run.result;
     if (r.interrupted && r.samples == 0) {
         std::fprintf(stderr, "%s: interrupted before any sample was taken; nothing written\n",
                      chapter.executable);
         return interrupted_exit_status();
     }
     check_finite(r.image);
-    const fs::path png_out = r.interrupted ? partial_png : png;
+    const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
     const std::optional<Film> film = film_of(plan, r, mpi);
-    if (result->extra_images.size() != 0 && result->extra_images.size() != chapter.extra_images.size())
+    if (run.extra_images.size() != 0 && run.extra_images.size() != chapter.extra_images.size())
         throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
-    for (std::size_t i = 0; i < result->extra_images.size(); ++i) {
-        if (result->extra_images[i].suffix != chapter.extra_images[i])
+    for (std::size_t i = 0; i < run.extra_images.size(); ++i) {
+        if (run.extra_images[i].suffix != chapter.extra_images[i])
             throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
     }
-    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr, result->extra_images);
+    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr, run.extra_images);
+    if (heat_maps)
+        run.notes.push_back(heat_maps->write(flags.core.heat) + (mpi.size() > 1 ? " (this rank's samples)" : ""));
     // The summary speaks of every rank's samples, not rank 0's share.
-    RenderSettings all_ranks = settings;
+    RenderSettings all_ranks = context.settings;
     all_ranks.samples = plan.whole;
-    if (!heat.empty()) {
-        result->notes.push_back(write_heat_maps(heat, settings.width, settings.height, options.heat) +
-                                (mpi.size() > 1 ? " (this rank's samples)" : ""));
-    }
-    print_summary(chapter, RunContext{scene, all_ranks, context.simulated}, needed_effects, *result,
-                  reference, reference_picture, written);
+    print_summary(chapter, RunContext{context.scene, all_ranks, context.simulated}, needed(context.scene), run,
+                  reference.image, reference.picture, written);
     if (r.interrupted) return interrupted_exit_status();
     // A signal that came once the render was done: the complete image was written all the same.
     return status_after_writing(chapter.executable, "the complete image");
+}
+
+int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
+        const ChapterRender& render, const MpiSession& mpi) {
+    // From the start: a signal during the checks makes the render stop at once (nothing written), and a
+    // second one removes any staging file of the output probes.
+    install_interrupt_handler();
+    CLI::App app(chapter.description, chapter.executable);
+    RunFlags flags;
+    if (const std::optional<int> help = read_command_line(app, flags, chapter, add_flags, argc, argv))
+        return *help;
+    check_flag_combinations(app, flags, chapter, mpi);
+    const fs::path scene_file =
+        flags.core.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(flags.core.scene);
+    const Scene scene = load_scene(scene_file);
+    RenderSettings settings = render_settings(flags.core, scene, mpi);
+    const fs::path png = output_png(flags.core, chapter);
+    if (!flags.live.live) probe_outputs(app, flags, chapter, png, scene_file);
+    const Reference reference = read_reference(flags.core.reference, settings);
+    const SplitPlan plan =
+        plan_split(flags.split, film_identity(app, flags, chapter, scene, scene_file, settings), mpi, settings);
+    if (flags.live.live) {
+        LiveKnobs knobs(app, flags.core_flags, std::vector<std::string>(argv + 1, argv + argc));
+        return run_live(LiveRun{chapter, scene, settings, needed(scene), render, knobs, reference.image},
+                        flags.live.port);
+    }
+    std::optional<HeatMaps> heat_maps;
+    if (!flags.core.heat.empty()) settings.observer = &heat_maps.emplace(settings.width, settings.height);
+    const RunContext context{scene, settings, simulated_effects(scene, chapter.supported)};
+    std::optional<ChapterRun> result = render(context);
+    set_interrupt_phase(InterruptPhase::kWriting);
+    if (!result) return signal_received() ? interrupted_exit_status() : kExitOk;
+    mpi.gather(result->result);
+    if (!mpi.is_root()) return result->result.interrupted ? interrupted_exit_status() : kExitOk;
+    return write_files_and_summary(chapter, flags, context, plan, mpi, reference,
+                                   heat_maps ? &*heat_maps : nullptr, png, *result);
 }
 
 }  // namespace

@@ -85,13 +85,14 @@ private:
         ++render_number_;
         RunContext context{run_.scene, run_.settings, simulated()};
         Snapshot snapshot;
-        context.settings.after_pass = [&](const PassReport& report) {
+        AfterEachPass publish_pass([&](const PassReport& report) {
             ++snapshot.pass;
             take_counts(snapshot, report.image, report.fewest_samples, double(report.samples_held),
                         report.samples, report.seconds, report.rays);
             publish(snapshot, png_bytes(report.image));
             server_->answer_changes([this](const LiveChange& c) { return apply(c); });
-        };
+        });
+        context.settings.observer = &publish_pass;
         publish(snapshot, std::nullopt);
         std::optional<ChapterRun> result;
         try {

@@ -1,6 +1,6 @@
 // --live: the run as a page for a class. Instead of rendering once and writing files, the executable serves
 // http://127.0.0.1:PORT (live_server.hpp) and renders again and again: the page shows the image after every
-// pass of the render loop (RenderSettings::after_pass), the summary's counters (rays by kind, samples/s,
+// pass of the render loop (its observer, render_observer.hpp), the summary's counters (rays by kind, samples/s,
 // samples per pixel so far, the error against --reference), and the chapter's knobs (live_knobs.hpp) and
 // its effects, switched without restarting: a change stops the render in progress, as an interrupt would,
 // and starts it again with the flags parsed again (a value the command line would refuse is refused with
@@ -11,7 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 
-#include "rt/app.hpp"
+#include "rt/chapter_run.hpp"
 #include "rt/image.hpp"
 #include "rt/live_knobs.hpp"
 #include "rt/live_server.hpp"

@@ -51,4 +51,8 @@ std::string shown(const std::filesystem::path& path) {
     return out + "\"";
 }
 
+std::string shown_value(std::string_view text) {
+    return "\"" + printable(std::string(text), 64) + "\"";
+}
+
 }  // namespace rt

@@ -18,4 +18,7 @@ std::string printable(std::string_view s, std::size_t longest = std::string_view
 // otherwise (spaces, quotes, control bytes, other bytes, or empty) in double quotes, escaped, with \" for a quote.
 std::string shown(const std::filesystem::path& path);
 
+// A value given on the command line as a message shows it: in double quotes, printable, at most 64 bytes.
+std::string shown_value(std::string_view text);
+
 }  // namespace rt

@@ -118,12 +118,12 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
         for (auto& t : pool) t.join();
         if (failure) std::rethrow_exception(failure);
         progress.show(fraction_done(), seconds_since(start));
-        if (settings.after_pass && !interrupt_requested()) {
+        if (settings.observer && !interrupt_requested()) {
             RayCounts rays;
             for (const RayCounts& r : rays_per_thread) rays += r;
             const Image image = sums.mean_image();
-            settings.after_pass(PassReport{image, sums.min_count(), sums.total_count(), rays, samples_done.load(),
-                                           seconds_since(start)});
+            settings.observer->after_pass(PassReport{image, sums.min_count(), sums.total_count(), rays,
+                                                     samples_done.load(), seconds_since(start)});
         }
     }
     progress.clear();

@@ -18,25 +18,12 @@
 #include "rt/pixel_sums.hpp"
 #include "rt/random.hpp"
 #include "rt/ray_counts.hpp"
+#include "rt/render_observer.hpp"
 #include "rt/sample_range.hpp"
 
 namespace rt {
 
 enum class ProgressStyle { kAuto, kBar, kLines, kNone };
-
-// What the render has after a pass: its image so far (every pixel's mean), the fewest samples a pixel has
-// and the samples the image holds (a resumed render's included), the rays traced and the samples taken by
-// this run so far, and the time since it started. Chapter 08's light tracer, whose paths splat into any
-// pixel, reports after each wave of paths: its image is the splats' sum over the paths traced, and each
-// pixel "has" the paths per pixel.
-struct PassReport {
-    const Image& image;
-    std::uint32_t fewest_samples = 0;
-    std::uint64_t samples_held = 0;
-    RayCounts rays;
-    std::uint64_t samples = 0;
-    double seconds = 0;
-};
 
 struct RenderSettings {
     int width = 0;
@@ -50,20 +37,9 @@ struct RenderSettings {
     // Sums to continue (--resume; not owned): pixel p already holds samples first … first + count − 1 of
     // `samples`, and the render takes the rest.
     const PixelSums* resume = nullptr;
-    // When set (--heat; not owned, width × height): each pixel's rays, bounces and samples of this run are
-    // added here, pass by pass as its sums are kept.
-    struct PixelHeat* heat = nullptr;
-    // When set (the live view, live_view.hpp): called on the rendering thread after each whole pass, with
-    // the sums so far; the render goes on when it returns.
-    std::function<void(const PassReport&)> after_pass = nullptr;
-};
-
-// What a pixel's samples cost: the rays they traced (every kind), the bounces among them (reflection,
-// refraction and indirect rays: the path length beyond the first hit) and the samples taken.
-struct PixelHeat {
-    std::uint64_t rays = 0;
-    std::uint64_t bounces = 0;
-    std::uint64_t samples = 0;
+    // What watches the render (not owned; render_observer.hpp): the app's heat maps, the live view. None:
+    // nothing is measured.
+    RenderObserver* observer = nullptr;
 };
 
 // The samples a render with these settings takes.
@@ -134,13 +110,14 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
     }
     const int range_first = samples_taken(settings).first;
     const std::uint64_t width = std::uint64_t(settings.width);
+    const bool measures_cost = settings.observer && settings.observer->measures_cost();
     return detail::render_tiles(
         settings, sums, [&](int x0, int y0, int x1, int y1, int first, int end, RayCounts& rays) {
             // The pass is summed aside and kept only once whole.
             constexpr std::size_t kTilePixels = std::size_t(detail::kTileSize * detail::kTileSize);
             std::array<PixelSum, kTilePixels> tile;
             std::array<std::array<PixelSum, Extra>, kTilePixels> tile_extra;
-            std::array<PixelHeat, kTilePixels> heat{};
+            std::array<PixelCost, kTilePixels> cost{};
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + std::uint64_t(x);
@@ -158,9 +135,9 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
                         for (std::size_t k = 0; k < Extra; ++k) layers[k].add(values[k + 1]);
                     }
                     tile[slot] = sum;
-                    if (settings.heat) {
+                    if (measures_cost) {
                         auto traced = [&](RayKind k) { return rays[k] - before[k]; };
-                        heat[slot] = {rays.total() - before.total(),
+                        cost[slot] = {rays.total() - before.total(),
                                       traced(RayKind::kReflection) + traced(RayKind::kRefraction) +
                                           traced(RayKind::kIndirect),
                                       std::uint64_t(sum.count - count_before)};
@@ -172,12 +149,7 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
                     const std::size_t slot = std::size_t((y - y0) * detail::kTileSize + (x - x0));
                     sums.at(x, y) = tile[slot];
                     for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = tile_extra[slot][k];
-                    if (settings.heat) {
-                        PixelHeat& h = settings.heat[std::size_t(y) * width + std::size_t(x)];
-                        h.rays += heat[slot].rays;
-                        h.bounces += heat[slot].bounces;
-                        h.samples += heat[slot].samples;
-                    }
+                    if (measures_cost) settings.observer->add_cost(x, y, cost[slot]);
                 }
             }
             return true;

@@ -4,12 +4,12 @@
 #include <charconv>
 
 #include "rt/errors.hpp"
-#include "rt/strict_flags.hpp"
+#include "rt/whole_number.hpp"
 
 namespace rt {
 namespace {
 
-// Read as strictly as every whole number of a flag (strict_flags.hpp): no sign, no leading 0.
+// Read as strictly as every whole number of a flag (whole_number.hpp): no sign, no leading 0.
 bool parse_int(std::string_view text, int& value) {
     if (!whole_number_error(text, false).empty()) return false;
     const char* end = text.data() + text.size();

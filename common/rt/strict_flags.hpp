@@ -5,14 +5,8 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
-#include <string_view>
 
 namespace rt {
-
-// The strict reading of a whole number, for every flag that takes one: decimal digits only, no leading 0, a
-// leading '-' only when `is_signed`, within 64 bits. Returns what is wrong ("must be a whole number >= 0
-// (decimal digits only), got \"-0\""), or "" when `text` is one.
-std::string whole_number_error(std::string_view text, bool is_signed);
 
 // A whole number that is a power of two (1, 2, 4, ...), checked after the strict reading.
 CLI::Validator power_of_two();
