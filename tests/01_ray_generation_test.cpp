@@ -6,9 +6,9 @@
 #include "01_ray_generation/edge_coverage.hpp"
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "01_ray_generation/ray_generation_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

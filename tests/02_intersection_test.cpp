@@ -16,9 +16,9 @@
 #include "02_intersection/wide_bvh.hpp"
 #include "02_intersection/world.hpp"
 #include "random_unit.hpp"
-#include "rt/assets.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

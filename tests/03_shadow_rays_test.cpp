@@ -23,10 +23,10 @@
 #include "03_shadow_rays/shadow_ray.hpp"
 #include "03_shadow_rays/shadow_render.hpp"
 #include "random_unit.hpp"
-#include "rt/assets.hpp"
-#include "rt/errors.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

@@ -17,11 +17,11 @@
 #include "05_recursive_gi/scatter.hpp"
 #include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/errors.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

@@ -34,11 +34,11 @@
 #include "07_bsdf_refraction/rough_dielectric.hpp"
 #include "07_bsdf_refraction/snell.hpp"
 #include "random_unit.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/errors.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 
 using namespace rt;

@@ -23,9 +23,9 @@
 #include "08_forward_tracing/light_emission.hpp"
 #include "08_forward_tracing/light_tracer.hpp"
 #include "08_forward_tracing/splat_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 
 using namespace rt;

@@ -23,10 +23,10 @@
 #include "09_participating_media/media_materials.hpp"
 #include "09_participating_media/media_scenes.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 
 using namespace rt;

@@ -17,10 +17,10 @@
 #include "10_denoising/edge_stopping.hpp"
 #include "10_denoising/feature_buffers.hpp"
 #include "10_denoising/ssim.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

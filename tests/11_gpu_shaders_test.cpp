@@ -16,11 +16,11 @@
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
 #include "random_unit.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "shader_probe.hpp"
 
 using namespace rt;

@@ -16,17 +16,17 @@
 #include <string>
 #include <vector>
 
-#include "rt/app.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/obj_parser.hpp"
-#include "rt/pixel_sums.hpp"
-#include "rt/printable.hpp"
-#include "rt/random.hpp"
-#include "rt/run_files.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/staged_file.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/pixel_sums.hpp"
+#include "rt/core/printable.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/obj_parser.hpp"
+#include "rt/io/run_files.hpp"
+#include "rt/io/scene_loader.hpp"
+#include "rt/io/staged_file.hpp"
+#include "rt/render/interrupt.hpp"
+#include "rt/run/app.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;

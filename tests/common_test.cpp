@@ -11,19 +11,19 @@
 #include <set>
 #include <vector>
 
-#include "rt/assets.hpp"
-#include "rt/did_you_mean.hpp"
-#include "rt/effects.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/live_knobs.hpp"
-#include "rt/picture_compare.hpp"
-#include "rt/random.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/did_you_mean.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/random.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/picture_compare.hpp"
+#include "rt/io/scene_loader.hpp"
+#include "rt/live/live_knobs.hpp"
+#include "rt/render/interrupt.hpp"
+#include "rt/render/render_loop.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;

@@ -21,10 +21,10 @@
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/media_materials.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/random.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 using namespace rt;
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rt/math.hpp"
-#include "rt/random.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/random.hpp"
 
 namespace rt {
 

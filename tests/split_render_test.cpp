@@ -1,6 +1,6 @@
 // A render split by sample range: exact per-pixel sums, the render loop's pieces and resumes, the film file,
 // the merge of pieces and the split among MPI ranks (the executables' side is tests/cli/split_render*.sh).
-#include "rt/split_render.hpp"
+#include "rt/run/split_render.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -12,14 +12,14 @@
 #include <random>
 #include <vector>
 
-#include "rt/errors.hpp"
-#include "rt/film.hpp"
-#include "rt/film_merge.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/mpi_split.hpp"
-#include "rt/pixel_sums.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/sample_range.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/pixel_sums.hpp"
+#include "rt/core/sample_range.hpp"
+#include "rt/io/film.hpp"
+#include "rt/render/interrupt.hpp"
+#include "rt/render/render_loop.hpp"
+#include "rt/run/film_merge.hpp"
+#include "rt/run/mpi_split.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 

@@ -2,9 +2,9 @@
 // at distance 1 along the view direction).
 #pragma once
 
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

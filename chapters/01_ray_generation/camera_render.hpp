@@ -5,7 +5,7 @@
 
 #include "camera.hpp"
 #include "pixel_sampling.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

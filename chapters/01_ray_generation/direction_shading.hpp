@@ -1,7 +1,7 @@
 // What chapter 01 shows, before any surface exists: each ray's direction as a colour, over a sky gradient.
 #pragma once
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

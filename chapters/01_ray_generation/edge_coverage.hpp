@@ -5,7 +5,7 @@
 #pragma once
 
 #include "camera.hpp"
-#include "rt/image.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

@@ -3,8 +3,8 @@
 #include "camera.hpp"
 #include "edge_coverage.hpp"
 #include "ray_generation_render.hpp"
-#include "rt/app.hpp"
-#include "rt/enum_flag.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

@@ -2,8 +2,8 @@
 // point in its own stratum. Pixel (x, y) covers film points [x, x+1) × [y, y+1).
 #pragma once
 
-#include "rt/enum_names.hpp"
-#include "rt/math.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

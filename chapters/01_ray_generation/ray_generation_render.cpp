@@ -6,7 +6,7 @@
 
 #include "camera_render.hpp"
 #include "direction_shading.hpp"
-#include "rt/image_io.hpp"
+#include "rt/io/image_io.hpp"
 
 namespace rt {
 namespace {

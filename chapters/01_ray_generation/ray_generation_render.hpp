@@ -8,7 +8,7 @@
 #include "camera.hpp"
 #include "edge_coverage.hpp"
 #include "pixel_sampling.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

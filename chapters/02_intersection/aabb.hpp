@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "float_error.hpp"
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

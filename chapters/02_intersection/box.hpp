@@ -5,7 +5,7 @@
 #include <array>
 
 #include "quad.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

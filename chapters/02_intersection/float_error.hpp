@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

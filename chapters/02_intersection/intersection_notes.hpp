@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "intersection_render.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 #include "world.hpp"
 
 namespace rt {

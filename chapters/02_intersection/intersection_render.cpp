@@ -5,7 +5,7 @@
 #include <string>
 
 #include "01_ray_generation/pixel_sampling.hpp"
-#include "rt/interrupt.hpp"
+#include "rt/render/interrupt.hpp"
 
 namespace rt {
 

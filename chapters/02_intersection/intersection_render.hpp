@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "01_ray_generation/camera.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/render/render_loop.hpp"
 #include "world.hpp"
 
 namespace rt {

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "rt/ray.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/ray.hpp"
+#include "rt/core/scene.hpp"
 #include "triangle.hpp"
 
 namespace rt {

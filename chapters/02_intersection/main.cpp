@@ -8,8 +8,8 @@
 #include "intersection_notes.hpp"
 #include "intersection_render.hpp"
 #include "mesh_generator.hpp"
-#include "rt/app.hpp"
-#include "rt/enum_flag.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/run/app.hpp"
 #include "world.hpp"
 
 int main(int argc, char** argv) {

@@ -6,10 +6,10 @@
 #include <map>
 #include <utility>
 
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/random.hpp"
-#include "rt/staged_file.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/staged_file.hpp"
 
 namespace rt {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

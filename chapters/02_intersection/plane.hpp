@@ -3,8 +3,8 @@
 
 #include <optional>
 
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

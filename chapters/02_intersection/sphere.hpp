@@ -7,8 +7,8 @@
 #include <cmath>
 #include <optional>
 
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

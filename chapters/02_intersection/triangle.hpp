@@ -12,9 +12,9 @@
 
 #include <optional>
 
-#include "rt/enum_names.hpp"
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {

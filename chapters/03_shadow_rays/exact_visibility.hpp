@@ -9,8 +9,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "rt/math.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -11,7 +11,7 @@
 #include "scene_scale.hpp"
 #include "shadow_ray.hpp"
 #include "shadow_render.hpp"
-#include "rt/median.hpp"
+#include "rt/core/median.hpp"
 
 namespace rt {
 namespace {

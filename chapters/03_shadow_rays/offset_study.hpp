@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "ray_offset.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

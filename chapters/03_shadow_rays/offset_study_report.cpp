@@ -4,7 +4,7 @@
 #include <fstream>
 
 #include "offset_study.hpp"
-#include "rt/image_io.hpp"
+#include "rt/io/image_io.hpp"
 #include "scene_scale.hpp"
 
 namespace rt {

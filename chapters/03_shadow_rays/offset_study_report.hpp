@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

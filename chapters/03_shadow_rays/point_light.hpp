@@ -6,8 +6,8 @@
 //     L = (ρ / π) E                              (ρ / π is the Lambert BRDF; chapter 04 derives it)
 #pragma once
 
-#include "rt/math.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

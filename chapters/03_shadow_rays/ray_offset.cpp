@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 

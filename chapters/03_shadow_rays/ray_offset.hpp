@@ -11,9 +11,9 @@
 #pragma once
 
 #include "02_intersection/hit.hpp"
-#include "rt/enum_names.hpp"
-#include "rt/math.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

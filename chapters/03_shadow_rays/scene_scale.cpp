@@ -7,8 +7,8 @@
 #include <type_traits>
 #include <variant>
 
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace rt {
 

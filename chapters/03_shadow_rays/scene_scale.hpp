@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -5,8 +5,8 @@
 #include "02_intersection/hit.hpp"
 #include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
-#include "rt/ray.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/ray.hpp"
+#include "rt/core/ray_counts.hpp"
 
 namespace rt {
 

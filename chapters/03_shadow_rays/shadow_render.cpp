@@ -2,7 +2,7 @@
 
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "point_light.hpp"
-#include "rt/effects.hpp"
+#include "rt/core/effects.hpp"
 #include "shadow_ray.hpp"
 
 namespace rt {

@@ -10,11 +10,11 @@
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
 #include "ray_offset.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/random.hpp"
-#include "rt/ray_counts.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray_counts.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

@@ -10,8 +10,8 @@
 #include "02_intersection/world.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
-#include "rt/image.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/image.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "bsdf.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

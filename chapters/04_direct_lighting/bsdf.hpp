@@ -14,8 +14,8 @@
 // interface is one indirect jump, what std::visit compiles to as well.
 #pragma once
 
-#include "rt/math.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/ray_counts.hpp"
 
 namespace rt {
 

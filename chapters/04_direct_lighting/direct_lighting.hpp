@@ -16,9 +16,9 @@
 #include "light_sample.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
-#include "rt/enum_names.hpp"
-#include "rt/random.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray_counts.hpp"
 #include "trace_options.hpp"
 
 namespace rt {

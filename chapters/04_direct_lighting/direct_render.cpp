@@ -1,7 +1,7 @@
 #include "direct_render.hpp"
 
 #include "01_ray_generation/camera_render.hpp"
-#include "rt/error_metrics.hpp"
+#include "rt/core/error_metrics.hpp"
 
 namespace rt {
 

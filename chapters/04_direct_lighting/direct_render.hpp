@@ -7,8 +7,8 @@
 #include "01_ray_generation/camera.hpp"
 #include "analytic_scene.hpp"
 #include "direct_lighting.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

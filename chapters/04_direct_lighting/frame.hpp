@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -4,7 +4,7 @@
 
 #include <span>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

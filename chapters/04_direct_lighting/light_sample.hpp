@@ -2,7 +2,7 @@
 // density of that direction in solid angle, so every light fits one estimator: f L cos θ / pdf.
 #pragma once
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

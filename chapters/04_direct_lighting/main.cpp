@@ -9,8 +9,8 @@
 #include "analytic_scene.hpp"
 #include "direct_notes.hpp"
 #include "direct_render.hpp"
-#include "rt/app.hpp"
-#include "rt/enum_flag.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/run/app.hpp"
 #include "shadow_study_report.hpp"
 
 int main(int argc, char** argv) {

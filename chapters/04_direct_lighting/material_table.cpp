@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "brdf.hpp"
-#include "rt/effects.hpp"
+#include "rt/core/effects.hpp"
 
 namespace rt {
 namespace {

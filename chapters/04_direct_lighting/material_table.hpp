@@ -23,8 +23,8 @@
 
 #include "bsdf.hpp"
 #include "medium.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

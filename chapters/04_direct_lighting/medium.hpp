@@ -11,8 +11,8 @@
 // chapter add its media without this chapter naming them.
 #pragma once
 
-#include "rt/math.hpp"
-#include "rt/random.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/random.hpp"
 
 namespace rt {
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "light_sample.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -6,8 +6,8 @@
 #include "02_intersection/world.hpp"
 #include "light_set.hpp"
 #include "material_table.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

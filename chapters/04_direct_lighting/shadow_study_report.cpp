@@ -6,10 +6,10 @@
 #include "01_ray_generation/camera.hpp"
 #include "analytic_scene.hpp"
 #include "direct_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace rt {
 namespace {

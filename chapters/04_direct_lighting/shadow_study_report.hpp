@@ -6,8 +6,8 @@
 #include <string>
 
 #include "direct_lighting.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "03_shadow_rays/ray_offset.hpp"
-#include "rt/effect_set.hpp"
+#include "rt/core/effect_set.hpp"
 
 namespace rt {
 

@@ -4,10 +4,10 @@
 
 #include "02_intersection/world.hpp"
 #include "gi_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace rt {
 

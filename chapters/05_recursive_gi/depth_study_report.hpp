@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "rt/effect_set.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 #include "termination_flags.hpp"
 
 namespace rt {

@@ -10,8 +10,8 @@
 #include <optional>
 
 #include "02_intersection/world.hpp"
-#include "rt/image.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/image.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -8,8 +8,8 @@
 
 #include "04_direct_lighting/direct_lighting.hpp"
 #include "furnace.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 #include "termination.hpp"
 
 namespace rt {

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "01_ray_generation/camera_render.hpp"
-#include "rt/error_metrics.hpp"
+#include "rt/core/error_metrics.hpp"
 
 namespace rt {
 namespace {

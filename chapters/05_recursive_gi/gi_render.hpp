@@ -9,8 +9,8 @@
 #include "01_ray_generation/camera.hpp"
 #include "furnace.hpp"
 #include "recursive_tracer.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

@@ -9,7 +9,7 @@
 #include "furnace.hpp"
 #include "gi_notes.hpp"
 #include "gi_render.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 #include "termination_flags.hpp"
 
 int main(int argc, char** argv) {

@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "04_direct_lighting/direct_lighting.hpp"
-#include "rt/random.hpp"
-#include "rt/ray.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray.hpp"
+#include "rt/core/ray_counts.hpp"
 #include "termination.hpp"
 
 namespace rt {

@@ -9,7 +9,7 @@
 
 #include "04_direct_lighting/brdf.hpp"
 #include "04_direct_lighting/bsdf.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -9,8 +9,8 @@
 // max_depth is a hard cap for every rule, so a path between two perfect mirrors ends too.
 #pragma once
 
-#include "rt/enum_names.hpp"
-#include "rt/math.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -1,6 +1,6 @@
 #include "termination_flags.hpp"
 
-#include "rt/enum_flag.hpp"
+#include "rt/flags/enum_flag.hpp"
 
 namespace rt {
 

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <map>
 
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/image_io.hpp"
 
 namespace rt {
 namespace {

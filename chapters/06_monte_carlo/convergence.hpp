@@ -15,7 +15,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "path_tracer.hpp"
-#include "rt/image.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

@@ -11,7 +11,7 @@
 #include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "mis.hpp"
 #include "owen_sobol.hpp"
-#include "rt/random.hpp"
+#include "rt/core/random.hpp"
 #include "warp_pdfs.hpp"
 
 namespace rt {

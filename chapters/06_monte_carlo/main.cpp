@@ -9,7 +9,7 @@
 #include "irradiance_study.hpp"
 #include "monte_carlo_notes.hpp"
 #include "path_tracer.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 #include "sampling_flags.hpp"
 
 int main(int argc, char** argv) {

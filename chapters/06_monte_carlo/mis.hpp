@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "rt/random.hpp"
+#include "rt/core/random.hpp"
 
 namespace rt {
 namespace {

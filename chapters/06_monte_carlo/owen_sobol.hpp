@@ -19,7 +19,7 @@
 
 #include <cstdint>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -6,7 +6,7 @@
 
 #include "02_intersection/hit.hpp"
 #include "04_direct_lighting/bsdf.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -29,8 +29,8 @@
 #include "mis.hpp"
 #include "path_observer.hpp"
 #include "render_paths.hpp"
-#include "rt/random.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray_counts.hpp"
 #include "sample_stream.hpp"
 #include "sampling_strategy.hpp"
 

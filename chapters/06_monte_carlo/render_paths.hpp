@@ -10,7 +10,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "01_ray_generation/camera_render.hpp"
 #include "owen_sobol.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/render/render_loop.hpp"
 #include "sample_stream.hpp"
 
 namespace rt {

@@ -10,8 +10,8 @@
 #pragma once
 
 #include "owen_sobol.hpp"
-#include "rt/enum_names.hpp"
-#include "rt/random.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/random.hpp"
 
 namespace rt {
 

@@ -1,6 +1,6 @@
 #include "sampling_flags.hpp"
 
-#include "rt/enum_flag.hpp"
+#include "rt/flags/enum_flag.hpp"
 
 namespace rt {
 

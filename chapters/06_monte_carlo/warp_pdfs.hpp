@@ -3,7 +3,7 @@
 // are in the local frame of the warp (z the axis); a pdf is per unit solid angle (per unit area for points).
 #pragma once
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -12,9 +12,9 @@
 
 #include "06_monte_carlo/path_tracer.hpp"
 #include "refraction_materials.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

@@ -4,9 +4,9 @@
 #include <fstream>
 
 #include "bsdf_render.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/image_io.hpp"
 
 namespace rt {
 namespace {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "06_monte_carlo/path_tracer.hpp"
-#include "rt/image.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/image.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

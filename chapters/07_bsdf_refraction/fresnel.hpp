@@ -11,7 +11,7 @@
 //                                        θ the angle on the less dense side (θ_t when η < 1).
 #pragma once
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

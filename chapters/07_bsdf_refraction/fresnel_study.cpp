@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "fresnel.hpp"
-#include "rt/effects.hpp"
-#include "rt/errors.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "rt/math.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

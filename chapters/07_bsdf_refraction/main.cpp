@@ -9,7 +9,7 @@
 #include "depth_study.hpp"
 #include "fresnel_study.hpp"
 #include "refraction_notes.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

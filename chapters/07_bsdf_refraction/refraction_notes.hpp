@@ -7,7 +7,7 @@
 
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -35,7 +35,7 @@
 
 #include "04_direct_lighting/bsdf.hpp"
 #include "04_direct_lighting/material_table.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -11,7 +11,7 @@
 
 #include <optional>
 
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "01_ray_generation/camera.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -20,8 +20,8 @@
 
 #include "06_monte_carlo/path_tracer.hpp"
 #include "light_tracer.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

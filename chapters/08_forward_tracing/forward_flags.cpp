@@ -1,8 +1,8 @@
 #include "forward_flags.hpp"
 
 #include "06_monte_carlo/sampling_flags.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/only_with.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/flags/only_with.hpp"
 
 namespace rt {
 

@@ -8,7 +8,7 @@
 #include "combined_render.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
-#include "rt/enum_names.hpp"
+#include "rt/core/enum_names.hpp"
 
 namespace rt {
 

@@ -9,11 +9,11 @@
 #include "06_monte_carlo/convergence.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
-#include "rt/assets.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace rt {
 namespace {

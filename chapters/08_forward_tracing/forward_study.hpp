@@ -18,8 +18,8 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "light_tracer.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/image.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "03_shadow_rays/shadow_ray.hpp"
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {

@@ -27,9 +27,9 @@
 #include "05_recursive_gi/termination.hpp"
 #include "camera_importance.hpp"
 #include "light_emission.hpp"
-#include "rt/enum_names.hpp"
-#include "rt/random.hpp"
-#include "rt/ray_counts.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray_counts.hpp"
 #include "splat_render.hpp"
 
 namespace rt {

@@ -13,7 +13,7 @@
 #include "forward_notes.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

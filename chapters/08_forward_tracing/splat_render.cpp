@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "rt/interrupt.hpp"
+#include "rt/render/interrupt.hpp"
 
 namespace rt {
 namespace {

@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <functional>
 
-#include "rt/image.hpp"
-#include "rt/random.hpp"
-#include "rt/ray_counts.hpp"
-#include "rt/render_loop.hpp"
+#include "rt/core/image.hpp"
+#include "rt/core/random.hpp"
+#include "rt/core/ray_counts.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "04_direct_lighting/medium.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

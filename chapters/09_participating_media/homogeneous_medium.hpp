@@ -19,8 +19,8 @@
 
 #include "04_direct_lighting/medium.hpp"
 #include "henyey_greenstein.hpp"
-#include "rt/math.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

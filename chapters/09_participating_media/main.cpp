@@ -8,7 +8,7 @@
 #include "media_materials.hpp"
 #include "media_notes.hpp"
 #include "media_studies.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 #include "volume_path_tracer.hpp"
 
 int main(int argc, char** argv) {

@@ -2,7 +2,7 @@
 // under a uniform sky (the white furnace when its albedo is 1), and a wide slab of a medium seen straight on.
 #pragma once
 
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "rt/only_with.hpp"
+#include "rt/flags/only_with.hpp"
 #include "volume_path_tracer.hpp"
 #include "walk_study.hpp"
 

@@ -8,7 +8,7 @@
 #include "homogeneous_medium.hpp"
 #include "media_materials.hpp"
 #include "media_scenes.hpp"
-#include "rt/error_metrics.hpp"
+#include "rt/core/error_metrics.hpp"
 #include "volume_path_tracer.hpp"
 
 namespace rt {

@@ -10,7 +10,7 @@
 
 #include "edge_stopping.hpp"
 #include "feature_buffers.hpp"
-#include "rt/image.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

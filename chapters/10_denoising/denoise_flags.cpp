@@ -4,8 +4,8 @@
 #include <tuple>
 #include <vector>
 
-#include "rt/enum_flag.hpp"
-#include "rt/only_with.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/flags/only_with.hpp"
 
 namespace rt {
 

@@ -9,8 +9,8 @@
 #include "07_bsdf_refraction/depth_study.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "feature_buffers.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/image_io.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/io/image_io.hpp"
 #include "ssim.hpp"
 
 namespace rt {

@@ -8,8 +8,8 @@
 #include "atrous.hpp"
 #include "bilateral.hpp"
 #include "feature_buffers.hpp"
-#include "rt/enum_names.hpp"
-#include "rt/image.hpp"
+#include "rt/core/enum_names.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "feature_buffers.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -2,15 +2,15 @@
 // vertex that is not a delta bounce (path_features.hpp, watching chapter 09's path loop): the albedo,
 // the shading normal and the depth, having followed mirrors and glass as production renderers do. Each is the
 // mean over the pixel's samples, with the variance of that mean, from exact sums of the samples and of their
-// squares (rt/pixel_sums.hpp's variance_of_mean):
+// squares (rt/core/pixel_sums.hpp's variance_of_mean):
 //   Var[mean] = (Σx² − (Σx)²/n) / (n (n − 1)).
 // A denoiser is guided by them; an external one (Open Image Denoise, OptiX) can take them as they are.
 #pragma once
 
 #include "06_monte_carlo/path_tracer.hpp"
-#include "rt/image.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/image.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

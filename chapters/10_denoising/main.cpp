@@ -10,7 +10,7 @@
 #include "denoise_study.hpp"
 #include "denoiser.hpp"
 #include "feature_buffers.hpp"
-#include "rt/app.hpp"
+#include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "rt/errors.hpp"
-#include "rt/image_io.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/image_io.hpp"
 
 namespace rt {
 namespace {

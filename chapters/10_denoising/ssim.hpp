@@ -7,7 +7,7 @@
 // identical; it is symmetric in a and b.
 #pragma once
 
-#include "rt/image.hpp"
+#include "rt/core/image.hpp"
 
 namespace rt {
 

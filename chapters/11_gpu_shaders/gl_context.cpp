@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "gl_api.hpp"
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {

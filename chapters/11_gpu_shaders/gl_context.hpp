@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "rt/enum_names.hpp"
+#include "rt/core/enum_names.hpp"
 
 namespace rt {
 

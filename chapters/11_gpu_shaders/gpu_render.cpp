@@ -12,9 +12,9 @@
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "embedded_shaders.hpp"
 #include "gl_program.hpp"
-#include "rt/errors.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/progress.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/render/interrupt.hpp"
+#include "rt/render/progress.hpp"
 
 namespace rt {
 namespace {

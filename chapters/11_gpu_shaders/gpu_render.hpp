@@ -13,9 +13,9 @@
 #include "01_ray_generation/camera.hpp"
 #include "gl_context.hpp"
 #include "gpu_scene.hpp"
-#include "rt/effect_set.hpp"
-#include "rt/render_loop.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/effect_set.hpp"
+#include "rt/core/scene.hpp"
+#include "rt/render/render_loop.hpp"
 
 namespace rt {
 

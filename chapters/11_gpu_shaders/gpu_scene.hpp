@@ -20,7 +20,7 @@
 #include "02_intersection/bvh.hpp"
 #include "04_direct_lighting/light_picker.hpp"
 #include "04_direct_lighting/material_table.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

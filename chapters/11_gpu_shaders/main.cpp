@@ -4,9 +4,9 @@
 // CPU. Without a usable OpenGL it says what is missing and how to install it, and exits 2.
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
-#include "rt/app.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/errors.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;

@@ -9,7 +9,7 @@
 
 #include "gl_context.hpp"
 #include "gpu_scene.hpp"
-#include "rt/ray.hpp"
+#include "rt/core/ray.hpp"
 
 namespace rt {
 

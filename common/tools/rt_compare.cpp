@@ -13,14 +13,14 @@
 #include <optional>
 #include <string>
 
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/false_colour.hpp"
-#include "rt/image_io.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/picture_compare.hpp"
-#include "rt/printable.hpp"
-#include "rt/run_files.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/printable.hpp"
+#include "rt/io/false_colour.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/picture_compare.hpp"
+#include "rt/io/run_files.hpp"
+#include "rt/render/interrupt.hpp"
 
 namespace {
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "rt/errors.hpp"
-#include "rt/film_merge.hpp"
-#include "rt/interrupt.hpp"
-#include "rt/output_files.hpp"
-#include "rt/printable.hpp"
-#include "rt/run_files.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/printable.hpp"
+#include "rt/io/output_files.hpp"
+#include "rt/io/run_files.hpp"
+#include "rt/render/interrupt.hpp"
+#include "rt/run/film_merge.hpp"
 
 namespace {
 

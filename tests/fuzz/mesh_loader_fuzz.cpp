@@ -1,7 +1,7 @@
 // libFuzzer target for OBJ meshes as the scene loader reads them: the bytes become an OBJ file that a fixed
 // scene uses as a mesh. Loading either gives triangles whose indices are in range and whose vertices are
 // finite, or an InputError with a one-line message; anything else is a bug the fuzzer reports. The OBJ reader
-// is the course's own (common/rt/obj_parser.cpp), built with the sanitizers; obj_parser_fuzz feeds it alone.
+// is the course's own (common/rt/io/obj_parser.cpp), built with the sanitizers; obj_parser_fuzz feeds it alone.
 #include <unistd.h>
 
 #include <cstdint>
@@ -13,8 +13,8 @@
 #include <variant>
 
 #include "fuzz_promise.hpp"
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// libFuzzer target for the course's OBJ reader alone (common/rt/obj_parser.cpp): any bytes either give a mesh
+// libFuzzer target for the course's OBJ reader alone (common/rt/io/obj_parser.cpp): any bytes either give a mesh
 // that keeps the reader's promises (every coordinate finite and within the limit, every face of at least 3
 // vertices whose indices are in range, on a line of the file) or an InputError of one line that starts
 // "line L, column C: " with L a line of the input. Anything else is a bug the fuzzer reports.
@@ -9,8 +9,8 @@
 #include <string_view>
 
 #include "fuzz_promise.hpp"
-#include "rt/errors.hpp"
-#include "rt/obj_parser.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/obj_parser.hpp"
 
 namespace {
 

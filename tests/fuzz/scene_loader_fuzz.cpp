@@ -8,9 +8,9 @@
 #include <string>
 #include <variant>
 
-#include "rt/effects.hpp"
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "rt/math.hpp"
-#include "rt/random.hpp"
+#include "rt/core/math.hpp"
+#include "rt/core/random.hpp"
 
 namespace rt::test {
 

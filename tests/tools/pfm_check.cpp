@@ -4,7 +4,7 @@
 #include <cstring>
 #include <exception>
 
-#include "rt/image_io.hpp"
+#include "rt/io/image_io.hpp"
 
 int main(int argc, char** argv) {
     if (argc < 2 || argc > 3) {

@@ -32,9 +32,9 @@
 #include "01_ray_generation/camera.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"
-#include "rt/random.hpp"
+#include "rt/core/random.hpp"
 #include "world.hpp"
-#include "rt/median.hpp"
+#include "rt/core/median.hpp"
 #ifdef RT_HAVE_EMBREE
 #include "embree_mesh.hpp"
 #endif

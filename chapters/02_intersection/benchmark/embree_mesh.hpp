@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "hit.hpp"
-#include "rt/ray.hpp"
-#include "rt/scene.hpp"
+#include "rt/core/ray.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 

@@ -18,12 +18,12 @@
 #include "02_intersection/world.hpp"
 #include "convergence.hpp"
 #include "path_tracer.hpp"
-#include "rt/assets.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/errors.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/median.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/errors.hpp"
+#include "rt/core/median.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

@@ -27,13 +27,13 @@
 #include "bsdf_render.hpp"
 #include "path_parts.hpp"
 #include "reference_halves.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/false_colour.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/median.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/median.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/false_colour.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

@@ -23,11 +23,11 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
 #include "reference_halves.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/median.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/median.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

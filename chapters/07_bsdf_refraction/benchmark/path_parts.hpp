@@ -14,7 +14,7 @@
 #include <cstddef>
 
 #include "06_monte_carlo/path_observer.hpp"
-#include "rt/math.hpp"
+#include "rt/core/math.hpp"
 
 namespace rt {
 

@@ -6,11 +6,11 @@
 #include <string>
 
 #include "bsdf_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/image_io.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace rt {
 

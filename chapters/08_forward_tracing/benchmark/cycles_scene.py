@@ -9,7 +9,7 @@ It builds the same scene in Cycles (only what cornell.json uses: quads, a transf
 smooth 256x128 UV mesh, diffuse, emissive and dielectric materials; and a plane, as a large quad, for
 ch04_analytic.json's units check), renders it on the CPU with a 1-pixel box
 filter, no denoising, no clamping, no adaptive sampling and 64 bounces of every kind, and writes the linear
-image as a PFM with the course's orientation (rows bottom up, as common/rt/image_io.cpp writes them). It
+image as a PFM with the course's orientation (rows bottom up, as common/rt/io/image_io.cpp writes them). It
 prints one line
 
     cycles_scene: render_seconds <wall time of bpy.ops.render.render> spp <n> size <w>x<h> ...

@@ -22,11 +22,11 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "combined_render.hpp"
 #include "forward_study.hpp"
-#include "rt/assets.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/error_metrics.hpp"
-#include "rt/median.hpp"
-#include "rt/scene_loader.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/median.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

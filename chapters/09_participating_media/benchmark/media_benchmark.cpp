@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/effects.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/median.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/median.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "volume_path_tracer.hpp"
 
 int main(int argc, char** argv) {

@@ -16,11 +16,11 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
-#include "rt/assets.hpp"
-#include "rt/enum_flag.hpp"
-#include "rt/effects.hpp"
-#include "rt/scene_loader.hpp"
-#include "rt/median.hpp"
+#include "rt/core/effects.hpp"
+#include "rt/core/median.hpp"
+#include "rt/flags/enum_flag.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// PCG32 (O'Neill 2014), the course's generator (common/rt/random.hpp), line for line: the same 64-bit state,
+// PCG32 (O'Neill 2014), the course's generator (common/rt/core/random.hpp), line for line: the same 64-bit state,
 // the same stream per (pixel, sample, seed), the same 32-bit outputs. A GPU's integer units are 32 bits wide;
 // GL_ARB_gpu_shader_int64 gives uint64_t, which each multiply turns into a few 32-bit instructions.
 

@@ -1,0 +1,30 @@
+#include "rt/core/scene.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+Vec3 Transform::apply_to_point(const Vec3& p) const {
+    Vec3 q = p * scale;
+    const Vec3 r = rotate_degrees * (kPi / Real(180));
+    // Rotation about x, then y, then z (right-handed, counter-clockwise looking down the axis).
+    q = {q.x, std::cos(r.x) * q.y - std::sin(r.x) * q.z, std::sin(r.x) * q.y + std::cos(r.x) * q.z};
+    q = {std::cos(r.y) * q.x + std::sin(r.y) * q.z, q.y, -std::sin(r.y) * q.x + std::cos(r.y) * q.z};
+    q = {std::cos(r.z) * q.x - std::sin(r.z) * q.y, std::sin(r.z) * q.x + std::cos(r.z) * q.y, q.z};
+    return q + translate;
+}
+
+bool Scene::has_area_lights() const {
+    for (const Shape& s : shapes) {
+        if (material_of(s).emissive()) return true;
+    }
+    return false;
+}
+
+std::vector<bool> Scene::used_materials() const {
+    std::vector<bool> used(materials.size(), false);
+    for (const Shape& s : shapes) used[std::size_t(s.material)] = true;
+    return used;
+}
+
+}  // namespace rt

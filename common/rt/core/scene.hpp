@@ -1,0 +1,142 @@
+// The scene description: plain data, as read from a scene file (see assets/scenes/README.md). Each chapter
+// turns it into what it can simulate.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "rt/core/effect_set.hpp"
+#include "rt/core/math.hpp"
+
+namespace rt {
+
+struct CameraDesc {
+    Vec3 from{0, 0, 0};
+    Vec3 at{0, 0, -1};
+    Vec3 up{0, 1, 0};
+    Real vfov = 40;  // vertical field of view, degrees
+};
+
+struct ImageDesc {
+    int width = 320;
+    int height = 240;
+    int spp = 16;  // samples per pixel
+};
+
+enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric };
+// The names the scene files use, in the order of MaterialType.
+inline constexpr std::array<std::string_view, 5> kMaterialTypeNames = {"diffuse", "mirror", "glossy",
+                                                                       "retroreflective", "dielectric"};
+
+// A homogeneous participating medium (chapter 09): per unit of length, light is absorbed at the rate sigma_a
+// and scattered at the rate sigma_s, per colour channel; g is the Henyey–Greenstein asymmetry of the
+// scattering (0 isotropic, > 0 forward, < 0 backward), in (−1, 1).
+struct MediumDesc {
+    Color sigma_a{0};
+    Color sigma_s{0};
+    Real g = 0;
+
+    Color sigma_t() const { return sigma_a + sigma_s; }  // extinction
+    bool scatters() const { return sigma_s.r > 0 || sigma_s.g > 0 || sigma_s.b > 0; }
+};
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::kDiffuse;
+    Color albedo{0.8f};       // diffuse, glossy, retroreflective: reflectance in [0, 1]
+    Color reflectance{1.0f};  // mirror: the fraction reflected
+    Color emission{0.0f};     // radiance emitted (any type): makes its shapes area lights
+    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric: 0 is
+                              // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
+    Real ior = 1.5f;          // dielectric: index of refraction
+    Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
+    std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
+
+    bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
+    // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:
+    // its albedo (diffuse, glossy, retro-reflective), a mirror's reflectance, and for a dielectric (before
+    // chapter 07) a light grey, kDielectricStandIn. The one place a stand-in colour is chosen.
+    Color stand_in_albedo() const {
+        if (type == MaterialType::kMirror) return reflectance;
+        if (type == MaterialType::kDielectric) return Color(kDielectricStandIn);
+        return albedo;
+    }
+    static constexpr Real kDielectricStandIn = Real(0.73);
+};
+
+// Scale, then rotations about x, y and z (degrees), then translation.
+struct Transform {
+    Vec3 scale{1};
+    Vec3 rotate_degrees{0};
+    Vec3 translate{0};
+
+    Vec3 apply_to_point(const Vec3& p) const;
+};
+
+struct SphereShape {
+    Vec3 center{0};
+    Real radius = 1;
+};
+// The parallelogram origin + a·u + b·v, a and b in [0, 1]; its front side is the side of u × v.
+struct QuadShape {
+    Vec3 origin{0};
+    Vec3 u{1, 0, 0};
+    Vec3 v{0, 1, 0};
+};
+struct TriangleShape {
+    std::array<Vec3, 3> vertices{};
+};
+struct PlaneShape {
+    Vec3 point{0};
+    Vec3 normal{0, 1, 0};
+};
+struct BoxShape {
+    Vec3 min{0};
+    Vec3 max{1};
+    Transform transform;
+};
+// A triangle mesh with shared vertices; positions are already transformed into the scene.
+struct MeshShape {
+    std::string file;
+    Transform transform;
+    std::vector<Vec3> positions;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct Shape {
+    std::variant<SphereShape, QuadShape, TriangleShape, PlaneShape, BoxShape, MeshShape> geometry;
+    int material = 0;   // index into Scene::materials
+    std::string place;  // where it stands in the file, e.g. "shapes[3]"
+};
+
+struct PointLight {
+    Vec3 position{0};
+    Color intensity{1};  // radiant intensity, W/sr
+};
+struct EnvironmentLight {
+    Color radiance{1};  // of every ray that leaves the scene
+};
+
+struct Scene {
+    std::string file;  // where it was loaded from, for messages
+    CameraDesc camera;
+    ImageDesc image;
+    std::vector<Material> materials;
+    std::vector<Shape> shapes;
+    std::vector<PointLight> point_lights;
+    std::optional<EnvironmentLight> environment;
+    std::optional<MediumDesc> medium;  // what fills the space outside every shape, where the camera is (fog)
+    std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
+
+    const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }
+    bool has_area_lights() const;
+    // used[i]: whether some shape is made of material i.
+    std::vector<bool> used_materials() const;
+};
+
+}  // namespace rt
