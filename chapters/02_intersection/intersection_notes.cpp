@@ -1,27 +1,21 @@
 #include "intersection_notes.hpp"
 
-#include <cstdio>
 #include <variant>
 
 #include "leak_probe.hpp"
+#include "rt/core/formatted.hpp"
 
 namespace rt {
 namespace {
 
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
-}
-
 std::string world_note(const World& world, const IntersectionRun& run) {
-    return format("world: %.0f primitives (%.0f triangles)", double(world.primitive_count()),
-                  double(world.triangle_count())) +
+    return formatted("world: %.0f primitives (%.0f triangles)", double(world.primitive_count()),
+                     double(world.triangle_count())) +
            (run.options.acceleration != Acceleration::kNone
-                ? format(", BVH of %.0f binary nodes and %.0f wide ones", double(world.bvh().nodes().size()),
-                         double(world.wide_bvh().nodes().size())) +
-                      format(" (%.0f KiB in all) built in %.1f ms", double(world.acceleration_bytes()) / 1024,
-                             run.build_seconds * 1e3)
+                ? formatted(", BVH of %.0f binary nodes and %.0f wide ones",
+                            double(world.bvh().nodes().size()), double(world.wide_bvh().nodes().size())) +
+                      formatted(" (%.0f KiB in all) built in %.1f ms",
+                                double(world.acceleration_bytes()) / 1024, run.build_seconds * 1e3)
                 : std::string(", no acceleration: every ray tests every primitive"));
 }
 
@@ -30,9 +24,9 @@ std::string cost_note(const IntersectionRun& run, const RenderResult& result,
     const double camera_rays = double(result.rays[RayKind::kCamera]);
     return "triangle test: " + std::string(to_string(run.options.triangle_test)) +
            ", acceleration: " + std::string(to_string(run.options.acceleration)) +
-           format(": %.1f ns per camera ray (render time x threads / rays); ",
-                  camera_rays > 0 ? result.seconds * 1e9 * run.threads / camera_rays : 0.0) +
-           (cost ? format("per ray %.1f boxes and %.1f primitives tested", cost->nodes, cost->primitives)
+           formatted(": %.1f ns per camera ray (render time x threads / rays); ",
+                     camera_rays > 0 ? result.seconds * 1e9 * run.threads / camera_rays : 0.0) +
+           (cost ? formatted("per ray %.1f boxes and %.1f primitives tested", cost->nodes, cost->primitives)
                  : std::string("boxes and primitives per ray not measured (interrupted)"));
 }
 
@@ -53,9 +47,9 @@ std::vector<std::string> intersection_notes(const Scene& scene, const World& wor
             continue;
         }
         const LeakProbe probe = probe_leaks(*mesh, run.options.triangle_test);
-        notes.push_back(shape.place + format(": leak probe, %.0f of %.0f rays from inside the closed mesh "
-                                             "(aimed at its vertices and edges) escaped",
-                                             double(probe.escaped), double(probe.rays)));
+        notes.push_back(shape.place + formatted(": leak probe, %.0f of %.0f rays from inside the closed mesh "
+                                                "(aimed at its vertices and edges) escaped",
+                                                double(probe.escaped), double(probe.rays)));
     }
     return notes;
 }

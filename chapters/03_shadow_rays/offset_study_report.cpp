@@ -4,17 +4,12 @@
 #include <fstream>
 
 #include "offset_study.hpp"
+#include "rt/core/formatted.hpp"
 #include "rt/io/image_io.hpp"
 #include "scene_scale.hpp"
 
 namespace rt {
 namespace {
-
-std::string format(const char* pattern, double a) {
-    char text[64];
-    std::snprintf(text, sizeof text, pattern, a);
-    return text;
-}
 
 void print_study(const std::vector<OffsetStudyRow>& rows, const RenderSettings& settings,
                  const std::string& csv) {
@@ -31,7 +26,7 @@ void print_study(const std::vector<OffsetStudyRow>& rows, const RenderSettings& 
         const bool eps = r.offset.method == OffsetMethod::kEpsilon;
         std::printf(
             "%8g %-8s %9s %11llu %10llu %10llu %10llu %10.5f %9.4f %10.2f\n", double(r.scale),
-            to_string(r.offset.method).data(), eps ? format("%g", double(r.offset.epsilon)).c_str() : "-",
+            to_string(r.offset.method).data(), eps ? formatted("%g", double(r.offset.epsilon)).c_str() : "-",
             static_cast<unsigned long long>(r.shadow_rays), static_cast<unsigned long long>(r.self_hits),
             static_cast<unsigned long long>(r.acne_pixels), static_cast<unsigned long long>(r.leak_pixels),
             r.mean, r.seconds, r.offset_ns);

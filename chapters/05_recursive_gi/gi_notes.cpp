@@ -1,18 +1,11 @@
 #include "gi_notes.hpp"
 
-#include <cstdio>
-
 #include "04_direct_lighting/bsdf.hpp"
 #include "gi_render.hpp"
+#include "rt/core/formatted.hpp"
 
 namespace rt {
 namespace {
-
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-    char text[256];
-    std::snprintf(text, sizeof text, pattern, a, b, c);
-    return text;
-}
 
 // What the material table shades by a stand-in, and the lobes this chapter samples only uniformly.
 std::vector<std::string> material_notes(const Scene& scene, const MaterialTable& materials,
@@ -45,7 +38,7 @@ std::vector<std::string> gi_notes(const Scene& scene, const DirectLighting& shad
         rule += termination.rule == Termination::kMinThroughput ? ", biased" : ", unbiased below the cap";
     } else {
         rule +=
-            format(", light after more than %.0f bounces is lost (biased)", double(termination.max_depth));
+            formatted(", light after more than %.0f bounces is lost (biased)", double(termination.max_depth));
     }
     notes.push_back(rule);
     if (shading.lights().empty()) notes.push_back("the scene has no light: no direct light, no shadow rays");
@@ -57,21 +50,22 @@ std::vector<std::string> gi_notes(const Scene& scene, const DirectLighting& shad
     }
     const double camera_rays = double(result.rays[RayKind::kCamera]);
     if (camera_rays > 0) {
-        notes.push_back(format("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
-                               double(result.rays[RayKind::kReflection]) / camera_rays,
-                               double(result.rays[RayKind::kIndirect]) / camera_rays,
-                               double(result.rays[RayKind::kShadow]) / camera_rays));
+        notes.push_back(
+            formatted("per camera ray: %.3f reflection rays, %.3f indirect rays, %.3f shadow rays",
+                      double(result.rays[RayKind::kReflection]) / camera_rays,
+                      double(result.rays[RayKind::kIndirect]) / camera_rays,
+                      double(result.rays[RayKind::kShadow]) / camera_rays));
     }
     return notes;
 }
 
 std::string furnace_note(const Furnace& furnace, const TerminationSettings& termination, bool indirect) {
     const Vec3d exact = furnace_radiance(furnace);
-    std::string note = format("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
+    std::string note = formatted("furnace: exact L = Le / (1 - rho) = %.6g", exact.y);
     if (termination.rule != Termination::kMinThroughput && indirect) {
-        note += format("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
-                       furnace_radiance_truncated(furnace, termination.max_depth).y,
-                       double(termination.max_depth));
+        note += formatted("; this rule's expected value Le (1 - rho^(N+1)) / (1 - rho) = %.6g with N = %.0f",
+                          furnace_radiance_truncated(furnace, termination.max_depth).y,
+                          double(termination.max_depth));
     }
     return note + " (green channel)";
 }
