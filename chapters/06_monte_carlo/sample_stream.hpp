@@ -5,7 +5,7 @@
 //   stratified:  the same, the camera ray through the sample's stratum of the pixel (the course's default);
 //   sobol:       the Owen-scrambled Sobol sequence of the pixel (owen_sobol.hpp), point `sample` of it.
 // Every stream is a pure function of (pixel, sample, seed), so an image is the same for any thread count.
-// Numbers that are handed to a generator rather than drawn here (a medium's free flights, chapter 09) come
+// Numbers that are handed to a generator rather than drawn here (generator(): code that takes a Pcg32) come
 // from the sample's Pcg32 in every case.
 #pragma once
 
