@@ -14,8 +14,12 @@ struct Hit {
     Vec3 normal{0, 0, 1};  // unit geometric normal, facing the side the ray came from: dot(normal, d) <= 0
     bool front_face =
         true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
-    // No surface coordinates: no chapter has a texture to look up, and a sphere's (atan2 and acos per hit)
-    // cost the glass Cornell box about 2 % of its time.
+    // Texture coordinates (chapter 04's textures): a quad's (a, b) of origin + a u + b v (a box's faces are
+    // quads: each face's own), a triangle's barycentrics (b1, b2), a plane's coordinates in its tangent basis
+    // (plane_uv, in scene units), and a sphere's (φ / 2π, 1 − θ / π) about its y axis (sphere_uv). A sphere's
+    // costs an atan2 and an acos, so it is computed only when the sphere's material has a texture: (0, 0)
+    // otherwise.
+    Vec2 uv{0};
     int material = -1;            // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
     // The light this surface is: k for the k-th primitive, in scene order, whose material emits (a box

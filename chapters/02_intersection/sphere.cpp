@@ -1,5 +1,6 @@
 #include "sphere.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt {
@@ -20,6 +21,13 @@ Vec3 sphere_normal(const Sphere& sphere, const Vec3& p) {
     const Vec3 n = (p - sphere.center) / sphere.radius;
     const Real length = glm::length(n);
     return length > 0 ? n / length : Vec3{0, 1, 0};
+}
+
+Vec2 sphere_uv(const Vec3& n) {
+    Real phi = std::atan2(n.z, n.x);
+    if (phi < 0) phi += 2 * kPi;
+    const Real theta = std::acos(std::clamp(n.y, Real(-1), Real(1)));
+    return {phi / (2 * kPi), 1 - theta / kPi};
 }
 
 }  // namespace rt

@@ -65,5 +65,9 @@ inline std::optional<Real> intersect_sphere(const Ray& ray, const Sphere& sphere
 
 // Outward unit normal at a point p of the surface: (p − c) / r, renormalised.
 Vec3 sphere_normal(const Sphere& sphere, const Vec3& p);
+// Texture coordinates at the point of outward unit normal n: pbrt's spherical (φ, θ) parametrisation with the
+// scene's y as the pole, u = φ / 2π with φ = atan2(n_z, n_x) in [0, 2π), v = 1 − θ / π with θ = acos(n_y):
+// v = 0 at the bottom pole, 1 at the top.
+Vec2 sphere_uv(const Vec3& n);
 
 }  // namespace rt

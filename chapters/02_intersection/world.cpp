@@ -10,7 +10,10 @@
 namespace rt {
 
 World::World(const Scene& scene, WorldOptions options) : options_(options) {
-    for (const Shape& shape : scene.shapes) add(shape, scene.material_of(shape).emissive());
+    for (const Shape& shape : scene.shapes) {
+        const Material& m = scene.material_of(shape);
+        add(shape, m.emissive(), m.texture.has_value());
+    }
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
@@ -89,15 +92,15 @@ void World::pack_quads() {
     }
     for (std::size_t first = 0; first < quads_in_order.size(); first += kQuadLanes) {
         const std::size_t count = std::min<std::size_t>(kQuadLanes, quads_in_order.size() - first);
-        items.push_back({Kind::kQuadPacket, std::uint32_t(packets_.size()), -1, 0, -1});
+        items.push_back({Kind::kQuadPacket, false, std::uint32_t(packets_.size()), -1, 0, -1});
         packets_.push_back(make_quad_packet(quads_, std::span(quads_in_order).subspan(first, count)));
     }
     primitives_ = std::move(items);
 }
 
-void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive) {
-    primitives_.push_back(
-        {kind, index, material, std::uint32_t(primitives_.size()), emissive ? light_count_++ : -1});
+void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive, bool textured) {
+    primitives_.push_back({kind, textured, index, material, std::uint32_t(primitives_.size()),
+                           emissive ? light_count_++ : -1});
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
@@ -142,32 +145,32 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     packets_ = std::move(packets);
 }
 
-void World::add(const Shape& shape, bool emissive) {
+void World::add(const Shape& shape, bool emissive, bool textured) {
     const int material = shape.material;
     std::visit(
         [&](const auto& g) {
             using T = std::decay_t<decltype(g)>;
             if constexpr (std::is_same_v<T, SphereShape>) {
-                add_primitive(Kind::kSphere, std::uint32_t(spheres_.size()), material, emissive);
+                add_primitive(Kind::kSphere, std::uint32_t(spheres_.size()), material, emissive, textured);
                 spheres_.push_back({g.center, g.radius});
             } else if constexpr (std::is_same_v<T, QuadShape>) {
-                add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive);
+                add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive, textured);
                 quads_.push_back(make_quad(g.origin, g.u, g.v));
             } else if constexpr (std::is_same_v<T, TriangleShape>) {
-                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive);
+                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive, textured);
                 triangles_.push_back({g.vertices[0], g.vertices[1], g.vertices[2]});
             } else if constexpr (std::is_same_v<T, PlaneShape>) {
                 planes_.push_back({make_plane(g.point, g.normal), material});
             } else if constexpr (std::is_same_v<T, BoxShape>) {
                 for (const Quad& face : box_faces(g)) {
-                    add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive);
+                    add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive, textured);
                     quads_.push_back(face);
                 }
             } else if constexpr (std::is_same_v<T, MeshShape>) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
                 for (const auto& tri : g.triangles) {
-                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive);
+                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive, textured);
                     triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
                 }
             }
@@ -355,6 +358,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         hit.point = p.plane.point + along_t + along_b;
         hit.point_error = gamma_bound(5) * (abs(p.plane.point) + abs(along_t) + abs(along_b));
         hit.material = p.material;
+        hit.uv = uv;
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
     }
@@ -370,6 +374,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 radial = s.radius * n;
             hit.point = s.center + radial;
             hit.point_error = gamma_bound(5) * (abs(s.center) + abs(radial));
+            if (p.textured) hit.uv = sphere_uv(n);
             set_face_normal(hit, ray.direction, n);
             break;
         }
@@ -378,6 +383,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 along_u = found.uv.x * q.u, along_v = found.uv.y * q.v;
             hit.point = q.origin + along_u + along_v;
             hit.point_error = gamma_bound(3) * (abs(q.origin) + abs(along_u) + abs(along_v));
+            hit.uv = found.uv;
             set_face_normal(hit, ray.direction, q.normal);
             break;
         }
@@ -388,6 +394,7 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;
             hit.point_error = gamma_bound(7) * (abs(w0) + abs(w1) + abs(w2));
+            hit.uv = found.uv;
             set_face_normal(hit, ray.direction, triangle_normal(t));
             break;
         }

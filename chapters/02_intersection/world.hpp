@@ -79,12 +79,13 @@ class World {
 
   private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle, kQuadPacket };
-    // A bounded primitive: which array holds it, where, its material, its number in scene order (what
+    // A bounded primitive: which array holds it, whether its material has a texture, where, its material, its number in scene order (what
     // Hit::primitive reports, whatever order the BVH lays the primitives out in) and the light it is
     // (Hit::light). A packet's material, number and light are its quads' own, in quad_primitives_. All that
     // a hit record needs but the geometry is here, in one record in the BVH's leaf order: one cache miss.
     struct Primitive {
         Kind kind;
+        bool textured;  // its material has a texture: a sphere's hit record computes its uv
         std::uint32_t index;
         int material;
         std::uint32_t id;
@@ -107,8 +108,8 @@ class World {
     };
 
     // Adds the primitives of `shape`; `emissive`: its material emits, so each bounded primitive is a light.
-    void add(const Shape& shape, bool emissive);
-    void add_primitive(Kind kind, std::uint32_t index, int material, bool emissive);
+    void add(const Shape& shape, bool emissive, bool textured);
+    void add_primitive(Kind kind, std::uint32_t index, int material, bool emissive, bool textured);
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
     void collapse_to_wide();

@@ -47,7 +47,8 @@ Vec2 DirectLighting::light_point(int j, Pcg32& rng) const {
 }
 
 Color DirectLighting::direct(const Hit& hit, const Vec3& wo, Pcg32& rng, RayCounts& rays) const {
-    const Bsdf& b = materials_.bsdf(hit.material, hit.front_face);
+    BsdfAtHit at;
+    const Bsdf& b = materials_.bsdf(hit, at);
     // A light sample never falls on a delta BRDF's one direction, and a black BRDF reflects nothing: neither
     // needs a single shadow ray.
     if (!options_.simulates(Effect::kDirect) || is_delta(b) || is_black(b)) return Color(0);

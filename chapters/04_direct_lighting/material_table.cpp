@@ -1,6 +1,7 @@
 #include "material_table.hpp"
 
 #include <cstdio>
+#include <type_traits>
 
 #include "brdf.hpp"
 #include "rt/core/effects.hpp"
@@ -19,6 +20,16 @@ std::string skipped(Effect effect) {
            chapter_that_adds(effect) + " adds it)";
 }
 
+// The BSDF of the material's type (B) with `colour` in place of its own: what the texture gives at a hit.
+template <class B>
+const Bsdf& recolour(const Bsdf& own, const Color& colour, BsdfAtHit& at) {
+    if constexpr (std::is_same_v<B, LambertBrdf> || std::is_same_v<B, MirrorBrdf>) {
+        return at.emplace<B>(colour);
+    } else {
+        return at.emplace<B>(colour, static_cast<const B&>(own).exponent);
+    }
+}
+
 }  // namespace
 
 MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks,
@@ -32,17 +43,21 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
         std::unique_ptr<Medium> interior;
         std::unique_ptr<Bsdf> outside, inside;
         std::string note;
+        const Bsdf& (*recoloured)(const Bsdf&, const Color&, BsdfAtHit&) = nullptr;  // for a texture
         const auto lambert_stand_in = [&](const std::string& why) {
             outside = std::make_unique<LambertBrdf>(m.stand_in_albedo());
+            recoloured = recolour<LambertBrdf>;
             note = why + "; shaded as Lambert (albedo " + albedo_text(m.stand_in_albedo()) + ")";
         };
         switch (m.type) {
             case MaterialType::kDiffuse:
                 outside = std::make_unique<LambertBrdf>(m.albedo);
+                recoloured = recolour<LambertBrdf>;
                 break;
             case MaterialType::kMirror:
                 if (simulated.contains(Effect::kReflection)) {
                     outside = std::make_unique<MirrorBrdf>(m.reflectance);
+                    recoloured = recolour<MirrorBrdf>;
                 } else {
                     outside = std::make_unique<MirrorBrdf>(Color(0));
                     note = skipped(Effect::kReflection) + "; shaded black (it shows only its emission)";
@@ -54,8 +69,10 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                     lambert_stand_in(skipped(Effect::kGlossy));
                 } else if (m.type == MaterialType::kGlossy) {
                     outside = std::make_unique<GlossyBrdf>(m.albedo, phong_exponent(m.roughness));
+                    recoloured = recolour<GlossyBrdf>;
                 } else {
                     outside = std::make_unique<RetroreflectiveBrdf>(m.albedo, phong_exponent(m.roughness));
+                    recoloured = recolour<RetroreflectiveBrdf>;
                 }
                 break;
             case MaterialType::kDielectric:
@@ -83,6 +100,9 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
         sides_.push_back(out);
         sides_.push_back(in);
         interiors_.push_back(std::move(interior));
+        textured_.push_back(m.texture && recoloured ? std::make_unique<const TexturedColour>(
+                                                          TexturedColour{Texture(*m.texture), recoloured})
+                                                    : nullptr);
         if (used[i] && !note.empty()) {
             notes_.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
                              "': " + note);

@@ -6,6 +6,8 @@
 //   - what fills the inside of its shapes (a Medium: chapter 07's Beer–Lambert absorption, chapter 09's
 //     scattering media), if anything;
 // and what fills the space between the shapes, where the camera is (chapter 09's fog), if anything.
+// A material whose colour is a texture has it evaluated here, in bsdf(hit, at): the one place where a
+// texture meets a BSDF, so every path loop that asks for the BSDF at a hit gets it.
 // What a chapter cannot simulate gets a stand-in here, and only here, with a note for the run's summary:
 //   a dielectric without refraction:     Lambert of Material::stand_in_albedo() (0.73);
 //   a glossy lobe without "glossy":      Lambert of its albedo;
@@ -19,12 +21,16 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "02_intersection/hit.hpp"
+#include "brdf.hpp"
 #include "bsdf.hpp"
 #include "medium.hpp"
 #include "rt/core/effect_set.hpp"
 #include "rt/core/scene.hpp"
+#include "texture.hpp"
 
 namespace rt {
 
@@ -44,6 +50,10 @@ struct MaterialHooks {
     std::function<std::unique_ptr<Medium>(const MediumDesc&)> medium;
 };
 
+// Room for the BSDF of a textured material at one hit: the caller's, on its stack, so the table stays
+// shared and read-only between threads. Empty (and never written) in a scene without textures.
+using BsdfAtHit = std::variant<std::monostate, LambertBrdf, MirrorBrdf, GlossyBrdf, RetroreflectiveBrdf>;
+
 class MaterialTable {
   public:
     MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks = {},
@@ -52,6 +62,14 @@ class MaterialTable {
     // The BSDF at a hit on material m, from the side the ray came from (Hit::front_face).
     const Bsdf& bsdf(int material, bool front_face = true) const {
         return *sides_[2 * std::size_t(material) + (front_face ? 0 : 1)];
+    }
+    // The BSDF at `hit`, from the side the ray came from: bsdf(material, front_face), or for a textured
+    // material the same BSDF with its colour (albedo, or a mirror's reflectance) replaced by the texture at
+    // hit.uv, made in `at` (valid while `at` is and until its next use).
+    const Bsdf& bsdf(const Hit& hit, BsdfAtHit& at) const {
+        const Bsdf& own = bsdf(hit.material, hit.front_face);
+        const TexturedColour* textured = textured_[std::size_t(hit.material)].get();
+        return textured ? textured->recolour(own, textured->texture.at(hit.uv), at) : own;
     }
     // What the ray meets when it hits material m from that side: its emission, only on the outside.
     Color emission(int material, bool front_face) const {
@@ -66,7 +84,14 @@ class MaterialTable {
     std::size_t size() const { return emission_.size(); }
 
   private:
+    // A textured material's texture, and how to make its BSDF with another colour.
+    struct TexturedColour {
+        Texture texture;
+        const Bsdf& (*recolour)(const Bsdf& own, const Color& colour, BsdfAtHit& at);
+    };
+
     std::vector<std::unique_ptr<Bsdf>> owned_;
+    std::vector<std::unique_ptr<const TexturedColour>> textured_;  // per material; null: a constant colour
     std::vector<const Bsdf*> sides_;  // 2 per material: outside, inside
     std::vector<Color> emission_;
     std::vector<std::unique_ptr<Medium>> interiors_;

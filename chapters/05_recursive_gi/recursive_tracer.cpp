@@ -42,7 +42,8 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     if (!continue_path(options_.termination, depth, throughput, rng.next_real())) return L;
 
     const Vec3 wo = -ray.direction;
-    const Bsdf& brdf = materials.bsdf(hit->material, hit->front_face);
+    BsdfAtHit at;
+    const Bsdf& brdf = materials.bsdf(*hit, at);
     const RayOffset& offset = shading_.options().offset;
     // Chapter 05's one delta BRDF is the mirror (its material table makes no glass).
     if (const auto* mirror = is_delta(brdf) ? dynamic_cast<const MirrorBrdf*>(&brdf) : nullptr) {

@@ -58,6 +58,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
     int bounces = 0;     // non-delta bounces so far
     int depth = 0;       // bounces so far, delta ones too (what roulette counts)
     Real eta_scale = 1;  // Π of the samples' 1 / radiance_scale
+    BsdfAtHit at;        // a textured material's BSDF at the vertex
     for (;;) {
         const auto hit = world_.intersect(ray);
         // Light the path meets: counted in full after the camera or a delta bounce, weighted by MIS against
@@ -77,7 +78,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
             if (observer) observer->light_met(L, from.specular, bounces);
         }
         if (!indirect_ && bounces >= 1) break;
-        const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
+        const Bsdf& bsdf = materials_.bsdf(*hit, at);
         const BsdfFlags& flags = bsdf.flags();
         if ((observer && !observer->reached(*hit, flags, bounces)) || flags.black) break;
         const Vec3 wo = -ray.direction;

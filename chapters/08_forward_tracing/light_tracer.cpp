@@ -111,7 +111,8 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
             if (const Medium* medium = materials_.interior(hit->material))
                 relative *= medium->transmittance(hit->t);
         }
-        const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
+        BsdfAtHit at;
+        const Bsdf& bsdf = materials_.bsdf(*hit, at);
         const BsdfFlags& flags = bsdf.flags();
         if (flags.black) break;
         const Vec3 wo = -ray.direction;

@@ -163,7 +163,8 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
             if (observer) observer->light_met(path.L, from.specular, path.bounces);
         }
         if (!steps.indirect() && path.bounces >= 1) break;
-        const Bsdf& bsdf = materials_.bsdf(hit->material, hit->front_face);
+        BsdfAtHit at;
+        const Bsdf& bsdf = materials_.bsdf(*hit, at);
         const BsdfFlags& flags = bsdf.flags();
         if (observer && !observer->reached(*hit, flags, path.bounces)) break;
         // Shadow rays cross an index-matched boundary (transmittance()), so light sampling sees what lies

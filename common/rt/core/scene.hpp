@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,6 +46,33 @@ struct MediumDesc {
     bool scatters() const { return sigma_s.r > 0 || sigma_s.g > 0 || sigma_s.b > 0; }
 };
 
+// A texture in place of a colour parameter (chapter 04 evaluates it at a hit's uv; see texture.hpp there).
+// An image, read once when the scene is loaded: texels in linear RGB, row 0 at the top of the picture.
+struct TextureImage {
+    int width = 0;
+    int height = 0;
+    std::vector<Color> texels;  // width · height, row by row
+};
+enum class TextureWrap { kRepeat, kClamp };        // what a coordinate outside [0, 1) reads
+enum class TextureFilter { kBilinear, kNearest };  // how texels between texel centres are blended
+struct ImageTextureDesc {
+    std::string file;                            // as the scene file names it
+    std::shared_ptr<const TextureImage> image;   // shared: copies of a Scene do not copy the texels
+    Vec2 scale{1};                               // (su, sv): the image repeats su times along u, sv along v
+    TextureWrap wrap = TextureWrap::kRepeat;
+    TextureFilter filter = TextureFilter::kBilinear;
+};
+// Squares of side 1 / scale in uv: even where ⌊scale·u⌋ + ⌊scale·v⌋ is even, odd elsewhere.
+struct CheckerDesc {
+    Color even{1};
+    Color odd{0};
+    Real scale = 1;
+};
+struct TextureDesc {
+    std::variant<ImageTextureDesc, CheckerDesc> pattern;
+    Color mean{0};  // its average colour over a period: what a chapter without textures shades it as
+};
+
 struct Material {
     std::string name;
     MaterialType type = MaterialType::kDiffuse;
@@ -56,6 +84,9 @@ struct Material {
     Real ior = 1.5f;          // dielectric: index of refraction
     Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
     std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
+    // The texture the colour parameter (albedo, or a mirror's reflectance) names instead of [r, g, b], if
+    // any; the colour itself is then the texture's mean.
+    std::optional<TextureDesc> texture;
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:

@@ -31,6 +31,11 @@ Real srgb_encode(Real linear) {
                                 : Real(1.055) * std::pow(c, Real(1) / Real(2.4)) - Real(0.055);
 }
 
+Real srgb_decode(Real encoded) {
+    const Real c = std::clamp(encoded, Real(0), Real(1));
+    return c <= Real(0.04045) ? c / Real(12.92) : std::pow((c + Real(0.055)) / Real(1.055), Real(2.4));
+}
+
 std::uint8_t to_display_byte(Real linear) {
     if (!std::isfinite(linear)) linear = 0;
     return std::uint8_t(std::lround(srgb_encode(linear) * Real(255)));

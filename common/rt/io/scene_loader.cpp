@@ -17,6 +17,7 @@
 #include "rt/io/input_file.hpp"
 #include "rt/io/json_reader.hpp"
 #include "rt/io/obj_parser.hpp"
+#include "rt/io/texture_image.hpp"
 
 namespace rt {
 namespace {
@@ -234,7 +235,75 @@ MediumDesc read_medium(const Node& node) {
     return medium;
 }
 
-Material read_material(const Node& node, const std::string& name) {
+constexpr std::string_view kImageTextureKeys[] = {"texture", "scale", "wrap", "filter", "encoding"};
+constexpr std::string_view kCheckerKeys[] = {"even", "odd", "scale"};
+
+// One of `names` (a texture's "wrap", "filter" or "encoding"): its index.
+std::size_t read_choice(const Node& node, std::span<const std::string_view> names) {
+    const std::string value = node.string();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == value) return i;
+    }
+    std::string expected;
+    for (std::size_t i = 0; i < names.size(); ++i) expected += (i ? " or " : "") + std::string(names[i]);
+    node.fail("unknown value " + quote(value) + suggestion(value, names) + "; expected " + expected);
+}
+
+// {"texture": file, "scale": [su, sv], "wrap": ..., "filter": ..., "encoding": ...}: the image is read here,
+// once, relative to the scene's folder as a mesh is.
+TextureDesc read_image_texture(const Node& node, const fs::path& scene_folder) {
+    node.expect_object(kImageTextureKeys, "an image texture");
+    ImageTextureDesc desc;
+    const Node file = node["texture"];
+    desc.file = file.string();
+    if (node.has("scale")) {
+        const Node scale = node["scale"];
+        if (scale.array_size() != 2) scale.fail("must be an array of 2 numbers, got " + std::to_string(scale.array_size()));
+        desc.scale = {scale.element(0).positive(), scale.element(1).positive()};
+    }
+    constexpr std::string_view kWraps[] = {"repeat", "clamp"};
+    constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
+    constexpr std::string_view kEncodings[] = {"srgb", "linear"};
+    if (node.has("wrap")) desc.wrap = TextureWrap(read_choice(node["wrap"], kWraps));
+    if (node.has("filter")) desc.filter = TextureFilter(read_choice(node["filter"], kFilters));
+    const bool srgb = !node.has("encoding") || read_choice(node["encoding"], kEncodings) == 0;
+    const fs::path path = scene_folder / desc.file;
+    try {
+        desc.image = std::make_shared<const TextureImage>(read_texture_image(path, srgb));
+    } catch (const InputError& e) {
+        file.fail(shown(path) + ": " + e.what());
+    }
+    Vec3d sum(0);
+    for (const Color& t : desc.image->texels) sum += Vec3d(t);
+    const Color mean(sum / double(desc.image->texels.size()));
+    return {desc, mean};
+}
+
+TextureDesc read_checker(const Node& node) {
+    node.expect_object(std::array<std::string_view, 1>{"checker"}, "a checker texture");
+    const Node checker = node["checker"];
+    checker.expect_object(kCheckerKeys, "a checker");
+    CheckerDesc desc;
+    if (checker.has("even")) desc.even = checker["even"].color_in(1);
+    if (checker.has("odd")) desc.odd = checker["odd"].color_in(1);
+    if (checker.has("scale")) desc.scale = checker["scale"].positive();
+    return {desc, (desc.even + desc.odd) / Real(2)};
+}
+
+// A colour parameter (albedo, reflectance): [r, g, b] in [0, 1], or a texture, whose mean is the colour.
+Color read_colour_parameter(const Node& node, const fs::path& scene_folder, std::optional<TextureDesc>& texture) {
+    if (!node.json().is_object()) return node.color_in(1);
+    if (node.has("texture")) {
+        texture = read_image_texture(node, scene_folder);
+    } else if (node.has("checker")) {
+        texture = read_checker(node);
+    } else {
+        node.fail("must be [r, g, b] or a texture: {\"texture\": \"file.png\"} or {\"checker\": {...}}");
+    }
+    return texture->mean;
+}
+
+Material read_material(const Node& node, const std::string& name, const fs::path& scene_folder) {
     if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
     const std::string type = node["type"].string();
     if (type != "dielectric" && node.has("medium")) {
@@ -267,8 +336,8 @@ Material read_material(const Node& node, const std::string& name) {
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
                           "; expected diffuse, mirror, glossy, retroreflective or dielectric");
     }
-    if (node.has("albedo")) m.albedo = node["albedo"].color_in(1);
-    if (node.has("reflectance")) m.reflectance = node["reflectance"].color_in(1);
+    if (node.has("albedo")) m.albedo = read_colour_parameter(node["albedo"], scene_folder, m.texture);
+    if (node.has("reflectance")) m.reflectance = read_colour_parameter(node["reflectance"], scene_folder, m.texture);
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
     if (node.has("roughness")) m.roughness = node["roughness"].real_in(0, 1, true, false);
     if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
@@ -482,18 +551,19 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
 
     std::map<std::string, int> material_index;
     std::vector<std::string_view> material_names;
+    const fs::path folder = file.parent_path();  // empty for a bare file name: the current folder
     if (top.has("materials")) {
         const Node materials = top["materials"];
         if (!materials.json().is_object()) materials.fail("must be an object of named materials");
         for (const auto& [key, value] : root.at("materials").items()) {
             material_index[key] = int(scene.materials.size());
-            scene.materials.push_back(read_material(Node(value, "materials." + shown_name(key), name), key));
+            scene.materials.push_back(
+                read_material(Node(value, "materials." + shown_name(key), name), key, folder));
         }
         for (const Material& m : scene.materials) material_names.push_back(m.name);
     }
     if (top.has("shapes")) {
         const Node shapes = top["shapes"];
-        const fs::path folder = file.parent_path();  // empty for a bare file name: the current folder
         for (std::size_t i = 0; i < shapes.array_size(); ++i) {
             scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
         }
