@@ -1114,3 +1114,61 @@ TEST_CASE("The wide BVH visits the nearest leaf first and culls every child ente
         }
     }
 }
+
+TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the y axis", "[uv][sphere]") {
+    CHECK(sphere_uv({1, 0, 0}) == Vec2{0, 0.5f});  // φ = 0 on +x, the equator at v = ½
+    CHECK(sphere_uv({0, 0, 1}).x == Approx(0.25));
+    CHECK(sphere_uv({-1, 0, 0}).x == Approx(0.5));
+    CHECK(sphere_uv({0, 0, -1}).x == Approx(0.75));
+    CHECK(sphere_uv({0, 1, 0}).y == 1);  // the top pole
+    CHECK(sphere_uv({0, -1, 0}).y == 0);
+    const Real s = std::sqrt(Real(0.5));
+    CHECK(sphere_uv({s, s, 0}).y == Approx(0.75));  // θ = 45°
+    // Through the world: only a textured sphere's hit record pays for them.
+    std::vector<Shape> shapes{{SphereShape{{0, 0, 0}, 2}, 0, "s"}};
+    Scene scene = scene_of(shapes);
+    const Ray down{{0, 5, 0}, {0, -1, 0}};
+    CHECK(World(scene).intersect(down)->uv == Vec2{0});
+    scene.materials[0].texture = TextureDesc{CheckerDesc{}, Color(0.5f)};
+    const auto top = World(scene).intersect(down);
+    REQUIRE(top);
+    CHECK(top->uv.y == 1);
+    const auto side = World(scene).intersect(Ray{{0, 0, 5}, {0, 0, -1}});
+    REQUIRE(side);
+    CHECK(side->uv.x == Approx(0.25));
+    CHECK(side->uv.y == Approx(0.5));
+}
+
+TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane", "[uv][world]") {
+    for (Acceleration accel : {Acceleration::kBvh, Acceleration::kNone}) {
+        // A quad's (a, b) of origin + a u + b v.
+        std::vector<Shape> quad{{QuadShape{{-1, -1, -5}, {4, 0, 0}, {0, 2, 0}}, 0, "q"}};
+        const auto q = World(scene_of(quad), {TriangleTest::kWatertight, accel})
+                           .intersect(Ray{{0, 0.5f, 0}, {0, 0, -1}});
+        REQUIRE(q);
+        CHECK(q->uv == Vec2{0.25f, 0.75f});
+        // A triangle's barycentrics (b1, b2) of its second and third vertices.
+        std::vector<Shape> triangle{
+            {TriangleShape{{Vec3{0, 0, -5}, Vec3{4, 0, -5}, Vec3{0, 4, -5}}}, 0, "t"}};
+        const auto t = World(scene_of(triangle), {TriangleTest::kWatertight, accel})
+                           .intersect(Ray{{1, 2, 0}, {0, 0, -1}});
+        REQUIRE(t);
+        CHECK(t->uv.x == Approx(0.25));
+        CHECK(t->uv.y == Approx(0.5));
+        // A box: each face is a quad, and its uv that quad's (a, b), in [0, 1]².
+        std::vector<Shape> box{{BoxShape{{-1, -1, -6}, {1, 1, -4}, {}}, 0, "b"}};
+        const auto b = World(scene_of(box), {TriangleTest::kWatertight, accel})
+                           .intersect(Ray{{0.5f, -0.5f, 0}, {0, 0, -1}});
+        REQUIRE(b);
+        CHECK(b->normal == Vec3{0, 0, 1});
+        // The +z face runs from the corner (−1, −1, −4) along x (u) and y (v), box_faces' order.
+        CHECK(b->uv.x == Approx(0.75));
+        CHECK(b->uv.y == Approx(0.25));
+        // A plane's coordinates in its tangent basis, in scene units (y up: u along z, v along x).
+        std::vector<Shape> plane{{PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0, "p"}};
+        const auto p =
+            World(scene_of(plane), {TriangleTest::kWatertight, accel}).intersect(Ray{{2, 3, -7}, {0, -1, 0}});
+        REQUIRE(p);
+        CHECK(p->uv == Vec2{-7, 2});
+    }
+}

@@ -20,10 +20,12 @@
 #include "04_direct_lighting/irradiance.hpp"
 #include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
+#include "04_direct_lighting/texture.hpp"
 #include "random_unit.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/image_io.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 #include "support/direction_warps.hpp"
@@ -949,4 +951,175 @@ TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 
     CHECK(one.rays[RayKind::kShadow] > 0);
     CHECK(one.rays[RayKind::kReflection] == 0);
     CHECK(one.rays[RayKind::kIndirect] == 0);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Textures: the sRGB decode, the image filters and wrap modes, the checkerboard, and the material table's
+// one lookup.
+
+TEST_CASE("The sRGB decode is the exact piecewise EOTF, not gamma 2.2", "[texture][srgb]") {
+    CHECK(srgb_decode(0) == 0);
+    CHECK(srgb_decode(1) == 1);
+    // Both pieces meet at the breakpoint c = 0.04045: c / 12.92 = ((c + 0.055) / 1.055)^2.4 there (to 1e-4
+    // relative, as the standard rounds its constants).
+    const double c = 0.04045;
+    CHECK(double(srgb_decode(Real(c))) == Approx(c / 12.92).epsilon(1e-6));
+    CHECK(c / 12.92 == Approx(std::pow((c + 0.055) / 1.055, 2.4)).epsilon(1e-4));
+    // Above it, the power law in double; below, the line.
+    for (double x : {0.01, 0.04, 0.05, 0.2, 0.5, 0.735, 0.99}) {
+        const double exact = x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+        CHECK(double(srgb_decode(Real(x))) == Approx(exact).epsilon(1e-6));
+    }
+    // Gamma 2.2 is not it: at mid-grey it is 0.2176 against 0.2140, and near black 30 times too dark.
+    CHECK(std::abs(std::pow(0.5, 2.2) - double(srgb_decode(0.5f))) > 3e-3);
+    CHECK(std::pow(0.02, 2.2) < double(srgb_decode(0.02f)) / 30);
+    // It inverts the encode that writes the PNGs.
+    for (int b = 0; b <= 255; ++b) {
+        const Real x = Real(b) / 255;
+        CHECK(srgb_encode(srgb_decode(x)) == Approx(x).margin(1e-6));
+    }
+}
+
+namespace {
+
+// 2 × 2 texels, row 0 at the top: red, green / blue, white.
+ImageTextureDesc two_by_two(TextureWrap wrap, TextureFilter filter) {
+    auto image = std::make_shared<TextureImage>(
+        TextureImage{2, 2, {Color{1, 0, 0}, Color{0, 1, 0}, Color{0, 0, 1}, Color{1, 1, 1}}});
+    ImageTextureDesc desc;
+    desc.image = image;
+    desc.wrap = wrap;
+    desc.filter = filter;
+    return desc;
+}
+
+}  // namespace
+
+TEST_CASE("Bilinear filtering of a 2 x 2 image: texel centres, midpoints and the edges wrapped or clamped",
+          "[texture][filter]") {
+    const ImageTextureDesc repeat = two_by_two(TextureWrap::kRepeat, TextureFilter::kBilinear);
+    const ImageTextureDesc clamp = two_by_two(TextureWrap::kClamp, TextureFilter::kBilinear);
+    for (const auto* d : {&repeat, &clamp}) {
+        // Texel centres (u = ¼, ¾; v up, so the top row is at v = ¾) give the texels themselves.
+        CHECK(image_at(*d, {0.25f, 0.75f}) == Color{1, 0, 0});
+        CHECK(image_at(*d, {0.75f, 0.75f}) == Color{0, 1, 0});
+        CHECK(image_at(*d, {0.25f, 0.25f}) == Color{0, 0, 1});
+        CHECK(image_at(*d, {0.75f, 0.25f}) == Color{1, 1, 1});
+        // Halfway between two centres: their mean; at the middle, the mean of all four.
+        CHECK(image_at(*d, {0.5f, 0.75f}) == Color{0.5f, 0.5f, 0});
+        CHECK(image_at(*d, {0.5f, 0.5f}) == Color{0.5f, 0.5f, 0.5f});
+        // A quarter of the way: weights ¾ and ¼.
+        CHECK(image_at(*d, {0.375f, 0.75f}) == Color{0.75f, 0.25f, 0});
+    }
+    // At the left edge (u = 0) repeat blends with the right column, clamp stays on the left one.
+    CHECK(image_at(repeat, {0, 0.75f}) == Color{0.5f, 0.5f, 0});
+    CHECK(image_at(clamp, {0, 0.75f}) == Color{1, 0, 0});
+    // Outside [0, 1): repeat takes the fraction, clamp the edge.
+    CHECK(image_at(repeat, {1.25f, -0.25f}) == Color{0, 0, 1});
+    CHECK(image_at(clamp, {1.25f, -0.25f}) == Color{1, 1, 1});
+    CHECK(image_at(clamp, {-3, 7}) == Color{1, 0, 0});
+    // The scale repeats the image: (su, sv) = (2, 1) puts u = 0.125 on the first texel centre again.
+    ImageTextureDesc scaled = repeat;
+    scaled.scale = {2, 1};
+    CHECK(image_at(scaled, {0.625f, 0.75f}) == Color{1, 0, 0});
+    // Far-away coordinates (a plane's, in scene units) stay finite and in range.
+    CHECK(is_finite(image_at(repeat, {1e30f, -1e30f})));
+    CHECK(is_finite(image_at(repeat, {1e7f + 0.3f, 12345.6f})));
+}
+
+TEST_CASE("Nearest filtering and the texel index of each wrap mode", "[texture][filter]") {
+    CHECK(wrap_texel(-1, 4, TextureWrap::kRepeat) == 3);
+    CHECK(wrap_texel(4, 4, TextureWrap::kRepeat) == 0);
+    CHECK(wrap_texel(-9, 4, TextureWrap::kRepeat) == 3);
+    CHECK(wrap_texel(-1, 4, TextureWrap::kClamp) == 0);
+    CHECK(wrap_texel(4, 4, TextureWrap::kClamp) == 3);
+    const ImageTextureDesc nearest = two_by_two(TextureWrap::kRepeat, TextureFilter::kNearest);
+    CHECK(image_at(nearest, {0.4f, 0.9f}) == Color{1, 0, 0});
+    CHECK(image_at(nearest, {0.6f, 0.9f}) == Color{0, 1, 0});
+    CHECK(image_at(nearest, {0.1f, 0.1f}) == Color{0, 0, 1});
+    CHECK(image_at(nearest, {0.99f, 0.01f}) == Color{1, 1, 1});
+    CHECK(image_at(nearest, {1.1f, 1.9f}) == Color{1, 0, 0});
+    const ImageTextureDesc clamped = two_by_two(TextureWrap::kClamp, TextureFilter::kNearest);
+    CHECK(image_at(clamped, {1, 0}) == Color{1, 1, 1});  // the edge itself: the last texel, not past it
+    CHECK(image_at(clamped, {-0.5f, 2}) == Color{1, 0, 0});
+}
+
+TEST_CASE("The checkerboard alternates across every line, zero included", "[texture][checker]") {
+    const CheckerDesc d{Color(1), Color(0), 2};
+    CHECK(checker_at(d, {0.1f, 0.1f}) == Color(1));
+    CHECK(checker_at(d, {0.6f, 0.1f}) == Color(0));
+    CHECK(checker_at(d, {0.6f, 0.6f}) == Color(1));
+    CHECK(checker_at(d, {-0.1f, 0.1f}) == Color(0));  // ⌊−0.2⌋ = −1: odd, not a doubled square at 0
+    CHECK(checker_at(d, {-0.1f, -0.1f}) == Color(1));
+    CHECK(checker_at(d, {-5.7f, 3.2f}) == checker_at(d, {-5.7f + 1, 3.2f}));  // period 2 / scale
+}
+
+TEST_CASE("The material table evaluates a texture at the hit, and leaves untextured materials as they are",
+          "[texture][materials]") {
+    Scene scene;
+    scene.materials.push_back(diffuse(Color(0.5f)));
+    Material checker = diffuse(Color(0.5f));
+    checker.texture = TextureDesc{CheckerDesc{Color(0.9f), Color(0.1f), 1}, Color(0.5f)};
+    scene.materials.push_back(checker);
+    Material mirror;
+    mirror.type = MaterialType::kMirror;
+    mirror.texture = TextureDesc{CheckerDesc{Color(0.8f), Color(0.2f), 1}, Color(0.5f)};
+    scene.materials.push_back(mirror);
+    const MaterialTable table(scene, EffectSet::all());
+    BsdfAtHit at;
+    Hit hit;
+    hit.material = 0;
+    CHECK(&table.bsdf(hit, at) == &table.bsdf(0));
+    CHECK(std::holds_alternative<std::monostate>(at));
+    hit.material = 1;
+    hit.uv = {0.5f, 0.5f};
+    CHECK(dynamic_cast<const LambertBrdf&>(table.bsdf(hit, at)).albedo == Color(0.9f));
+    hit.uv = {1.5f, 0.5f};
+    CHECK(dynamic_cast<const LambertBrdf&>(table.bsdf(hit, at)).albedo == Color(0.1f));
+    hit.material = 2;
+    CHECK(dynamic_cast<const MirrorBrdf&>(table.bsdf(hit, at)).reflectance == Color(0.2f));
+    // Without reflection simulated, the mirror is black whatever its texture.
+    const MaterialTable no_reflection(scene, EffectSet{Effect::kCameraRays, Effect::kDirect});
+    CHECK(is_black(no_reflection.bsdf(hit, at)));
+}
+
+TEST_CASE("A checkerboard of one colour renders bit for bit as that colour, and of two it differs",
+          "[texture][render]") {
+    FloorScene f;
+    f.scene.point_lights.push_back({{0, 2, 0}, Color(10)});
+    const RenderResult plain = render_scene(f.scene, {});
+    f.scene.materials[0].texture = TextureDesc{CheckerDesc{Color(0.5f), Color(0.5f), 4}, Color(0.5f)};
+    CHECK(render_scene(f.scene, {}).image.pixels() == plain.image.pixels());
+    f.scene.materials[0].texture = TextureDesc{CheckerDesc{Color(1), Color(0), 4}, Color(0.5f)};
+    const RenderResult squares = render_scene(f.scene, {});
+    CHECK(squares.image.pixels() != plain.image.pixels());
+    CHECK(squares.image.mean() == Approx(plain.image.mean()).epsilon(0.2));
+}
+
+TEST_CASE("The textured scene loads its image once, decoded, and renders finite on 1 and 2 threads",
+          "[texture][render]") {
+    const Scene scene = load_scene(scene_path("ch04_textured.json"));
+    const Scene undecoded = load_scene(scene_path("ch04_textured_undecoded.json"));
+    int images = 0;
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        const Material& m = scene.materials[i];
+        if (!m.texture) continue;
+        CHECK(m.albedo == m.texture->mean);
+        if (const auto* image = std::get_if<ImageTextureDesc>(&m.texture->pattern)) {
+            ++images;
+            REQUIRE(image->image);
+            CHECK(image->image->width == 64);
+            CHECK(image->image->height == 64);
+            // Decoded, every texel is darker than its bytes read as they are (0 < c < 1: c^2.4-ish < c).
+            const auto& raw =
+                std::get<ImageTextureDesc>(undecoded.materials[i].texture->pattern).image->texels;
+            CHECK(image->image->texels[0].r < raw[0].r);
+            CHECK(image->image->texels[0].r == srgb_decode(raw[0].r));
+        }
+    }
+    CHECK(images == 2);
+    const RenderResult one = render_scene(scene, {}, 24, 1, 1);
+    const RenderResult two = render_scene(scene, {}, 24, 1, 2);
+    CHECK(one.image.all_finite());
+    CHECK(one.image.pixels() == two.image.pixels());
 }

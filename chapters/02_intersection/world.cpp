@@ -99,8 +99,8 @@ void World::pack_quads() {
 }
 
 void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emissive, bool textured) {
-    primitives_.push_back({kind, textured, index, material, std::uint32_t(primitives_.size()),
-                           emissive ? light_count_++ : -1});
+    primitives_.push_back(
+        {kind, textured, index, material, std::uint32_t(primitives_.size()), emissive ? light_count_++ : -1});
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
@@ -157,7 +157,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                 add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive, textured);
                 quads_.push_back(make_quad(g.origin, g.u, g.v));
             } else if constexpr (std::is_same_v<T, TriangleShape>) {
-                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive, textured);
+                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive,
+                              textured);
                 triangles_.push_back({g.vertices[0], g.vertices[1], g.vertices[2]});
             } else if constexpr (std::is_same_v<T, PlaneShape>) {
                 planes_.push_back({make_plane(g.point, g.normal), material});
@@ -170,7 +171,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
                 for (const auto& tri : g.triangles) {
-                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive, textured);
+                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive,
+                                  textured);
                     triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
                 }
             }

@@ -79,10 +79,11 @@ class World {
 
   private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle, kQuadPacket };
-    // A bounded primitive: which array holds it, whether its material has a texture, where, its material, its number in scene order (what
-    // Hit::primitive reports, whatever order the BVH lays the primitives out in) and the light it is
-    // (Hit::light). A packet's material, number and light are its quads' own, in quad_primitives_. All that
-    // a hit record needs but the geometry is here, in one record in the BVH's leaf order: one cache miss.
+    // A bounded primitive: which array holds it, whether its material has a texture, where, its material, its
+    // number in scene order (what Hit::primitive reports, whatever order the BVH lays the primitives out in)
+    // and the light it is (Hit::light). A packet's material, number and light are its quads' own, in
+    // quad_primitives_. All that a hit record needs but the geometry is here, in one record in the BVH's leaf
+    // order: one cache miss.
     struct Primitive {
         Kind kind;
         bool textured;  // its material has a texture: a sphere's hit record computes its uv

@@ -66,6 +66,11 @@ std::vector<std::string> shading_notes(const Scene& scene) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];
+        if (m.texture) {
+            notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+                            "': its texture is shaded as its mean colour here; textures are simulated from "
+                            "chapter 04 on");
+        }
         const auto effect = effect_of(m);
         if (!effect) continue;
         notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +

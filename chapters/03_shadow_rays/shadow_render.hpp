@@ -47,7 +47,7 @@ RenderResult render_shadows(const World& world, const Scene& scene, const Pinhol
                             const ShadowOptions& options, const RenderSettings& settings);
 
 // What this chapter does not simulate in `scene`, one line each: lights other than point lights, and
-// materials shaded as Lambertian, with the chapter that adds them.
+// materials shaded as Lambertian or textures shaded as their mean colour, with the chapter that adds them.
 std::vector<std::string> shading_notes(const Scene& scene);
 
 }  // namespace rt

@@ -133,6 +133,11 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
     } else {
         throw std::logic_error(named(m) + ": a BSDF the shaders do not know");
     }
+    if (m.texture && used && !outside.flags().black) {
+        notes.push_back(named(m) +
+                        ": textures are not in the shaders; shaded as the texture's mean colour "
+                        "(chapter 04 renders it textured)");
+    }
     if (const Medium* interior = table.interior(index)) {
         const auto* absorbing = dynamic_cast<const AbsorbingMedium*>(interior);
         if (!absorbing) {

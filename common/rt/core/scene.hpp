@@ -56,9 +56,9 @@ struct TextureImage {
 enum class TextureWrap { kRepeat, kClamp };        // what a coordinate outside [0, 1) reads
 enum class TextureFilter { kBilinear, kNearest };  // how texels between texel centres are blended
 struct ImageTextureDesc {
-    std::string file;                            // as the scene file names it
-    std::shared_ptr<const TextureImage> image;   // shared: copies of a Scene do not copy the texels
-    Vec2 scale{1};                               // (su, sv): the image repeats su times along u, sv along v
+    std::string file;                           // as the scene file names it
+    std::shared_ptr<const TextureImage> image;  // shared: copies of a Scene do not copy the texels
+    Vec2 scale{1};                              // (su, sv): the image repeats su times along u, sv along v
     TextureWrap wrap = TextureWrap::kRepeat;
     TextureFilter filter = TextureFilter::kBilinear;
 };

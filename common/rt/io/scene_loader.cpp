@@ -258,7 +258,8 @@ TextureDesc read_image_texture(const Node& node, const fs::path& scene_folder) {
     desc.file = file.string();
     if (node.has("scale")) {
         const Node scale = node["scale"];
-        if (scale.array_size() != 2) scale.fail("must be an array of 2 numbers, got " + std::to_string(scale.array_size()));
+        if (scale.array_size() != 2)
+            scale.fail("must be an array of 2 numbers, got " + std::to_string(scale.array_size()));
         desc.scale = {scale.element(0).positive(), scale.element(1).positive()};
     }
     constexpr std::string_view kWraps[] = {"repeat", "clamp"};
@@ -291,7 +292,8 @@ TextureDesc read_checker(const Node& node) {
 }
 
 // A colour parameter (albedo, reflectance): [r, g, b] in [0, 1], or a texture, whose mean is the colour.
-Color read_colour_parameter(const Node& node, const fs::path& scene_folder, std::optional<TextureDesc>& texture) {
+Color read_colour_parameter(const Node& node, const fs::path& scene_folder,
+                            std::optional<TextureDesc>& texture) {
     if (!node.json().is_object()) return node.color_in(1);
     if (node.has("texture")) {
         texture = read_image_texture(node, scene_folder);
@@ -337,7 +339,8 @@ Material read_material(const Node& node, const std::string& name, const fs::path
                           "; expected diffuse, mirror, glossy, retroreflective or dielectric");
     }
     if (node.has("albedo")) m.albedo = read_colour_parameter(node["albedo"], scene_folder, m.texture);
-    if (node.has("reflectance")) m.reflectance = read_colour_parameter(node["reflectance"], scene_folder, m.texture);
+    if (node.has("reflectance"))
+        m.reflectance = read_colour_parameter(node["reflectance"], scene_folder, m.texture);
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
     if (node.has("roughness")) m.roughness = node["roughness"].real_in(0, 1, true, false);
     if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);

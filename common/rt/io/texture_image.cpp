@@ -22,8 +22,8 @@ TextureImage read_texture_image(const std::filesystem::path& path, bool srgb) {
                          stbi_failure_reason() + ")");
     }
     if (width > kLargestTextureSide || height > kLargestTextureSide) {
-        throw InputError("must be at most " + std::to_string(kLargestTextureSide) + " texels on a side, got " +
-                         std::to_string(width) + " x " + std::to_string(height));
+        throw InputError("must be at most " + std::to_string(kLargestTextureSide) +
+                         " texels on a side, got " + std::to_string(width) + " x " + std::to_string(height));
     }
     const std::unique_ptr<stbi_uc, void (*)(void*)> rgb(
         stbi_load_from_memory(data, int(bytes.size()), &width, &height, &channels, 3), stbi_image_free);

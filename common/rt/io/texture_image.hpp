@@ -1,5 +1,6 @@
-// A texture's image file (PNG or JPEG, through stb_image), read once when the scene is loaded, into linear RGB
-// texels: each 8-bit value decoded by the sRGB EOTF (srgb_decode), or taken as it is for a "linear" image.
+// A texture's image file (PNG or JPEG, through stb_image), read once when the scene is loaded, into linear
+// RGB texels: each 8-bit value decoded by the sRGB EOTF (srgb_decode), or taken as it is for a "linear"
+// image.
 #pragma once
 
 #include <filesystem>
