@@ -970,9 +970,13 @@ TEST_CASE("The sRGB decode is the exact piecewise EOTF, not gamma 2.2", "[textur
         const double exact = x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
         CHECK(double(srgb_decode(Real(x))) == Approx(exact).epsilon(1e-6));
     }
-    // Gamma 2.2 is not it: at mid-grey it is 0.2176 against 0.2140, and near black 30 times too dark.
-    CHECK(std::abs(std::pow(0.5, 2.2) - double(srgb_decode(0.5f))) > 3e-3);
-    CHECK(std::pow(0.02, 2.2) < double(srgb_decode(0.02f)) / 30);
+    // Gamma 2.2 is not it: at mid-grey it is 0.2176 against 0.2140, and at the darkest code, 1/255, it is 60
+    // times too dark (the EOTF is a line there).
+    CHECK(std::pow(0.5, 2.2) == Approx(0.21764).epsilon(1e-4));
+    CHECK(double(srgb_decode(0.5f)) == Approx(0.21404).epsilon(1e-4));
+    const double darkest = double(srgb_decode(Real(1) / 255)) / std::pow(1.0 / 255, 2.2);
+    CHECK(darkest > 59);
+    CHECK(darkest < 61);
     // It inverts the encode that writes the PNGs.
     for (int b = 0; b <= 255; ++b) {
         const Real x = Real(b) / 255;
@@ -1014,8 +1018,8 @@ TEST_CASE("Bilinear filtering of a 2 x 2 image: texel centres, midpoints and the
     // At the left edge (u = 0) repeat blends with the right column, clamp stays on the left one.
     CHECK(image_at(repeat, {0, 0.75f}) == Color{0.5f, 0.5f, 0});
     CHECK(image_at(clamp, {0, 0.75f}) == Color{1, 0, 0});
-    // Outside [0, 1): repeat takes the fraction, clamp the edge.
-    CHECK(image_at(repeat, {1.25f, -0.25f}) == Color{0, 0, 1});
+    // Outside [0, 1): repeat takes the fraction (v = −¼ is v = ¾, the top row), clamp the edge.
+    CHECK(image_at(repeat, {1.25f, -0.25f}) == Color{1, 0, 0});
     CHECK(image_at(clamp, {1.25f, -0.25f}) == Color{1, 1, 1});
     CHECK(image_at(clamp, {-3, 7}) == Color{1, 0, 0});
     // The scale repeats the image: (su, sv) = (2, 1) puts u = 0.125 on the first texel centre again.
