@@ -1115,7 +1115,8 @@ TEST_CASE("The wide BVH visits the nearest leaf first and culls every child ente
     }
 }
 
-TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the y axis", "[uv][sphere]") {
+TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the y axis",
+          "[uv][sphere][ex:ch02.sphere_stable]") {
     CHECK(sphere_uv({1, 0, 0}) == Vec2{0, 0.5f});  // φ = 0 on +x, the equator at v = ½
     CHECK(sphere_uv({0, 0, 1}).x == Approx(0.25));
     CHECK(sphere_uv({-1, 0, 0}).x == Approx(0.5));
@@ -1139,7 +1140,8 @@ TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the 
     CHECK(side->uv.y == Approx(0.5));
 }
 
-TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane", "[uv][world]") {
+TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane",
+          "[uv][world][ex:ch02.plane][ex:ch02.quad][ex:ch02.quad_packet][ex:ch02.triangle_watertight]") {
     for (Acceleration accel : {Acceleration::kBvh, Acceleration::kNone}) {
         // A quad's (a, b) of origin + a u + b v.
         std::vector<Shape> quad{{QuadShape{{-1, -1, -5}, {4, 0, 0}, {0, 2, 0}}, 0, "q"}};

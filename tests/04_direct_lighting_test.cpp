@@ -1088,7 +1088,8 @@ TEST_CASE("The material table evaluates a texture at the hit, and leaves untextu
 }
 
 TEST_CASE("A checkerboard of one colour renders bit for bit as that colour, and of two it differs",
-          "[texture][render]") {
+          "[texture][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.direct_light][ex:ch04.lambert]") {
     FloorScene f;
     f.scene.point_lights.push_back({{0, 2, 0}, Color(10)});
     const RenderResult plain = render_scene(f.scene, {});
@@ -1101,7 +1102,9 @@ TEST_CASE("A checkerboard of one colour renders bit for bit as that colour, and 
 }
 
 TEST_CASE("The textured scene loads its image once, decoded, and renders finite on 1 and 2 threads",
-          "[texture][render]") {
+          "[texture][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.sample_quad_light]") {
     const Scene scene = load_scene(scene_path("ch04_textured.json"));
     const Scene undecoded = load_scene(scene_path("ch04_textured_undecoded.json"));
     int images = 0;
