@@ -58,6 +58,15 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                     outside = std::make_unique<RetroreflectiveBrdf>(m.albedo, phong_exponent(m.roughness));
                 }
                 break;
+            case MaterialType::kConductor:
+                if (!hooks.conductor) {
+                    lambert_stand_in("a conductor is simulated from " + chapter_that_shades(m) + " on");
+                } else if (!simulated.contains(Effect::kReflection)) {
+                    lambert_stand_in(skipped(Effect::kReflection));
+                } else {
+                    outside = hooks.conductor(m);
+                }
+                break;
             case MaterialType::kDielectric:
                 if (refraction) {
                     outside = hooks.dielectric(m, true, transport);

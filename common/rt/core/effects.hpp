@@ -21,10 +21,16 @@ EffectSet needed(const Scene& scene);
 EffectSet simulated_effects(const Scene& scene, const EffectSet& supported);
 
 // The effect that shades material `m` as what it is rather than as a Lambert surface: reflection for a
-// mirror, glossy for glossy and retro-reflective lobes, refraction for a dielectric; none for diffuse.
+// mirror or a conductor (smooth or rough: all it does is reflect), glossy for glossy and retro-reflective
+// lobes, refraction for a dielectric; none for diffuse.
 std::optional<Effect> effect_of(const Material& m);
 
 // The course chapter that first simulates `effect` ("chapter 07"), for messages about skipped effects.
 std::string chapter_that_adds(Effect effect);
+
+// The chapter that first shades material `m` as what it is: chapter_that_adds(effect_of(m)), except for a
+// conductor, whose reflection is simulated from chapter 05 on but whose Fresnel and microfacets chapter 07
+// adds (before it, a Lambert stand-in of its normal-incidence colour, Material::stand_in_albedo).
+std::string chapter_that_shades(const Material& m);
 
 }  // namespace rt
