@@ -1242,6 +1242,11 @@ TEST_CASE("White furnace of a perfect reflector: the albedo by sampling is the a
         }
         CHECK(previous < 0.97);  // at roughness 1 the loss is a few per cent or more
     }
+    // At normal incidence and α = 1 the facets' normals are cosine-distributed: those tilted past 45° reflect
+    // below the surface, the others keep G1(wi) = 2 cos θ_i / (1 + cos θ_i), and E = ∫₀¹ c / (1 + c) dc =
+    // 1 − ln 2 exactly (c = cos θ_i).
+    const Albedo normal = albedo_of(Conductor(kPerfectEta, kPerfectK, 1), kUp, kUp, 400000, 3399);
+    CHECK(std::abs(normal.mean - (1 - std::log(2.0))) <= 5 * normal.error);
 }
 
 TEST_CASE("Rough metal tends to the smooth conductor (a mirror with Fresnel's colour) as roughness -> 0",
