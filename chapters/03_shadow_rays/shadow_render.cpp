@@ -70,10 +70,7 @@ std::vector<std::string> shading_notes(const Scene& scene) {
         const auto effect = effect_of(m);
         if (!effect) continue;
         notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
-                        "': shaded as Lambertian here; " +
-                        (m.type == MaterialType::kConductor ? std::string("a conductor")
-                                                            : std::string(kEffectNames[std::size_t(*effect)])) +
-                        " is simulated from " + chapter_that_shades(m) + " on");
+                        "': shaded as Lambertian here; " + simulated_from(m));
     }
     return notes;
 }

@@ -60,7 +60,7 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                 break;
             case MaterialType::kConductor:
                 if (!hooks.conductor) {
-                    lambert_stand_in("a conductor is simulated from " + chapter_that_shades(m) + " on");
+                    lambert_stand_in(simulated_from(m));
                 } else if (!simulated.contains(Effect::kReflection)) {
                     lambert_stand_in(skipped(Effect::kReflection));
                 } else {

@@ -21,13 +21,17 @@ Conductor::Scattering Conductor::evaluate(const Vec3& wo, const Vec3& wi) const 
     const Real g1_i = smith_g1_over_cos(wi, alpha) * cos_i;  // G1(wi)
     const Real G2 = 1 / (1 / g1_o + 1 / g1_i - 1);           // 1 / (1 + Λ(wo) + Λ(wi))
     // f = F D G2 / (4 cos θ_o cos θ_i);  pdf = G1(wo) D / (4 cos θ_o).
-    return {fresnel_conductor(om, eta, k) * (D * G2 / (4 * cos_o * cos_i)), g1_o * D / (4 * cos_o)};
+    return {D * G2 / (4 * cos_o * cos_i), g1_o * D / (4 * cos_o), om};
+}
+
+Color Conductor::f_of(const Scattering& e) const {
+    return e.pdf > 0 ? fresnel_conductor(e.cos_m, eta, k) * e.f_over_fresnel : Color(0);
 }
 
 Color Conductor::eval(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
     if (flags().delta) return Color(0);
     const Frame frame = make_frame(n);
-    return evaluate(frame.to_local(wo), frame.to_local(wi)).f;
+    return f_of(evaluate(frame.to_local(wo), frame.to_local(wi)));
 }
 
 Real Conductor::pdf(const Vec3& wo, const Vec3& wi, const Vec3& n) const {
@@ -59,7 +63,7 @@ BsdfSample Conductor::sample(const Vec3& wo_world, const Vec3& n, Vec2 u, Real) 
     const Scattering e = evaluate(wo, frame.to_local(world));
     if (!(e.pdf > 0)) return s;
     s.wi = world;
-    s.f = e.f;
+    s.f = f_of(e);
     s.pdf = e.pdf;
     return s;
 }

@@ -34,12 +34,14 @@ class Conductor final : public Bsdf {
 
   private:
     struct Scattering {
-        Color f{0};
+        Real f_over_fresnel = 0;  // D G2 / (4 cos θ_o cos θ_i)
         Real pdf = 0;
+        Real cos_m = 0;           // wo · m, the angle Fresnel is taken at
     };
-    // f and pdf of the rough lobe for local wo and wi (n = +z): the one computation behind eval, sample and
-    // pdf, so that they agree to the last bit.
+    // The rough lobe for local wo and wi (n = +z): the one computation behind eval, sample and pdf, so that
+    // they agree to the last bit. Fresnel (complex arithmetic per channel) is left to those that need f.
     Scattering evaluate(const Vec3& wo, const Vec3& wi) const;
+    Color f_of(const Scattering& e) const;
 };
 
 }  // namespace rt

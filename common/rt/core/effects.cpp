@@ -71,10 +71,12 @@ std::string chapter_that_adds(Effect effect) {
     return std::string("chapter ") + kChapter[std::size_t(effect)];
 }
 
-std::string chapter_that_shades(const Material& m) {
-    if (m.type == MaterialType::kConductor) return "chapter 07";
+std::string simulated_from(const Material& m) {
+    if (m.type == MaterialType::kConductor) return "a conductor is simulated from chapter 07 on";
     const auto effect = effect_of(m);
-    return effect ? chapter_that_adds(*effect) : "chapter 01";
+    if (!effect) return "it is simulated from chapter 01 on";
+    return std::string(kEffectNames[std::size_t(*effect)]) + " is simulated from " + chapter_that_adds(*effect) +
+           " on";
 }
 
 }  // namespace rt

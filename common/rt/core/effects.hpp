@@ -28,9 +28,10 @@ std::optional<Effect> effect_of(const Material& m);
 // The course chapter that first simulates `effect` ("chapter 07"), for messages about skipped effects.
 std::string chapter_that_adds(Effect effect);
 
-// The chapter that first shades material `m` as what it is: chapter_that_adds(effect_of(m)), except for a
-// conductor, whose reflection is simulated from chapter 05 on but whose Fresnel and microfacets chapter 07
-// adds (before it, a Lambert stand-in of its normal-incidence colour, Material::stand_in_albedo).
-std::string chapter_that_shades(const Material& m);
+// Where material `m` is first shaded as what it is, for the notes of chapters that stand in for it:
+// "reflection is simulated from chapter 05 on" (its effect and chapter_that_adds), except for a conductor,
+// whose reflection is simulated from chapter 05 on but whose Fresnel and microfacets chapter 07 adds: "a
+// conductor is simulated from chapter 07 on".
+std::string simulated_from(const Material& m);
 
 }  // namespace rt
