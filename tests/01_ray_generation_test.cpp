@@ -199,8 +199,8 @@ CameraDesc thin_lens(Real aperture, std::optional<Real> focus = std::nullopt) {
 
 // Where `ray` meets the plane at `depth` along the camera's view direction w.
 Vec3 at_depth(const PinholeCamera& camera, const Ray& ray, Real depth) {
-    const Real t = (depth - glm::dot(ray.origin - camera.eye, camera.forward)) /
-                   glm::dot(ray.direction, camera.forward);
+    const Real t =
+        (depth - glm::dot(ray.origin - camera.eye, camera.forward)) / glm::dot(ray.direction, camera.forward);
     return ray.origin + t * ray.direction;
 }
 
@@ -274,8 +274,9 @@ TEST_CASE("A thin lens spreads a point off the plane in focus over aperture time
     }
 }
 
-TEST_CASE("The focus distance defaults to |at - from|; a negative aperture or a focus distance of 0 is refused",
-          "[ch01]") {
+TEST_CASE(
+    "The focus distance defaults to |at - from|, and a negative aperture or a focus distance of 0 is refused",
+    "[ch01]") {
     CHECK(make_pinhole_camera(thin_lens(0.1f), 8, 8).focus_distance == 8);
     CHECK(make_pinhole_camera(thin_lens(0.1f, 2.5f), 8, 8).focus_distance == 2.5f);
     CHECK(make_pinhole_camera(looking_down_z(), 8, 8).lens_radius == 0);
@@ -283,7 +284,7 @@ TEST_CASE("The focus distance defaults to |at - from|; a negative aperture or a 
     CHECK_THROWS_AS(make_pinhole_camera(thin_lens(0.1f, 0.0f), 8, 8), InputError);
 }
 
-TEST_CASE("Aperture 0 is the pinhole bit for bit, and draws no random number more; a lens draws two",
+TEST_CASE("Aperture 0 is the pinhole bit for bit and draws no random number more, where a lens draws two",
           "[ch01][ex:ch01.camera_ray][ex:ch01.pixel_sample]") {
     // Each sample shows its ray's direction and the next number of its generator: what the camera left.
     RenderSettings settings{16, 12, 4, 1, 2, ProgressStyle::kNone};

@@ -1133,9 +1133,12 @@ const Color kPerfectEta{0}, kPerfectK{1};
 // ∫ f cos θ_i dω_i over the sphere by the chi-square harness's adaptive integration (green channel), on a
 // grid of a quarter of the chi-square's cells (the adaptive rule refines where the lobe is sharp).
 double albedo_by_quadrature(const Bsdf& bsdf, const Vec3& wo, const Vec3& n) {
-    const std::vector<double> cells = expected_counts(SphereGrid{24, 48}, [&](const Vec3& wi) {
-        return double(bsdf.eval(wo, wi, n).g) * std::max(0.0, double(glm::dot(wi, n)));
-    }, 1.0);
+    const std::vector<double> cells = expected_counts(
+        SphereGrid{24, 48},
+        [&](const Vec3& wi) {
+            return double(bsdf.eval(wo, wi, n).g) * std::max(0.0, double(glm::dot(wi, n)));
+        },
+        1.0);
     double sum = 0;
     for (double c : cells) sum += c;
     return sum;
@@ -1143,13 +1146,15 @@ double albedo_by_quadrature(const Bsdf& bsdf, const Vec3& wo, const Vec3& n) {
 
 }  // namespace
 
-TEST_CASE("Conductor Fresnel: at k = 0 it is the dielectric's, at normal incidence the closed form, 1 at grazing",
-          "[ch07][ex:ch07.fresnel_exact]") {
+TEST_CASE(
+    "Conductor Fresnel: at k = 0 it is the dielectric's, at normal incidence the closed form, 1 at grazing",
+    "[ch07][ex:ch07.fresnel_exact]") {
     for (double eta : {1.2, 1.5, 2.4, 1 / 1.5, 1 / 2.4}) {
         for (int i = 0; i <= 100; ++i) {
             const Real c = Real(i) / 100;
             INFO("eta " << eta << ", cos " << c);
-            CHECK(fresnel_conductor(c, Real(eta), 0) == Approx(fresnel_dielectric(c, Real(eta))).margin(2e-6));
+            CHECK(fresnel_conductor(c, Real(eta), 0) ==
+                  Approx(fresnel_dielectric(c, Real(eta))).margin(2e-6));
         }
     }
     for (const ConductorPreset& metal : kConductorPresets) {
@@ -1201,7 +1206,8 @@ TEST_CASE("Rough metal: a sample's f and pdf are eval()'s and pdf()'s, and f is 
     Pcg32 rng(3200, 1);
     int checked = 0;
     for (int k = 0; k < 20000; ++k) {
-        const Conductor metal(kConductorPresets[std::size_t(k % 3)].eta, kConductorPresets[std::size_t(k % 3)].k,
+        const Conductor metal(kConductorPresets[std::size_t(k % 3)].eta,
+                              kConductorPresets[std::size_t(k % 3)].k,
                               Real(0.05) + Real(0.95) * rng.next_real());
         const Vec3 n = random_unit(rng);
         Vec3 wo = random_unit(rng);
@@ -1219,9 +1225,10 @@ TEST_CASE("Rough metal: a sample's f and pdf are eval()'s and pdf()'s, and f is 
     CHECK(checked > 15000);  // most samples leave above the surface (grazing wo at roughness 1 loses some)
 }
 
-TEST_CASE("White furnace of a perfect reflector: the albedo by sampling is the albedo by quadrature, 1 when "
-          "smooth, and falls with roughness (single scattering's loss)",
-          "[ch07][statistical]") {
+TEST_CASE(
+    "White furnace of a perfect reflector: the albedo by sampling is the albedo by quadrature, 1 when "
+    "smooth, and falls with roughness (single scattering's loss)",
+    "[ch07][statistical]") {
     std::uint64_t seed = 3300;
     for (double degrees : {0.0, 45.0, 75.0}) {
         const Vec3 wo = direction_at(deg(degrees));

@@ -31,7 +31,8 @@ Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const Pixel
 inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
                          Pcg32& rng, RayCounts& rays) {
     const Vec2 u = rng.next_vec2();
-    return camera_ray_of(camera, sampler, s, count, u, [&] { return rng.next_vec2(); }, rays);
+    return camera_ray_of(
+        camera, sampler, s, count, u, [&] { return rng.next_vec2(); }, rays);
 }
 
 // A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here rather than

@@ -36,7 +36,7 @@ class Conductor final : public Bsdf {
     struct Scattering {
         Real f_over_fresnel = 0;  // D G2 / (4 cos θ_o cos θ_i)
         Real pdf = 0;
-        Real cos_m = 0;           // wo · m, the angle Fresnel is taken at
+        Real cos_m = 0;  // wo · m, the angle Fresnel is taken at
     };
     // The rough lobe for local wo and wi (n = +z): the one computation behind eval, sample and pdf, so that
     // they agree to the last bit. Fresnel (complex arithmetic per channel) is left to those that need f.

@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
         }
         if (forward.tracer == Tracer::kCombined) {
             const CombinedResult r = render_combined(scene, context.simulated, settings, forward.combined);
-            ChapterRun run{r.render, combined_notes(scene, context.simulated, forward.combined, r), std::nullopt};
+            ChapterRun run{r.render, combined_notes(scene, context.simulated, forward.combined, r),
+                           std::nullopt};
             if (const std::string lens = lens_stand_in_note(scene); !lens.empty()) run.notes.push_back(lens);
             return run;
         }

@@ -8,8 +8,8 @@
 #include "02_intersection/plane.hpp"
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
-#include "07_bsdf_refraction/dielectric.hpp"
 #include "07_bsdf_refraction/conductor.hpp"
+#include "07_bsdf_refraction/dielectric.hpp"
 #include "07_bsdf_refraction/fresnel.hpp"
 #include "07_bsdf_refraction/rough_dielectric.hpp"
 
@@ -138,7 +138,8 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
         g.info.x = GpuMaterial::kMirror;
         g.color = v4(fresnel_conductor(1, metal->eta, metal->k));
         if (used) {
-            notes.push_back(named(m) + ": conductors (complex Fresnel, GGX) are not in the shaders; shaded as a " +
+            notes.push_back(named(m) +
+                            ": conductors (complex Fresnel, GGX) are not in the shaders; shaded as a " +
                             "mirror of its colour at normal incidence (chapter 07 renders it)");
         }
     } else {

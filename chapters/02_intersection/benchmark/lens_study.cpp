@@ -1,8 +1,9 @@
-// What depth of field costs in samples (not a test): `ch02_lens_study` prints the table of chapter 01's lesson.
-// The thin-lens scene (ch01_thin_lens.json, chapter 02's normal colours) is rendered at a few apertures: for
-// each, a reference of --reference spp, then 1, 4, 16, 64 and 256 spp (seeds apart from the reference's),
-// each timed, with its RMSE against the reference. A pinhole (aperture 0) needs samples only for the pixels'
-// edges; a lens needs them for every pixel whose disk of confusion covers more than one colour.
+// What depth of field costs in samples (not a test): `ch02_lens_study` prints the table of chapter 01's
+// lesson. The thin-lens scene (ch01_thin_lens.json, chapter 02's normal colours) is rendered at a few
+// apertures: for each, a reference of --reference spp, then 1, 4, 16, 64 and 256 spp (seeds apart from the
+// reference's), each timed, with its RMSE against the reference. A pinhole (aperture 0) needs samples only
+// for the pixels' edges; a lens needs them for every pixel whose disk of confusion covers more than one
+// colour.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>

@@ -1,7 +1,7 @@
 // A white furnace for rough metal (not a test): `ch07_metal_furnace` prints the table of the lesson's section
 // "Rough metals". A perfect reflector (η = 0, k = 1: Fresnel's R is 1 at every angle) is made rough; its
-// directional albedo E(θ_o) = ∫ f cos θ_i dω_i would be 1 if the model kept every photon, and what it lacks is
-// single scattering's loss: light that would reflect a second time off a neighbouring facet (G2 < 1, and
+// directional albedo E(θ_o) = ∫ f cos θ_i dω_i would be 1 if the model kept every photon, and what it lacks
+// is single scattering's loss: light that would reflect a second time off a neighbouring facet (G2 < 1, and
 // samples that leave below the surface). E is the mean of the sample weights f cos θ_i / pdf = F G2 / G1(wo),
 // over --samples samples, each at most 1 (the standard error is printed).
 #include <CLI/CLI.hpp>
@@ -20,8 +20,9 @@ int main(int argc, char** argv) {
 
     const Vec3 n{0, 0, 1};
     const double angles[] = {0, 45, 70, 85};
-    std::printf("albedo E(theta_o) of a rough perfect reflector (eta 0, k 1), %d samples each; loss = 1 - E\n",
-                samples);
+    std::printf(
+        "albedo E(theta_o) of a rough perfect reflector (eta 0, k 1), %d samples each; loss = 1 - E\n",
+        samples);
     std::printf("%-10s", "roughness");
     for (double a : angles) std::printf("  E(%2.0f deg)", a);
     std::printf("  largest std. error\n");

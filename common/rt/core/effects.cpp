@@ -75,8 +75,8 @@ std::string simulated_from(const Material& m) {
     if (m.type == MaterialType::kConductor) return "a conductor is simulated from chapter 07 on";
     const auto effect = effect_of(m);
     if (!effect) return "it is simulated from chapter 01 on";
-    return std::string(kEffectNames[std::size_t(*effect)]) + " is simulated from " + chapter_that_adds(*effect) +
-           " on";
+    return std::string(kEffectNames[std::size_t(*effect)]) + " is simulated from " +
+           chapter_that_adds(*effect) + " on";
 }
 
 }  // namespace rt

@@ -60,8 +60,8 @@ struct Material {
     Real ior = 1.5f;          // dielectric: index of refraction
     Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
     std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
-    Color eta{1};             // conductor: the real part η of the complex index of refraction η + i k
-    Color k{0};               // conductor: its imaginary part, the extinction coefficient
+    Color eta{1};  // conductor: the real part η of the complex index of refraction η + i k
+    Color k{0};    // conductor: its imaginary part, the extinction coefficient
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:

@@ -296,8 +296,9 @@ Material read_material(const Node& node, const std::string& name) {
     } else if (type == "conductor") {
         m.type = MaterialType::kConductor;
         m.roughness = 0;  // smooth unless the file says otherwise
-        node.expect_object(std::array<std::string_view, 6>{"type", "eta", "k", "preset", "roughness", "emission"},
-                           "a conductor material");
+        node.expect_object(
+            std::array<std::string_view, 6>{"type", "eta", "k", "preset", "roughness", "emission"},
+            "a conductor material");
         read_conductor_index(node, m);
     } else {
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
