@@ -3,12 +3,15 @@
 #include <cmath>
 
 #include "01_ray_generation/camera.hpp"
+#include "01_ray_generation/camera_render.hpp"
+#include "01_ray_generation/concentric_disk.hpp"
 #include "01_ray_generation/edge_coverage.hpp"
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "01_ray_generation/ray_generation_render.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "support/chi_square.hpp"
 
 using namespace rt;
 
@@ -180,4 +183,142 @@ TEST_CASE("Chapter 01's default scene renders: finite, plausible and determinist
     CHECK(a.rays.total() == a.rays[RayKind::kCamera]);
     for (std::size_t i = 0; i < a.image.pixel_count(); ++i)
         REQUIRE(a.image.pixels()[i] == b.image.pixels()[i]);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The thin lens (camera.hpp) and the concentric map (concentric_disk.hpp)
+
+namespace {
+
+CameraDesc thin_lens(Real aperture, std::optional<Real> focus = std::nullopt) {
+    CameraDesc desc{{1, 2, 3}, {1, 2, -5}, {0, 1, 0}, 50};
+    desc.aperture = aperture;
+    desc.focus_distance = focus;
+    return desc;
+}
+
+// Where `ray` meets the plane at `depth` along the camera's view direction w.
+Vec3 at_depth(const PinholeCamera& camera, const Ray& ray, Real depth) {
+    const Real t =
+        (depth - glm::dot(ray.origin - camera.eye, camera.forward)) / glm::dot(ray.direction, camera.forward);
+    return ray.origin + t * ray.direction;
+}
+
+}  // namespace
+
+TEST_CASE("The concentric map is uniform on the disk: chi-square over cells of equal area",
+          "[ch01][statistical]") {
+    // Cells in (r², φ): 20 rings of equal area times 40 sectors, each 1/800 of the disk.
+    constexpr int kRings = 20, kSectors = 40, kSamples = 400000;
+    std::vector<double> observed(kRings * kSectors, 0), expected(kRings * kSectors, double(kSamples) / 800);
+    Pcg32 rng(101, 3);
+    int outside = 0;
+    for (int i = 0; i < kSamples; ++i) {
+        const Vec2 p = sample_disk_concentric(rng.next_vec2());
+        const double r2 = double(p.x) * p.x + double(p.y) * p.y;
+        if (!(r2 <= 1 + 1e-6)) {
+            ++outside;
+            continue;
+        }
+        double phi = std::atan2(double(p.y), double(p.x));
+        if (phi < 0) phi += 2 * std::numbers::pi;
+        const int ring = std::min(kRings - 1, int(r2 * kRings));
+        const int sector = std::min(kSectors - 1, int(phi / (2 * std::numbers::pi) * kSectors));
+        observed[std::size_t(ring * kSectors + sector)] += 1;
+    }
+    const test::ChiSquare r = test::chi_square(observed, expected);
+    INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value);
+    CHECK(outside == 0);
+    CHECK(r.p_value > 0.01);
+}
+
+TEST_CASE("The concentric map sends the square's centre to the disk's, and its border onto the circle",
+          "[ch01]") {
+    CHECK(sample_disk_concentric({0.5f, 0.5f}) == Vec2(0));
+    for (Real t : {0.0f, 0.1f, 0.37f, 0.5f, 0.8f, 0.999f}) {
+        for (const Vec2 u : {Vec2(0, t), Vec2(t, 0), Vec2(1, t), Vec2(t, 1)}) {
+            CHECK(glm::length(sample_disk_concentric(u)) == Approx(1).margin(1e-6));
+        }
+    }
+}
+
+TEST_CASE("A thin lens: every ray of a film point passes through its pinhole ray's point in focus",
+          "[ch01][ex:ch01.camera_ray]") {
+    const PinholeCamera camera = make_pinhole_camera(thin_lens(0.3f, 4.0f), 64, 48);
+    Pcg32 rng(7, 1);
+    for (int i = 0; i < 200; ++i) {
+        const Real px = 64 * rng.next_real(), py = 48 * rng.next_real();
+        const Vec3 focus = at_depth(camera, camera_ray(camera, px, py), 4);
+        const Ray ray = thin_lens_ray(camera, px, py, rng.next_vec2());
+        CHECK(glm::length(ray.direction) == Approx(1).margin(1e-6));
+        // The ray starts on the lens: in the plane of u and v through the eye, within the aperture.
+        const Vec3 offset = ray.origin - camera.eye;
+        CHECK(std::abs(glm::dot(offset, camera.forward)) < 1e-5);
+        CHECK(glm::length(offset) <= 0.3f * (1 + 1e-5f));
+        CHECK(glm::length(at_depth(camera, ray, 4) - focus) < 2e-5);
+    }
+}
+
+TEST_CASE("A thin lens spreads a point off the plane in focus over aperture times |1 - depth / focus|",
+          "[ch01][ex:ch01.camera_ray]") {
+    // The rays from the lens's rim (the square's border) meet the plane at `depth` on a circle of that radius
+    // around the pinhole ray's point: the circle of confusion, measured in the scene.
+    const PinholeCamera camera = make_pinhole_camera(thin_lens(0.25f, 5.0f), 32, 32);
+    for (Real depth : {2.0f, 5.0f, 12.0f}) {
+        const Vec3 centre = at_depth(camera, camera_ray(camera, 10.5f, 20.5f), depth);
+        for (Real t : {0.0f, 0.3f, 0.75f}) {
+            const Ray rim = thin_lens_ray(camera, 10.5f, 20.5f, {1, t});
+            CHECK(glm::length(at_depth(camera, rim, depth) - centre) ==
+                  Approx(0.25 * std::abs(1 - depth / 5.0)).margin(1e-5));
+        }
+    }
+}
+
+TEST_CASE(
+    "The focus distance defaults to |at - from|, and a negative aperture or a focus distance of 0 is refused",
+    "[ch01]") {
+    CHECK(make_pinhole_camera(thin_lens(0.1f), 8, 8).focus_distance == 8);
+    CHECK(make_pinhole_camera(thin_lens(0.1f, 2.5f), 8, 8).focus_distance == 2.5f);
+    CHECK(make_pinhole_camera(looking_down_z(), 8, 8).lens_radius == 0);
+    CHECK_THROWS_AS(make_pinhole_camera(thin_lens(-0.1f), 8, 8), InputError);
+    CHECK_THROWS_AS(make_pinhole_camera(thin_lens(0.1f, 0.0f), 8, 8), InputError);
+}
+
+TEST_CASE("Aperture 0 is the pinhole bit for bit and draws no random number more, where a lens draws two",
+          "[ch01][ex:ch01.camera_ray][ex:ch01.pixel_sample]") {
+    // Each sample shows its ray's direction and the next number of its generator: what the camera left.
+    RenderSettings settings{16, 12, 4, 1, 2, ProgressStyle::kNone};
+    const auto render_of = [&](const CameraDesc& desc) {
+        const PinholeCamera camera = make_pinhole_camera(desc, settings.width, settings.height);
+        return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+            const Ray ray = camera_ray_of(camera, PixelSampler::kStratified, s, 4, rng, rays);
+            return ray.direction + ray.origin + Color(rng.next_real());
+        });
+    };
+    CameraDesc pinhole = thin_lens(0);
+    pinhole.focus_distance = std::nullopt;
+    const RenderResult a = render_of(pinhole);
+    const RenderResult b = render_of(thin_lens(0, 3.0f));  // a focus distance without aperture: no lens
+    const RenderResult c = render_of(thin_lens(0.2f));
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.image.pixel_count(); ++i) {
+        REQUIRE(a.image.pixels()[i] == b.image.pixels()[i]);
+        differ += a.image.pixels()[i] != c.image.pixels()[i];
+    }
+    CHECK(differ == a.image.pixel_count());
+    CHECK(a.rays[RayKind::kCamera] == c.rays[RayKind::kCamera]);
+}
+
+TEST_CASE("The scene's camera takes aperture and focus_distance", "[ch01]") {
+    const Scene scene = parse_scene(R"({
+      "camera": {"from": [0, 0, 5], "at": [0, 0, 0], "aperture": 0.05, "focus_distance": 3},
+      "materials": {"m": {"type": "diffuse"}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]
+    })",
+                                    "lens.json");
+    CHECK(scene.camera.aperture == 0.05f);
+    CHECK(scene.camera.focus_distance == 3.0f);
+    const Scene pinhole = load_scene(scene_path("ch01_default.json"));
+    CHECK(pinhole.camera.aperture == 0);
+    CHECK_FALSE(pinhole.camera.focus_distance);
 }

@@ -261,8 +261,7 @@ Image cpu_image(const Scene& scene, RenderSettings settings, std::uint64_t seed)
 
 // The scene at 48×48 pixels, 64 spp, with chapter 07's path renderer on the CPU (seeds 1, 2, 3) and with
 // the shader of `kind` (seeds 1, 4, 5).
-Agreement agreement(const std::string& file, ShaderKind kind) {
-    const Scene scene = load_scene(scene_path(file.c_str()));
+Agreement agreement(const Scene& scene, ShaderKind kind) {
     RenderSettings settings;
     settings.width = 48;
     settings.height = 48;
@@ -282,8 +281,12 @@ Agreement agreement(const std::string& file, ShaderKind kind) {
             compare(gpu1, cpu1).relative_mse, gpu1.mean(), cpu1.mean()};
 }
 
-void check_agreement(const std::string& file, ShaderKind kind) {
-    const Agreement a = agreement(file, kind);
+Agreement agreement(const std::string& file, ShaderKind kind) {
+    return agreement(load_scene(scene_path(file.c_str())), kind);
+}
+
+void check_agreement(const std::string& file, ShaderKind kind, const Scene* scene = nullptr) {
+    const Agreement a = scene ? agreement(*scene, kind) : agreement(file, kind);
     INFO(file << ", " << to_string(kind) << " shader: relative MSE GPU-CPU " << a.gpu_cpu << ", CPU-CPU "
               << a.cpu_cpu << ", same seed " << a.same_seed << "; means " << a.mean_gpu << " and "
               << a.mean_cpu);
@@ -340,6 +343,19 @@ TEST_CASE(
           "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
           "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_agreement("ch07_glossy_glass.json", ShaderKind::kCompute);
+}
+
+TEST_CASE("The compute shader's thin lens renders the glass Cornell box out of focus as the CPU does",
+          "[gpu]" SHADER_EXERCISES
+          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    // Chapter 01's lens, 20 units wide, focused on the sphere (about 610 from the eye): the walls blur.
+    Scene scene = load_scene(scene_path("cornell.json"));
+    scene.camera.aperture = 20;
+    scene.camera.focus_distance = 610;
+    check_agreement("cornell.json with a thin lens", ShaderKind::kCompute, &scene);
 }
 
 TEST_CASE("The shader's white furnaces of glass return the light of the sky",

@@ -21,6 +21,7 @@
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/media_materials.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
+#include "rt/core/conductor_presets.hpp"
 #include "rt/core/effects.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
@@ -193,7 +194,7 @@ class SceneDraw {
     }
     std::string material() {
         std::ostringstream s;
-        const std::string_view type = kMaterialTypeNames[std::size_t(whole(4))];
+        const std::string_view type = kMaterialTypeNames[std::size_t(whole(5))];
         s << R"({"type": ")" << type << '"';
         if (type == "mirror") s << R"(, "reflectance": )" << colour(0, 1);
         if (type == "diffuse" || type == "glossy" || type == "retroreflective")
@@ -207,6 +208,14 @@ class SceneDraw {
             } else if (chance(0.3)) {
                 s << R"(, "absorption": )" << colour(0, 1);
             }
+        }
+        if (type == "conductor") {
+            if (chance(0.5)) {
+                s << R"(, "preset": ")" << kConductorPresetNames[std::size_t(whole(2))] << '"';
+            } else {
+                s << R"(, "eta": )" << colour(0.05, 3) << R"(, "k": )" << colour(0, 5);
+            }
+            if (chance(0.6)) s << R"(, "roughness": )" << number(0, 1);
         }
         if (type != "dielectric" && chance(0.2)) s << R"(, "emission": )" << colour(0, 4);
         s << "}";

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "concentric_disk.hpp"
 #include "rt/core/errors.hpp"
 
 namespace rt {
@@ -20,6 +21,12 @@ PinholeCamera make_pinhole_camera(const CameraDesc& desc, int width, int height)
     if (parallel(view, Vec3d(desc.up))) {
         throw InputError("camera.up: must not be parallel to the view direction (at - from)");
     }
+    if (!(desc.aperture >= 0)) {
+        throw InputError("camera.aperture: must be >= 0, got " + std::to_string(desc.aperture));
+    }
+    if (desc.focus_distance && !(*desc.focus_distance > 0)) {
+        throw InputError("camera.focus_distance: must be > 0, got " + std::to_string(*desc.focus_distance));
+    }
     const Vec3d w = glm::normalize(view);
     const Vec3d u = glm::normalize(glm::cross(w, Vec3d(desc.up)));
     const Vec3d v = glm::cross(u, w);
@@ -31,7 +38,9 @@ PinholeCamera make_pinhole_camera(const CameraDesc& desc, int width, int height)
                          Real(half_height * double(width) / double(height)),
                          Real(half_height),
                          width,
-                         height};
+                         height,
+                         desc.aperture,
+                         desc.focus_distance.value_or(Real(glm::length(view)))};
 }
 
 Vec3 film_direction(const PinholeCamera& c, Real px, Real py) {
@@ -44,6 +53,13 @@ Ray camera_ray(const PinholeCamera& camera, Real px, Real py) {
     // EXERCISE(ch01.camera_ray) § The pinhole camera
     return Ray{camera.eye, glm::normalize(film_direction(camera, px, py))};
     // END EXERCISE
+}
+
+Ray thin_lens_ray(const PinholeCamera& camera, Real px, Real py, Vec2 u_lens) {
+    const Vec2 lens = camera.lens_radius * sample_disk_concentric(u_lens);
+    const Vec3 origin = camera.eye + lens.x * camera.right + lens.y * camera.up;
+    const Vec3 focus = camera.eye + camera.focus_distance * film_direction(camera, px, py);
+    return Ray{origin, glm::normalize(focus - origin)};
 }
 
 }  // namespace rt

@@ -9,18 +9,30 @@
 
 namespace rt {
 
-// The camera ray of sample `s` (of `count` per pixel) through the point `u` of [0, 1)² places, counted.
-inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
-                         Vec2 u, RayCounts& rays) {
-    const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, u);
-    rays.add(RayKind::kCamera);
+// The ray through film point `film`: the pinhole's, or through a thin lens from the lens point that
+// next_lens() draws. A pinhole never calls it, so a scene without a lens draws the numbers it always drew.
+template <typename NextLens>
+Ray camera_ray_through(const PinholeCamera& camera, Vec2 film, NextLens&& next_lens) {
+    if (camera.lens_radius > 0) return thin_lens_ray(camera, film.x, film.y, next_lens());
     return camera_ray(camera, film.x, film.y);
 }
 
-// The same, u drawn from `rng`.
+// The camera ray of sample `s` (of `count` per pixel) through the point `u` of [0, 1)² places (and the
+// lens point next_lens() draws, for a thin lens), counted.
+template <typename NextLens>
+Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count, Vec2 u,
+                  NextLens&& next_lens, RayCounts& rays) {
+    const Vec2 film = pixel_sample_point(sampler, s.x, s.y, s.index, count, u);
+    rays.add(RayKind::kCamera);
+    return camera_ray_through(camera, film, next_lens);
+}
+
+// The same, u (then the lens point) drawn from `rng`.
 inline Ray camera_ray_of(const PinholeCamera& camera, PixelSampler sampler, const PixelSample& s, int count,
                          Pcg32& rng, RayCounts& rays) {
-    return camera_ray_of(camera, sampler, s, count, rng.next_vec2(), rays);
+    const Vec2 u = rng.next_vec2();
+    return camera_ray_of(
+        camera, sampler, s, count, u, [&] { return rng.next_vec2(); }, rays);
 }
 
 // A last guard, so no NaN or Inf can reach an image: a non-finite sample is a bug, dropped here rather than

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "01_ray_generation/camera_render.hpp"
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "rt/render/interrupt.hpp"
 
@@ -34,10 +35,7 @@ RenderResult render_intersections(const World& world, const PinholeCamera& camer
                                   Real distance_scale, const RenderSettings& settings) {
     const int count = settings.samples_per_pixel;
     return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        const Vec2 film =
-            pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, count, rng.next_vec2());
-        const Ray ray = camera_ray(camera, film.x, film.y);
-        rays.add(RayKind::kCamera);
+        const Ray ray = camera_ray_of(camera, PixelSampler::kStratified, s, count, rng, rays);
         if (mode == ShowMode::kCost) {
             TraversalStats stats;
             world.intersect(ray, kInfinity, stats);

@@ -1,5 +1,6 @@
 #include "shadow_render.hpp"
 
+#include "01_ray_generation/camera_render.hpp"
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "point_light.hpp"
 #include "rt/core/effects.hpp"
@@ -13,7 +14,7 @@ ShadowOptions shadow_options(const EffectSet& simulated, const RayOffset& offset
 
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng) {
     const Vec2 film = pixel_sample_point(PixelSampler::kStratified, s.x, s.y, s.index, spp, rng.next_vec2());
-    return camera_ray(camera, film.x, film.y);
+    return camera_ray_through(camera, film, [&] { return rng.next_vec2(); });
 }
 
 Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
@@ -74,8 +75,7 @@ std::vector<std::string> shading_notes(const Scene& scene) {
         const auto effect = effect_of(m);
         if (!effect) continue;
         notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
-                        "': shaded as Lambertian here; " + kEffectNames[std::size_t(*effect)].data() +
-                        " is simulated from " + chapter_that_adds(*effect) + " on");
+                        "': shaded as Lambertian here; " + simulated_from(m));
     }
     return notes;
 }

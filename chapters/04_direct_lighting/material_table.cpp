@@ -75,6 +75,15 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                     recoloured = recolour<RetroreflectiveBrdf>;
                 }
                 break;
+            case MaterialType::kConductor:
+                if (!hooks.conductor) {
+                    lambert_stand_in(simulated_from(m));
+                } else if (!simulated.contains(Effect::kReflection)) {
+                    lambert_stand_in(skipped(Effect::kReflection));
+                } else {
+                    outside = hooks.conductor(m);
+                }
+                break;
             case MaterialType::kDielectric:
                 if (refraction) {
                     outside = hooks.dielectric(m, true, transport);

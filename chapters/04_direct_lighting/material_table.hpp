@@ -12,6 +12,8 @@
 //   a dielectric without refraction:     Lambert of Material::stand_in_albedo() (0.73);
 //   a glossy lobe without "glossy":      Lambert of its albedo;
 //   a mirror without "reflection":       black (it shows only its emission);
+//   a conductor before chapter 07, or    Lambert of Material::stand_in_albedo(), its colour at normal
+//   without "reflection":                incidence;
 //   a medium without "media":            inside a dielectric, the Beer–Lambert absorption of σ_a + σ_s (what
 //                                        chapter 07's hook makes of it); between the shapes, empty space.
 // Chapter 04 knows the four BRDFs; a later chapter adds what it simulates through MaterialHooks, so the table
@@ -45,6 +47,8 @@ struct MaterialHooks {
     // it (null for clear glass).
     std::function<std::unique_ptr<Bsdf>(const Material&, bool outside, Transport)> dielectric;
     std::function<std::unique_ptr<Medium>(const Material&)> dielectric_interior;
+    // With reflection simulated (chapter 07): the BSDF of a conductor (the same from both sides).
+    std::function<std::unique_ptr<Bsdf>(const Material&)> conductor;
     // With media simulated (chapter 09): the medium a scene's "medium" describes, inside a dielectric or
     // between the shapes.
     std::function<std::unique_ptr<Medium>(const MediumDesc&)> medium;

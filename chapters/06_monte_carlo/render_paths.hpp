@@ -32,13 +32,16 @@ RenderResult render_paths(const Tracer& tracer, const PinholeCamera& camera, con
             camera, points == PointSet::kStratified ? PixelSampler::kStratified : PixelSampler::kUniform,
             settings, [&](const Ray& ray, Pcg32& rng, RayCounts& rays) { return trace(ray, rng, rays); });
     }
-    // Sobol: the pixel's sequence, point s.index of it; its first two dimensions place the camera ray.
+    // Sobol: the pixel's sequence, point s.index of it; its first two dimensions place the camera ray (the
+    // next two its lens point, for a thin lens).
     const int count = settings.samples_per_pixel;
     const auto width = std::uint64_t(settings.width);
     return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
         OwenSobolStream sobol(std::uint64_t(s.y) * width + std::uint64_t(s.x), std::uint32_t(s.index),
                               settings.seed);
-        const Ray ray = camera_ray_of(camera, PixelSampler::kUniform, s, count, sobol.next_vec2(), rays);
+        const Vec2 u = sobol.next_vec2();
+        const Ray ray = camera_ray_of(
+            camera, PixelSampler::kUniform, s, count, u, [&] { return sobol.next_vec2(); }, rays);
         return finite_or_black(trace(ray, SampleStream(sobol, rng), rays));
     });
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace rt {
 
@@ -30,6 +31,23 @@ Real fresnel_dielectric(Real cos_i, Real eta) {
     const Real r_perp = (ci - eta * ct) / (ci + eta * ct);
     return std::min(Real(1), (r_par * r_par + r_perp * r_perp) / 2);
     // END EXERCISE
+}
+
+Real fresnel_conductor(Real cos_i, Real eta, Real k) {
+    using Complex = std::complex<Real>;
+    const Real ci = std::clamp(cos_i, Real(0), Real(1));
+    if (ci == 0) return 1;  // grazing: both amplitudes are −1 (the formula's 0 / 0 when η + i k = 1)
+    const Complex n(eta, k);
+    const Complex sin2_t = (1 - ci * ci) / (n * n);
+    const Complex ct = std::sqrt(Complex(1) - sin2_t);  // the principal root: Re ≥ 0, a wave that decays
+    const Complex r_par = (n * ci - ct) / (n * ci + ct);
+    const Complex r_perp = (ci - n * ct) / (ci + n * ct);
+    return std::min(Real(1), (std::norm(r_par) + std::norm(r_perp)) / 2);
+}
+
+Color fresnel_conductor(Real cos_i, const Color& eta, const Color& k) {
+    return {fresnel_conductor(cos_i, eta.r, k.r), fresnel_conductor(cos_i, eta.g, k.g),
+            fresnel_conductor(cos_i, eta.b, k.b)};
 }
 
 Real fresnel_schlick(Real cos_i, Real eta) {

@@ -7,6 +7,13 @@
 //   exact (Fresnel, unpolarized light):  r_par  = (η cos θ_i − cos θ_t) / (η cos θ_i + cos θ_t),
 //                                        r_perp = (cos θ_i − η cos θ_t) / (cos θ_i + η cos θ_t),
 //                                        R = (r_par² + r_perp²) / 2,  T = 1 − R.
+//   conductor (complex index η + i k, unpolarized; pbrt-v4's FrComplex): the same exact formula with the
+//                                        complex index: sin² θ_t = sin² θ_i / (η + i k)², cos θ_t its complex
+//                                        square root, R = (|r_par|² + |r_perp|²) / 2. Nothing is transmitted
+//                                        (a metal absorbs what enters within nanometres): T is absorbed.
+//                                        At k = 0 it is the dielectric's R (total internal reflection gives
+//                                        |r| = 1); at normal incidence R = ((η − 1)² + k²) / ((η + 1)² + k²);
+//                                        at grazing incidence R → 1.
 //   Schlick (1994):                      R ≈ R0 + (1 − R0) (1 − cos θ)^5,  R0 = ((η − 1) / (η + 1))²,
 //                                        θ the angle on the less dense side (θ_t when η < 1).
 #pragma once
@@ -29,6 +36,12 @@ void face_incident_side(Real& cos_i, Real& eta);
 
 // The exact Fresnel reflectance above; 1 under total internal reflection.
 Real fresnel_dielectric(Real cos_i, Real eta);
+
+// The conductor's exact reflectance above, for cos_i in [0, 1] (wo on n's side: a metal has no inside), of
+// one colour channel's η >= 0 and k >= 0, not both 0.
+Real fresnel_conductor(Real cos_i, Real eta, Real k);
+// The same for the three channels.
+Color fresnel_conductor(Real cos_i, const Color& eta, const Color& k);
 
 // Schlick's approximation above; 1 under total internal reflection.
 Real fresnel_schlick(Real cos_i, Real eta);

@@ -1,5 +1,6 @@
 #include "refraction_materials.hpp"
 
+#include "conductor.hpp"
 #include "dielectric.hpp"
 #include "rough_dielectric.hpp"
 
@@ -19,6 +20,9 @@ MaterialHooks refraction_materials() {
         const Color absorption = m.medium ? m.medium->sigma_t() : m.absorption;
         if (is_black(absorption)) return nullptr;
         return std::make_unique<AbsorbingMedium>(absorption);
+    };
+    hooks.conductor = [](const Material& m) -> std::unique_ptr<Bsdf> {
+        return std::make_unique<Conductor>(m.eta, m.k, m.roughness);
     };
     return hooks;
 }

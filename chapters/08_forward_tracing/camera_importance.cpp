@@ -41,4 +41,16 @@ Real pinhole_importance(const PinholeCamera& camera, Real cos_theta) {
     // END EXERCISE
 }
 
+PinholeCamera light_tracing_camera(const Scene& scene, int width, int height) {
+    CameraDesc pinhole = scene.camera;
+    pinhole.aperture = 0;
+    return make_pinhole_camera(pinhole, width, height);
+}
+
+std::string lens_stand_in_note(const Scene& scene) {
+    if (!(scene.camera.aperture > 0)) return "";
+    return "camera.aperture: the light tracer's camera is the pinhole at the lens centre (no depth of field; "
+           "--tracer reverse renders it)";
+}
+
 }  // namespace rt

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "01_ray_generation/camera.hpp"
 #include "rt/core/math.hpp"
+#include "rt/core/scene.hpp"
 
 namespace rt {
 
@@ -35,5 +37,12 @@ Real pixel_area(const PinholeCamera& camera);
 
 // We = 1 / (A_pix cos⁴θ_c): the importance of a direction at angle θ_c from the view, within its pixel.
 Real pinhole_importance(const PinholeCamera& camera, Real cos_theta);
+
+// The camera light paths connect to: the scene's, as a pinhole. This chapter's importance is a pinhole's;
+// a scene's thin lens (chapter 01's aperture) is not simulated by light paths, and the pinhole at the lens
+// centre stands in for it (`--tracer reverse` renders its depth of field).
+PinholeCamera light_tracing_camera(const Scene& scene, int width, int height);
+// The run's note saying so, when the scene's camera has an aperture; empty otherwise.
+std::string lens_stand_in_note(const Scene& scene);
 
 }  // namespace rt

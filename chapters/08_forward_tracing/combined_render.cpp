@@ -6,6 +6,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "camera_caustic_cut.hpp"
+#include "camera_importance.hpp"
 
 namespace rt {
 
@@ -14,7 +15,8 @@ CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, c
     // One World and one set of lights; a material table for each direction light is carried in.
     const RenderScene prepared(scene, simulated, refraction_materials(), Transport::kRadiance);
     const MaterialTable importance(scene, simulated, refraction_materials(), Transport::kImportance);
-    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+    // Both halves of the partition see through one camera: the light paths' pinhole.
+    const PinholeCamera camera = light_tracing_camera(scene, settings.width, settings.height);
 
     // Light paths start only at area and point lights, and do not cross media: a scene with other light or
     // with a medium is rendered by paths alone.

@@ -8,6 +8,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "camera_importance.hpp"
 #include "combined_render.hpp"
 #include "forward_flags.hpp"
 #include "forward_notes.hpp"
@@ -38,8 +39,10 @@ int main(int argc, char** argv) {
         }
         if (forward.tracer == Tracer::kCombined) {
             const CombinedResult r = render_combined(scene, context.simulated, settings, forward.combined);
-            return ChapterRun{r.render, combined_notes(scene, context.simulated, forward.combined, r),
-                              std::nullopt};
+            ChapterRun run{r.render, combined_notes(scene, context.simulated, forward.combined, r),
+                           std::nullopt};
+            if (const std::string lens = lens_stand_in_note(scene); !lens.empty()) run.notes.push_back(lens);
+            return run;
         }
         if (forward.tracer == Tracer::kReverse) {
             const Renderer renderer = choose_renderer(context.simulated);
@@ -49,11 +52,13 @@ int main(int argc, char** argv) {
         // Light paths carry importance: the material table is built for it (chapter 07's glass scales
         // differently).
         const RenderScene prepared(scene, context.simulated, refraction_materials(), Transport::kImportance);
-        const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+        const PinholeCamera camera = light_tracing_camera(scene, settings.width, settings.height);
         const LightTracerOptions options = forward.light_tracer(context.simulated);
         const LightTracer tracer(prepared.world, prepared.materials, prepared.lights, camera, options);
         const SplatResult r = render_light_tracing(tracer, settings, paths_per_image(settings));
-        return ChapterRun{r.render, forward_notes(prepared, options, r), std::nullopt};
+        ChapterRun run{r.render, forward_notes(prepared, options, r), std::nullopt};
+        if (const std::string lens = lens_stand_in_note(scene); !lens.empty()) run.notes.push_back(lens);
+        return run;
     };
     return run_chapter(argc, argv, chapter, flags, render);
 }

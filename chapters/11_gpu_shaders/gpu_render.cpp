@@ -150,6 +150,8 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
     p.set("camera_right", float(camera.right.x), float(camera.right.y), float(camera.right.z));
     p.set("camera_up", float(camera.up.x), float(camera.up.y), float(camera.up.z));
     p.set("camera_half_size", float(camera.half_width), float(camera.half_height));
+    p.set("camera_lens_radius", float(camera.lens_radius));
+    p.set("camera_focus_distance", float(camera.focus_distance));
     p.set("image_size", width, height);
     p.set("spp", spp);
     p.set("strata", int(std::sqrt(double(spp))));

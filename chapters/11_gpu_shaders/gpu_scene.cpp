@@ -8,7 +8,9 @@
 #include "02_intersection/plane.hpp"
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
+#include "07_bsdf_refraction/conductor.hpp"
 #include "07_bsdf_refraction/dielectric.hpp"
+#include "07_bsdf_refraction/fresnel.hpp"
 #include "07_bsdf_refraction/rough_dielectric.hpp"
 
 namespace rt {
@@ -129,6 +131,16 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
             notes.push_back(named(m) +
                             ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
                             ior + " (chapter 07 renders it rough)");
+        }
+    } else if (const auto* metal = dynamic_cast<const Conductor*>(&outside)) {
+        // Chapter 07's conductors are not in the shaders: a mirror of the metal's colour at normal incidence,
+        // F(0°), stands in.
+        g.info.x = GpuMaterial::kMirror;
+        g.color = v4(fresnel_conductor(1, metal->eta, metal->k));
+        if (used) {
+            notes.push_back(named(m) +
+                            ": conductors (complex Fresnel, GGX) are not in the shaders; shaded as a " +
+                            "mirror of its colour at normal incidence (chapter 07 renders it)");
         }
     } else {
         throw std::logic_error(named(m) + ": a BSDF the shaders do not know");

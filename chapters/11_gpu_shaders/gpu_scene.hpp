@@ -78,8 +78,9 @@ struct GpuScene {
 };
 
 // Flattens `scene` with the render's material table and lights. Chapter 07's rough glass becomes smooth glass
-// of its index, with a note. Throws std::logic_error for a BSDF or medium the shaders do not know (a later
-// chapter's), or one made for importance rather than radiance.
+// of its index, and its conductors mirrors of their colour at normal incidence, each with a note. Throws
+// std::logic_error for a BSDF or medium the shaders do not know (a later chapter's), or one made for
+// importance rather than radiance.
 GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const LightSet& lights,
                        const LightPicker& picker);
 

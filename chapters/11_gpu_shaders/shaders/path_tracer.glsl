@@ -14,6 +14,8 @@ uniform vec3 camera_forward;
 uniform vec3 camera_right;
 uniform vec3 camera_up;
 uniform vec2 camera_half_size;  // (half_width, half_height)
+uniform float camera_lens_radius;     // chapter 01's thin lens: the aperture, 0 for the pinhole
+uniform float camera_focus_distance;  // along camera_forward
 uniform ivec2 image_size;
 uniform int strata;         // ⌊√spp⌋: chapter 01's stratified pixel sampler
 uniform int spp;            // of the whole render
@@ -176,6 +178,21 @@ vec2 pixel_sample_point(ivec2 pixel, int index, vec2 u) {
     return min(corner + (stratum + u) / float(strata), last);
 }
 
+// Chapter 01's concentric map (Shirley and Chiu 1997): u in [0, 1)² onto the unit disk, uniformly.
+vec2 sample_disk_concentric(vec2 u) {
+    const vec2 ab = 2.0 * u - 1.0;
+    if (ab.x == 0.0 && ab.y == 0.0) return vec2(0.0);
+    float r, phi;
+    if (abs(ab.x) > abs(ab.y)) {
+        r = ab.x;
+        phi = (kPi / 4.0) * (ab.y / ab.x);
+    } else {
+        r = ab.y;
+        phi = kPi / 2.0 - (kPi / 4.0) * (ab.x / ab.y);
+    }
+    return r * vec2(cos(phi), sin(phi));
+}
+
 // One sample of pixel (x, y): the camera ray through its film point, what it sees, and nothing non-finite.
 vec3 render_sample(ivec2 pixel, int index) {
     const uint64_t number = uint64_t(pixel.y) * uint64_t(image_size.x) + uint64_t(pixel.x);
@@ -184,7 +201,15 @@ vec3 render_sample(ivec2 pixel, int index) {
     ++rays_traced[kCameraRay];
     const float a = (2.0 * film.x / float(image_size.x) - 1.0) * camera_half_size.x;
     const float b = (1.0 - 2.0 * film.y / float(image_size.y)) * camera_half_size.y;
-    const Ray ray = Ray(camera_eye, normalize(camera_forward + a * camera_right + b * camera_up));
+    const vec3 d = camera_forward + a * camera_right + b * camera_up;
+    Ray ray = Ray(camera_eye, normalize(d));
+    if (camera_lens_radius > 0.0) {
+        // Chapter 01's thin lens: from a point of the lens through d's point on the plane in focus. A pinhole
+        // draws nothing more, as on the CPU.
+        const vec2 lens = camera_lens_radius * sample_disk_concentric(pcg_next_vec2(rng));
+        const vec3 origin = camera_eye + lens.x * camera_right + lens.y * camera_up;
+        ray = Ray(origin, normalize(camera_eye + camera_focus_distance * d - origin));
+    }
     const vec3 L = radiance(ray, rng);
     return all_finite(L) ? L : vec3(0.0);
 }

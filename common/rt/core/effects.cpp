@@ -12,6 +12,7 @@ namespace {
 // Lambert stand-ins, which light does reach.
 bool lit_by_lights(const Material& m) {
     if (m.type == MaterialType::kDielectric) return true;
+    if (m.type == MaterialType::kConductor) return !is_black(m.stand_in_albedo());  // F(0°) > 0
     const Color reflects = m.type == MaterialType::kMirror ? m.reflectance : m.albedo;
     return reflects.r > 0 || reflects.g > 0 || reflects.b > 0;
 }
@@ -23,6 +24,7 @@ std::optional<Effect> effect_of(const Material& m) {
         case MaterialType::kDiffuse:
             return std::nullopt;
         case MaterialType::kMirror:
+        case MaterialType::kConductor:
             return Effect::kReflection;
         case MaterialType::kGlossy:
         case MaterialType::kRetroreflective:
@@ -67,6 +69,14 @@ std::string chapter_that_adds(Effect effect) {
     constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05",
                                                                 "04", "05", "07", "09"};
     return std::string("chapter ") + kChapter[std::size_t(effect)];
+}
+
+std::string simulated_from(const Material& m) {
+    if (m.type == MaterialType::kConductor) return "a conductor is simulated from chapter 07 on";
+    const auto effect = effect_of(m);
+    if (!effect) return "it is simulated from chapter 01 on";
+    return std::string(kEffectNames[std::size_t(*effect)]) + " is simulated from " +
+           chapter_that_adds(*effect) + " on";
 }
 
 }  // namespace rt

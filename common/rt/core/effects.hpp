@@ -21,10 +21,17 @@ EffectSet needed(const Scene& scene);
 EffectSet simulated_effects(const Scene& scene, const EffectSet& supported);
 
 // The effect that shades material `m` as what it is rather than as a Lambert surface: reflection for a
-// mirror, glossy for glossy and retro-reflective lobes, refraction for a dielectric; none for diffuse.
+// mirror or a conductor (smooth or rough: all it does is reflect), glossy for glossy and retro-reflective
+// lobes, refraction for a dielectric; none for diffuse.
 std::optional<Effect> effect_of(const Material& m);
 
 // The course chapter that first simulates `effect` ("chapter 07"), for messages about skipped effects.
 std::string chapter_that_adds(Effect effect);
+
+// Where material `m` is first shaded as what it is, for the notes of chapters that stand in for it:
+// "reflection is simulated from chapter 05 on" (its effect and chapter_that_adds), except for a conductor,
+// whose reflection is simulated from chapter 05 on but whose Fresnel and microfacets chapter 07 adds: "a
+// conductor is simulated from chapter 07 on".
+std::string simulated_from(const Material& m);
 
 }  // namespace rt

@@ -21,6 +21,10 @@ struct CameraDesc {
     Vec3 at{0, 0, -1};
     Vec3 up{0, 1, 0};
     Real vfov = 40;  // vertical field of view, degrees
+    // A thin lens (chapter 01): the lens disk's radius (0: a pinhole) and the distance along the view
+    // direction of the plane in focus (unset: |at − from|).
+    Real aperture = 0;
+    std::optional<Real> focus_distance{};
 };
 
 struct ImageDesc {
@@ -29,10 +33,10 @@ struct ImageDesc {
     int spp = 16;  // samples per pixel
 };
 
-enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric };
+enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric, kConductor };
 // The names the scene files use, in the order of MaterialType.
-inline constexpr std::array<std::string_view, 5> kMaterialTypeNames = {"diffuse", "mirror", "glossy",
-                                                                       "retroreflective", "dielectric"};
+inline constexpr std::array<std::string_view, 6> kMaterialTypeNames = {
+    "diffuse", "mirror", "glossy", "retroreflective", "dielectric", "conductor"};
 
 // A homogeneous participating medium (chapter 09): per unit of length, light is absorbed at the rate sigma_a
 // and scattered at the rate sigma_s, per colour channel; g is the Henyey–Greenstein asymmetry of the
@@ -79,22 +83,30 @@ struct Material {
     Color albedo{0.8f};       // diffuse, glossy, retroreflective: reflectance in [0, 1]
     Color reflectance{1.0f};  // mirror: the fraction reflected
     Color emission{0.0f};     // radiance emitted (any type): makes its shapes area lights
-    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric: 0 is
-                              // smooth glass, r > 0 rough glass (GGX microfacets of α = r², chapter 07)
+    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric and
+                              // conductor: 0 is smooth, r > 0 rough (GGX microfacets of α = r², chapter 07)
     Real ior = 1.5f;          // dielectric: index of refraction
     Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
     std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
     // The texture the colour parameter (albedo, or a mirror's reflectance) names instead of [r, g, b], if
     // any; the colour itself is then the texture's mean.
     std::optional<TextureDesc> texture;
+    Color eta{1};  // conductor: the real part η of the complex index of refraction η + i k
+    Color k{0};    // conductor: its imaginary part, the extinction coefficient
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
     // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:
-    // its albedo (diffuse, glossy, retro-reflective), a mirror's reflectance, and for a dielectric (before
-    // chapter 07) a light grey, kDielectricStandIn. The one place a stand-in colour is chosen.
+    // its albedo (diffuse, glossy, retro-reflective), a mirror's reflectance, for a dielectric (before
+    // chapter 07) a light grey, kDielectricStandIn, and for a conductor (before chapter 07) its reflectance
+    // at normal incidence, F(0°) = ((η − 1)² + k²) / ((η + 1)² + k²) (chapter 07's fresnel_conductor at
+    // cos θ = 1; a test holds the two equal). The one place a stand-in colour is chosen.
     Color stand_in_albedo() const {
         if (type == MaterialType::kMirror) return reflectance;
         if (type == MaterialType::kDielectric) return Color(kDielectricStandIn);
+        if (type == MaterialType::kConductor) {
+            const Color below = eta - Color(1), above = eta + Color(1), k2 = k * k;
+            return (below * below + k2) / (above * above + k2);
+        }
         return albedo;
     }
     static constexpr Real kDielectricStandIn = Real(0.73);

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "rt/core/conductor_presets.hpp"
 #include "rt/core/did_you_mean.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/image.hpp"
@@ -190,7 +191,7 @@ class Node {
 constexpr std::string_view kTopKeys[] = {"description", "camera", "image",   "materials",
                                          "shapes",      "lights", "medium", "effects"};
 constexpr std::string_view kMediumKeys[] = {"sigma_a", "sigma_s", "g"};
-constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov"};
+constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov", "aperture", "focus_distance"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
 constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
 constexpr std::string_view kLightTypes[] = {"point", "environment"};
@@ -203,6 +204,8 @@ CameraDesc read_camera(const Node& node) {
     camera.at = node["at"].vec3();
     if (node.has("up")) camera.up = node["up"].direction();
     if (node.has("vfov")) camera.vfov = node["vfov"].real_in(0, 180, true, true);
+    if (node.has("aperture")) camera.aperture = node["aperture"].real_in(0, kLargestNumber, false, false);
+    if (node.has("focus_distance")) camera.focus_distance = node["focus_distance"].positive();
     if (!normalisable(camera.at - camera.from)) {
         node["at"].fail("must differ from camera.from, so that at - from is a direction, got at - from = " +
                         show(camera.at - camera.from));
@@ -305,6 +308,33 @@ Color read_colour_parameter(const Node& node, const fs::path& scene_folder,
     return texture->mean;
 }
 
+// A conductor's complex index η + i k: a named preset (conductor_presets.hpp), or both "eta" and "k", each
+// >= 0 per channel and not both 0 in a channel (an index of 0 refracts nothing and divides by zero).
+void read_conductor_index(const Node& node, Material& m) {
+    if (node.has("preset")) {
+        const Node preset = node["preset"];
+        if (node.has("eta") || node.has("k")) preset.fail("give either a preset or eta and k, not both");
+        const std::string name = preset.string();
+        for (const ConductorPreset& p : kConductorPresets) {
+            if (p.name == name) {
+                m.eta = p.eta;
+                m.k = p.k;
+                return;
+            }
+        }
+        preset.fail("unknown conductor preset " + quote(name) + suggestion(name, kConductorPresetNames) +
+                    "; expected gold, copper or aluminium");
+    }
+    if (!node.has("eta") && !node.has("k")) node.fail("a conductor needs eta and k, or a preset");
+    m.eta = node["eta"].color_in(kLargestNumber);
+    m.k = node["k"].color_in(kLargestNumber);
+    for (int i = 0; i < 3; ++i) {
+        if (m.eta[i] == 0 && m.k[i] == 0) {
+            node["eta"].element(std::size_t(i)).fail("eta and k must not both be 0 in a channel");
+        }
+    }
+}
+
 Material read_material(const Node& node, const std::string& name, const fs::path& scene_folder) {
     if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
     const std::string type = node["type"].string();
@@ -334,15 +364,24 @@ Material read_material(const Node& node, const std::string& name, const fs::path
         if (node.has("absorption") && node.has("medium")) {
             node["medium"].fail("give either absorption or medium (a medium's sigma_a is its absorption)");
         }
+    } else if (type == "conductor") {
+        m.type = MaterialType::kConductor;
+        m.roughness = 0;  // smooth unless the file says otherwise
+        node.expect_object(
+            std::array<std::string_view, 6>{"type", "eta", "k", "preset", "roughness", "emission"},
+            "a conductor material");
+        read_conductor_index(node, m);
     } else {
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
-                          "; expected diffuse, mirror, glossy, retroreflective or dielectric");
+                          "; expected diffuse, mirror, glossy, retroreflective, dielectric or conductor");
     }
     if (node.has("albedo")) m.albedo = read_colour_parameter(node["albedo"], scene_folder, m.texture);
     if (node.has("reflectance"))
         m.reflectance = read_colour_parameter(node["reflectance"], scene_folder, m.texture);
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
-    if (node.has("roughness")) m.roughness = node["roughness"].real_in(0, 1, true, false);
+    // A conductor's roughness may be 0, a smooth metal; a lobe's may not (it would be a delta).
+    if (node.has("roughness"))
+        m.roughness = node["roughness"].real_in(0, 1, m.type != MaterialType::kConductor, false);
     if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
     if (node.has("absorption")) m.absorption = node["absorption"].color_in(kLargestNumber);
     if (node.has("medium")) m.medium = read_medium(node["medium"]);
