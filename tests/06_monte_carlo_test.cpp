@@ -902,7 +902,7 @@ TEST_CASE("Distribution2D: p(u, v) = w / mean w, and the marginal times the cond
     for (std::size_t c = 0; c < 8; ++c) CHECK(count[c] == Approx(kN * w[c] / 12).margin(5 * std::sqrt(kN / 4.0)));
 }
 
-TEST_CASE("The lat-long map: direction(uv) and point(w) are inverse; sin θ is the Jacobian's", "[environment]") {
+TEST_CASE("The lat-long map: direction(uv) and point(w) are inverse, and sin θ is the Jacobian's", "[environment]") {
     const LatLongMap map = LatLongMap::turned_by_degrees(30);
     Pcg32 rng(3, 1);
     for (int n = 0; n < 1000; ++n) {
