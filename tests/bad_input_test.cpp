@@ -138,7 +138,8 @@ TEST_CASE("Scenes at the edge of what is allowed still load", "[bad_input]") {
         parse_scene(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1], "vfov": 179.9}})", "e.json"));
 }
 
-TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR, a scale that overflows refused",
+TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR, a negative pixel and a scale "
+          "that overflows refused",
           "[bad_input]") {
     const fs::path folder = temporary_folder();
     in_folder(folder, [&] {
@@ -153,6 +154,14 @@ TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR,
             CHECK(exr == "e.json: lights[0].image: sky.exr: OpenEXR images are not read by this build (install "
                          "libopenexr-dev and configure again), or convert it to .hdr or .pfm");
         }
+        Image negative(2, 1);
+        negative.at(1, 0) = Color(-1, 0, 0);
+        write_pfm(negative, "negative.pfm");
+        CHECK(error_of([&] {
+                  parse_scene("{" + std::string(kCamera) +
+                                  R"(, "lights": [{"type": "environment", "image": "negative.pfm"}]})",
+                              "e.json");
+              }) == "e.json: lights[0].image: negative.pfm: pixel (1, 0) must be finite radiance, >= 0, got -1 0 0");
         Image bright(1, 1);
         bright.at(0, 0) = Color(1e38f);
         write_pfm(bright, "bright.pfm");

@@ -4,7 +4,6 @@
 
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
-#include "06_monte_carlo/warp_pdfs.hpp"
 
 namespace rt {
 
