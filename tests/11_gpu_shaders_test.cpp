@@ -102,6 +102,22 @@ std::int64_t check_against_world(const Scene& scene, const std::vector<Ray>& ray
 
 }  // namespace
 
+TEST_CASE("An environment image is not in the shaders: a note says so, and its average radiance is shaded") {
+    Scene scene = scene_of({Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"}});
+    EnvironmentLight sky(Color(0.25f, 0.5f, 1));
+    auto image = std::make_shared<Image>(4, 2);
+    sky.image = image;
+    sky.image_file = "sky.hdr";
+    scene.environment = sky;
+    const GpuScene gpu = flattened(scene);
+    REQUIRE(gpu.environment.has_value());
+    CHECK(*gpu.environment == Color(0.25f, 0.5f, 1));
+    REQUIRE(gpu.notes.size() == 1);
+    CHECK(gpu.notes[0].rfind("environment image sky.hdr: not in the shaders;", 0) == 0);
+    scene.environment = EnvironmentLight(Color(1));
+    CHECK(flattened(scene).notes.empty());
+}
+
 TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
           "[gpu]" SHADER_EXERCISES "[random]") {
     std::vector<ShaderProbe::Query> queries;

@@ -20,6 +20,7 @@
 #include "rt/core/pixel_sums.hpp"
 #include "rt/core/printable.hpp"
 #include "rt/core/random.hpp"
+#include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/obj_parser.hpp"
 #include "rt/io/run_files.hpp"
@@ -135,6 +136,42 @@ TEST_CASE("Scenes at the edge of what is allowed still load", "[bad_input]") {
         parse_scene(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1], "up": [1e-6, 0, -1]}})", "e.json"));
     CHECK_NOTHROW(
         parse_scene(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1], "vfov": 179.9}})", "e.json"));
+}
+
+TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR, a negative pixel and a scale "
+          "that overflows refused",
+          "[bad_input]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        { std::ofstream("sky.exr", std::ios::binary) << "not an EXR file"; }
+        const std::string exr = error_of([&] {
+            parse_scene("{" + std::string(kCamera) + R"(, "lights": [{"type": "environment", "image": "sky.exr"}]})",
+                        "e.json");
+        });
+        if (reads_openexr()) {
+            CHECK(exr.rfind("e.json: lights[0].image: sky.exr: must be an OpenEXR file it can read (", 0) == 0);
+        } else {
+            CHECK(exr == "e.json: lights[0].image: sky.exr: OpenEXR images are not read by this build (install "
+                         "libopenexr-dev and configure again), or convert it to .hdr or .pfm");
+        }
+        Image negative(2, 1);
+        negative.at(1, 0) = Color(-1, 0, 0);
+        write_pfm(negative, "negative.pfm");
+        CHECK(error_of([&] {
+                  parse_scene("{" + std::string(kCamera) +
+                                  R"(, "lights": [{"type": "environment", "image": "negative.pfm"}]})",
+                              "e.json");
+              }) == "e.json: lights[0].image: negative.pfm: pixel (1, 0) must be finite radiance, >= 0, got -1 0 0");
+        Image bright(1, 1);
+        bright.at(0, 0) = Color(1e38f);
+        write_pfm(bright, "bright.pfm");
+        CHECK(error_of([&] {
+                  parse_scene("{" + std::string(kCamera) +
+                                  R"(, "lights": [{"type": "environment", "image": "bright.pfm", "scale": 1e9}]})",
+                              "e.json");
+              }) == "e.json: lights[0].scale: makes pixel (0, 0) of the image infinite, got 1e+09");
+    });
+    fs::remove_all(folder);
 }
 
 TEST_CASE("A scene's image too large for memory loads: the size refused is the one rendered", "[bad_input]") {

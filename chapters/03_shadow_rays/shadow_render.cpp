@@ -2,6 +2,7 @@
 
 #include "01_ray_generation/camera_render.hpp"
 #include "01_ray_generation/pixel_sampling.hpp"
+#include "environment_note.hpp"
 #include "point_light.hpp"
 #include "rt/core/effects.hpp"
 #include "shadow_ray.hpp"
@@ -63,6 +64,7 @@ std::vector<std::string> shading_notes(const Scene& scene) {
             "the environment is seen as the background but lights nothing: it is a light source from " +
             lights_from + " on");
     }
+    if (const auto note = environment_image_note(scene.environment)) notes.push_back(*note);
     const std::vector<bool> used = scene.used_materials();
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;

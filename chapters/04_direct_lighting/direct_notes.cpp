@@ -1,5 +1,7 @@
 #include "direct_notes.hpp"
 
+#include "03_shadow_rays/environment_note.hpp"
+
 namespace rt {
 namespace {
 
@@ -29,6 +31,7 @@ std::vector<std::string> direct_notes(const MaterialTable& materials, const Dire
     for (const std::string& u : shading.lights().unsampled)
         notes.push_back("emitter not sampled as a light: " + u);
     notes.push_back(lights_note(shading, options));
+    if (const auto note = environment_image_note(shading.lights().environment)) notes.push_back(*note);
     if (analytic) {
         notes.push_back(
             "analytic scene (a diffuse plane under one quad light): rays through pixel centres, compared "

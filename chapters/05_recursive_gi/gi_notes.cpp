@@ -1,5 +1,6 @@
 #include "gi_notes.hpp"
 
+#include "03_shadow_rays/environment_note.hpp"
 #include "04_direct_lighting/bsdf.hpp"
 #include "gi_render.hpp"
 #include "rt/core/formatted.hpp"
@@ -42,6 +43,7 @@ std::vector<std::string> gi_notes(const Scene& scene, const DirectLighting& shad
     }
     notes.push_back(rule);
     if (shading.lights().empty()) notes.push_back("the scene has no light: no direct light, no shadow rays");
+    if (const auto note = environment_image_note(shading.lights().environment)) notes.push_back(*note);
     for (const std::string& u : shading.lights().unsampled) {
         notes.push_back("emitter not sampled as a light: " + u + "; indirect rays count its emission");
     }

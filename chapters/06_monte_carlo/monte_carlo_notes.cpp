@@ -12,6 +12,13 @@ std::vector<std::string> monte_carlo_notes(const RenderScene& prepared, const Pa
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
                     ", sampler: " + std::string(to_string(options.sampler)) +
                     ", termination: " + std::string(to_string(options.termination.rule)));
+    if (const auto& sky = prepared.scene.environment; sky && sky->image) {
+        notes.push_back("environment image " + sky->image_file + " (" + std::to_string(sky->image->width()) + "x" +
+                        std::to_string(sky->image->height()) + ", latitude-longitude): " +
+                        (samples_lights(options.strategy)
+                             ? "light samples drawn by its 2-D distribution (luminance x sin theta)"
+                             : "found only by the directions the strategy draws"));
+    }
     for (const std::string& u : prepared.lights.unsampled)
         notes.push_back("emitter not sampled as a light: " + u);
     return notes;

@@ -7,14 +7,14 @@ PathTracer::PathTracer(const World& world, const MaterialTable& materials, const
     : world_(world),
       materials_(materials),
       picker_(lights),
-      environment_(lights.environment),
+      environment_(lights.environment ? std::optional<Environment>(*lights.environment) : std::nullopt),
       has_unsampled_emitters_(!lights.unsampled.empty()),
       options_(options),
       direct_(options.simulates(Effect::kDirect)),
       indirect_(options.simulates(Effect::kIndirect)),
       nee_(direct_ && samples_lights(options.strategy)),
       mis_(options.strategy == SamplingStrategy::kMis) {
-    if (environment_ && is_black(environment_->radiance)) environment_.reset();
+    if (environment_ && environment_->black()) environment_.reset();
 }
 
 Color PathTracer::unoccluded(const Ray& ray, Real t_max, RayCounts& rays) const {
@@ -65,8 +65,8 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
         // the next-event estimate otherwise, and not at all by the light strategy (which counted it there).
         if (!hit) {
             if (environment_ && (from.specular || direct_)) {
-                const Real light_pdf = cosine_hemisphere_pdf(glm::dot(ray.direction, from.normal));
-                L += beta * environment_->radiance * met_weight(from, light_pdf);
+                const Real light_pdf = environment_->pdf(from.normal, ray.direction);
+                L += beta * environment_->radiance(ray.direction) * met_weight(from, light_pdf);
                 if (observer) observer->light_met(L, from.specular, bounces);
             }
             break;

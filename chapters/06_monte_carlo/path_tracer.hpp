@@ -26,6 +26,7 @@
 #include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/trace_options.hpp"
 #include "05_recursive_gi/termination.hpp"
+#include "environment.hpp"
 #include "mis.hpp"
 #include "path_observer.hpp"
 #include "render_paths.hpp"
@@ -73,7 +74,7 @@ class PathTracer {
 
     // The steps of the loop.
     // The next-event estimate at `hit`: one light picked by power (an area light weighted for MIS; a point
-    // light is a delta, weight 1) and the environment (one cosine-weighted direction), each with its shadow
+    // light is a delta, weight 1) and the environment (one direction it draws), each with its shadow
     // ray, whose transmittance `seen(ray, t_max, rays)` says (unoccluded: chapter 03's visibility).
     template <class Seen>
     Color next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SampleStream rng, RayCounts& rays,
@@ -111,7 +112,7 @@ class PathTracer {
     const PathOptions& options() const { return options_; }
     const MaterialTable& materials() const { return materials_; }
     const LightPicker& lights() const { return picker_; }
-    const std::optional<EnvironmentLight>& environment() const { return environment_; }
+    const std::optional<Environment>& environment() const { return environment_; }
 
   private:
     // The transmittance of the segment that ends at `hit`: what fills the inside of a shape attenuates it
@@ -121,7 +122,7 @@ class PathTracer {
     const World& world_;
     const MaterialTable& materials_;
     LightPicker picker_;
-    std::optional<EnvironmentLight> environment_;
+    std::optional<Environment> environment_;
     bool has_unsampled_emitters_;  // an emissive plane: only paths that hit it see it
     PathOptions options_;
     bool direct_, indirect_, nee_, mis_;
@@ -181,16 +182,17 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, S
         }
     }
     if (environment_) {
-        // The uniform environment is sampled like chapter 04's: cosine-weighted, pdf = cos θ / π.
-        const Vec3 wi = glm::normalize(make_frame(n).to_world(sample_cosine_hemisphere(rng.next_vec2())));
-        const Real cos_i = glm::dot(wi, n);
-        const Color f = cos_i > 0 ? bsdf.eval(wo, wi, n) : Color(0);
+        // The environment: a direction it draws (environment.hpp: cosine-weighted for a constant, by
+        // importance for an image), its shadow ray to infinity.
+        const EnvironmentSample s = environment_->sample(n, rng.next_vec2());
+        const Real dot_i = glm::dot(s.wi, n);
+        const Real cos_i = both_sides ? std::abs(dot_i) : dot_i;
+        const Color f = cos_i > 0 && s.pdf > 0 ? bsdf.eval(wo, s.wi, n) : Color(0);
         if (!is_black(f)) {
-            const Color T = shadows ? seen(spawn_ray(hit, wi, options_.offset), kInfinity, rays) : Color(1);
+            const Color T = shadows ? seen(spawn_ray(hit, s.wi, options_.offset), kInfinity, rays) : Color(1);
             if (!is_black(T)) {
-                const Real pdf_env = cosine_hemisphere_pdf(cos_i);
-                const Real w = mis_ ? power_heuristic(pdf_env, bsdf.pdf(wo, wi, n)) : Real(1);
-                sum += f * T * environment_->radiance * (cos_i * w / pdf_env);
+                const Real w = mis_ ? power_heuristic(s.pdf, bsdf.pdf(wo, s.wi, n)) : Real(1);
+                sum += f * T * s.radiance * (cos_i * w / s.pdf);
             }
         }
     }

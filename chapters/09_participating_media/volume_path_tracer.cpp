@@ -4,7 +4,6 @@
 
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
-#include "06_monte_carlo/warp_pdfs.hpp"
 
 namespace rt {
 
@@ -78,12 +77,13 @@ Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, cons
         }
     }
     if (const auto& environment = steps_.environment()) {
-        const Vec3 wi = sample_uniform_sphere(rng.next_vec2());
-        const Real f = phase.eval(wo, wi);
-        const Color T = f > 0 && shadows ? transmittance({p, wi}, kInfinity, rays) : Color(1);
+        // No normal in a medium: a constant environment is drawn uniformly over the sphere.
+        const EnvironmentSample s = environment->sample(Vec3(0), rng.next_vec2());
+        const Real f = s.pdf > 0 ? phase.eval(wo, s.wi) : Real(0);
+        const Color T = f > 0 && shadows ? transmittance({p, s.wi}, kInfinity, rays) : Color(1);
         if (f > 0 && !is_black(T)) {
-            const Real w = mis ? power_heuristic(kUniformSpherePdf, phase.pdf(wo, wi)) : Real(1);
-            sum += T * environment->radiance * (f * w / kUniformSpherePdf);
+            const Real w = mis ? power_heuristic(s.pdf, phase.pdf(wo, s.wi)) : Real(1);
+            sum += T * s.radiance * (f * w / s.pdf);
         }
     }
     return sum;
@@ -147,12 +147,10 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         const PathVertex& from = path.from;
         if (!hit) {
             if (steps.environment() && (from.specular || steps.direct())) {
-                // The next-event estimate drew this direction cosine-weighted about a surface's normal, or
-                // uniformly over the sphere in a medium.
-                const Real light_pdf = from.normal == Vec3(0)
-                                           ? kUniformSpherePdf
-                                           : cosine_hemisphere_pdf(glm::dot(ray.direction, from.normal));
-                path.L += path.beta * steps.environment()->radiance * steps.met_weight(from, light_pdf);
+                // The density the next-event estimate at `from` drew this direction with (a medium's vertex
+                // has no normal).
+                const Real light_pdf = steps.environment()->pdf(from.normal, ray.direction);
+                path.L += path.beta * steps.environment()->radiance(ray.direction) * steps.met_weight(from, light_pdf);
                 if (observer) observer->light_met(path.L, from.specular, path.bounces);
             }
             break;

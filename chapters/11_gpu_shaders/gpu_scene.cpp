@@ -219,6 +219,11 @@ GpuScene flatten_scene(const Scene& scene, const MaterialTable& materials, const
     gpu.light_total = float(picker.total_weight());
     if (lights.environment && !is_black(lights.environment->radiance))
         gpu.environment = lights.environment->radiance;
+    if (lights.environment && lights.environment->image) {
+        gpu.notes.push_back("environment image " + lights.environment->image_file +
+                            ": not in the shaders; shaded as a constant sky of its average radiance "
+                            "(chapters 06 to 10 render the image, sampled by importance)");
+    }
 
     // The shapes as chapter 02's World adds them, in scene order.
     PrimitiveList list(lights, picker);

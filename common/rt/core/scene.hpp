@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rt/core/effect_set.hpp"
+#include "rt/core/image.hpp"
 #include "rt/core/math.hpp"
 
 namespace rt {
@@ -161,8 +162,17 @@ struct PointLight {
     Vec3 position{0};
     Color intensity{1};  // radiant intensity, W/sr
 };
+// The light of every ray that leaves the scene: one constant radiance, or an image in latitude–longitude
+// (row 0 looks up, +y; the map turned by rotate_y degrees about +y), which chapter 06 samples by importance.
 struct EnvironmentLight {
-    Color radiance{1};  // of every ray that leaves the scene
+    EnvironmentLight() = default;
+    explicit EnvironmentLight(Color constant) : radiance(constant) {}
+
+    Color radiance{1};  // with an image: its average over the sphere times scale (what chapters 03–05 shade)
+    std::shared_ptr<const Image> image;  // none for a constant
+    std::string image_file;              // the file as the scene names it, for notes
+    Real scale = 1;                      // the image's radiance is scale × its pixels
+    Real rotate_y = 0;                   // degrees, counter-clockwise looking down +y
 };
 
 struct Scene {

@@ -21,6 +21,10 @@ std::uint64_t scene_fingerprint(const Scene& scene, const std::filesystem::path&
             hash = fnv1a(mesh->triangles.data(), mesh->triangles.size() * sizeof(mesh->triangles[0]), hash);
         }
     }
+    if (scene.environment && scene.environment->image) {
+        const std::vector<Color>& pixels = scene.environment->image->pixels();
+        hash = fnv1a(pixels.data(), pixels.size() * sizeof(Color), hash);
+    }
     return hash;
 }
 
