@@ -666,7 +666,6 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
     }
     if (top.has("lights")) {
         const Node lights = top["lights"];
-        const fs::path folder = file.parent_path();
         for (std::size_t i = 0; i < lights.array_size(); ++i) read_light(lights.element(i), scene, folder);
     }
     if (top.has("medium")) scene.medium = read_medium(top["medium"]);
