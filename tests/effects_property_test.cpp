@@ -213,7 +213,7 @@ class SceneDraw {
             if (chance(0.5)) {
                 s << R"(, "preset": ")" << kConductorPresetNames[std::size_t(whole(2))] << '"';
             } else {
-                s << R"(, "eta": )" << colour(0.05, 3) << R"(, "k": )" << colour(0, 5);
+                s << R"(, "eta": )" << triple(0.05, 3) << R"(, "k": )" << colour(0, 5);
             }
             if (chance(0.6)) s << R"(, "roughness": )" << number(0, 1);
         }
