@@ -14,8 +14,11 @@ struct Hit {
     Vec3 normal{0, 0, 1};  // unit geometric normal, facing the side the ray came from: dot(normal, d) <= 0
     bool front_face =
         true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
-    // No surface coordinates: no chapter has a texture to look up, and a sphere's (atan2 and acos per hit)
-    // cost the glass Cornell box about 2 % of its time.
+    // The normal the BSDF is evaluated about: a smooth mesh's vertex normals interpolated with the hit's
+    // barycentrics, turned to the viewer's side (shading_normal.hpp); the geometric normal everywhere else.
+    Vec3 shading_normal{0, 0, 1};
+    // Texture coordinates: a mesh's (OBJ vt, PLY u v) interpolated, or (b1, b2) on a mesh without them.
+    Vec2 uv{0};
     int material = -1;            // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
     // The light this surface is: k for the k-th primitive, in scene order, whose material emits (a box
@@ -36,10 +39,12 @@ struct NearestHit {
     Vec2 uv{0};
 };
 
-// Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.
+// Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n; the
+// shading normal is the same until a smooth mesh replaces it.
 inline void set_face_normal(Hit& hit, const Vec3& direction, const Vec3& outward_normal) {
     hit.front_face = glm::dot(direction, outward_normal) < 0;
     hit.normal = hit.front_face ? outward_normal : -outward_normal;
+    hit.shading_normal = hit.normal;
 }
 
 }  // namespace rt

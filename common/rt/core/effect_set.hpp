@@ -18,10 +18,11 @@ enum class Effect {
     kIndirect,    // light that has bounced off other surfaces (diffuse interreflection)
     kRefraction,  // light passing through dielectrics
     kMedia,       // light scattered inside participating media (fog, milk, wax): chapter 09
+    kShadingNormals,  // a mesh's vertex normals interpolated across its triangles: chapter 04
 };
-inline constexpr int kEffectCount = 8;
+inline constexpr int kEffectCount = 9;
 inline constexpr std::array<std::string_view, kEffectCount> kEffectNames = {
-    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction", "media"};
+    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction", "media", "shading_normals"};
 
 class EffectSet {
 public:
