@@ -564,7 +564,8 @@ TEST_CASE("needed(scene) follows the content, narrowed by the scene's effects li
     CHECK(needed(narrowed) == EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect});
 
     const Scene cornell = load_scene(scene_path("cornell.json"));
-    CHECK(needed(cornell) == EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia}));
+    CHECK(needed(cornell) ==
+          EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia, Effect::kShadingNormals}));
 }
 
 TEST_CASE("needed(scene) lights whatever a light can reach: media that scatter, mirrors and glass too",
