@@ -1147,7 +1147,8 @@ TEST_CASE("A smooth mesh's hit interpolates its vertex normals and texture coord
     REQUIRE(hit);
     const auto& n = scene.shapes[0].geometry;
     const MeshShape& mesh = std::get<MeshShape>(n);
-    const Vec3 expected = glm::normalize(0.5f * mesh.normals[0] + 0.25f * mesh.normals[1] + 0.25f * mesh.normals[2]);
+    const Vec3 expected =
+        glm::normalize(0.5f * mesh.normals[0] + 0.25f * mesh.normals[1] + 0.25f * mesh.normals[2]);
     CHECK(glm::length(hit->shading_normal - expected) < 1e-6f);
     CHECK(hit->normal == Vec3(0, 0, 1));
     CHECK(glm::length(hit->uv - Vec2(0.625f, 0.25f)) < 1e-6f);  // 0.5 (0.5, 0) + 0.25 (1, 0) + 0.25 (0.5, 1)
@@ -1172,8 +1173,9 @@ TEST_CASE("A mesh without normals is faceted and its texture coordinates are the
     CHECK(hit->uv == Vec2(0.25f, 0.5f));
 }
 
-TEST_CASE("The shading normal fix: flipped to the geometric side, bent above the viewer's horizon, else untouched",
-          "[shading_normal]") {
+TEST_CASE(
+    "The shading normal fix: flipped to the geometric side, bent above the viewer's horizon, else untouched",
+    "[shading_normal]") {
     const Vec3 ng{0, 0, 1};
     // Already good: returned bit for bit.
     const Vec3 tilted = glm::normalize(Vec3{0.3f, 0, 1});
@@ -1182,8 +1184,9 @@ TEST_CASE("The shading normal fix: flipped to the geometric side, bent above the
     // Vertex normals against the winding: flipped into the geometric hemisphere.
     CHECK(shading_normal(-tilted, ng, wo, ShadingNormalFix::kBend) == tilted);
     CHECK(shading_normal(tilted, ng, wo, ShadingNormalFix::kFlat) == ng);
-    // A shading normal facing away from the viewer (the black fringe): without the fix wo is below its horizon,
-    // with it wo is exactly kShadingHorizon above, the normal is unit and still on the geometric side.
+    // A shading normal facing away from the viewer (the black fringe): without the fix wo is below its
+    // horizon, with it wo is exactly kShadingHorizon above, the normal is unit and still on the geometric
+    // side.
     const Vec3 away = glm::normalize(Vec3{0.8f, 0, 0.6f});
     const Vec3 from_left = glm::normalize(Vec3{-0.9f, 0, 0.3f});
     CHECK(glm::dot(shading_normal(away, ng, from_left, ShadingNormalFix::kNone), from_left) < 0);
@@ -1210,7 +1213,8 @@ TEST_CASE("The shading normal fix: flipped to the geometric side, bent above the
     }
     // The one case with no plane to bend in, ns = −wo (a tangent normal, wo grazing from the other side): the
     // geometric normal.
-    CHECK(shading_normal(Vec3{1, 0, 0}, ng, glm::normalize(Vec3{-1, 0, 1e-7f}), ShadingNormalFix::kBend) == ng);
+    CHECK(shading_normal(Vec3{1, 0, 0}, ng, glm::normalize(Vec3{-1, 0, 1e-7f}), ShadingNormalFix::kBend) ==
+          ng);
 }
 
 TEST_CASE("Every camera hit on the smooth torus, silhouettes included, sees wo above the shading horizon",
@@ -1235,7 +1239,8 @@ TEST_CASE("Every camera hit on the smooth torus, silhouettes included, sees wo a
     CHECK(hits > 5000);  // a quarter of the rays or so hit the torus
     // The coarse torus has hits whose raw normal faces away (black with every BRDF): the fix has work to do.
     // The lesson's table (chapter 04, "Shading normals") quotes this line.
-    WARN("smooth torus, 24 x 12: " << hits << " camera hits, " << below_raw << " (" << 100.0 * below_raw / hits
+    WARN("smooth torus, 24 x 12: " << hits << " camera hits, " << below_raw << " ("
+                                   << 100.0 * below_raw / hits
                                    << " %) with the raw normal facing away from the viewer, 0 with the fix");
     CHECK(below_raw > 0);
 }
@@ -1252,7 +1257,8 @@ TEST_CASE("The torus written as OBJ and as PLY loads to the same corners: positi
     for (const char* name : {"torus.obj", "torus.ply"}) {
         std::ofstream(folder / "scene.json")
             << R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {"m": {"type": "diffuse"}},
-                  "shapes": [{"type": "mesh", "file": ")" << name << R"(", "material": "m",
+                  "shapes": [{"type": "mesh", "file": ")"
+            << name << R"(", "material": "m",
                               "transform": {"scale": [2, 1, 1]}}]})";
         const Scene scene = load_scene(folder / "scene.json");
         const MeshShape& m = std::get<MeshShape>(scene.shapes[0].geometry);
@@ -1264,7 +1270,8 @@ TEST_CASE("The torus written as OBJ and as PLY loads to the same corners: positi
                 CHECK(glm::length(m.positions[m.triangles[t][k]] - Vec3{2 * p.x, p.y, p.z}) < 1e-6f);
                 // A normal follows the inverse transpose: (nx / 2, ny, nz), normalised.
                 const Vec3 n = torus.normals[torus.normal_corners[t][k]];
-                CHECK(glm::length(m.normals[m.normal_corners[t][k]] - glm::normalize(Vec3{n.x / 2, n.y, n.z})) < 1e-6f);
+                CHECK(glm::length(m.normals[m.normal_corners[t][k]] -
+                                  glm::normalize(Vec3{n.x / 2, n.y, n.z})) < 1e-6f);
                 CHECK(m.texture_coordinates[m.texture_corners[t][k]] ==
                       torus.texture_coordinates[torus.texture_corners[t][k]]);
             }

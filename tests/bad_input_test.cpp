@@ -426,16 +426,21 @@ TEST_CASE("Every number of an OBJ file is read strictly, and an error names its 
     // and no zero normal.
     const std::string with_vt_vn = tri + "vt 0 0\nvn 0 0 1\n";
     CHECK(obj_error(with_vt_vn + "f 1/1/1 2//1 3/1/1\n") ==
-          "line 6, column 9: a face gives a texture coordinate at every corner or at none; corner \"2//1\" gives "
+          "line 6, column 9: a face gives a texture coordinate at every corner or at none; corner \"2//1\" "
+          "gives "
           "none and the first does");
     CHECK(obj_error(with_vt_vn + "f 1/1 2/1/1 3/1\n") ==
-          "line 6, column 7: a face gives a normal at every corner or at none; corner \"2/1/1\" gives one and the "
+          "line 6, column 7: a face gives a normal at every corner or at none; corner \"2/1/1\" gives one "
+          "and the "
           "first does not");
-    CHECK(obj_error(with_vt_vn + "f 1//1 2//1 3//1\nf 1 2 3\n") ==
-          "line 7, column 1: a mesh gives normals (vn) at every face or at none; this face does not, the first "
-          "(line 6) does");
-    CHECK(obj_error(tri + "vn 0 0 0\n") == "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
-    CHECK(obj_error(tri + "vn 0 0 1e-30\n") == "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
+    CHECK(
+        obj_error(with_vt_vn + "f 1//1 2//1 3//1\nf 1 2 3\n") ==
+        "line 7, column 1: a mesh gives normals (vn) at every face or at none; this face does not, the first "
+        "(line 6) does");
+    CHECK(obj_error(tri + "vn 0 0 0\n") ==
+          "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
+    CHECK(obj_error(tri + "vn 0 0 1e-30\n") ==
+          "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
 
     // What is allowed: a byte order mark, CRLF, comments, w and colours, vt (1 to 3 numbers) and vn, every
     // corner form, negative indices, forward references, polygons.
@@ -460,11 +465,13 @@ TEST_CASE("Every number of an OBJ file is read strictly, and an error names its 
     CHECK(plain.faces[0].normals.empty());
 }
 
-TEST_CASE("A broken PLY file is refused with its place: the header's line, the ASCII line, the binary element",
-          "[bad_input][ply]") {
+TEST_CASE(
+    "A broken PLY file is refused with its place: the header's line, the ASCII line, the binary element",
+    "[bad_input][ply]") {
     auto ply_error = [](const std::string& bytes) { return error_of([&] { parse_ply(bytes, 1e9); }); };
-    const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
     const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
     CHECK(ply_error(header + vertices + "3 0 1 2\n") == "no InputError");
     CHECK(ply_error("plx\n") == "line 1: a PLY file starts with the line \"ply\", got \"plx\"");
@@ -472,11 +479,14 @@ TEST_CASE("A broken PLY file is refused with its place: the header's line, the A
     CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n") ==
           "line 5: element vertex must have properties x, y and z");
     CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\n") ==
-          "line 4: unknown property type \"quad\"; expected char, uchar, short, ushort, int, uint, float or double "
+          "line 4: unknown property type \"quad\"; expected char, uchar, short, ushort, int, uint, float or "
+          "double "
           "(or int8 ... float64)");
-    CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n") == "line 4: the header has no end_header line");
+    CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n") ==
+          "line 4: the header has no end_header line");
     // Counts that do not match the data, both ways.
-    CHECK(ply_error(header + vertices) == "line 13: element face 0: the file ends before it (the header counts more)");
+    CHECK(ply_error(header + vertices) ==
+          "line 13: element face 0: the file ends before it (the header counts more)");
     CHECK(ply_error(header + vertices + "3 0 1 2\n3 0 1 2\n") ==
           "line 14: data after the last element: the header's counts do not match the data");
     CHECK(ply_error(header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n") ==
@@ -491,31 +501,41 @@ TEST_CASE("A broken PLY file is refused with its place: the header's line, the A
     CHECK(ply_error(header + vertices + "3 0 1 3\n") ==
           "line 13: element face 0: vertex_indices: a vertex index must be in [0, 2], got 3");
     CHECK(ply_error(header + vertices + "3 0 1 1.5\n") ==
-          "line 13: element face 0: vertex_indices: must be a whole number in [-2147483648, 2147483647], got \"1.5\"");
+          "line 13: element face 0: vertex_indices: must be a whole number in [-2147483648, 2147483647], got "
+          "\"1.5\"");
     CHECK(ply_error(header + vertices + "2 0 1\n") ==
           "line 13: element face 0: vertex_indices: a face must have 3 to 65536 vertices, got 2");
-    CHECK(ply_error(header + vertices + "300 0 1\n") ==
-          "line 13: element face 0: vertex_indices's length: must be a whole number in [0, 255], got \"300\"");
+    CHECK(
+        ply_error(header + vertices + "300 0 1\n") ==
+        "line 13: element face 0: vertex_indices's length: must be a whole number in [0, 255], got \"300\"");
     // Binary: the element and its byte offset.
-    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                         "property float z\nend_header\n";
+    std::string binary =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+        "property float z\nend_header\n";
     const std::string zero(12, '\0');
     CHECK(ply_error(binary + zero) == "no InputError");
     CHECK(ply_error(binary + zero.substr(0, 10)) ==
           "element vertex: the header counts 1, more than the rest of the file can hold");
-    const std::string with_face = "ply\nformat binary_big_endian 1.0\nelement vertex 1\nproperty float x\n"
-                                  "property float y\nproperty float z\nelement face 1\n"
-                                  "property list uchar uint vertex_indices\nend_header\n";
+    const std::string with_face =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 1\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list uchar uint vertex_indices\nend_header\n";
     CHECK(ply_error(with_face + zero + "\x03" + std::string(4, '\0')) ==
-          "element face 0 (byte offset 12): vertex_indices: the file ends inside it (the header counts more data)");
-    CHECK(ply_error(binary + zero + "xy") == "byte offset 12: 2 byte(s) after the last element: the header's counts do not "
-                                            "match the data");
+          "element face 0 (byte offset 12): vertex_indices: the file ends inside it (the header counts more "
+          "data)");
+    CHECK(ply_error(binary + zero + "xy") ==
+          "byte offset 12: 2 byte(s) after the last element: the header's counts do not "
+          "match the data");
     const std::string nan_z = zero.substr(0, 8) + std::string("\x00\x00\xc0\x7f", 4);
-    CHECK(ply_error(binary + nan_z) == "element vertex 0 (byte offset 0): z: must be a finite number of magnitude at "
-                                      "most 1e+09, got nan");
-    CHECK(ply_error("ply\nformat binary_big_endian 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n") ==
-          "line 3: an element's count must be a whole number in [0, 2147483648], got \"4000000000\"");
-    CHECK(ply_error("ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\nproperty float x\nproperty float y\n"
+    CHECK(ply_error(binary + nan_z) ==
+          "element vertex 0 (byte offset 0): z: must be a finite number of magnitude at "
+          "most 1e+09, got nan");
+    CHECK(
+        ply_error(
+            "ply\nformat binary_big_endian 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n") ==
+        "line 3: an element's count must be a whole number in [0, 2147483648], got \"4000000000\"");
+    CHECK(ply_error("ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\nproperty float "
+                    "x\nproperty float y\n"
                     "property float z\nend_header\n") ==
           "element vertex: the header counts 2000000000, more than the rest of the file can hold");
 }

@@ -523,8 +523,9 @@ TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
         }
         return std::string("no error");
     };
-    CHECK_THAT(error_for(scene_with_mesh("absent.obj")),
-               Catch::Contains("shapes[0].file: must name an OBJ or PLY file") && Catch::Contains("absent.obj"));
+    CHECK_THAT(
+        error_for(scene_with_mesh("absent.obj")),
+        Catch::Contains("shapes[0].file: must name an OBJ or PLY file") && Catch::Contains("absent.obj"));
     std::ofstream(folder / "empty.obj") << "# nothing\n";
     CHECK_THAT(error_for(scene_with_mesh("empty.obj")),
                Catch::Contains("empty.obj: must have at least one face, got none"));
@@ -694,7 +695,8 @@ TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endi
         " 1.0\ncomment a quad and a triangle\nelement vertex 4\nproperty float x\nproperty float y\n"
         "property float z\nproperty uchar red\nproperty float nx\nproperty float ny\nproperty float nz\n"
         "property double s\nproperty double t\nelement face 2\nproperty uchar flags\n"
-        "property list uchar uint vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
+        "property list uchar uint vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int "
+        "vertex2\n"
         "end_header\n";
     const rt::PlyMesh ascii = rt::parse_ply(header_start + "ascii" + header_rest +
                                                 "0 0 0 255 0 0 1 0 0\n1 0 0 7 0 0 2 1 0\n1 1 0 7 0 1 1 1 1\n"
@@ -737,13 +739,15 @@ TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endi
     }
 }
 
-TEST_CASE("The scene loader reads a mesh as PLY by its extension, quads as fans, normals normalised", "[ply]") {
+TEST_CASE("The scene loader reads a mesh as PLY by its extension, quads as fans, normals normalised",
+          "[ply]") {
     const fs::path folder = fs::temp_directory_path() / ("rt_ply_" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::ofstream(folder / "quad.PLY")
         << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
            "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
-           "property list uchar int vertex_indices\nend_header\n0 0 0 0 0 2\n1 0 0 0 0 2\n1 1 0 0 0 2\n0 1 0 0 0 2\n"
+           "property list uchar int vertex_indices\nend_header\n0 0 0 0 0 2\n1 0 0 0 0 2\n1 1 0 0 0 2\n0 1 0 "
+           "0 0 2\n"
            "4 0 1 2 3\n";
     std::ofstream(folder / "scene.json")
         << R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {"m": {"type": "diffuse"}},

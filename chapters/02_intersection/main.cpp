@@ -32,9 +32,10 @@ int main(int argc, char** argv) {
             "--write-mesh", mesh_out,
             "Write the default scene's mesh (icosphere, 3 subdivisions, radii jittered by 5%) as OBJ, "
             "and exit");
-        app.add_option("--write-torus", torus_out,
-                       "Write chapter 04's smooth torus (with normals and texture coordinates) as OBJ, or PLY for a "
-                       "name ending in .ply, and exit");
+        app.add_option(
+            "--write-torus", torus_out,
+            "Write chapter 04's smooth torus (with normals and texture coordinates) as OBJ, or PLY for a "
+            "name ending in .ply, and exit");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (!mesh_out.empty() || !torus_out.empty()) {

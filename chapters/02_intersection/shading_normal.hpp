@@ -1,6 +1,6 @@
-// The shading normal of a smooth mesh: its vertex normals n0, n1, n2 interpolated with the hit's barycentrics,
-// ns = normalize(b0 n0 + b1 n1 + b2 n2). It only approximates a curved surface the triangles stand in for, so
-// it disagrees with the geometric normal ng, and two cases go wrong if nothing is done:
+// The shading normal of a smooth mesh: its vertex normals n0, n1, n2 interpolated with the hit's
+// barycentrics, ns = normalize(b0 n0 + b1 n1 + b2 n2). It only approximates a curved surface the triangles
+// stand in for, so it disagrees with the geometric normal ng, and two cases go wrong if nothing is done:
 //  - ns facing away from the viewer (dot(wo, ns) <= 0, near a silhouette): every BRDF sees wo below its
 //    surface and returns 0, a black fringe;
 //  - ns on the other side of the surface than ng (vertex normals that disagree with the winding): the BSDF
@@ -19,9 +19,9 @@ namespace rt {
 enum class ShadingNormalFix { kBend, kNone, kFlat };
 
 constexpr auto names_of(ShadingNormalFix) {
-    return enum_names<ShadingNormalFix>(
-        "--shading-normals",
-        {{ShadingNormalFix::kBend, "bend"}, {ShadingNormalFix::kNone, "raw"}, {ShadingNormalFix::kFlat, "flat"}});
+    return enum_names<ShadingNormalFix>("--shading-normals", {{ShadingNormalFix::kBend, "bend"},
+                                                              {ShadingNormalFix::kNone, "raw"},
+                                                              {ShadingNormalFix::kFlat, "flat"}});
 }
 
 // cos of the smallest angle the fix leaves between wo and the shading horizon: wo · ns >= kShadingHorizon.

@@ -178,7 +178,8 @@ void World::add(const Shape& shape, bool emissive) {
                         TriangleCorners c{{}, {}, g.smooth(), textured};
                         for (std::size_t k = 0; k < 3; ++k) {
                             if (c.smooth) c.normals[k] = g.normals[g.normal_corners[i][k]];
-                            if (textured) c.texture_coordinates[k] = g.texture_coordinates[g.texture_corners[i][k]];
+                            if (textured)
+                                c.texture_coordinates[k] = g.texture_coordinates[g.texture_corners[i][k]];
                         }
                         corners_.push_back(c);
                     }
@@ -416,7 +417,8 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
 
 // Phong's interpolation: n = b0 n0 + b1 n1 + b2 n2, normalised, then made a shading normal by the one fix
 // (shading_normal.hpp); a normal that cancels out (opposite corners) leaves the geometric one.
-void World::interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1, Real b2) const {
+void World::interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1,
+                                Real b2) const {
     const Real b0 = 1 - b1 - b2;
     if (corners.textured) {
         const auto& uv = corners.texture_coordinates;

@@ -52,7 +52,8 @@ struct WorldOptions {
 
 // The options of a render that simulates `simulated`: a smooth mesh's shading normals made by `fix` when it
 // simulates them (chapter 04 on), the mesh faceted when not.
-inline WorldOptions world_options_for(const EffectSet& simulated, ShadingNormalFix fix = ShadingNormalFix::kBend) {
+inline WorldOptions world_options_for(const EffectSet& simulated,
+                                      ShadingNormalFix fix = ShadingNormalFix::kBend) {
     WorldOptions options;
     if (simulated.contains(Effect::kShadingNormals)) options.shading_normals = fix;
     return options;
@@ -144,8 +145,10 @@ class World {
     // Its number, Hit::primitive: the record's, or after the bounded ones for a plane.
     std::uint32_t number_of(const Candidate& found) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;
-    // Interpolates a mesh triangle's corners at the barycentrics (b1, b2) into the hit's shading normal and uv.
-    void interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1, Real b2) const;
+    // Interpolates a mesh triangle's corners at the barycentrics (b1, b2) into the hit's shading normal and
+    // uv.
+    void interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1,
+                             Real b2) const;
 
     WorldOptions options_;
     std::vector<Sphere> spheres_;

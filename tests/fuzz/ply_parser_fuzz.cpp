@@ -1,5 +1,5 @@
-// libFuzzer target for the course's PLY reader alone (common/rt/io/ply_parser.cpp): any bytes either give a mesh
-// that keeps the reader's promises (every coordinate finite and within the limit, normals and texture
+// libFuzzer target for the course's PLY reader alone (common/rt/io/ply_parser.cpp): any bytes either give a
+// mesh that keeps the reader's promises (every coordinate finite and within the limit, normals and texture
 // coordinates one per vertex or none, every face of at least 3 vertices whose indices are in range) or an
 // InputError of one line that names its place: "line L: " with L a line of the input, "element NAME I " or
 // "byte offset B: " with B inside the input. Anything else is a bug the fuzzer reports.
@@ -31,12 +31,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const rt::PlyMesh mesh = rt::parse_ply(bytes, kLimit);
         for (const rt::Vec3& p : mesh.positions) {
             expect(rt::is_finite(p), "coordinates are finite");
-            for (int i = 0; i < 3; ++i) expect(std::abs(double(p[i])) <= kLimit * (1 + 1e-6), "coordinates are within the limit");
+            for (int i = 0; i < 3; ++i)
+                expect(std::abs(double(p[i])) <= kLimit * (1 + 1e-6), "coordinates are within the limit");
         }
-        expect(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(), "a normal per vertex or none");
+        expect(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(),
+               "a normal per vertex or none");
         expect(mesh.texture_coordinates.empty() || mesh.texture_coordinates.size() == mesh.positions.size(),
                "texture coordinates per vertex or none");
-        for (const rt::Vec3& n : mesh.normals) expect(rt::is_finite(n) && glm::dot(n, n) > 0, "normals are finite and not zero");
+        for (const rt::Vec3& n : mesh.normals)
+            expect(rt::is_finite(n) && glm::dot(n, n) > 0, "normals are finite and not zero");
         for (const auto& f : mesh.faces) {
             expect(f.size() >= 3, "a face has at least 3 vertices");
             for (const std::uint32_t i : f) expect(i < mesh.positions.size(), "indices are in range");
@@ -49,8 +52,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             expect(line >= 1 && line <= lines, "an error's line is in the file");
         } else {
             const std::size_t at = message.find("byte offset ");
-            expect(message.starts_with("element ") || at == 0, "an error names a line, an element or a byte offset");
-            if (at != std::string::npos && std::sscanf(message.c_str() + at, "byte offset %lu", &offset) == 1) {
+            expect(message.starts_with("element ") || at == 0,
+                   "an error names a line, an element or a byte offset");
+            if (at != std::string::npos &&
+                std::sscanf(message.c_str() + at, "byte offset %lu", &offset) == 1) {
                 expect(offset <= size, "an error's byte offset is in the file");
             }
         }

@@ -106,17 +106,17 @@ struct BoxShape {
     Transform transform;
 };
 // A triangle mesh with shared vertices; positions and normals are already transformed into the scene. A file
-// that gives vertex normals (OBJ vn, PLY nx ny nz) or texture coordinates (OBJ vt, PLY u v) has them here, with
-// each triangle's corners into them (OBJ indexes them apart from the positions); a mesh without normals is
-// shaded faceted, by its triangles' own normals.
+// that gives vertex normals (OBJ vn, PLY nx ny nz) or texture coordinates (OBJ vt, PLY u v) has them here,
+// with each triangle's corners into them (OBJ indexes them apart from the positions); a mesh without normals
+// is shaded faceted, by its triangles' own normals.
 struct MeshShape {
     std::string file;
     Transform transform;
     std::vector<Vec3> positions;
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    std::vector<Vec3> normals;                                   // unit; empty when the file has none
+    std::vector<Vec3> normals;                                  // unit; empty when the file has none
     std::vector<std::array<std::uint32_t, 3>> normal_corners;   // per triangle, or empty
-    std::vector<Vec2> texture_coordinates;                       // empty when the file has none
+    std::vector<Vec2> texture_coordinates;                      // empty when the file has none
     std::vector<std::array<std::uint32_t, 3>> texture_corners;  // per triangle, or empty
 
     bool smooth() const { return !normals.empty(); }

@@ -116,15 +116,18 @@ class Reader {
     void normal(const std::vector<Token>& tokens, ObjMesh& mesh) const {
         const std::vector<double> n = numbers(tokens, 3, 3, "normal (vn)");
         const Vec3 v{Real(n[0]), Real(n[1]), Real(n[2])};
-        if (!(glm::dot(v, v) > 0)) fail(tokens[1].column, "a normal (vn) must not be zero (or so small its square is)");
+        if (!(glm::dot(v, v) > 0))
+            fail(tokens[1].column, "a normal (vn) must not be zero (or so small its square is)");
         mesh.normals.push_back(v);
     }
 
     // Whether corner k of a face gives an attribute, against the face's first corner: all or none.
-    void same_as_first(const Token& t, std::size_t corner, bool given, bool first_given, const char* what) const {
+    void same_as_first(const Token& t, std::size_t corner, bool given, bool first_given,
+                       const char* what) const {
         if (corner > 0 && given != first_given) {
-            fail(t.column, std::string("a face gives a ") + what + " at every corner or at none; corner " +
-                               found(t) + (given ? " gives one and the first does not" : " gives none and the first does"));
+            fail(t.column,
+                 std::string("a face gives a ") + what + " at every corner or at none; corner " + found(t) +
+                     (given ? " gives one and the first does not" : " gives none and the first does"));
         }
     }
 
@@ -159,7 +162,8 @@ class Reader {
             const std::size_t second = rest.find('/');
             const std::string_view vt = rest.substr(0, second);
             const std::size_t vt_column = t.column + slash + 1;
-            const bool has_vt = slash != std::string_view::npos && (second == std::string_view::npos || !vt.empty());
+            const bool has_vt =
+                slash != std::string_view::npos && (second == std::string_view::npos || !vt.empty());
             same_as_first(t, corner, has_vt, !f.texture_coordinates.empty(), "texture coordinate");
             if (has_vt) {
                 f.texture_coordinates.push_back(
@@ -207,13 +211,14 @@ class Reader {
         for (const ObjFace& f : mesh.faces) {
             const ObjFace& first = mesh.faces.front();
             for (const auto& [has, first_has, what] :
-                 {std::tuple(!f.texture_coordinates.empty(), !first.texture_coordinates.empty(), "texture coordinates (vt)"),
+                 {std::tuple(!f.texture_coordinates.empty(), !first.texture_coordinates.empty(),
+                             "texture coordinates (vt)"),
                   std::tuple(!f.normals.empty(), !first.normals.empty(), "normals (vn)")}) {
                 if (has == first_has) continue;
                 line_ = f.line;
                 fail(1, std::string("a mesh gives ") + what + " at every face or at none; this face " +
-                            (has ? "gives them" : "does not") + ", the first (line " + std::to_string(first.line) +
-                            ") " + (first_has ? "does" : "does not"));
+                            (has ? "gives them" : "does not") + ", the first (line " +
+                            std::to_string(first.line) + ") " + (first_has ? "does" : "does not"));
             }
         }
         for (const Pending& p : pending_) {

@@ -22,14 +22,22 @@ struct TypeName {
     std::string_view name;
     Type type;
 };
-constexpr std::array<TypeName, 16> kTypeNames = {{{"char", Type::kInt8},      {"int8", Type::kInt8},
-                                                  {"uchar", Type::kUint8},    {"uint8", Type::kUint8},
-                                                  {"short", Type::kInt16},    {"int16", Type::kInt16},
-                                                  {"ushort", Type::kUint16},  {"uint16", Type::kUint16},
-                                                  {"int", Type::kInt32},      {"int32", Type::kInt32},
-                                                  {"uint", Type::kUint32},    {"uint32", Type::kUint32},
-                                                  {"float", Type::kFloat32},  {"float32", Type::kFloat32},
-                                                  {"double", Type::kFloat64}, {"float64", Type::kFloat64}}};
+constexpr std::array<TypeName, 16> kTypeNames = {{{"char", Type::kInt8},
+                                                  {"int8", Type::kInt8},
+                                                  {"uchar", Type::kUint8},
+                                                  {"uint8", Type::kUint8},
+                                                  {"short", Type::kInt16},
+                                                  {"int16", Type::kInt16},
+                                                  {"ushort", Type::kUint16},
+                                                  {"uint16", Type::kUint16},
+                                                  {"int", Type::kInt32},
+                                                  {"int32", Type::kInt32},
+                                                  {"uint", Type::kUint32},
+                                                  {"uint32", Type::kUint32},
+                                                  {"float", Type::kFloat32},
+                                                  {"float32", Type::kFloat32},
+                                                  {"double", Type::kFloat64},
+                                                  {"float64", Type::kFloat64}}};
 
 std::size_t size_of(Type t) {
     constexpr std::array<std::size_t, 8> kSizes = {1, 1, 2, 2, 4, 4, 4, 8};
@@ -89,11 +97,13 @@ std::vector<std::string_view> words_of(std::string_view line) {
 // order. Each error is prefixed with the place.
 class Data {
   public:
-    Data(Format format, std::string_view bytes, std::size_t line) : format_(format), bytes_(bytes), line_(line) {}
+    Data(Format format, std::string_view bytes, std::size_t line)
+        : format_(format), bytes_(bytes), line_(line) {}
 
     [[noreturn]] void fail(const std::string& what) const {
         const std::string element = where_.empty() ? "" : where_ + ": ";
-        if (format_ == Format::kAscii) throw InputError("line " + std::to_string(line_) + ": " + element + what);
+        if (format_ == Format::kAscii)
+            throw InputError("line " + std::to_string(line_) + ": " + element + what);
         const std::string offset = "byte offset " + std::to_string(item_offset_);
         throw InputError(where_.empty() ? offset + ": " + what : where_ + " (" + offset + "): " + what);
     }
@@ -144,13 +154,15 @@ class Data {
     }
     // Whether `count` more elements of at least `least` bytes each can fit in what is left (binary only).
     bool can_hold(std::uint64_t count, std::size_t least) const {
-        return format_ == Format::kAscii || count <= (bytes_.size() - offset_) / std::max<std::size_t>(least, 1);
+        return format_ == Format::kAscii ||
+               count <= (bytes_.size() - offset_) / std::max<std::size_t>(least, 1);
     }
 
     double value(Type type, const std::string& what) {
         if (format_ == Format::kAscii) return ascii_value(type, what);
         const std::size_t n = size_of(type);
-        if (bytes_.size() - offset_ < n) fail(what + ": the file ends inside it (the header counts more data)");
+        if (bytes_.size() - offset_ < n)
+            fail(what + ": the file ends inside it (the header counts more data)");
         std::uint64_t bits = 0;
         for (std::size_t i = 0; i < n; ++i) {
             const auto byte = std::uint64_t(std::uint8_t(bytes_[offset_ + i]));
@@ -158,14 +170,22 @@ class Data {
         }
         offset_ += n;
         switch (type) {
-            case Type::kInt8: return double(std::int8_t(bits));
-            case Type::kUint8: return double(std::uint8_t(bits));
-            case Type::kInt16: return double(std::int16_t(bits));
-            case Type::kUint16: return double(std::uint16_t(bits));
-            case Type::kInt32: return double(std::int32_t(bits));
-            case Type::kUint32: return double(std::uint32_t(bits));
-            case Type::kFloat32: return double(std::bit_cast<float>(std::uint32_t(bits)));
-            case Type::kFloat64: return std::bit_cast<double>(bits);
+            case Type::kInt8:
+                return double(std::int8_t(bits));
+            case Type::kUint8:
+                return double(std::uint8_t(bits));
+            case Type::kInt16:
+                return double(std::int16_t(bits));
+            case Type::kUint16:
+                return double(std::uint16_t(bits));
+            case Type::kInt32:
+                return double(std::int32_t(bits));
+            case Type::kUint32:
+                return double(std::uint32_t(bits));
+            case Type::kFloat32:
+                return double(std::bit_cast<float>(std::uint32_t(bits)));
+            case Type::kFloat64:
+                return std::bit_cast<double>(bits);
         }
         return 0;
     }
@@ -183,15 +203,16 @@ class Data {
             const auto r = std::from_chars(word.data(), word.data() + word.size(), x);
             const auto [low, high] = integer_range(type);
             if (r.ec != std::errc() || r.ptr != word.data() + word.size() || x < low || x > high) {
-                fail(what + ": must be a whole number in [" + std::to_string(low) + ", " + std::to_string(high) +
-                     "], got " + got);
+                fail(what + ": must be a whole number in [" + std::to_string(low) + ", " +
+                     std::to_string(high) + "], got " + got);
             }
             return double(x);
         }
         if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
         double x = 0;
         const auto r = std::from_chars(word.data(), word.data() + word.size(), x, std::chars_format::general);
-        if (r.ec != std::errc() || r.ptr != word.data() + word.size()) fail(what + ": must be a number, got " + got);
+        if (r.ec != std::errc() || r.ptr != word.data() + word.size())
+            fail(what + ": must be a number, got " + got);
         return x;
     }
 
@@ -255,7 +276,8 @@ class Reader {
             start = end + 1;
             const std::vector<std::string_view> words = words_of(line);
             if (line_ == 1) {
-                if (line != "ply") fail("a PLY file starts with the line \"ply\", got \"" + printable(line, 64) + "\"");
+                if (line != "ply")
+                    fail("a PLY file starts with the line \"ply\", got \"" + printable(line, 64) + "\"");
                 continue;
             }
             if (words.empty()) fail("a header line is empty");
@@ -299,8 +321,8 @@ class Reader {
         std::uint64_t count = 0;
         const auto r = std::from_chars(words[2].data(), words[2].data() + words[2].size(), count);
         if (r.ec != std::errc() || r.ptr != words[2].data() + words[2].size() || count > kMostItems) {
-            fail("an element's count must be a whole number in [0, " + std::to_string(kMostItems) + "], got \"" +
-                 printable(words[2], 64) + "\"");
+            fail("an element's count must be a whole number in [0, " + std::to_string(kMostItems) +
+                 "], got \"" + printable(words[2], 64) + "\"");
         }
         for (const Element& e : elements_) {
             if (e.name == words[1]) fail("a second element \"" + printable(words[1], 64) + "\"");
@@ -339,7 +361,8 @@ class Reader {
             fail("a property line is \"property <type> <name>\" or \"property list <type> <type> <name>\"");
         }
         for (const Property& q : elements_.back().properties) {
-            if (q.name == p.name) fail("a second property \"" + p.name + "\" of element " + elements_.back().name);
+            if (q.name == p.name)
+                fail("a second property \"" + p.name + "\" of element " + elements_.back().name);
         }
         elements_.back().properties.push_back(std::move(p));
     }
@@ -352,25 +375,35 @@ class Reader {
                     for (std::size_t i = 0; i < e.properties.size(); ++i) {
                         for (std::string_view name : names) {
                             if (e.properties[i].name == name) {
-                                if (e.properties[i].count_type) fail("vertex property " + e.properties[i].name + " must not be a list");
+                                if (e.properties[i].count_type)
+                                    fail("vertex property " + e.properties[i].name + " must not be a list");
                                 return i;
                             }
                         }
                     }
                     return std::nullopt;
                 };
-                vertex_ = {find({"x"}), find({"y"}), find({"z"}), find({"nx"}), find({"ny"}), find({"nz"}),
-                           find({"u", "s", "texture_u", "texture_s"}), find({"v", "t", "texture_v", "texture_t"})};
-                if (!vertex_.x || !vertex_.y || !vertex_.z) fail("element vertex must have properties x, y and z");
+                vertex_ = {find({"x"}),
+                           find({"y"}),
+                           find({"z"}),
+                           find({"nx"}),
+                           find({"ny"}),
+                           find({"nz"}),
+                           find({"u", "s", "texture_u", "texture_s"}),
+                           find({"v", "t", "texture_v", "texture_t"})};
+                if (!vertex_.x || !vertex_.y || !vertex_.z)
+                    fail("element vertex must have properties x, y and z");
                 if (bool(vertex_.nx) != bool(vertex_.ny) || bool(vertex_.nx) != bool(vertex_.nz)) {
                     fail("element vertex must have all of nx, ny and nz, or none");
                 }
-                if (bool(vertex_.u) != bool(vertex_.v)) fail("element vertex must have both texture coordinates (u v, s t) or none");
+                if (bool(vertex_.u) != bool(vertex_.v))
+                    fail("element vertex must have both texture coordinates (u v, s t) or none");
             } else if (e.name == "face") {
                 for (std::size_t i = 0; i < e.properties.size(); ++i) {
                     const Property& p = e.properties[i];
                     if (p.name != "vertex_indices" && p.name != "vertex_index") continue;
-                    if (!p.count_type || !is_integer(p.type)) fail("face property " + p.name + " must be a list of integers");
+                    if (!p.count_type || !is_integer(p.type))
+                        fail("face property " + p.name + " must be a list of integers");
                     face_indices_ = i;
                 }
                 if (!face_indices_) fail("element face must have a list property vertex_indices");
@@ -382,7 +415,8 @@ class Reader {
     double number(Data& data, const Property& p) const {
         const double x = data.value(p.type, p.name);
         if (!std::isfinite(x) || std::abs(x) > largest_) {
-            data.fail(p.name + ": must be a finite number of magnitude at most " + show(largest_) + ", got " + show(x));
+            data.fail(p.name + ": must be a finite number of magnitude at most " + show(largest_) + ", got " +
+                      show(x));
         }
         return x;
     }
@@ -400,7 +434,8 @@ class Reader {
         mesh.positions.push_back({at(vertex_.x), at(vertex_.y), at(vertex_.z)});
         if (vertex_.nx) {
             const Vec3 n{at(vertex_.nx), at(vertex_.ny), at(vertex_.nz)};
-            if (!(glm::dot(n, n) > 0)) data.fail("the normal (nx, ny, nz) must not be zero (or so small its square is)");
+            if (!(glm::dot(n, n) > 0))
+                data.fail("the normal (nx, ny, nz) must not be zero (or so small its square is)");
             mesh.normals.push_back(n);
         }
         if (vertex_.u) mesh.texture_coordinates.push_back({at(vertex_.u), at(vertex_.v)});
@@ -415,14 +450,16 @@ class Reader {
             }
             const double n = data.value(*p.count_type, p.name + "'s length");
             if (!(n >= 3) || n > double(kMostCorners)) {
-                data.fail(p.name + ": a face must have 3 to " + std::to_string(kMostCorners) + " vertices, got " + show(n));
+                data.fail(p.name + ": a face must have 3 to " + std::to_string(kMostCorners) +
+                          " vertices, got " + show(n));
             }
             std::vector<std::uint32_t> corners;
             const double vertices = double(mesh.positions.size());
             for (int k = 0; k < int(n); ++k) {
                 const double index = data.value(p.type, p.name);
                 if (!(index >= 0 && index < vertices)) {
-                    data.fail(p.name + ": a vertex index must be in [0, " + show(vertices - 1) + "], got " + show(index));
+                    data.fail(p.name + ": a vertex index must be in [0, " + show(vertices - 1) + "], got " +
+                              show(index));
                 }
                 corners.push_back(std::uint32_t(index));
             }
@@ -437,7 +474,8 @@ class Reader {
         }
         const double n = data.value(*p.count_type, p.name + "'s length");
         if (!(n >= 0) || n > double(kMostCorners)) {
-            data.fail(p.name + ": a list's length must be in [0, " + std::to_string(kMostCorners) + "], got " + show(n));
+            data.fail(p.name + ": a list's length must be in [0, " + std::to_string(kMostCorners) +
+                      "], got " + show(n));
         }
         for (int k = 0; k < int(n); ++k) data.value(p.type, p.name);
     }

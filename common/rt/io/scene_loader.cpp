@@ -316,11 +316,13 @@ void check_within_limits(const Node& node, const std::string& what, const Vec3& 
 // The triangles a polygon (a, b, c, ...) is split into: the fan (a, b, c), (a, c, d), ...
 template <class Corners>
 void add_fan(const std::vector<std::uint32_t>& polygon, Corners& triangles) {
-    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+        triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
 }
 
-// A mesh file's polygons as triangles: an OBJ file (obj_parser.hpp) with its own indices for texture coordinates
-// and normals, or a PLY file (ply_parser.hpp) whose vertices carry them. The normals are not yet transformed.
+// A mesh file's polygons as triangles: an OBJ file (obj_parser.hpp) with its own indices for texture
+// coordinates and normals, or a PLY file (ply_parser.hpp) whose vertices carry them. The normals are not yet
+// transformed.
 void read_obj_into(MeshShape& mesh, std::string_view text) {
     ObjMesh parsed = parse_obj(text, kLargestNumber);
     mesh.positions = std::move(parsed.positions);
@@ -396,11 +398,13 @@ MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     }
     std::size_t with_area = 0;
     for (const auto& [a, b, c] : mesh.triangles) {
-        if (!zero_area(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a])) ++with_area;
+        if (!zero_area(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]))
+            ++with_area;
     }
     if (mesh.triangles.empty()) file.fail(shown_file + ": must have at least one face, got none");
     if (with_area == 0) {
-        file.fail(shown_file + ": must have at least one face with an area, got " + std::to_string(mesh.triangles.size()) +
+        file.fail(shown_file + ": must have at least one face with an area, got " +
+                  std::to_string(mesh.triangles.size()) +
                   " triangle(s), each with repeated or collinear vertices" +
                   (node.has("transform") ? " after the transform" : ""));
     }
