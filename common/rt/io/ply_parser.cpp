@@ -1,5 +1,6 @@
 #include "rt/io/ply_parser.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <charconv>
@@ -267,7 +268,10 @@ class Reader {
         std::size_t start = 0;
         bool ended = false;
         while (!ended) {
-            if (start >= bytes.size()) fail("the header has no end_header line");
+            if (start >= bytes.size()) {
+                line_ = std::max<std::size_t>(line_, 1);  // the last line, or line 1 of an empty file
+                fail("the header has no end_header line");
+            }
             ++line_;
             std::size_t end = bytes.find('\n', start);
             if (end == std::string_view::npos) end = bytes.size();
