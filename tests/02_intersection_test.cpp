@@ -1,7 +1,11 @@
 // Chapter 02: intersection. Plain cases first, then the hard cases ([stability]): each robust form against a
 // double-precision reference computed from the same float inputs, and the naive form shown failing.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <span>
 
@@ -774,7 +778,7 @@ TEST_CASE("The BVH finds the same nearest hit as testing every primitive",
         }
         hits += b ? 1 : 0;
     }
-    CHECK(hits > 10000);
+    CHECK(hits > 5000);  // a quarter of the rays or so hit the torus
     CHECK(mismatches == 0);
     CHECK(occlusion_mismatches == 0);
     CHECK(nearest_mismatches == 0);
@@ -1173,4 +1177,165 @@ TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane"
         REQUIRE(p);
         CHECK(p->uv == Vec2{-7, 2});
     }
+}
+
+// ---- Smooth meshes: shading normals and texture coordinates ----
+
+namespace {
+
+// One triangle of a mesh in the z = 0 plane (front side +z), with the given vertex normals and texture
+// coordinates at its corners.
+Scene smooth_triangle(const std::array<Vec3, 3>& normals) {
+    MeshShape mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.normals = {glm::normalize(normals[0]), glm::normalize(normals[1]), glm::normalize(normals[2])};
+    mesh.normal_corners = mesh.triangles;
+    mesh.texture_coordinates = {{0.5f, 0}, {1, 0}, {0.5f, 1}};
+    mesh.texture_corners = mesh.triangles;
+    return scene_of({Shape{mesh, 0, "mesh"}});
+}
+
+}  // namespace
+
+TEST_CASE("A smooth mesh's hit interpolates its vertex normals and texture coordinates with the barycentrics",
+          "[shading_normal]") {
+    const Scene scene = smooth_triangle({Vec3{-1, 0, 2}, Vec3{1, 0, 2}, Vec3{0, 1, 2}});
+    const World world(scene, world_options_for(EffectSet{Effect::kShadingNormals}));
+    const Ray ray{{0.25f, 0.25f, 1}, {0, 0, -1}};  // b1 = b2 = 0.25, b0 = 0.5
+    const auto hit = world.intersect(ray);
+    REQUIRE(hit);
+    const auto& n = scene.shapes[0].geometry;
+    const MeshShape& mesh = std::get<MeshShape>(n);
+    const Vec3 expected =
+        glm::normalize(0.5f * mesh.normals[0] + 0.25f * mesh.normals[1] + 0.25f * mesh.normals[2]);
+    CHECK(glm::length(hit->shading_normal - expected) < 1e-6f);
+    CHECK(hit->normal == Vec3(0, 0, 1));
+    CHECK(glm::length(hit->uv - Vec2(0.625f, 0.25f)) < 1e-6f);  // 0.5 (0.5, 0) + 0.25 (1, 0) + 0.25 (0.5, 1)
+    // From behind, the geometric normal turns to the viewer, and the shading normal with it.
+    const auto back = world.intersect(Ray{{0.25f, 0.25f, -1}, {0, 0, 1}});
+    REQUIRE(back);
+    CHECK(glm::length(back->shading_normal + expected) < 1e-6f);
+    // Where the run does not simulate shading normals (chapters 02 and 03) the mesh is faceted, bit for bit.
+    const World flat(scene);
+    CHECK(flat.intersect(ray)->shading_normal == hit->normal);
+}
+
+TEST_CASE("A mesh without normals is faceted and its texture coordinates are the barycentrics (b1, b2)",
+          "[shading_normal]") {
+    MeshShape mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.triangles = {{0, 1, 2}};
+    const World world(scene_of({Shape{mesh, 0, "mesh"}}), world_options_for(EffectSet::all()));
+    const auto hit = world.intersect(Ray{{0.25f, 0.5f, 1}, {0, 0, -1}});
+    REQUIRE(hit);
+    CHECK(hit->shading_normal == hit->normal);
+    CHECK(hit->uv == Vec2(0.25f, 0.5f));
+}
+
+TEST_CASE(
+    "The shading normal fix: flipped to the geometric side, bent above the viewer's horizon, else untouched",
+    "[shading_normal]") {
+    const Vec3 ng{0, 0, 1};
+    // Already good: returned bit for bit.
+    const Vec3 tilted = glm::normalize(Vec3{0.3f, 0, 1});
+    const Vec3 wo = glm::normalize(Vec3{-0.2f, 0.1f, 1});
+    CHECK(shading_normal(tilted, ng, wo, ShadingNormalFix::kBend) == tilted);
+    // Vertex normals against the winding: flipped into the geometric hemisphere.
+    CHECK(shading_normal(-tilted, ng, wo, ShadingNormalFix::kBend) == tilted);
+    CHECK(shading_normal(tilted, ng, wo, ShadingNormalFix::kFlat) == ng);
+    // A shading normal facing away from the viewer (the black fringe): without the fix wo is below its
+    // horizon, with it wo is exactly kShadingHorizon above, the normal is unit and still on the geometric
+    // side.
+    const Vec3 away = glm::normalize(Vec3{0.8f, 0, 0.6f});
+    const Vec3 from_left = glm::normalize(Vec3{-0.9f, 0, 0.3f});
+    CHECK(glm::dot(shading_normal(away, ng, from_left, ShadingNormalFix::kNone), from_left) < 0);
+    const Vec3 bent = shading_normal(away, ng, from_left, ShadingNormalFix::kBend);
+    CHECK(glm::dot(bent, from_left) == Approx(kShadingHorizon).margin(1e-6));
+    CHECK(glm::length(bent) == Approx(1).margin(1e-6));
+    CHECK(glm::dot(bent, ng) > 0);
+    // Grazing rays, 1e-6 to 1e-2 above the geometric surface, against normals tilted up to 80°: finite, unit,
+    // wo above the shading horizon, on the geometric side.
+    for (const Real height : {Real(1e-6), Real(1e-4), Real(1e-2)}) {
+        for (const Real tilt_degrees : {Real(0), Real(20), Real(45), Real(80)}) {
+            for (const Real azimuth : {Real(0), Real(90), Real(180), Real(270)}) {
+                const Real t = radians(tilt_degrees), a = radians(azimuth);
+                const Vec3 n{std::sin(t) * std::cos(a), std::sin(t) * std::sin(a), std::cos(t)};
+                const Vec3 grazing = glm::normalize(Vec3{-1, 0, height});
+                const Vec3 s = shading_normal(n, ng, grazing, ShadingNormalFix::kBend);
+                INFO("height " << height << ", tilt " << tilt_degrees << ", azimuth " << azimuth);
+                REQUIRE(is_finite(s));
+                CHECK(glm::length(s) == Approx(1).margin(1e-5));
+                CHECK(glm::dot(s, grazing) >= kShadingHorizon * (1 - 1e-3f));
+                CHECK(glm::dot(s, ng) >= -1e-6f);
+            }
+        }
+    }
+    // The one case with no plane to bend in, ns = −wo (a tangent normal, wo grazing from the other side): the
+    // geometric normal.
+    CHECK(shading_normal(Vec3{1, 0, 0}, ng, glm::normalize(Vec3{-1, 0, 1e-7f}), ShadingNormalFix::kBend) ==
+          ng);
+}
+
+TEST_CASE("Every camera hit on the smooth torus, silhouettes included, sees wo above the shading horizon",
+          "[shading_normal]") {
+    MeshShape torus = make_torus(1, Real(0.4), 24, 12);
+    const Scene scene = scene_of({Shape{torus, 0, "torus"}});
+    const World bend(scene, world_options_for(EffectSet{Effect::kShadingNormals}));
+    const World raw(scene, world_options_for(EffectSet{Effect::kShadingNormals}, ShadingNormalFix::kNone));
+    int hits = 0, below_raw = 0;
+    for (int i = 0; i < 200; ++i) {
+        for (int j = 0; j < 200; ++j) {
+            const Vec3 origin{-1.6f + 3.2f * Real(i) / 199, -0.6f + 1.2f * Real(j) / 199, 3};
+            const Ray ray{origin, glm::normalize(Vec3{0, -0.35f, -1})};
+            const auto h = bend.intersect(ray);
+            if (!h) continue;
+            ++hits;
+            below_raw += glm::dot(raw.intersect(ray)->shading_normal, -ray.direction) <= 0;
+            REQUIRE(glm::dot(h->shading_normal, -ray.direction) >= kShadingHorizon * (1 - 1e-3f));
+            REQUIRE(glm::dot(h->shading_normal, h->normal) >= -1e-6f);
+        }
+    }
+    CHECK(hits > 5000);  // a quarter of the rays or so hit the torus
+    // The coarse torus has hits whose raw normal faces away (black with every BRDF): the fix has work to do.
+    // The lesson's table (chapter 04, "Shading normals") quotes this line.
+    WARN("smooth torus, 24 x 12: " << hits << " camera hits, " << below_raw << " ("
+                                   << 100.0 * below_raw / hits
+                                   << " %) with the raw normal facing away from the viewer, 0 with the fix");
+    CHECK(below_raw > 0);
+}
+
+namespace fs = std::filesystem;
+
+TEST_CASE("The torus written as OBJ and as PLY loads to the same corners: positions, normals, coordinates",
+          "[shading_normal][mesh]") {
+    const fs::path folder = fs::temp_directory_path() / ("rt_torus_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    const MeshShape torus = make_torus(1, Real(0.4), 8, 5);
+    write_obj(torus, folder / "torus.obj");
+    write_ply(torus, folder / "torus.ply");
+    for (const char* name : {"torus.obj", "torus.ply"}) {
+        std::ofstream(folder / "scene.json")
+            << R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {"m": {"type": "diffuse"}},
+                  "shapes": [{"type": "mesh", "file": ")"
+            << name << R"(", "material": "m",
+                              "transform": {"scale": [2, 1, 1]}}]})";
+        const Scene scene = load_scene(folder / "scene.json");
+        const MeshShape& m = std::get<MeshShape>(scene.shapes[0].geometry);
+        INFO(name);
+        REQUIRE(m.triangles.size() == torus.triangles.size());
+        for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+            for (std::size_t k = 0; k < 3; ++k) {
+                const Vec3 p = torus.positions[torus.triangles[t][k]];
+                CHECK(glm::length(m.positions[m.triangles[t][k]] - Vec3{2 * p.x, p.y, p.z}) < 1e-6f);
+                // A normal follows the inverse transpose: (nx / 2, ny, nz), normalised.
+                const Vec3 n = torus.normals[torus.normal_corners[t][k]];
+                CHECK(glm::length(m.normals[m.normal_corners[t][k]] -
+                                  glm::normalize(Vec3{n.x / 2, n.y, n.z})) < 1e-6f);
+                CHECK(m.texture_coordinates[m.texture_corners[t][k]] ==
+                      torus.texture_coordinates[torus.texture_corners[t][k]]);
+            }
+        }
+    }
+    fs::remove_all(folder);
 }

@@ -23,6 +23,7 @@
 #include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/obj_parser.hpp"
+#include "rt/io/ply_parser.hpp"
 #include "rt/io/run_files.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "rt/io/staged_file.hpp"
@@ -458,18 +459,122 @@ TEST_CASE("Every number of an OBJ file is read strictly, and an error names its 
     CHECK(obj_error("v 0 0 0\n\x01 1 2\n") ==
           "line 2, column 1: unknown statement \"\\x01\"; expected v, vt, vn, f, o, g, s, usemtl, mtllib, l or p");
 
-    // What is allowed: a byte order mark, CRLF, comments, w and colours, vt and vn, every corner form,
-    // negative indices, forward references, polygons.
+    // Texture coordinates and normals: at every corner of a face or at none, at every face as at the first,
+    // and no zero normal.
+    const std::string with_vt_vn = tri + "vt 0 0\nvn 0 0 1\n";
+    CHECK(obj_error(with_vt_vn + "f 1/1/1 2//1 3/1/1\n") ==
+          "line 6, column 9: a face gives a texture coordinate at every corner or at none; corner \"2//1\" "
+          "gives "
+          "none and the first does");
+    CHECK(obj_error(with_vt_vn + "f 1/1 2/1/1 3/1\n") ==
+          "line 6, column 7: a face gives a normal at every corner or at none; corner \"2/1/1\" gives one "
+          "and the "
+          "first does not");
+    CHECK(
+        obj_error(with_vt_vn + "f 1//1 2//1 3//1\nf 1 2 3\n") ==
+        "line 7, column 1: a mesh gives normals (vn) at every face or at none; this face does not, the first "
+        "(line 6) does");
+    CHECK(obj_error(tri + "vn 0 0 0\n") ==
+          "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
+    CHECK(obj_error(tri + "vn 0 0 1e-30\n") ==
+          "line 4, column 4: a normal (vn) must not be zero (or so small its square is)");
+
+    // What is allowed: a byte order mark, CRLF, comments, w and colours, vt (1 to 3 numbers) and vn, every
+    // corner form, negative indices, forward references, polygons.
     const ObjMesh m = parse_obj(
-        "\xEF\xBB\xBFv 0 0 0 1\r\nv 1 0 0 0.5 0.5 0.5\r\n# a comment\nv 0 1 0 # after a vertex\nvt 0 1\n"
-        "vn 0 0 1\ng part\ns off\nf 1/1/1 2//1 -1/1\nf 1 2 3 4\nv 1 1 0\n",
+        "\xEF\xBB\xBFv 0 0 0 1\r\nv 1 0 0 0.5 0.5 0.5\r\n# a comment\nv 0 1 0 # after a vertex\nvt 0.25 1\n"
+        "vn 0 0 2\nvt 0.5\ng part\ns off\nf 1/1/1 2/2/1 -1/1/-1\nf 1/-1/1 2/1/1 3/1/1 4/2/1\nv 1 1 0\n",
         1e9);
     REQUIRE(m.positions.size() == 4);
     REQUIRE(m.faces.size() == 2);
     CHECK(m.faces[0].vertices == std::vector<std::uint32_t>{0, 1, 2});
     CHECK(m.faces[1].vertices == std::vector<std::uint32_t>{0, 1, 2, 3});
-    CHECK(m.faces[1].line == 10);
+    CHECK(m.faces[0].texture_coordinates == std::vector<std::uint32_t>{0, 1, 0});
+    CHECK(m.faces[1].texture_coordinates == std::vector<std::uint32_t>{1, 0, 0, 1});
+    CHECK(m.faces[0].normals == std::vector<std::uint32_t>{0, 0, 0});
+    CHECK(m.faces[1].line == 11);
     CHECK(m.positions[1] == Vec3(1, 0, 0));
+    CHECK(m.texture_coordinates == std::vector<Vec2>{{0.25f, 1}, {0.5f, 0}});
+    CHECK(m.normals == std::vector<Vec3>{{0, 0, 2}});  // as written: the loader normalises
+    // Faces without either, as every OBJ before vn and vt were read.
+    const ObjMesh plain = parse_obj(tri + "vt 0 0\nvn 0 0 1\nf 1 2 3\n", 1e9);
+    CHECK(plain.faces[0].texture_coordinates.empty());
+    CHECK(plain.faces[0].normals.empty());
+}
+
+TEST_CASE(
+    "A broken PLY file is refused with its place: the header's line, the ASCII line, the binary element",
+    "[bad_input][ply]") {
+    auto ply_error = [](const std::string& bytes) { return error_of([&] { parse_ply(bytes, 1e9); }); };
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+    CHECK(ply_error(header + vertices + "3 0 1 2\n") == "no InputError");
+    CHECK(ply_error("plx\n") == "line 1: a PLY file starts with the line \"ply\", got \"plx\"");
+    CHECK(ply_error("ply\nformat ascii 2.0\n") == "line 2: a format line is \"format <kind> 1.0\"");
+    CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n") ==
+          "line 5: element vertex must have properties x, y and z");
+    CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\n") ==
+          "line 4: unknown property type \"quad\"; expected char, uchar, short, ushort, int, uint, float or "
+          "double "
+          "(or int8 ... float64)");
+    CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n") ==
+          "line 4: the header has no end_header line");
+    // Counts that do not match the data, both ways.
+    CHECK(ply_error(header + vertices) ==
+          "line 13: element face 0: the file ends before it (the header counts more)");
+    CHECK(ply_error(header + vertices + "3 0 1 2\n3 0 1 2\n") ==
+          "line 14: data after the last element: the header's counts do not match the data");
+    CHECK(ply_error(header + "0 0 0\n1 0\n0 1 0\n3 0 1 2\n") ==
+          "line 11: element vertex 1: has 2 values, too few for its properties (z is missing)");
+    CHECK(ply_error(header + "0 0 0 7\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "line 10: element vertex 0: has 4 values, more than its properties read (3)");
+    // Values: finite, within the limits, whole and in range where they are indices.
+    CHECK(ply_error(header + "0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "line 10: element vertex 0: z: must be a finite number of magnitude at most 1e+09, got nan");
+    CHECK(ply_error(header + "0 0 2e9\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+          "line 10: element vertex 0: z: must be a finite number of magnitude at most 1e+09, got 2e+09");
+    CHECK(ply_error(header + vertices + "3 0 1 3\n") ==
+          "line 13: element face 0: vertex_indices: a vertex index must be in [0, 2], got 3");
+    CHECK(ply_error(header + vertices + "3 0 1 1.5\n") ==
+          "line 13: element face 0: vertex_indices: must be a whole number in [-2147483648, 2147483647], got "
+          "\"1.5\"");
+    CHECK(ply_error(header + vertices + "2 0 1\n") ==
+          "line 13: element face 0: vertex_indices: a face must have 3 to 65536 vertices, got 2");
+    CHECK(
+        ply_error(header + vertices + "300 0 1\n") ==
+        "line 13: element face 0: vertex_indices's length: must be a whole number in [0, 255], got \"300\"");
+    // Binary: the element and its byte offset.
+    std::string binary =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+        "property float z\nend_header\n";
+    const std::string zero(12, '\0');
+    CHECK(ply_error(binary + zero) == "no InputError");
+    CHECK(ply_error(binary + zero.substr(0, 10)) ==
+          "element vertex: the header counts 1, more than the rest of the file can hold");
+    const std::string with_face =
+        "ply\nformat binary_big_endian 1.0\nelement vertex 1\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\n"
+        "property list uchar uint vertex_indices\nend_header\n";
+    CHECK(ply_error(with_face + zero + "\x03" + std::string(4, '\0')) ==
+          "element face 0 (byte offset 12): vertex_indices: the file ends inside it (the header counts more "
+          "data)");
+    CHECK(ply_error(binary + zero + "xy") ==
+          "byte offset 12: 2 byte(s) after the last element: the header's counts do not "
+          "match the data");
+    const std::string nan_z = zero.substr(0, 8) + std::string("\x00\x00\xc0\x7f", 4);
+    CHECK(ply_error(binary + nan_z) ==
+          "element vertex 0 (byte offset 0): z: must be a finite number of magnitude at "
+          "most 1e+09, got nan");
+    CHECK(
+        ply_error(
+            "ply\nformat binary_big_endian 1.0\nelement vertex 4000000000\nproperty float x\nend_header\n") ==
+        "line 3: an element's count must be a whole number in [0, 2147483648], got \"4000000000\"");
+    CHECK(ply_error("ply\nformat binary_big_endian 1.0\nelement vertex 2000000000\nproperty float "
+                    "x\nproperty float y\n"
+                    "property float z\nend_header\n") ==
+          "element vertex: the header counts 2000000000, more than the rest of the file can hold");
 }
 
 TEST_CASE("An OBJ mesh whose every face has no area is refused, as a lone triangle of no area is",

@@ -2,10 +2,12 @@
 #include <stb_image.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -20,6 +22,7 @@
 #include "rt/io/assets.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/picture_compare.hpp"
+#include "rt/io/ply_parser.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "rt/live/live_knobs.hpp"
 #include "rt/render/interrupt.hpp"
@@ -520,8 +523,9 @@ TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
         }
         return std::string("no error");
     };
-    CHECK_THAT(error_for(scene_with_mesh("absent.obj")),
-               Catch::Contains("shapes[0].file: must name an OBJ file") && Catch::Contains("absent.obj"));
+    CHECK_THAT(
+        error_for(scene_with_mesh("absent.obj")),
+        Catch::Contains("shapes[0].file: must name an OBJ or PLY file") && Catch::Contains("absent.obj"));
     std::ofstream(folder / "empty.obj") << "# nothing\n";
     CHECK_THAT(error_for(scene_with_mesh("empty.obj")),
                Catch::Contains("empty.obj: must have at least one face, got none"));
@@ -561,7 +565,8 @@ TEST_CASE("needed(scene) follows the content, narrowed by the scene's effects li
     CHECK(needed(narrowed) == EffectSet{Effect::kCameraRays, Effect::kShadows, Effect::kDirect});
 
     const Scene cornell = load_scene(scene_path("cornell.json"));
-    CHECK(needed(cornell) == EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia}));
+    CHECK(needed(cornell) ==
+          EffectSet::all().without(EffectSet{Effect::kGlossy, Effect::kMedia, Effect::kShadingNormals}));
 }
 
 TEST_CASE("needed(scene) lights whatever a light can reach: media that scatter, mirrors and glass too",
@@ -682,4 +687,77 @@ TEST_CASE("Pictures: a PNG reads back as written, and a comparison counts, bound
     CHECK(text.find("|#       |") != std::string::npos);
     CHECK(text.find("|       #|") != std::string::npos);
     CHECK_THROWS_AS(compare_pictures(to_picture(Image(4, 4)), made, 0), InputError);
+}
+
+TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endian data", "[ply]") {
+    const std::string header_start = "ply\nformat ";
+    const std::string header_rest =
+        " 1.0\ncomment a quad and a triangle\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nproperty uchar red\nproperty float nx\nproperty float ny\nproperty float nz\n"
+        "property double s\nproperty double t\nelement face 2\nproperty uchar flags\n"
+        "property list uchar uint vertex_indices\nelement edge 1\nproperty int vertex1\nproperty int "
+        "vertex2\n"
+        "end_header\n";
+    const rt::PlyMesh ascii = rt::parse_ply(header_start + "ascii" + header_rest +
+                                                "0 0 0 255 0 0 1 0 0\n1 0 0 7 0 0 2 1 0\n1 1 0 7 0 1 1 1 1\n"
+                                                "0 1 0 7 1 0 0 0.5 1\n0 4 0 1 2 3\n1 3 0 2 3\n0 2\n",
+                                            1e9);
+    REQUIRE(ascii.positions.size() == 4);
+    CHECK(ascii.positions[2] == rt::Vec3(1, 1, 0));
+    CHECK(ascii.normals[1] == rt::Vec3(0, 0, 2));  // as written: the loader normalises
+    CHECK(ascii.texture_coordinates[3] == rt::Vec2(0.5f, 1));
+    REQUIRE(ascii.faces.size() == 2);
+    CHECK(ascii.faces[0] == std::vector<std::uint32_t>{0, 1, 2, 3});
+    CHECK(ascii.faces[1] == std::vector<std::uint32_t>{0, 2, 3});
+    for (const bool little : {true, false}) {
+        std::string data;
+        auto put = [&](auto value) {
+            char bytes[sizeof value];
+            std::memcpy(bytes, &value, sizeof value);  // this machine is little-endian (x86-64)
+            if (!little) std::reverse(bytes, bytes + sizeof value);
+            data.append(bytes, sizeof value);
+        };
+        for (std::size_t v = 0; v < 4; ++v) {
+            for (int a = 0; a < 3; ++a) put(float(ascii.positions[v][a]));
+            put(std::uint8_t(7));
+            for (int a = 0; a < 3; ++a) put(float(ascii.normals[v][a]));
+            for (int a = 0; a < 2; ++a) put(double(ascii.texture_coordinates[v][a]));
+        }
+        for (const auto& face : ascii.faces) {
+            put(std::uint8_t(0));
+            put(std::uint8_t(face.size()));
+            for (const std::uint32_t i : face) put(i);
+        }
+        put(std::int32_t(0)), put(std::int32_t(2));
+        const rt::PlyMesh binary = rt::parse_ply(
+            header_start + (little ? "binary_little_endian" : "binary_big_endian") + header_rest + data, 1e9);
+        INFO((little ? "little-endian" : "big-endian"));
+        CHECK(binary.positions == ascii.positions);
+        CHECK(binary.normals == ascii.normals);
+        CHECK(binary.texture_coordinates == ascii.texture_coordinates);
+        CHECK(binary.faces == ascii.faces);
+    }
+}
+
+TEST_CASE("The scene loader reads a mesh as PLY by its extension, quads as fans, normals normalised",
+          "[ply]") {
+    const fs::path folder = fs::temp_directory_path() / ("rt_ply_" + std::to_string(::getpid()));
+    fs::create_directories(folder);
+    std::ofstream(folder / "quad.PLY")
+        << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
+           "property list uchar int vertex_indices\nend_header\n0 0 0 0 0 2\n1 0 0 0 0 2\n1 1 0 0 0 2\n0 1 0 "
+           "0 0 2\n"
+           "4 0 1 2 3\n";
+    std::ofstream(folder / "scene.json")
+        << R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]}, "materials": {"m": {"type": "diffuse"}},
+              "shapes": [{"type": "mesh", "file": "quad.PLY", "material": "m"}]})";
+    const rt::Scene scene = rt::load_scene(folder / "scene.json");
+    const auto& mesh = std::get<rt::MeshShape>(scene.shapes[0].geometry);
+    CHECK(mesh.triangles == std::vector<std::array<std::uint32_t, 3>>{{0, 1, 2}, {0, 2, 3}});
+    CHECK(mesh.normal_corners == mesh.triangles);
+    CHECK(mesh.normals[3] == rt::Vec3(0, 0, 1));
+    CHECK(mesh.texture_coordinates.empty());
+    CHECK(rt::needed(scene).contains(rt::Effect::kShadingNormals));
+    fs::remove_all(folder);
 }

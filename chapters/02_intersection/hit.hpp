@@ -14,11 +14,14 @@ struct Hit {
     Vec3 normal{0, 0, 1};  // unit geometric normal, facing the side the ray came from: dot(normal, d) <= 0
     bool front_face =
         true;  // the ray hit the side the shape's outward normal points to (quad: side of u × v)
+    // The normal the BSDF is evaluated about: a smooth mesh's vertex normals interpolated with the hit's
+    // barycentrics, turned to the viewer's side (shading_normal.hpp); the geometric normal everywhere else.
+    Vec3 shading_normal{0, 0, 1};
     // Texture coordinates (chapter 04's textures): a quad's (a, b) of origin + a u + b v (a box's faces are
-    // quads: each face's own), a triangle's barycentrics (b1, b2), a plane's coordinates in its tangent basis
-    // (plane_uv, in scene units), and a sphere's (φ / 2π, 1 − θ / π) about its y axis (sphere_uv). A sphere's
-    // costs an atan2 and an acos, so it is computed only when the sphere's material has a texture: (0, 0)
-    // otherwise.
+    // quads: each face's own), a triangle's barycentrics (b1, b2), a mesh's (OBJ vt, PLY u v) interpolated or
+    // (b1, b2) without them, a plane's coordinates in its tangent basis (plane_uv, in scene units), and a
+    // sphere's (φ / 2π, 1 − θ / π) about its y axis (sphere_uv). A sphere's costs an atan2 and an acos, so it
+    // is computed only when the sphere's material has a texture: (0, 0) otherwise.
     Vec2 uv{0};
     int material = -1;            // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
@@ -40,10 +43,12 @@ struct NearestHit {
     Vec2 uv{0};
 };
 
-// Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n.
+// Turns the outward normal n toward the ray's side: front_face = d · n < 0, normal = front_face ? n : −n; the
+// shading normal is the same until a smooth mesh replaces it.
 inline void set_face_normal(Hit& hit, const Vec3& direction, const Vec3& outward_normal) {
     hit.front_face = glm::dot(direction, outward_normal) < 0;
     hit.normal = hit.front_face ? outward_normal : -outward_normal;
+    hit.shading_normal = hit.normal;
 }
 
 }  // namespace rt

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     using namespace rt;
     ShowMode show = ShowMode::kNormal;
     WorldOptions options;
-    std::string mesh_out;
+    std::string mesh_out, torus_out;
     const ChapterInfo chapter{"ch02_intersection",
                               "Chapter 02: the nearest intersection of a ray with a scene",
                               "ch02_default.json", EffectSet{Effect::kCameraRays}};
@@ -32,10 +32,15 @@ int main(int argc, char** argv) {
             "--write-mesh", mesh_out,
             "Write the default scene's mesh (icosphere, 3 subdivisions, radii jittered by 5%) as OBJ, "
             "and exit");
+        app.add_option(
+            "--write-torus", torus_out,
+            "Write chapter 04's smooth torus (with normals and texture coordinates) as OBJ, or PLY for a "
+            "name ending in .ply, and exit");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
-        if (!mesh_out.empty()) {
-            write_default_mesh(mesh_out);
+        if (!mesh_out.empty() || !torus_out.empty()) {
+            if (!mesh_out.empty()) write_default_mesh(mesh_out);
+            if (!torus_out.empty()) write_smooth_torus(torus_out);
             return std::nullopt;
         }
         const auto build_start = std::chrono::steady_clock::now();

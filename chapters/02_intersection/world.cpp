@@ -14,6 +14,7 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
         const Material& m = scene.material_of(shape);
         add(shape, m.emissive(), m.texture.has_value());
     }
+    if (!corners_.empty()) corners_.resize(triangles_.size());
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
@@ -110,6 +111,7 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     std::vector<Sphere> spheres;
     std::vector<Quad> quads;
     std::vector<Triangle> triangles;
+    std::vector<TriangleCorners> corners;
     std::vector<QuadPacket> packets;
     primitives.reserve(order.size());
     spheres.reserve(spheres_.size());
@@ -130,6 +132,7 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
                 p.index = move_to(quads, quads_, p.index);
                 break;
             case Kind::kTriangle:
+                if (!corners_.empty()) move_to(corners, corners_, p.index);
                 p.index = move_to(triangles, triangles_, p.index);
                 break;
             case Kind::kQuadPacket:
@@ -142,6 +145,7 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     spheres_ = std::move(spheres);
     if (packets_.empty()) quads_ = std::move(quads);
     triangles_ = std::move(triangles);
+    corners_ = std::move(corners);
     packets_ = std::move(packets);
 }
 
@@ -170,7 +174,19 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
             } else if constexpr (std::is_same_v<T, MeshShape>) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
-                for (const auto& tri : g.triangles) {
+                const bool has_uv = !g.texture_coordinates.empty();
+                for (std::size_t i = 0; i < g.triangles.size(); ++i) {
+                    const auto& tri = g.triangles[i];
+                    if (g.smooth() || has_uv) {
+                        corners_.resize(triangles_.size());  // the triangles before it have none
+                        TriangleCorners c{{}, {}, g.smooth(), has_uv};
+                        for (std::size_t k = 0; k < 3; ++k) {
+                            if (c.smooth) c.normals[k] = g.normals[g.normal_corners[i][k]];
+                            if (has_uv)
+                                c.texture_coordinates[k] = g.texture_coordinates[g.texture_corners[i][k]];
+                        }
+                        corners_.push_back(c);
+                    }
                     add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive,
                                   textured);
                     triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
@@ -396,14 +412,31 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
             const Vec3 w0 = (1 - b1 - b2) * t.p0, w1 = b1 * t.p1, w2 = b2 * t.p2;
             hit.point = w0 + w1 + w2;
             hit.point_error = gamma_bound(7) * (abs(w0) + abs(w1) + abs(w2));
-            hit.uv = found.uv;
             set_face_normal(hit, ray.direction, triangle_normal(t));
+            hit.uv = found.uv;
+            if (!corners_.empty()) interpolate_corners(hit, ray, corners_[p.index], b1, b2);
             break;
         }
         case Kind::kQuadPacket:
             break;  // resolved to its quad above
     }
     return hit;
+}
+
+// Phong's interpolation: n = b0 n0 + b1 n1 + b2 n2, normalised, then made a shading normal by the one fix
+// (shading_normal.hpp); a normal that cancels out (opposite corners) leaves the geometric one.
+void World::interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1,
+                                Real b2) const {
+    const Real b0 = 1 - b1 - b2;
+    if (corners.textured) {
+        const auto& uv = corners.texture_coordinates;
+        hit.uv = b0 * uv[0] + b1 * uv[1] + b2 * uv[2];
+    }
+    if (!corners.smooth || options_.shading_normals == ShadingNormalFix::kFlat) return;
+    const Vec3 n = b0 * corners.normals[0] + b1 * corners.normals[1] + b2 * corners.normals[2];
+    const Real length = glm::length(n);
+    if (!(length > Real(1e-6))) return;
+    hit.shading_normal = shading_normal(n / length, hit.normal, -ray.direction, options_.shading_normals);
 }
 
 std::optional<Hit> World::intersect(const Ray& ray, Real t_max) const {

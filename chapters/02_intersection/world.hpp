@@ -6,6 +6,7 @@
 // triangles of each leaf are tested four at a time (triangle_packet.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "quad_packet.hpp"
 #include "rt/core/ray.hpp"
 #include "rt/core/scene.hpp"
+#include "shading_normal.hpp"
 #include "sphere.hpp"
 #include "triangle.hpp"
 #include "triangle_packet.hpp"
@@ -43,7 +45,19 @@ struct WorldOptions {
     // With triangle packets: the SAH weighs a leaf by the packets it tests, ⌈n / 4⌉, not by its n triangles
     // (false: by its triangles, to measure what that buys).
     bool packet_sah = true;
+    // A smooth mesh's shading normals (shading_normal.hpp): kFlat (faceted) where the run does not simulate
+    // them (chapters 02 and 03), kBend from chapter 04 on.
+    ShadingNormalFix shading_normals = ShadingNormalFix::kFlat;
 };
+
+// The options of a render that simulates `simulated`: a smooth mesh's shading normals made by `fix` when it
+// simulates them (chapter 04 on), the mesh faceted when not.
+inline WorldOptions world_options_for(const EffectSet& simulated,
+                                      ShadingNormalFix fix = ShadingNormalFix::kBend) {
+    WorldOptions options;
+    if (simulated.contains(Effect::kShadingNormals)) options.shading_normals = fix;
+    return options;
+}
 
 // The box around a bounded primitive, as the BVH is built over (chapter 11 builds one over its own copy).
 Aabb bounds_of(const Sphere& sphere);
@@ -96,6 +110,13 @@ class World {
         Plane plane;
         int material;
     };
+    // A mesh triangle's vertex normals and texture coordinates, where its file gives them.
+    struct TriangleCorners {
+        std::array<Vec3, 3> normals{};
+        std::array<Vec2, 3> texture_coordinates{};
+        bool smooth = false;
+        bool textured = false;
+    };
     // The nearest hit found so far, before its hit record is made: `slot` is the primitive's place in
     // primitives_, or primitives_.size() + i for plane i; `lane` is the quad's lane when the slot is a
     // packet. A triangle found in a triangle packet keeps the packet (`triangles`, and its lane): the hit
@@ -126,11 +147,17 @@ class World {
     // Its number, Hit::primitive: the record's, or after the bounded ones for a plane.
     std::uint32_t number_of(const Candidate& found) const;
     Hit make_hit(const Ray& ray, const Candidate& found) const;
+    // Interpolates a mesh triangle's corners at the barycentrics (b1, b2) into the hit's shading normal and
+    // uv.
+    void interpolate_corners(Hit& hit, const Ray& ray, const TriangleCorners& corners, Real b1,
+                             Real b2) const;
 
     WorldOptions options_;
     std::vector<Sphere> spheres_;
     std::vector<Quad> quads_;
     std::vector<Triangle> triangles_;
+    // triangles_[i]'s corners, when some mesh has normals or texture coordinates (else empty: no cost).
+    std::vector<TriangleCorners> corners_;
     std::vector<QuadPacket> packets_;
     std::vector<Primitive> quad_primitives_;        // with packets: quad i's own record (material, number)
     std::vector<Primitive> primitives_;             // the bounded ones; planes are numbered after them

@@ -24,9 +24,9 @@ DirectLighting::DirectLighting(const World& world, const MaterialTable& material
 
 Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Bsdf& brdf, const LightSample& s,
                                    RayCounts& rays) const {
-    const Real cos_i = glm::dot(s.wi, hit.normal);
+    const Real cos_i = glm::dot(s.wi, hit.shading_normal);
     if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.radiance)) return Color(0);
-    const Color f = eval(brdf, wo, s.wi, hit.normal);
+    const Color f = eval(brdf, wo, s.wi, hit.shading_normal);
     if (is_black(f)) return Color(0);
     if (options_.simulates(Effect::kShadows)) {
         const bool lit = s.on_surface() ? visible(world_, hit, SurfacePoint{s.point, s.normal, s.point_error},
@@ -113,12 +113,12 @@ void DirectLighting::add_environment(const Hit& hit, const Vec3& wo, const Bsdf&
     if (!lights_.environment || is_black(lights_.environment->radiance)) return;
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
-    const Frame frame = make_frame(hit.normal);
+    const Frame frame = make_frame(hit.shading_normal);
     for (int j = 0; j < n; ++j) {
         const Vec3 wi = glm::normalize(frame.to_world(sample_cosine_hemisphere(light_point(j, rng))));
-        const Real cos_i = glm::dot(wi, hit.normal);
+        const Real cos_i = glm::dot(wi, hit.shading_normal);
         if (!(cos_i > 0)) continue;
-        const Color f = eval(b, wo, wi, hit.normal);
+        const Color f = eval(b, wo, wi, hit.shading_normal);
         if (is_black(f)) continue;
         if (options_.simulates(Effect::kShadows)) {
             rays.add(RayKind::kShadow);

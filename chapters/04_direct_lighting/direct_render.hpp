@@ -13,9 +13,9 @@
 namespace rt {
 
 // What chapter 04 simulates: chapter 03's point lights and shadows, area lights and the environment, and the
-// glossy lobes.
+// glossy lobes, and a smooth mesh's shading normals.
 inline constexpr EffectSet kDirectChapterEffects{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
-                                                 Effect::kGlossy};
+                                                 Effect::kGlossy, Effect::kShadingNormals};
 
 // Where a pixel's camera rays pass: stratified jitter (anti-aliased), or the pixel centre (for comparing
 // with an exact image computed at the centres).

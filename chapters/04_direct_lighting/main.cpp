@@ -16,6 +16,7 @@
 int main(int argc, char** argv) {
     using namespace rt;
     DirectOptions options;
+    ShadingNormalFix shading_normals = ShadingNormalFix::kBend;
     bool study = false;
     std::string csv;
     const ChapterInfo chapter{"ch04_direct_lighting",
@@ -32,6 +33,9 @@ int main(int argc, char** argv) {
             app, options.light_selection,
             "Which lights a hit samples: every (N samples each), power (N lights picked with "
             "probability proportional to power) or auto (every light up to 16 lights, else power)");
+        add_enum_option(app, shading_normals,
+                        "A smooth mesh's shading normals: bend (the fix), raw (interpolated only) or flat "
+                        "(faceted)");
         CLI::Option* study_flag = app.add_flag(
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
@@ -47,7 +51,7 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         const Scene& scene = context.scene;
-        const World world(scene);
+        const World world(scene, world_options_for(context.simulated, shading_normals));
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
         const MaterialTable materials(scene, context.simulated);
         const auto analytic =

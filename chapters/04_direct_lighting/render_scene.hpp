@@ -15,7 +15,7 @@ struct RenderScene {
     RenderScene(const Scene& scene_, const EffectSet& simulated, const MaterialHooks& hooks = {},
                 Transport transport = Transport::kRadiance)
         : scene(scene_),
-          world(scene_),
+          world(scene_, world_options_for(simulated)),
           materials(scene_, simulated, hooks, transport),
           lights(collect_lights(scene_)) {}
 

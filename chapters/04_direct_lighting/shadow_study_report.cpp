@@ -48,7 +48,7 @@ void run_shadow_study(const Scene& given, const DirectOptions& options, const Re
     const MaterialTable materials(scene, options.simulated);
     const auto analytic = find_plane_under_quad(scene, materials);
     if (!analytic) throw InputError(scene.file + ": --shadow-study: not a plane under one quad light");
-    const World world(scene);
+    const World world(scene, world_options_for(options.simulated));
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
     const Image exact = exact_image(*analytic, world, camera);
     const auto rows =

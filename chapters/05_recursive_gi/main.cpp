@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
         const TerminationSettings rule = termination.resolved();
         const Scene& scene = context.scene;
         const RenderSettings& settings = context.settings;
-        const World world(scene);
+        const World world(scene, world_options_for(context.simulated));
         const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
         const MaterialTable materials(scene, context.simulated);
         DirectOptions direct;

@@ -47,7 +47,7 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     const RayOffset& offset = shading_.options().offset;
     // Chapter 05's one delta BRDF is the mirror (its material table makes no glass).
     if (const auto* mirror = is_delta(brdf) ? dynamic_cast<const MirrorBrdf*>(&brdf) : nullptr) {
-        const auto s = mirror_scatter(*mirror, wo, hit->normal);
+        const auto s = mirror_scatter(*mirror, wo, hit->shading_normal);
         if (!s) return L;
         rays.add(RayKind::kReflection);
         return L + trace(spawn_ray(*hit, s->wi, offset), RayKind::kReflection, depth + 1,
@@ -59,7 +59,7 @@ Color RecursiveTracer::trace(const Ray& ray, RayKind kind, int depth, Color thro
     // The vertex the indirect ray reaches may not bounce again (depth + 1 is the cap), so there it could only
     // add the emission of an emitter light sampling misses: without one, the ray is not worth tracing.
     if (depth + 1 >= options_.termination.max_depth && !indirect_rays_find_emitters_) return L;
-    const auto s = uniform_scatter(brdf, wo, hit->normal, rng.next_vec2());
+    const auto s = uniform_scatter(brdf, wo, hit->shading_normal, rng.next_vec2());
     if (!s) return L;
     rays.add(RayKind::kIndirect);
     return L + trace(spawn_ray(*hit, s->wi, offset), RayKind::kIndirect, depth + 1, throughput * s->weight,

@@ -95,7 +95,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
         if (observer) observer->sampled(beta, s, next->cos_i);
         beta *= s.f * (next->cos_i / s.pdf);
         eta_scale /= s.radiance_scale;
-        from = {hit->point, hit->normal, flags.delta ? kInfinity : s.pdf, flags.delta};
+        from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
         if (!flags.delta) ++bounces;
         if (!roulette(++depth, beta, eta_scale, rng)) break;
         ray = spawn_ray(*hit, s.wi, options_.offset);

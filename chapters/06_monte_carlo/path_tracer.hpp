@@ -132,7 +132,7 @@ class PathTracer {
 inline std::optional<Continuation> PathTracer::continuation(const Hit& hit, const Vec3& wo, const Bsdf& bsdf,
                                                             SampleStream rng) const {
     const BsdfFlags& flags = bsdf.flags();
-    const Vec3& n = hit.normal;
+    const Vec3& n = hit.shading_normal;
     Continuation c;
     BsdfSample& s = c.sample;
     const Vec2 u = rng.next_vec2();
@@ -157,7 +157,7 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, S
     const bool shadows = options_.simulates(Effect::kShadows);
     // A BSDF that transmits is lit from both sides; |cos θ_i| then weighs light from behind the surface.
     const bool both_sides = bsdf.flags().transmission;
-    const Vec3& n = hit.normal;
+    const Vec3& n = hit.shading_normal;
     Color sum(0);
     if (!picker_.empty()) {
         const Real u_pick = rng.next_real();

@@ -187,7 +187,7 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         if (observer) observer->sampled(path.beta, s, next->cos_i);
         path.beta *= s.f * (next->cos_i / s.pdf);
         path.eta_scale /= s.radiance_scale;
-        path.from = {hit->point, hit->normal, flags.delta ? kInfinity : s.pdf, flags.delta};
+        path.from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
         if (!flags.delta) ++path.bounces;
         // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
         // refractions belong to the walk, which ends by the walk's rules, not by chapter 06's roulette.

@@ -10,18 +10,20 @@
 namespace rt {
 
 enum class Effect {
-    kCameraRays,  // what the camera sees first: surfaces, emitters, the background
-    kShadows,     // shadow rays test whether a light is visible
-    kDirect,      // light arriving straight from the lights (the direct term)
-    kReflection,  // ideal mirror reflection
-    kGlossy,      // glossy and retro-reflective lobes
-    kIndirect,    // light that has bounced off other surfaces (diffuse interreflection)
-    kRefraction,  // light passing through dielectrics
-    kMedia,       // light scattered inside participating media (fog, milk, wax): chapter 09
+    kCameraRays,      // what the camera sees first: surfaces, emitters, the background
+    kShadows,         // shadow rays test whether a light is visible
+    kDirect,          // light arriving straight from the lights (the direct term)
+    kReflection,      // ideal mirror reflection
+    kGlossy,          // glossy and retro-reflective lobes
+    kIndirect,        // light that has bounced off other surfaces (diffuse interreflection)
+    kRefraction,      // light passing through dielectrics
+    kMedia,           // light scattered inside participating media (fog, milk, wax): chapter 09
+    kShadingNormals,  // a mesh's vertex normals interpolated across its triangles: chapter 04
 };
-inline constexpr int kEffectCount = 8;
+inline constexpr int kEffectCount = 9;
 inline constexpr std::array<std::string_view, kEffectCount> kEffectNames = {
-    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction", "media"};
+    "camera", "shadows", "direct", "reflection", "glossy", "indirect", "refraction", "media", "shading_normals",
+};
 
 class EffectSet {
 public:

@@ -1,6 +1,7 @@
 #include "rt/core/effects.hpp"
 
 #include <array>
+#include <variant>
 
 namespace rt {
 namespace {
@@ -49,6 +50,8 @@ EffectSet needed(const Scene& scene) {
         // Glass reflects too (Fresnel): reflection rays.
         if (effect_of(m) == Effect::kRefraction) content.insert(Effect::kReflection);
         if (m.medium && m.medium->scatters()) content.insert(Effect::kMedia);
+        const auto* mesh = std::get_if<MeshShape>(&shape.geometry);
+        if (mesh && mesh->smooth()) content.insert(Effect::kShadingNormals);
     }
     // No chapter before 09 has anything between the shapes: a medium there, even one that only absorbs,
     // calls for media.
@@ -66,8 +69,8 @@ EffectSet simulated_effects(const Scene& scene, const EffectSet& supported) {
 }
 
 std::string chapter_that_adds(Effect effect) {
-    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05",
-                                                                "04", "05", "07", "09"};
+    constexpr std::array<const char*, kEffectCount> kChapter = {"01", "03", "04", "05", "04",
+                                                                "05", "07", "09", "04"};
     return std::string("chapter ") + kChapter[std::size_t(effect)];
 }
 

@@ -12,8 +12,8 @@ namespace rt {
 // What the scene's content calls for (lights with anything they can light — a surface that reflects or
 // transmits something, or a medium that scatters — → shadows, direct and indirect light; mirrors →
 // reflection; glossy or retro-reflective materials → glossy; dielectrics → refraction, and reflection; a
-// medium that scatters inside a dielectric, or any medium between the shapes → media), narrowed by the
-// scene's "effects" list when it has one.
+// medium that scatters inside a dielectric, or any medium between the shapes → media; a mesh with vertex
+// normals → shading normals), narrowed by the scene's "effects" list when it has one.
 EffectSet needed(const Scene& scene);
 
 // What a run of a chapter that supports `supported` simulates: needed(scene) ∩ supported. run_chapter()

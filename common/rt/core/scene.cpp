@@ -5,13 +5,19 @@
 namespace rt {
 
 Vec3 Transform::apply_to_point(const Vec3& p) const {
-    Vec3 q = p * scale;
+    return rotate(p * scale) + translate;
+}
+
+Vec3 Transform::apply_to_normal(const Vec3& n) const {
+    return rotate(n / scale);
+}
+
+Vec3 Transform::rotate(Vec3 q) const {
     const Vec3 r = rotate_degrees * (kPi / Real(180));
     // Rotation about x, then y, then z (right-handed, counter-clockwise looking down the axis).
     q = {q.x, std::cos(r.x) * q.y - std::sin(r.x) * q.z, std::sin(r.x) * q.y + std::cos(r.x) * q.z};
     q = {std::cos(r.y) * q.x + std::sin(r.y) * q.z, q.y, -std::sin(r.y) * q.x + std::cos(r.y) * q.z};
-    q = {std::cos(r.z) * q.x - std::sin(r.z) * q.y, std::sin(r.z) * q.x + std::cos(r.z) * q.y, q.z};
-    return q + translate;
+    return {std::cos(r.z) * q.x - std::sin(r.z) * q.y, std::sin(r.z) * q.x + std::cos(r.z) * q.y, q.z};
 }
 
 bool Scene::has_area_lights() const {

@@ -120,6 +120,11 @@ struct Transform {
     Vec3 translate{0};
 
     Vec3 apply_to_point(const Vec3& p) const;
+    // A surface normal follows the inverse transpose: n / scale, then the rotations (not normalised).
+    Vec3 apply_to_normal(const Vec3& n) const;
+
+  private:
+    Vec3 rotate(Vec3 v) const;  // about x, then y, then z
 };
 
 struct SphereShape {
@@ -144,12 +149,21 @@ struct BoxShape {
     Vec3 max{1};
     Transform transform;
 };
-// A triangle mesh with shared vertices; positions are already transformed into the scene.
+// A triangle mesh with shared vertices; positions and normals are already transformed into the scene. A file
+// that gives vertex normals (OBJ vn, PLY nx ny nz) or texture coordinates (OBJ vt, PLY u v) has them here,
+// with each triangle's corners into them (OBJ indexes them apart from the positions); a mesh without normals
+// is shaded faceted, by its triangles' own normals.
 struct MeshShape {
     std::string file;
     Transform transform;
     std::vector<Vec3> positions;
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<Vec3> normals;                                  // unit; empty when the file has none
+    std::vector<std::array<std::uint32_t, 3>> normal_corners;   // per triangle, or empty
+    std::vector<Vec2> texture_coordinates;                      // empty when the file has none
+    std::vector<std::array<std::uint32_t, 3>> texture_corners;  // per triangle, or empty
+
+    bool smooth() const { return !normals.empty(); }
 };
 
 struct Shape {

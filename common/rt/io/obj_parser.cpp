@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <tuple>
 
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
@@ -94,16 +95,40 @@ class Reader {
         mesh.positions.push_back(Vec3(Real(xyz[0]), Real(xyz[1]), Real(xyz[2])));
     }
 
-    void numbers(const std::vector<Token>& tokens, std::size_t low, std::size_t high, const char* what,
-                 std::size_t& count) {
+    std::vector<double> numbers(const std::vector<Token>& tokens, std::size_t low, std::size_t high,
+                                const char* what) const {
         const std::size_t n = tokens.size() - 1;
         if (n < low || n > high) {
             fail(tokens[0].column, std::string("a ") + what + " must have " + std::to_string(low) +
                                        (low == high ? "" : " to " + std::to_string(high)) + " numbers, got " +
                                        std::to_string(n));
         }
-        for (std::size_t i = 1; i < tokens.size(); ++i) number(tokens[i]);
-        ++count;
+        std::vector<double> values;
+        for (std::size_t i = 1; i < tokens.size(); ++i) values.push_back(number(tokens[i]));
+        return values;
+    }
+
+    void texture_coordinate(const std::vector<Token>& tokens, ObjMesh& mesh) const {
+        const std::vector<double> uvw = numbers(tokens, 1, 3, "texture coordinate (vt)");
+        mesh.texture_coordinates.push_back(Vec2(Real(uvw[0]), Real(uvw.size() > 1 ? uvw[1] : 0)));
+    }
+
+    void normal(const std::vector<Token>& tokens, ObjMesh& mesh) const {
+        const std::vector<double> n = numbers(tokens, 3, 3, "normal (vn)");
+        const Vec3 v{Real(n[0]), Real(n[1]), Real(n[2])};
+        if (!(glm::dot(v, v) > 0))
+            fail(tokens[1].column, "a normal (vn) must not be zero (or so small its square is)");
+        mesh.normals.push_back(v);
+    }
+
+    // Whether corner k of a face gives an attribute, against the face's first corner: all or none.
+    void same_as_first(const Token& t, std::size_t corner, bool given, bool first_given,
+                       const char* what) const {
+        if (corner > 0 && given != first_given) {
+            fail(t.column,
+                 std::string("a face gives a ") + what + " at every corner or at none; corner " + found(t) +
+                     (given ? " gives one and the first does not" : " gives none and the first does"));
+        }
     }
 
     // A face's corners: vertex indices resolved now (a negative one counts back from here; a positive one is
@@ -113,7 +138,7 @@ class Reader {
             fail(tokens[0].column,
                  "a face must have at least 3 vertices, got " + std::to_string(tokens.size() - 1));
         }
-        ObjFace f{{}, line_};
+        ObjFace f{{}, {}, {}, line_};
         for (std::size_t i = 1; i < tokens.size(); ++i) {
             const Token& t = tokens[i];
             const std::string_view text = t.text;
@@ -132,18 +157,24 @@ class Reader {
             } else {
                 f.vertices.push_back(index(t, v, t.column, mesh.positions.size(), "vertex"));
             }
-            if (slash == std::string_view::npos) continue;
-            const std::string_view rest = text.substr(slash + 1);
+            const std::size_t corner = i - 1;
+            const std::string_view rest = slash == std::string_view::npos ? "" : text.substr(slash + 1);
             const std::size_t second = rest.find('/');
             const std::string_view vt = rest.substr(0, second);
             const std::size_t vt_column = t.column + slash + 1;
-            if (second == std::string_view::npos || !vt.empty()) {
-                index(t, vt, vt_column, texture_coordinates_, "texture coordinate");
+            const bool has_vt =
+                slash != std::string_view::npos && (second == std::string_view::npos || !vt.empty());
+            same_as_first(t, corner, has_vt, !f.texture_coordinates.empty(), "texture coordinate");
+            if (has_vt) {
+                f.texture_coordinates.push_back(
+                    index(t, vt, vt_column, mesh.texture_coordinates.size(), "texture coordinate"));
             }
-            if (second == std::string_view::npos) continue;
+            const bool has_vn = slash != std::string_view::npos && second != std::string_view::npos;
+            same_as_first(t, corner, has_vn, !f.normals.empty(), "normal");
+            if (!has_vn) continue;
             const std::string_view vn = rest.substr(second + 1);
             if (vn.find('/') != std::string_view::npos) fail(t.column, "a face corner has at most 3 parts, got " + found(t));
-            index(t, vn, vt_column + second + 1, normals_, "normal");
+            f.normals.push_back(index(t, vn, vt_column + second + 1, mesh.normals.size(), "normal"));
         }
         mesh.faces.push_back(std::move(f));
     }
@@ -165,15 +196,29 @@ class Reader {
             if (keyword == "v") {
                 vertex(tokens, mesh);
             } else if (keyword == "vt") {
-                numbers(tokens, 1, 3, "texture coordinate (vt)", texture_coordinates_);
+                texture_coordinate(tokens, mesh);
             } else if (keyword == "vn") {
-                numbers(tokens, 3, 3, "normal (vn)", normals_);
+                normal(tokens, mesh);
             } else if (keyword == "f") {
                 face(tokens, mesh);
             } else if (keyword != "o" && keyword != "g" && keyword != "s" && keyword != "usemtl" &&
                        keyword != "mtllib" && keyword != "l" && keyword != "p") {
                 fail(tokens[0].column, "unknown statement " + found(tokens[0]) +
                                            "; expected v, vt, vn, f, o, g, s, usemtl, mtllib, l or p");
+            }
+        }
+        // A mesh is smooth (or textured) everywhere or nowhere: every face as the first one.
+        for (const ObjFace& f : mesh.faces) {
+            const ObjFace& first = mesh.faces.front();
+            for (const auto& [has, first_has, what] :
+                 {std::tuple(!f.texture_coordinates.empty(), !first.texture_coordinates.empty(),
+                             "texture coordinates (vt)"),
+                  std::tuple(!f.normals.empty(), !first.normals.empty(), "normals (vn)")}) {
+                if (has == first_has) continue;
+                line_ = f.line;
+                fail(1, std::string("a mesh gives ") + what + " at every face or at none; this face " +
+                            (has ? "gives them" : "does not") + ", the first (line " +
+                            std::to_string(first.line) + ") " + (first_has ? "does" : "does not"));
             }
         }
         for (const Pending& p : pending_) {
@@ -192,7 +237,6 @@ class Reader {
     };
     double largest_;
     std::size_t line_ = 0;
-    std::size_t texture_coordinates_ = 0, normals_ = 0;
     std::vector<Pending> pending_;
 };
 

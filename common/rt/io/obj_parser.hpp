@@ -6,7 +6,8 @@
 // names the line and column. What it reads: v (x y z, then an optional w, or r g b), vt, vn, f (corners v,
 // v/vt, v//vn, v/vt/vn; negative indices count back from the last vertex so far), and o, g, s, usemtl,
 // mtllib, l, p, which are skipped (no other file is ever opened). Comments start with #; a UTF-8 byte order
-// mark and CRLF line ends are allowed.
+// mark and CRLF line ends are allowed. A face gives texture coordinates (normals) at all its corners or at
+// none, and so does every face of the file as its first one; a zero normal is refused.
 #pragma once
 
 #include <cstdint>
@@ -17,13 +18,19 @@
 
 namespace rt {
 
+// A face's corners: positions always; texture coordinates and normals either at every corner or at none
+// (a face that gives them at some corners only is refused).
 struct ObjFace {
     std::vector<std::uint32_t> vertices;  // indices into ObjMesh::positions, at least 3
-    std::size_t line;                     // where it is in the file, for messages
+    std::vector<std::uint32_t> texture_coordinates;  // into ObjMesh::texture_coordinates, or empty
+    std::vector<std::uint32_t> normals;              // into ObjMesh::normals, or empty
+    std::size_t line;                                // where it is in the file, for messages
 };
 
 struct ObjMesh {
     std::vector<Vec3> positions;
+    std::vector<Vec2> texture_coordinates;  // vt u [v [w]]: (u, v), v = 0 when absent, w dropped
+    std::vector<Vec3> normals;              // vn x y z, as written (not zero; normalised by the loader)
     std::vector<ObjFace> faces;
 };
 

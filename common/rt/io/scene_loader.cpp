@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include "rt/io/input_file.hpp"
 #include "rt/io/json_reader.hpp"
 #include "rt/io/obj_parser.hpp"
+#include "rt/io/ply_parser.hpp"
 #include "rt/io/texture_image.hpp"
 
 namespace rt {
@@ -426,50 +428,98 @@ void check_within_limits(const Node& node, const std::string& what, const Vec3& 
     }
 }
 
-// An OBJ file's triangles, read strictly (obj_parser.hpp): polygons are split into fans (0, k, k + 1). A mesh
-// whose every face has no area after its transform (repeated or collinear vertices, or coordinates so small
-// that float's cross product underflows) is refused, as a lone triangle of no area is.
+// The triangles a polygon (a, b, c, ...) is split into: the fan (a, b, c), (a, c, d), ...
+template <class Corners>
+void add_fan(const std::vector<std::uint32_t>& polygon, Corners& triangles) {
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+        triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+}
+
+// A mesh file's polygons as triangles: an OBJ file (obj_parser.hpp) with its own indices for texture
+// coordinates and normals, or a PLY file (ply_parser.hpp) whose vertices carry them. The normals are not yet
+// transformed.
+void read_obj_into(MeshShape& mesh, std::string_view text) {
+    ObjMesh parsed = parse_obj(text, kLargestNumber);
+    mesh.positions = std::move(parsed.positions);
+    mesh.normals = std::move(parsed.normals);
+    mesh.texture_coordinates = std::move(parsed.texture_coordinates);
+    for (const ObjFace& face : parsed.faces) {
+        add_fan(face.vertices, mesh.triangles);
+        if (!face.normals.empty()) add_fan(face.normals, mesh.normal_corners);
+        if (!face.texture_coordinates.empty()) add_fan(face.texture_coordinates, mesh.texture_corners);
+    }
+}
+
+void read_ply_into(MeshShape& mesh, std::string_view bytes) {
+    PlyMesh parsed = parse_ply(bytes, kLargestNumber);
+    mesh.positions = std::move(parsed.positions);
+    mesh.normals = std::move(parsed.normals);
+    mesh.texture_coordinates = std::move(parsed.texture_coordinates);
+    for (const std::vector<std::uint32_t>& face : parsed.faces) add_fan(face, mesh.triangles);
+    if (!mesh.normals.empty()) mesh.normal_corners = mesh.triangles;
+    if (!mesh.texture_coordinates.empty()) mesh.texture_corners = mesh.triangles;
+}
+
+bool is_ply(const fs::path& path) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = char(std::tolower((unsigned char)c));
+    return extension == ".ply";
+}
+
+// A mesh file's triangles, read strictly: OBJ, or PLY by its extension (.ply, any case). Polygons are split
+// into fans (0, k, k + 1). A mesh whose every face has no area after its transform (repeated or collinear
+// vertices, or coordinates so small that float's cross product underflows) is refused, as a lone triangle of
+// no area is. Normals follow the transform's inverse transpose and are normalised.
 MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     MeshShape mesh;
     const Node file = node["file"];
     mesh.file = file.string();
     if (node.has("transform")) mesh.transform = read_transform(node["transform"]);
     const fs::path path = scene_folder / mesh.file;
-    const std::string obj = shown(path);
+    const std::string shown_file = shown(path);
+    const bool ply = is_ply(path);
     if (const std::string problem = not_a_regular_file(path); !problem.empty()) {
-        file.fail("must name an OBJ file, got " + obj + " (" + problem + ")");
+        file.fail(std::string("must name an OBJ or PLY file, got ") + shown_file + " (" + problem + ")");
     }
     // The text is read here; an OBJ's "mtllib" line cannot make the loader open another file.
     std::string text;
     try {
         text = read_whole_file(path);
     } catch (const InputError& e) {
-        file.fail(obj + ": " + e.what());
+        file.fail(shown_file + ": " + e.what());
     }
-    ObjMesh parsed;
     try {
-        parsed = parse_obj(text, kLargestNumber);
-    } catch (const InputError& e) {
-        file.fail(obj + ": " + e.what());
-    }
-    for (std::size_t i = 0; i < parsed.positions.size(); ++i) {
-        mesh.positions.push_back(mesh.transform.apply_to_point(parsed.positions[i]));
-        if (node.has("transform")) {
-            check_within_limits(node["transform"], "vertex " + std::to_string(i + 1), mesh.positions.back());
+        if (ply) {
+            read_ply_into(mesh, text);
+        } else {
+            read_obj_into(mesh, text);
         }
+    } catch (const InputError& e) {
+        file.fail(shown_file + ": " + e.what());
+    }
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        mesh.positions[i] = mesh.transform.apply_to_point(mesh.positions[i]);
+        if (node.has("transform")) {
+            check_within_limits(node["transform"], "vertex " + std::to_string(i + 1), mesh.positions[i]);
+        }
+    }
+    for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
+        const Vec3 n = mesh.transform.apply_to_normal(mesh.normals[i]);
+        if (!normalisable(n)) {
+            file.fail(shown_file + ": normal " + std::to_string(i + 1) + " is too short to normalise" +
+                      (node.has("transform") ? " after the transform" : ""));
+        }
+        mesh.normals[i] = glm::normalize(n);
     }
     std::size_t with_area = 0;
-    for (const ObjFace& face : parsed.faces) {
-        const auto& v = face.vertices;
-        for (std::size_t k = 1; k + 1 < v.size(); ++k) {
-            mesh.triangles.push_back({v[0], v[k], v[k + 1]});
-            const Vec3 a = mesh.positions[v[0]], b = mesh.positions[v[k]], c = mesh.positions[v[k + 1]];
-            if (!zero_area(b - a, c - a)) ++with_area;
-        }
+    for (const auto& [a, b, c] : mesh.triangles) {
+        if (!zero_area(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]))
+            ++with_area;
     }
-    if (mesh.triangles.empty()) file.fail(obj + ": must have at least one face, got none");
+    if (mesh.triangles.empty()) file.fail(shown_file + ": must have at least one face, got none");
     if (with_area == 0) {
-        file.fail(obj + ": must have at least one face with an area, got " + std::to_string(mesh.triangles.size()) +
+        file.fail(shown_file + ": must have at least one face with an area, got " +
+                  std::to_string(mesh.triangles.size()) +
                   " triangle(s), each with repeated or collinear vertices" +
                   (node.has("transform") ? " after the transform" : ""));
     }
