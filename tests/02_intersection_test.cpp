@@ -1199,7 +1199,7 @@ Scene smooth_triangle(const std::array<Vec3, 3>& normals) {
 }  // namespace
 
 TEST_CASE("A smooth mesh's hit interpolates its vertex normals and texture coordinates with the barycentrics",
-          "[shading_normal]") {
+          "[shading_normal][ex:ch02.triangle_watertight]") {
     const Scene scene = smooth_triangle({Vec3{-1, 0, 2}, Vec3{1, 0, 2}, Vec3{0, 1, 2}});
     const World world(scene, world_options_for(EffectSet{Effect::kShadingNormals}));
     const Ray ray{{0.25f, 0.25f, 1}, {0, 0, -1}};  // b1 = b2 = 0.25, b0 = 0.5
@@ -1222,7 +1222,7 @@ TEST_CASE("A smooth mesh's hit interpolates its vertex normals and texture coord
 }
 
 TEST_CASE("A mesh without normals is faceted and its texture coordinates are the barycentrics (b1, b2)",
-          "[shading_normal]") {
+          "[shading_normal][ex:ch02.triangle_watertight]") {
     MeshShape mesh;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.triangles = {{0, 1, 2}};
@@ -1278,7 +1278,7 @@ TEST_CASE(
 }
 
 TEST_CASE("Every camera hit on the smooth torus, silhouettes included, sees wo above the shading horizon",
-          "[shading_normal]") {
+          "[shading_normal][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
     MeshShape torus = make_torus(1, Real(0.4), 24, 12);
     const Scene scene = scene_of({Shape{torus, 0, "torus"}});
     const World bend(scene, world_options_for(EffectSet{Effect::kShadingNormals}));
