@@ -4,18 +4,21 @@
 // under a box gets no light at all, and a shadow ray to a light stops before the light.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/float_error.hpp"
 #include "02_intersection/triangle.hpp"
 #include "02_intersection/world.hpp"
 #include "03_shadow_rays/exact_visibility.hpp"
+#include "03_shadow_rays/next_float.hpp"
 #include "03_shadow_rays/offset_study.hpp"
 #include "03_shadow_rays/point_light.hpp"
 #include "03_shadow_rays/ray_offset.hpp"
@@ -113,6 +116,27 @@ TEST_CASE("Each offset moves the origin to the side the new ray goes, by its own
     const Ray ray = spawn_ray(hit, out);
     CHECK(ray.direction == out);
     CHECK(ray.origin == offset_origin(hit, out, {}));
+}
+
+TEST_CASE("A step of the bits is std::nextafter, for zeros, subnormals, the largest floats and infinities",
+          "[ch03]") {
+    using limits = std::numeric_limits<Real>;
+    std::vector<Real> values{Real(0),          -Real(0),          limits::denorm_min(), -limits::denorm_min(),
+                             limits::min(),    -limits::min(),    limits::max(),        -limits::max(),
+                             kInfinity,        -kInfinity,        Real(1),              Real(-1)};
+    Pcg32 rng(7, 1);
+    for (int i = 0; i < 100000; ++i) {  // any bit pattern: every exponent, both signs
+        const auto bits = RealBits((std::uint64_t(rng.next_uint()) << 32) | rng.next_uint());
+        if (const Real v = std::bit_cast<Real>(bits); !std::isnan(v)) values.push_back(v);
+    }
+    for (const Real v : values) {
+        INFO(v);
+        CHECK(std::bit_cast<RealBits>(next_float_up(v)) == std::bit_cast<RealBits>(std::nextafter(v, kInfinity)));
+        CHECK(std::bit_cast<RealBits>(next_float_down(v)) ==
+              std::bit_cast<RealBits>(std::nextafter(v, -kInfinity)));
+    }
+    CHECK(std::isnan(next_float_up(limits::quiet_NaN())));
+    CHECK(std::isnan(next_float_down(limits::quiet_NaN())));
 }
 
 TEST_CASE("A shadow ray has a unit direction toward the target and stops short of it",

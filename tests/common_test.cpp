@@ -13,6 +13,11 @@
 #include <set>
 #include <vector>
 
+#ifdef RT_TEST_OPENEXR
+#include <ImfArray.h>
+#include <ImfRgbaFile.h>
+#endif
+
 #include "rt/core/did_you_mean.hpp"
 #include "rt/core/effects.hpp"
 #include "rt/core/error_metrics.hpp"
@@ -20,6 +25,7 @@
 #include "rt/core/random.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/picture_compare.hpp"
 #include "rt/io/ply_parser.hpp"
@@ -51,6 +57,40 @@ std::string load_error(const std::string& text) {
 const char* kMinimalCamera = R"("camera": {"from": [0,0,0], "at": [0,0,-1], "up": [0,1,0], "vfov": 45})";
 
 }  // namespace
+
+#ifdef RT_TEST_OPENEXR
+TEST_CASE("An OpenEXR environment image reads as its PFM does, wherever its data window starts", "[image]") {
+    // Values a half float holds exactly, so the .exr stores them without rounding.
+    Image image(6, 3);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) image.at(x, y) = Color(Real(x) * 0.25f, Real(y) * 2, 1024.f / Real(1 << x));
+    const fs::path pfm = temporary_folder() / "sky_exact.pfm";
+    write_pfm(image, pfm);
+    for (const Imath::V2i& corner : {Imath::V2i(0, 0), Imath::V2i(-3, 7)}) {
+        INFO("data window from (" << corner.x << ", " << corner.y << ")");
+        const Imath::Box2i window(corner, corner + Imath::V2i(image.width() - 1, image.height() - 1));
+        Imf::Array2D<Imf::Rgba> pixels(image.height(), image.width());
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const Color c = image.at(x, y);
+                pixels[y][x] = Imf::Rgba(c.r, c.g, c.b, 1);
+            }
+        const fs::path exr = temporary_folder() / "sky_exact.exr";
+        {
+            Imf::RgbaOutputFile file(exr.c_str(), Imf::Header(window, window), Imf::WRITE_RGB);
+            file.setFrameBuffer(&pixels[0][0] - corner.x - corner.y * image.width(), 1, std::size_t(image.width()));
+            file.writePixels(image.height());
+        }
+        const Image from_exr = read_environment_image(exr), from_pfm = read_environment_image(pfm);
+        REQUIRE(from_exr.width() == image.width());
+        REQUIRE(from_exr.height() == image.height());
+        for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+            CHECK(from_exr.pixels()[i] == image.pixels()[i]);
+            CHECK(from_exr.pixels()[i] == from_pfm.pixels()[i]);
+        }
+    }
+}
+#endif
 
 TEST_CASE("A PFM written and read back is the same image, bit for bit", "[image]") {
     Image image(7, 5);

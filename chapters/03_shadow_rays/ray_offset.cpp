@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "next_float.hpp"
 #include "rt/core/errors.hpp"
 
 namespace rt {
@@ -25,8 +26,8 @@ Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const 
     Vec3 origin = p + offset;
     // p + offset is rounded too, possibly back toward the surface: one more ulp outward covers that.
     for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0) origin[i] = std::nextafter(origin[i], kInfinity);
-        if (offset[i] < 0) origin[i] = std::nextafter(origin[i], -kInfinity);
+        if (offset[i] > 0) origin[i] = next_float_up(origin[i]);
+        if (offset[i] < 0) origin[i] = next_float_down(origin[i]);
     }
     return origin;
     // END EXERCISE

@@ -33,7 +33,7 @@ constexpr auto names_of(OffsetMethod) {
 RayOffset make_ray_offset(OffsetMethod method, Real epsilon);
 
 // The robust origin: δ = |n| · e, o = p + s δ n (s = sign(d · n), +1 when d · n = 0), then every component of
-// o that moved is stepped one ulp further in the direction it moved (std::nextafter).
+// o that moved is stepped one ulp further in the direction it moved (next_float.hpp).
 Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction);
 // The fixed-epsilon origin: o = p + s ε n, s = sign(d · n).
 Vec3 epsilon_offset(const Vec3& p, const Vec3& n, const Vec3& direction, Real epsilon);

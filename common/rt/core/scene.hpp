@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rt/core/effect_set.hpp"
+#include "rt/core/enum_names.hpp"
 #include "rt/core/image.hpp"
 #include "rt/core/math.hpp"
 
@@ -60,6 +61,18 @@ struct TextureImage {
 };
 enum class TextureWrap { kRepeat, kClamp };        // what a coordinate outside [0, 1) reads
 enum class TextureFilter { kBilinear, kNearest };  // how texels between texel centres are blended
+enum class TextureEncoding { kSrgb, kLinear };     // how the file's 8-bit values map to linear RGB
+constexpr auto names_of(TextureWrap) {
+    return enum_names<TextureWrap>("wrap", {{TextureWrap::kRepeat, "repeat"}, {TextureWrap::kClamp, "clamp"}});
+}
+constexpr auto names_of(TextureFilter) {
+    return enum_names<TextureFilter>("filter",
+                                     {{TextureFilter::kBilinear, "bilinear"}, {TextureFilter::kNearest, "nearest"}});
+}
+constexpr auto names_of(TextureEncoding) {
+    return enum_names<TextureEncoding>("encoding",
+                                       {{TextureEncoding::kSrgb, "srgb"}, {TextureEncoding::kLinear, "linear"}});
+}
 struct ImageTextureDesc {
     std::string file;                           // as the scene file names it
     std::shared_ptr<const TextureImage> image;  // shared: copies of a Scene do not copy the texels

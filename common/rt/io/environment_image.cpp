@@ -115,7 +115,7 @@ Image read_exr(const std::filesystem::path& path, const std::string& name) {
         Imf::Array2D<Imf::Rgba> pixels(height, width);
         file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * width, 1, std::size_t(width));
         file.readPixels(window.min.y, window.max.y);
-        Image image(int(width), int(height));
+        Image image{int(width), int(height)};
         for (int y = 0; y < image.height(); ++y) {
             for (int x = 0; x < image.width(); ++x) {
                 const Imf::Rgba& p = pixels[y][x];

@@ -16,6 +16,7 @@
 
 #include "rt/core/conductor_presets.hpp"
 #include "rt/core/did_you_mean.hpp"
+#include "rt/core/enum_names.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/image.hpp"
 #include "rt/core/printable.hpp"
@@ -247,15 +248,17 @@ MediumDesc read_medium(const Node& node) {
 constexpr std::string_view kImageTextureKeys[] = {"texture", "scale", "wrap", "filter", "encoding"};
 constexpr std::string_view kCheckerKeys[] = {"even", "odd", "scale"};
 
-// One of `names` (a texture's "wrap", "filter" or "encoding"): its index.
-std::size_t read_choice(const Node& node, std::span<const std::string_view> names) {
+// A value that is one of an enum's names (a texture's "wrap", "filter" or "encoding").
+template <NamedEnum E>
+E read_enum(const Node& node) {
     const std::string value = node.string();
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (names[i] == value) return i;
+    std::vector<std::string_view> names;
+    for (const EnumName<E>& entry : names_of(E{}).names) {
+        if (entry.name == value) return entry.value;
+        names.push_back(entry.name);
     }
-    std::string expected;
-    for (std::size_t i = 0; i < names.size(); ++i) expected += (i ? " or " : "") + std::string(names[i]);
-    node.fail("unknown value " + quote(value) + suggestion(value, names) + "; expected " + expected);
+    node.fail("unknown value " + quote(value) + suggestion(value, names) + "; expected " +
+              joined_names<E>(", ", " or "));
 }
 
 // {"texture": file, "scale": [su, sv], "wrap": ..., "filter": ..., "encoding": ...}: the image is read here,
@@ -271,12 +274,10 @@ TextureDesc read_image_texture(const Node& node, const fs::path& scene_folder) {
             scale.fail("must be an array of 2 numbers, got " + std::to_string(scale.array_size()));
         desc.scale = {scale.element(0).positive(), scale.element(1).positive()};
     }
-    constexpr std::string_view kWraps[] = {"repeat", "clamp"};
-    constexpr std::string_view kFilters[] = {"bilinear", "nearest"};
-    constexpr std::string_view kEncodings[] = {"srgb", "linear"};
-    if (node.has("wrap")) desc.wrap = TextureWrap(read_choice(node["wrap"], kWraps));
-    if (node.has("filter")) desc.filter = TextureFilter(read_choice(node["filter"], kFilters));
-    const bool srgb = !node.has("encoding") || read_choice(node["encoding"], kEncodings) == 0;
+    if (node.has("wrap")) desc.wrap = read_enum<TextureWrap>(node["wrap"]);
+    if (node.has("filter")) desc.filter = read_enum<TextureFilter>(node["filter"]);
+    const bool srgb =
+        !node.has("encoding") || read_enum<TextureEncoding>(node["encoding"]) == TextureEncoding::kSrgb;
     const fs::path path = scene_folder / desc.file;
     try {
         desc.image = std::make_shared<const TextureImage>(read_texture_image(path, srgb));
