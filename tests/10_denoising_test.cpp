@@ -16,6 +16,7 @@
 #include "10_denoising/denoiser.hpp"
 #include "10_denoising/edge_stopping.hpp"
 #include "10_denoising/feature_buffers.hpp"
+#include "10_denoising/path_features.hpp"
 #include "10_denoising/ssim.hpp"
 #include "rt/core/effects.hpp"
 #include "rt/core/random.hpp"
@@ -274,6 +275,17 @@ TEST_CASE("Recording the features changes nothing: the noisy image is chapter 07
     const RenderResult plain = render_with(Renderer::kPaths, scene, options.simulated, s, options);
     REQUIRE(features.buffers.colour.pixels() == plain.image.pixels());
     REQUIRE(features.result.rays.total() == plain.rays.total());
+}
+
+TEST_CASE("The normal feature is the shading normal: a smooth mesh's, not its facet's", "[features]") {
+    Hit hit;
+    hit.t = 2;
+    hit.normal = Vec3(0, 0, 1);
+    hit.shading_normal = glm::normalize(Vec3(0.3f, -0.2f, 1));
+    PathFeatures features;
+    REQUIRE(features.reached(hit, BsdfFlags{}, 0));
+    CHECK(features.normal == hit.shading_normal);
+    CHECK(features.depth == 2);
 }
 
 TEST_CASE("The features of the back wall and of the glass sphere",

@@ -19,7 +19,7 @@ class PathFeatures final : public PathObserver {
     bool reached(const Hit& hit, const BsdfFlags& flags, int /*bounces*/) override {
         length_ += hit.t;
         if (!recorded && !flags.delta) {
-            normal = hit.normal;
+            normal = hit.shading_normal;
             depth = length_;
             recorded = recording_ = true;
         }
