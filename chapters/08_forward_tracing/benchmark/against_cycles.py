@@ -51,7 +51,7 @@ REPO = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 
 sys.path.insert(0, HERE)  # scene_geometry.py, beside this script
 from scene_geometry import (PinholeCamera, add, box_quads, camera_basis, cross, dot, hit_quad,  # noqa: E402
-                            hit_sphere, mul, normalize, sub)
+                            hit_sphere, mesh_triangles, mul, normalize, sub)
 
 
 # --- images ----------------------------------------------------------------------------------------------
@@ -154,24 +154,47 @@ def scene_primitives(scene):
                 prims.append((name, "quad", quad))
         elif s["type"] == "sphere":
             prims.append(("sphere (%s)" % s["material"], "sphere", (tuple(s["center"]), float(s["radius"]))))
+        elif s["type"] == "mesh":
+            # Not cast triangle by triangle (too slow here): pixels whose ray meets its bounding box first are
+            # left out of every region.
+            points = [p for tri in mesh_triangles(s, os.path.dirname(scene["_path"])) for p in tri]
+            lo = tuple(min(p[k] for p in points) for k in range(3))
+            hi = tuple(max(p[k] for p in points) for k in range(3))
+            prims.append((None, "box", (lo, hi)))
         else:
             prims.append((None, s["type"], None))  # not cast: pixels seeing it may be mislabelled
     return prims
+
+
+def hit_box(o, d, box):
+    """The distance t > 1e-6 along o + t d to the axis-aligned box (lo, hi), or None (slabs)."""
+    lo, hi = box
+    t0, t1 = 1e-6, float("inf")
+    for k in range(3):
+        if abs(d[k]) < 1e-15:
+            if not lo[k] <= o[k] <= hi[k]:
+                return None
+            continue
+        a, b = (lo[k] - o[k]) / d[k], (hi[k] - o[k]) / d[k]
+        t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+    return t0 if t0 <= t1 else None
 
 
 def region_map(scene, width, height):
     """Each pixel's region name (the first shape its centre's camera ray hits), None at a boundary."""
     prims = scene_primitives(scene)
     camera = PinholeCamera(scene["camera"], width, height)
+    hits = {"quad": hit_quad, "sphere": hit_sphere, "box": hit_box}
+    sky = "sky" if any(light["type"] == "environment" for light in scene.get("lights", [])) else None
     ids = []
     for y in range(height):
         for x in range(width):
             d = camera.direction(x + 0.5, y + 0.5)
-            best, who = float("inf"), None
+            best, who = float("inf"), sky
             for name, kind, data in prims:
                 if data is None:
                     continue
-                t = hit_quad(camera.eye, d, data) if kind == "quad" else hit_sphere(camera.eye, d, data)
+                t = hits[kind](camera.eye, d, data)
                 if t is not None and t < best:
                     best, who = t, name
             ids.append(who)
@@ -284,12 +307,27 @@ def main():
                         "bpy.ops.render.render, synchronisation and BVH build included (operator)")
     p.add_argument("--reference-dir", default=".")
     p.add_argument("--reference-stem", default="ch07_reference_cornell_{size}_8192spp")
+    p.add_argument("--reference-command", default=None, metavar="TEMPLATE",
+                   help="for any scene: a course command (fields as --course) that renders the reference's two "
+                        "halves at --reference-spp with seeds 1001 and 1002, as reference_SCENE_SIZE_SPPspp_{a,b}.pfm "
+                        "in --reference-dir, unless they are there already (then --reference-stem is not used)")
+    p.add_argument("--reference-spp", type=int, default=2048)
     p.add_argument("--work", default=None, help="folder for the renders and logs (default: a temporary one)")
     p.add_argument("--json", default=None, help="also write every measurement to this JSON file")
     args = p.parse_args()
     args.scene = os.path.abspath(args.scene)
 
-    stem = os.path.join(args.reference_dir, args.reference_stem.format(size=args.size))
+    if args.reference_command:
+        scene_name = os.path.splitext(os.path.basename(args.scene))[0]
+        stem = os.path.join(args.reference_dir, "reference_%s_%d_%dspp" % (scene_name, args.size,
+                                                                         args.reference_spp))
+        for half, seed in (("a", 1001), ("b", 1002)):
+            if not os.path.exists(stem + "_%s.pfm" % half):
+                partial = stem + "_%s_partial.pfm" % half
+                run_course(args, args.reference_command, args.reference_spp, seed, partial, partial[:-4] + ".log")
+                os.replace(partial, stem + "_%s.pfm" % half)
+    else:
+        stem = os.path.join(args.reference_dir, args.reference_stem.format(size=args.size))
     A, B = read_pfm(stem + "_a.pfm"), read_pfm(stem + "_b.pfm")
     if (A.width, A.height) != (args.size, args.size) or (B.width, B.height) != (args.size, args.size):
         raise SystemExit("against_cycles.py: the reference halves are not %dx%d" % (args.size, args.size))
@@ -380,6 +418,7 @@ def main():
 
     print("\n## Converged agreement: region means at the highest spp against the reference\n")
     scene = json.load(open(args.scene))
+    scene["_path"] = args.scene
     regions = region_map(scene, args.size, args.size)
     ref_means, counts = region_means(ref, regions)
     names = sorted(ref_means, key=lambda n: -counts[n])

@@ -5,9 +5,10 @@ Run inside Blender (Debian's blender 3.4):
     blender -b --factory-startup --python cycles_scene.py -- --scene cornell.json --size 300 \
         --spp 64 --seed 1 --threads 2 --out cycles.pfm
 
-It builds the same scene in Cycles (only what cornell.json uses: quads, a transformed box, a sphere as a
-smooth 256x128 UV mesh, diffuse, emissive and dielectric materials; and a plane, as a large quad, for
-ch04_analytic.json's units check), renders it on the CPU with a 1-pixel box
+It builds the same scene in Cycles (what the scene-kind suite uses: quads, transformed boxes, triangles, faceted
+OBJ and PLY meshes, a sphere as a smooth 256x128 UV mesh, diffuse, emissive, mirror and dielectric materials, a
+constant environment, and the medium between the shapes as the World's volume; and a plane, as a large quad,
+for ch04_analytic.json's units check; anything else is refused), renders it on the CPU with a 1-pixel box
 filter, no denoising, no clamping, no adaptive sampling and 64 bounces of every kind, and writes the linear
 image as a PFM with the course's orientation (rows bottom up, as common/rt/io/image_io.cpp writes them). It
 prints one line
@@ -35,7 +36,7 @@ import bpy
 from mathutils import Matrix, Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # scene_geometry.py, beside this script
-from scene_geometry import box_quads, camera_vfov, quad_corners  # noqa: E402
+from scene_geometry import box_quads, camera_vfov, mesh_triangles, quad_corners  # noqa: E402
 
 
 def parse_args():
@@ -101,6 +102,14 @@ def make_material(name, desc, two_sided=False):
             nt.links.new(bsdf.outputs["BSDF"], mix.inputs[2])  # Fac 1: back face, reflects only
             surface = mix.outputs["Shader"]
         m.cycles.sample_as_light = True
+    elif kind == "mirror":
+        # The course's mirror reflects `reflectance` of the light at every angle (no Fresnel): Glossy, Sharp.
+        if max(emission) > 0:
+            raise SystemExit("cycles_scene.py: mirror '%s': emission is not translated" % name)
+        bsdf = nt.nodes.new("ShaderNodeBsdfGlossy")
+        bsdf.distribution = "SHARP"
+        bsdf.inputs["Color"].default_value = (*desc.get("reflectance", [1, 1, 1]), 1)
+        surface = bsdf.outputs["BSDF"]
     elif kind == "dielectric":
         for key in ("absorption", "roughness", "medium"):
             if key in desc:
@@ -150,6 +159,52 @@ def sphere_object(name, center, radius, segments, material):
     return link_mesh_object(name, mesh, material, smooth=True)
 
 
+def triangles_object(name, triangles, material):
+    """Triangles [(p0, p1, p2)] as one faceted mesh, each counter-clockwise as given (its normal (p1 − p0) ×
+    (p2 − p0), as the course's)."""
+    verts, faces = [], []
+    for tri in triangles:
+        i = len(verts)
+        verts += list(tri)
+        faces.append((i, i + 1, i + 2))
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    mesh.update()
+    return link_mesh_object(name, mesh, material, smooth=False)
+
+
+def world_volume(world, medium):
+    """The course's medium between the shapes as the World's volume: Volume Scatter (σs = colour × density,
+    Henyey–Greenstein anisotropy g) plus Volume Absorption (σa = (1 − colour) × density)."""
+    nt = world.node_tree
+    out = nt.nodes.get("World Output")
+    sigma_s = medium.get("sigma_s", [0, 0, 0])
+    sigma_a = medium.get("sigma_a", [0, 0, 0])
+    shaders = []
+    if max(sigma_s) > 0:
+        scatter = nt.nodes.new("ShaderNodeVolumeScatter")
+        d = max(sigma_s)
+        scatter.inputs["Color"].default_value = (sigma_s[0] / d, sigma_s[1] / d, sigma_s[2] / d, 1)
+        scatter.inputs["Density"].default_value = d
+        scatter.inputs["Anisotropy"].default_value = medium.get("g", 0.0)
+        shaders.append(scatter.outputs["Volume"])
+    if max(sigma_a) > 0:
+        absorb = nt.nodes.new("ShaderNodeVolumeAbsorption")
+        d = max(sigma_a)
+        absorb.inputs["Color"].default_value = (1 - sigma_a[0] / d, 1 - sigma_a[1] / d, 1 - sigma_a[2] / d, 1)
+        absorb.inputs["Density"].default_value = d
+        shaders.append(absorb.outputs["Volume"])
+    if not shaders:
+        return
+    volume = shaders[0]
+    if len(shaders) == 2:
+        add_node = nt.nodes.new("ShaderNodeAddShader")
+        nt.links.new(shaders[0], add_node.inputs[0])
+        nt.links.new(shaders[1], add_node.inputs[1])
+        volume = add_node.outputs["Shader"]
+    nt.links.new(volume, out.inputs["Volume"])
+
+
 def build(scene_desc, args):
     scene = bpy.context.scene
     for obj in list(bpy.data.objects):
@@ -176,17 +231,32 @@ def build(scene_desc, args):
             h = args.plane_size
             origin = Vector(s["point"]) - h * t - h * b
             quads_object(name, [(tuple(origin), tuple(2 * h * t), tuple(2 * h * b))], mat)
+        elif s["type"] == "triangle":
+            triangles_object(name, [tuple(tuple(v) for v in s["vertices"])], mat)
+        elif s["type"] == "mesh":
+            try:
+                triangles = mesh_triangles(s, os.path.dirname(os.path.abspath(args.scene)))
+            except ValueError as e:
+                raise SystemExit("cycles_scene.py: %s" % e)
+            triangles_object(name, triangles, mat)
         else:
             raise SystemExit("cycles_scene.py: shape type '%s' is not translated" % s["type"])
-    if scene_desc.get("lights") or scene_desc.get("medium"):
-        raise SystemExit("cycles_scene.py: 'lights' and 'medium' are not translated")
 
-    # World: black, emits nothing.
-    world = bpy.data.worlds.new("black")
+    # World: the environment light's constant radiance (black without one), and the medium between the shapes.
+    radiance = [0, 0, 0]
+    for light in scene_desc.get("lights", []):
+        if light["type"] != "environment" or "image" in light:
+            raise SystemExit("cycles_scene.py: lights other than a constant environment are not translated")
+        radiance = light["radiance"]
+    world = bpy.data.worlds.new("world")
     world.use_nodes = True
     bg = world.node_tree.nodes.get("Background")
-    bg.inputs["Color"].default_value = (0, 0, 0, 1)
-    bg.inputs["Strength"].default_value = 0.0
+    peak = max(radiance)
+    bg.inputs["Color"].default_value = (*(c / peak for c in radiance), 1) if peak > 0 else (0, 0, 0, 1)
+    bg.inputs["Strength"].default_value = peak
+    if "medium" in scene_desc:
+        world_volume(world, scene_desc["medium"])
+        world.cycles.homogeneous_volume = True  # one density everywhere, as the course's medium
     scene.world = world
 
     # Camera: pinhole, vertical field of view, the course's basis (right = forward x up, up' = right x forward),
@@ -292,10 +362,12 @@ def main():
     build(scene_desc, args)
     width, height, spp = configure(scene_desc, args)
     c = bpy.context.scene.cycles
+    w = bpy.context.scene.world.cycles
     print("cycles_scene: blender %s, sampling_pattern %s, light_sampling_threshold %g, use_guiding %s, "
-          "scrambling_distance %g, sample_as_light on emitters"
+          "scrambling_distance %g, sample_as_light on emitters, world: sampling_method %s, volume_sampling %s, "
+          "homogeneous_volume %s"
           % (bpy.app.version_string, c.sampling_pattern, c.light_sampling_threshold, c.use_guiding,
-             c.scrambling_distance), flush=True)
+             c.scrambling_distance, w.sampling_method, w.volume_sampling, w.homogeneous_volume), flush=True)
     if args.blend:
         bpy.ops.wm.save_as_mainfile(filepath=os.path.abspath(args.blend))
 

@@ -1,11 +1,14 @@
 """The geometry of a course scene (assets/scenes/*.json) in plain Python, shared by chapter 08's benchmark scripts.
 
 Vectors are tuples of three numbers. This module holds what the scripts must compute exactly as the course
-does: the shape transform, a box's six faces, the pinhole camera and a ray's first hit on a quad or a sphere.
+does: the shape transform, a box's six faces, a mesh file's triangles, the pinhole camera and a ray's first hit
+on a quad or a sphere.
 Only Python's standard library is used, so it imports both in the system's Python (against_cycles.py,
 analytic_check.py) and in Blender's bundled one (cycles_scene.py).
 """
 import math
+import os
+import struct
 
 # --- vectors ---------------------------------------------------------------------------------------------
 
@@ -64,6 +67,90 @@ def box_quads(box):
         pv = transform_point(t, add(origin, v))
         quads.append((p0, sub(pu, p0), sub(pv, p0)))
     return quads
+
+
+def mesh_triangles(mesh, scene_folder):
+    """A mesh shape's triangles [(p0, p1, p2)] after its transform, read from its OBJ or PLY file (relative to
+    the scene's folder) as the course reads it: polygons split into fans (0, k, k + 1). Raises ValueError for a
+    file with vertex normals, which the course shades smooth (the translations here are faceted only)."""
+    path = os.path.join(scene_folder, mesh["file"])
+    with open(path, "rb") as f:
+        data = f.read()
+    positions, polygons, has_normals = (read_ply if path.lower().endswith(".ply") else read_obj)(data)
+    if has_normals:
+        raise ValueError("%s: a mesh with vertex normals is shaded smooth by the course; not translated" % path)
+    t = mesh.get("transform", {})
+    points = [transform_point(t, p) for p in positions]
+    return [(points[poly[0]], points[poly[k]], points[poly[k + 1]])
+            for poly in polygons for k in range(1, len(poly) - 1)]
+
+
+def read_obj(data):
+    """(positions, polygons as 0-based index lists, whether it has vn lines) of an OBJ file's text."""
+    positions, polygons, has_normals = [], [], False
+    for line in data.decode("utf-8").splitlines():
+        fields = line.split()
+        if not fields:
+            continue
+        if fields[0] == "v":
+            positions.append(tuple(float(x) for x in fields[1:4]))
+        elif fields[0] == "vn":
+            has_normals = True
+        elif fields[0] == "f":
+            idx = [int(v.split("/")[0]) for v in fields[1:]]
+            polygons.append([i - 1 if i > 0 else len(positions) + i for i in idx])
+    return positions, polygons, has_normals
+
+
+PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h", "int16": "h", "ushort": "H",
+             "uint16": "H", "int": "i", "int32": "i", "uint": "I", "uint32": "I", "float": "f", "float32": "f",
+             "double": "d", "float64": "d"}
+
+
+def read_ply(data):
+    """(positions, polygons, whether its vertices have nx) of an ASCII or binary PLY file."""
+    end = data.index(b"end_header") + len(b"end_header")
+    end = data.index(b"\n", end) + 1
+    header = data[:end].decode("ascii").splitlines()
+    fmt = header[1].split()[1]
+    elements = []  # [name, count, [(property name, type, list count type or None)]]
+    for line in header:
+        f = line.split()
+        if f and f[0] == "element":
+            elements.append([f[1], int(f[2]), []])
+        elif f and f[0] == "property":
+            elements[-1][2].append((f[-1], f[2], f[3]) if f[1] == "list" else (f[-1], f[1], None))
+    body = data[end:]
+    if fmt == "ascii":
+        tokens = body.split()
+        pos = 0
+
+        def take(kind):
+            nonlocal pos
+            pos += 1
+            return (float if PLY_TYPES[kind] in "fd" else int)(tokens[pos - 1])
+    else:
+        order = "<" if fmt == "binary_little_endian" else ">"
+        pos = 0
+
+        def take(kind):
+            nonlocal pos
+            code = order + PLY_TYPES[kind]
+            value = struct.unpack_from(code, body, pos)[0]
+            pos += struct.calcsize(code)
+            return value
+    positions, polygons, has_normals = [], [], False
+    for name, count, props in elements:
+        for _ in range(count):
+            row = {}
+            for prop, kind, item in props:
+                row[prop] = [take(item) for _ in range(take(kind))] if item else take(kind)
+            if name == "vertex":
+                positions.append((row["x"], row["y"], row["z"]))
+                has_normals = has_normals or "nx" in row
+            elif name == "face":
+                polygons.append(row.get("vertex_indices", row.get("vertex_index")))
+    return positions, polygons, has_normals
 
 
 # --- the camera ------------------------------------------------------------------------------------------
