@@ -908,7 +908,9 @@ double single_scattering_exact(double sigma_s, double sigma_t, double intensity,
 }  // namespace
 
 TEST_CASE("Single scattering of a point light in fog, each --distance-sampling against the exact integral",
-          "[equiangular][ex:ch09.free_flight][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+          "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.beer_lambert]"
+          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // A scene file as a user writes it: fog, a point light 1 unit off the camera's axis, a black wall 10
     // units ahead; "effects" without indirect, so paths end at their second vertex: the image is single
     // scattering exactly.
@@ -941,7 +943,11 @@ TEST_CASE("Single scattering of a point light in fog, each --distance-sampling a
 }
 
 TEST_CASE("The thin fog with --distance-sampling mis agrees with free flight, in mean and per region",
-          "[equiangular]") {
+          "[equiangular]"
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+          "[ex:ch09.volume_vertex]") {
     // ch09_thin_fog.json at 40×40: the difference of the two images, pixel by pixel (independent pixels), in
     // each of its four quadrants and in all, within 4 standard errors of 0.
     const Scene scene = load_scene(scene_path("ch09_thin_fog.json"));
@@ -974,7 +980,11 @@ TEST_CASE("The thin fog with --distance-sampling mis agrees with free flight, in
 }
 
 TEST_CASE("A chromatic medium keeps free flight under --distance-sampling mis: the same image to the bit",
-          "[equiangular]") {
+          "[equiangular]"
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+          "[ex:ch09.volume_vertex]") {
     const Scene scene = scene_from(R"({
         "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
         "medium": {"sigma_a": [0.02, 0.05, 0.1], "sigma_s": [0.1, 0.1, 0.1]},

@@ -24,9 +24,10 @@ namespace rt {
 enum class DistanceSampling { kFreeFlight, kEquiangular, kMis };
 
 constexpr auto names_of(DistanceSampling) {
-    return enum_names<DistanceSampling>("--distance-sampling", {{DistanceSampling::kFreeFlight, "free-flight"},
-                                                                {DistanceSampling::kEquiangular, "equiangular"},
-                                                                {DistanceSampling::kMis, "mis"}});
+    return enum_names<DistanceSampling>("--distance-sampling",
+                                        {{DistanceSampling::kFreeFlight, "free-flight"},
+                                         {DistanceSampling::kEquiangular, "equiangular"},
+                                         {DistanceSampling::kMis, "mis"}});
 }
 
 // A segment served by equiangular sampling: its ray, its end, the grey medium that fills it, and the distance

@@ -67,7 +67,8 @@ Color VolumePathTracer::light_estimate_in_medium(const Vec3& p, const Vec3& wo, 
                         ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
                         : Color(1);
     if (!(f > 0) || is_black(T)) return Color(0);
-    const Real w = steps_.weighs() && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
+    const Real w =
+        steps_.weighs() && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
     return T * s->radiance * (f * (w * weight) / s->pdf);
 }
 
@@ -99,7 +100,8 @@ Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, cons
     return sum;
 }
 
-std::optional<LitSegment> VolumePathTracer::lit_segment(const Medium& medium, const Ray& ray, Real t_max) const {
+std::optional<LitSegment> VolumePathTracer::lit_segment(const Medium& medium, const Ray& ray,
+                                                        Real t_max) const {
     if (walk_.distance == DistanceSampling::kFreeFlight || !steps_.estimates() || steps_.lights().empty() ||
         !std::isfinite(t_max))
         return std::nullopt;
@@ -197,7 +199,8 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
             if (flight.scattered) {
                 if ((!steps.indirect() && path.bounces >= 1) || ++path.events > walk_.max_events) break;
                 if (lit) lit->t_event = flight.t;
-                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer, lit)) break;
+                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer, lit))
+                    break;
                 continue;
             }
         }

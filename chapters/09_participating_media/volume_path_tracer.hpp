@@ -66,7 +66,8 @@ class VolumePathTracer {
     // drawn from `phase` continues the path (`ray` becomes it). false: the path ends there.
     // `lit`: the segment when equiangular sampling serves it, which weighs this event's estimate.
     bool scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path, SampleStream rng,
-                           RayCounts& rays, PathObserver* observer, const std::optional<LitSegment>& lit) const;
+                           RayCounts& rays, PathObserver* observer,
+                           const std::optional<LitSegment>& lit) const;
     // The next-event estimate at p in a medium: as chapter 06's, with the phase function for the BSDF, no
     // cosine, and the environment sampled over the whole sphere. With `lit`, the lights' part is weighed by
     // w_ff against the equiangular point of the same segment.

@@ -29,6 +29,10 @@ int main(int argc, char** argv) {
         scene.medium->sigma_a *= Real(density);
         scene.medium->sigma_s *= Real(density);
     }
+    const bool black = argc > 7 && std::string(argv[7]) == "black";
+    if (black)
+        for (Material& m : scene.materials)
+            if (m.emission == Color(0)) m.albedo = Color(0);
     const EffectSet simulated = needed(scene) & EffectSet::all();
     const Renderer renderer = choose_renderer(simulated);
     RenderSettings settings;
@@ -62,11 +66,14 @@ int main(int argc, char** argv) {
             shadow[k].push_back(double(r.rays[RayKind::kShadow]) / double(r.samples));
             times[k].push_back(r.seconds * relative_mse / 1e-3);
         }
-    std::printf("%s (fog density x%g), %dx%d, %d spp per run, 1 thread, %d alternating runs; reference %d spp "
-                "(MIS), its own relative MSE %.2e\n",
-                file.c_str(), density, size, size, spp, runs, reference_spp, reference_noise);
-    std::printf("| distance sampling | relative MSE | seconds | shadow rays / sample | time to 1e-3 | vs free "
-                "flight |\n");
+    std::printf(
+        "%s (fog density x%g%s), %dx%d, %d spp per run, 1 thread, %d alternating runs; reference %d spp "
+        "(MIS), its own relative MSE %.2e\n",
+        file.c_str(), density, black ? ", black surfaces" : "", size, size, spp, runs, reference_spp,
+        reference_noise);
+    std::printf(
+        "| distance sampling | relative MSE | seconds | shadow rays / sample | time to 1e-3 | vs free "
+        "flight |\n");
     std::printf("|---|---|---|---|---|---|\n");
     for (std::size_t k = 0; k < strategies.size(); ++k)
         std::printf("| %s | %.2e | %.3f | %.2f | %.2f s | %.2f× |\n",
