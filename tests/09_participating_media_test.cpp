@@ -816,7 +816,7 @@ TEST_CASE("Equiangular sampling fits its pdf by chi-square: the light over the s
     }
 }
 
-TEST_CASE("The equiangular pdf integrates to 1 over [0, t_max) and is the closed form", "[equiangular]") {
+TEST_CASE("The equiangular pdf integrates to 1 over the segment and is the closed form", "[equiangular]") {
     // Trapezoids on 2·10⁶ nodes (the narrowest peak, D = 0.01, spans 10³ of them), in double over the
     // float pdf; and pointwise against the definition in double.
     struct Case {
