@@ -1,13 +1,15 @@
 // Chapter 09: participating media and subsurface scattering, by its own volumetric path loop: free
 // flights through homogeneous media (spectral MIS for chromatic ones), the Henyey–Greenstein phase function,
 // next-event estimation through media, and the random walk inside a dielectric's medium (subsurface
-// scattering). `--walk-study` measures walk lengths against the mean free path and the albedo,
-// `--knob-study` the error and time of a cap on scattering events and of Russian roulette in the medium,
-// `--free-flight-study` spectral MIS against the naive per-channel density.
+// scattering); `--distance-sampling` adds equiangular points toward the lights (alone or by MIS).
+// `--walk-study` measures walk lengths against the mean free path and the albedo, `--knob-study` the error
+// and time of a cap on scattering events and of Russian roulette in the medium, `--free-flight-study`
+// spectral MIS against the naive per-channel density.
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "media_materials.hpp"
 #include "media_notes.hpp"
 #include "media_studies.hpp"
+#include "rt/flags/enum_flag.hpp"
 #include "rt/run/app.hpp"
 #include "volume_path_tracer.hpp"
 
@@ -29,6 +31,9 @@ int main(int argc, char** argv) {
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
         add_sampling_flag(app, options.strategy);
+        add_enum_option(app, walk.distance,
+                        "Where light scattered along a medium's segments is looked for: " +
+                            joined_names<DistanceSampling>());
         add_media_study_flags(app, studies);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {

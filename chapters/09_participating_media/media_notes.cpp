@@ -13,7 +13,11 @@ std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, cons
     for (const std::string& note : materials.notes()) notes.push_back(note);
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) + ", walk: at most " +
                     std::to_string(walk.max_events) + " scattering events, roulette " +
-                    (walk.roulette ? "on" : "off"));
+                    (walk.roulette ? "on" : "off") +
+                    ", distance sampling: " + std::string(to_string(walk.distance)) +
+                    (walk.distance == DistanceSampling::kFreeFlight
+                         ? ""
+                         : " (on grey media's segments that end at a surface; others keep free flight)"));
     return notes;
 }
 

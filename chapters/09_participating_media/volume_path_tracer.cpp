@@ -1,9 +1,11 @@
 #include "volume_path_tracer.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
+#include "equiangular.hpp"
 
 namespace rt {
 
@@ -56,37 +58,85 @@ Color VolumePathTracer::shadow_seen(const Ray& ray, Real t_max, RayCounts& rays)
     return media_ ? transmittance(ray, t_max, rays) : steps_.unoccluded(ray, t_max, rays);
 }
 
+Color VolumePathTracer::light_estimate_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
+                                                 Real u_pick, Vec2 u, Real weight, RayCounts& rays) const {
+    const auto s = steps_.lights().sample(p, u_pick, u);
+    if (!s || !(s->pdf > 0)) return Color(0);
+    const Real f = phase.eval(wo, s->wi);
+    const Color T = f > 0 && steps_.options().simulates(Effect::kShadows)
+                        ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
+                        : Color(1);
+    if (!(f > 0) || is_black(T)) return Color(0);
+    const Real w =
+        steps_.weighs() && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
+    return T * s->radiance * (f * (w * weight) / s->pdf);
+}
+
 Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
-                                             SampleStream rng, RayCounts& rays) const {
-    const bool mis = steps_.weighs();
-    const bool shadows = steps_.options().simulates(Effect::kShadows);
+                                             SampleStream rng, RayCounts& rays,
+                                             const std::optional<LitSegment>& lit) const {
     Color sum(0);
     if (!steps_.lights().empty()) {
         const Real u_pick = rng.next_real();
         const Vec2 u = rng.next_vec2();
-        if (const auto s = steps_.lights().sample(p, u_pick, u); s && s->pdf > 0) {
-            const Real f = phase.eval(wo, s->wi);
-            const Color T = f > 0 && shadows
-                                ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
-                                : Color(1);
-            if (f > 0 && !is_black(T)) {
-                const Real w =
-                    mis && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
-                sum += T * s->radiance * (f * w / s->pdf);
-            }
-        }
+        // w_ff(t) = 1 under free flight alone (no `lit`): the estimate is chapter 09's, to the bit.
+        const Real w = lit ? free_flight_weight(walk_.distance, free_flight_pdf(lit->sigma_t(), lit->t_event),
+                                                equiangular_pdf(*lit, lit->t_event, u_pick, u))
+                           : Real(1);
+        if (w > 0) sum += light_estimate_in_medium(p, wo, phase, u_pick, u, w, rays);
     }
     if (const auto& environment = steps_.environment()) {
         // No normal in a medium: a constant environment is drawn uniformly over the sphere.
         const EnvironmentSample s = environment->sample(Vec3(0), rng.next_vec2());
         const Real f = s.pdf > 0 ? phase.eval(wo, s.wi) : Real(0);
-        const Color T = f > 0 && shadows ? transmittance({p, s.wi}, kInfinity, rays) : Color(1);
+        const Color T = f > 0 && steps_.options().simulates(Effect::kShadows)
+                            ? transmittance({p, s.wi}, kInfinity, rays)
+                            : Color(1);
         if (f > 0 && !is_black(T)) {
-            const Real w = mis ? power_heuristic(s.pdf, phase.pdf(wo, s.wi)) : Real(1);
+            const Real w = steps_.weighs() ? power_heuristic(s.pdf, phase.pdf(wo, s.wi)) : Real(1);
             sum += T * s.radiance * (f * w / s.pdf);
         }
     }
     return sum;
+}
+
+std::optional<LitSegment> VolumePathTracer::lit_segment(const Medium& medium, const Ray& ray,
+                                                        Real t_max) const {
+    if (walk_.distance == DistanceSampling::kFreeFlight || !steps_.estimates() || steps_.lights().empty() ||
+        !std::isfinite(t_max))
+        return std::nullopt;
+    const auto* homogeneous = dynamic_cast<const HomogeneousMedium*>(&medium);
+    if (!homogeneous) return std::nullopt;
+    const Color& sigma_t = homogeneous->sigma_t;
+    if (sigma_t.r != sigma_t.g || sigma_t.g != sigma_t.b || !(sigma_t.r > 0)) return std::nullopt;
+    return LitSegment{ray, t_max, homogeneous, 0};
+}
+
+Real VolumePathTracer::equiangular_pdf(const LitSegment& lit, Real t, Real u_pick, Vec2 u) const {
+    const auto s = steps_.lights().sample(lit.ray.origin, u_pick, u);
+    if (!s) return 0;
+    const auto sampler = EquiangularSampler::toward(lit.ray, s->point, lit.t_max);
+    return sampler ? sampler->pdf(t) : Real(0);
+}
+
+Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleStream rng,
+                                                 RayCounts& rays) const {
+    // ∫ T(t) σ_s L_light(x(t)) dt ≈ T(t) σ_s L̂_light(x(t)) w_eq(t) / p_eq(t), t ~ p_eq, the light sample
+    // (u_pick, u) both setting up the sampler and, from x(t), estimating L_light.
+    const Real u_pick = rng.next_real();
+    const Vec2 u = rng.next_vec2();
+    const Real u_t = rng.next_real();
+    const auto reference = steps_.lights().sample(lit.ray.origin, u_pick, u);
+    if (!reference) return Color(0);
+    const auto sampler = EquiangularSampler::toward(lit.ray, reference->point, lit.t_max);
+    if (!sampler) return Color(0);
+    const Real t = sampler->sample(u_t);
+    const Real p_eq = sampler->pdf(t);
+    if (!(p_eq > 0)) return Color(0);
+    const Real w = equiangular_weight(walk_.distance, free_flight_pdf(lit.sigma_t(), t), p_eq);
+    const Color L = light_estimate_in_medium(lit.ray.at(t), -lit.ray.direction, *lit.medium->phase(), u_pick,
+                                             u, w / p_eq, rays);
+    return lit.medium->transmittance(t) * lit.medium->sigma_s * L;
 }
 
 FreeFlight VolumePathTracer::fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const {
@@ -103,12 +153,13 @@ FreeFlight VolumePathTracer::fly(const Medium& medium, Real t_max, VolumePath& p
 }
 
 bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path,
-                                         SampleStream rng, RayCounts& rays, PathObserver* observer) const {
+                                         SampleStream rng, RayCounts& rays, PathObserver* observer,
+                                         const std::optional<LitSegment>& lit) const {
     // EXERCISE(ch09.volume_vertex) § 5. The volumetric path loop
     const Vec3 p = ray.at(t);
     const Vec3 wo = -ray.direction;
     if (steps_.estimates()) {
-        path.L += path.beta * next_event_in_medium(p, wo, phase, rng, rays);
+        path.L += path.beta * next_event_in_medium(p, wo, phase, rng, rays, lit);
         if (observer) observer->light_estimated(path.L);
     }
     const PhaseSample s = phase.sample(wo, rng.next_vec2());
@@ -137,10 +188,19 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it
         // early, at a vertex in the volume.
         if (const Medium* medium = medium_along(hit)) {
+            const Color beta = path.beta;  // before the flight
             const FreeFlight flight = fly(*medium, hit ? hit->t : kInfinity, path, rng);
+            // The segment's equiangular point, a vertex as deep as the free-flight event would be.
+            std::optional<LitSegment> lit = lit_segment(*medium, ray, hit ? hit->t : kInfinity);
+            if (lit && (steps.indirect() || path.bounces == 0) && path.events < walk_.max_events) {
+                path.L += beta * in_scattered_equiangular(*lit, rng, rays);
+                if (observer) observer->light_estimated(path.L);
+            }
             if (flight.scattered) {
                 if ((!steps.indirect() && path.bounces >= 1) || ++path.events > walk_.max_events) break;
-                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer)) break;
+                if (lit) lit->t_event = flight.t;
+                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer, lit))
+                    break;
                 continue;
             }
         }

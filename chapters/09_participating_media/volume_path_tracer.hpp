@@ -6,7 +6,9 @@
 //   - the vertex in the volume: the phase function in the place of the BSDF, no surface, no cosine;
 //   - next-event estimation through media: shadow rays carry the transmittance of the media they cross,
 //     across index-matched boundaries (which the path also crosses without a vertex);
-//   - the walk inside a dielectric's medium (subsurface scattering), ended by its own two knobs.
+//   - the walk inside a dielectric's medium (subsurface scattering), ended by its own two knobs;
+//   - optionally, equiangular distance sampling of the light scattered along a segment, alone or by MIS with
+//     free flight (distance_sampling.hpp).
 // A scene without media draws the random numbers chapter 06's loop draws, and renders the same image.
 #pragma once
 
@@ -14,16 +16,19 @@
 
 #include "06_monte_carlo/path_tracer.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
+#include "distance_sampling.hpp"
 #include "media_materials.hpp"
 
 namespace rt {
 
-// How a path that scatters in a medium ends. Its scattering events are not the bounces that chapter 06's
-// `termination` counts (a walk in milk makes hundreds of them): they have their own two knobs.
+// How a path that scatters in a medium ends, and where it looks for light along its segments. Its scattering
+// events are not the bounces that chapter 06's `termination` counts (a walk in milk makes hundreds of them):
+// they have their own two knobs.
 struct MediumWalk {
     int max_events = 10000;  // a hard cap on a path's events in media (scattering, and reflections at a
                              // walk's boundary): a bias when a path meets it
     bool roulette = true;    // Russian roulette at every event: go on with q = min(1, max β), then β /= q
+    DistanceSampling distance = DistanceSampling::kFreeFlight;  // the points that look for light
 };
 
 // The state of one volumetric path.
@@ -59,12 +64,27 @@ class VolumePathTracer {
     FreeFlight fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const;
     // The vertex at a scattering event at distance t along `ray`: next-event estimation, then the direction
     // drawn from `phase` continues the path (`ray` becomes it). false: the path ends there.
+    // `lit`: the segment when equiangular sampling serves it, which weighs this event's estimate.
     bool scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path, SampleStream rng,
-                           RayCounts& rays, PathObserver* observer) const;
+                           RayCounts& rays, PathObserver* observer,
+                           const std::optional<LitSegment>& lit) const;
     // The next-event estimate at p in a medium: as chapter 06's, with the phase function for the BSDF, no
-    // cosine, and the environment sampled over the whole sphere.
+    // cosine, and the environment sampled over the whole sphere. With `lit`, the lights' part is weighed by
+    // w_ff against the equiangular point of the same segment.
     Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, SampleStream rng,
-                               RayCounts& rays) const;
+                               RayCounts& rays, const std::optional<LitSegment>& lit = std::nullopt) const;
+    // The lights' part of it, from the light sample (u_pick, u); `weight` scales it (the distance MIS).
+    Color light_estimate_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Real u_pick,
+                                   Vec2 u, Real weight, RayCounts& rays) const;
+    // The segment [0, t_max) of `ray` through `medium`, when the run's distance sampling serves it (a grey
+    // medium that scatters, a finite segment, lights to sample, next-event estimation on).
+    std::optional<LitSegment> lit_segment(const Medium& medium, const Ray& ray, Real t_max) const;
+    // p_eq(t): the density of the equiangular sampler that the light sample (u_pick, u) sets up on `lit`
+    // (toward the point it picks seen from the segment's start); 0 when there is none.
+    Real equiangular_pdf(const LitSegment& lit, Real t, Real u_pick, Vec2 u) const;
+    // The segment's equiangular point: t ∝ 1 / |x(t) − x_l|², its next-event estimate toward the same light
+    // sample, T(t) σ_s w_eq / p_eq(t) (the path's β before the segment multiplies it).
+    Color in_scattered_equiangular(const LitSegment& lit, SampleStream rng, RayCounts& rays) const;
     // The transmittance from ray.origin to ray.at(t_max) (a shadow ray): through media, across
     // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
     Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;

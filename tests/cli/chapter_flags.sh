@@ -20,6 +20,8 @@ check "$ch05" "usage: --min-throughput: $real, got \"0.5x\" (see --help)" "${sma
 check "$ch05" "usage: --study-throughputs: $real, got \"nan\" (see --help)" "${small[@]}" --depth-study --study-throughputs 0.1 nan
 check "$ch08" "usage: --aperture: $real, got \"inf\" (see --help)" "${small[@]}" --variant aperture --aperture inf
 check "$ch08" "usage: --aperture: $real, got \"1e309\" (see --help)" "${small[@]}" --variant aperture --aperture 1e309
+check "$ch09" "usage: --distance-sampling: foo not in {free-flight,equiangular,mis} (see --help)" "${small[@]}" \
+    --distance-sampling foo
 
 # A flag that matters only with another, given without it.
 only() {  # only EXECUTABLE FLAG CONDITION ARGS...

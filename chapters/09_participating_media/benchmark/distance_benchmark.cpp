@@ -1,0 +1,83 @@
+// Time to a relative MSE of 10⁻³ for each --distance-sampling on a scene of fog: a converged reference (the
+// mean of two MIS renders A and B, its own noise mean((A − B)²) / 4 subtracted, as chapter 06's --converge
+// does), then the three strategies rendered alternately, `runs` times each at `spp` on one thread. An
+// unbiased estimator's relative MSE falls as 1 / time, so time to 10⁻³ = seconds × relative MSE / 10⁻³; the
+// table gives each strategy's median. Not a test:
+// `ch09_distance_benchmark [scene] [size] [spp] [reference spp] [runs]`.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "rt/core/effects.hpp"
+#include "rt/core/error_metrics.hpp"
+#include "rt/core/median.hpp"
+#include "rt/io/assets.hpp"
+#include "rt/io/scene_loader.hpp"
+#include "volume_path_tracer.hpp"
+
+int main(int argc, char** argv) {
+    using namespace rt;
+    const std::string file = argc > 1 ? argv[1] : "ch09_thin_fog.json";
+    const int size = argc > 2 ? std::atoi(argv[2]) : 64;
+    const int spp = argc > 3 ? std::atoi(argv[3]) : 16;
+    const int reference_spp = argc > 4 ? std::atoi(argv[4]) : 4096;
+    const int runs = argc > 5 ? std::atoi(argv[5]) : 5;
+    const double density = argc > 6 ? std::atof(argv[6]) : 1;
+    Scene scene = load_scene(scene_path(file.c_str()));
+    if (scene.medium) {
+        scene.medium->sigma_a *= Real(density);
+        scene.medium->sigma_s *= Real(density);
+    }
+    const bool black = argc > 7 && std::string(argv[7]) == "black";
+    if (black)
+        for (Material& m : scene.materials)
+            if (m.emission == Color(0)) m.albedo = Color(0);
+    const EffectSet simulated = needed(scene) & EffectSet::all();
+    const Renderer renderer = choose_renderer(simulated);
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.progress = ProgressStyle::kNone;
+    const auto render = [&](DistanceSampling distance, int samples, std::uint64_t seed, int threads) {
+        MediumWalk walk;
+        walk.distance = distance;
+        RenderSettings s = settings;
+        s.samples_per_pixel = samples;
+        s.seed = seed;
+        s.threads = threads;
+        return render_with_media(renderer, scene, simulated, s, {}, walk);
+    };
+    const RenderResult a = render(DistanceSampling::kMis, reference_spp / 2, 1001, 2);
+    const RenderResult b = render(DistanceSampling::kMis, reference_spp / 2, 1002, 2);
+    Image reference = a.image;
+    for (std::size_t i = 0; i < reference.pixels().size(); ++i)
+        reference.pixels()[i] = (a.image.pixels()[i] + b.image.pixels()[i]) * Real(0.5);
+    const double reference_noise = compare(a.image, reference).relative_mse;  // mean((A − B)²) / 4, relative
+    const std::vector<DistanceSampling> strategies = {DistanceSampling::kFreeFlight,
+                                                      DistanceSampling::kEquiangular, DistanceSampling::kMis};
+    std::vector<std::vector<double>> times(strategies.size()), errors(strategies.size()),
+        seconds(strategies.size()), shadow(strategies.size());
+    for (int run = 0; run < runs; ++run)
+        for (std::size_t k = 0; k < strategies.size(); ++k) {
+            const RenderResult r = render(strategies[k], spp, std::uint64_t(run + 1), 1);
+            const double relative_mse = compare(r.image, reference).relative_mse - reference_noise;
+            errors[k].push_back(relative_mse);
+            seconds[k].push_back(r.seconds);
+            shadow[k].push_back(double(r.rays[RayKind::kShadow]) / double(r.samples));
+            times[k].push_back(r.seconds * relative_mse / 1e-3);
+        }
+    std::printf(
+        "%s (fog density x%g%s), %dx%d, %d spp per run, 1 thread, %d alternating runs; reference %d spp "
+        "(MIS), its own relative MSE %.2e\n",
+        file.c_str(), density, black ? ", black surfaces" : "", size, size, spp, runs, reference_spp,
+        reference_noise);
+    std::printf(
+        "| distance sampling | relative MSE | seconds | shadow rays / sample | time to 1e-3 | vs free "
+        "flight |\n");
+    std::printf("|---|---|---|---|---|---|\n");
+    for (std::size_t k = 0; k < strategies.size(); ++k)
+        std::printf("| %s | %.2e | %.3f | %.2f | %.2f s | %.2f× |\n",
+                    std::string(to_string(strategies[k])).c_str(), median(errors[k]), median(seconds[k]),
+                    median(shadow[k]), median(times[k]), median(times[k]) / median(times[0]));
+    return 0;
+}
