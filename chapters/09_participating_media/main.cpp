@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(1, 1 << 30));
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
-        add_sampling_flag(app, options.strategy);
+        add_sampling_flag(app, options.strategy, options.quad_lights);
         add_media_study_flags(app, studies);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
