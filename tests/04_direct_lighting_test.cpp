@@ -1076,6 +1076,27 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
     CHECK_FALSE(find_plane_under_quad(scene, materials));
 }
 
+TEST_CASE("Direct lighting with quads sampled by solid angle converges to the analytic scene's exact image",
+          "[direct][statistical][solid_angle]") {
+    const Scene scene = load_scene(scene_path("ch04_analytic.json"));
+    const MaterialTable materials(scene, EffectSet::all());
+    const auto analytic = find_plane_under_quad(scene, materials);
+    REQUIRE(analytic);
+    const World world(scene);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, 48, 48);
+    const Image exact = exact_image(*analytic, world, camera);
+    const RenderSettings settings{48, 48, 1, 5, 1, ProgressStyle::kNone};
+    DirectOptions options;
+    options.quad_lights = QuadLightSampling::kSolidAngle;
+    const auto rows = shadow_study(world, materials, collect_lights(scene), options, camera, settings, exact,
+                                   {LightSampler::kIndependent}, {4, 64});
+    REQUIRE(rows.size() == 2);
+    CHECK(rows[0].rmse / rows[1].rmse > 3);
+    CHECK(rows[0].rmse / rows[1].rmse < 5.3);
+    for (const ShadowStudyRow& row : rows)
+        CHECK(std::abs(row.mean_error) <= 4 * row.rmse / std::sqrt(48.0 * 48.0));
+}
+
 TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hit, for every kind of emitter",
           "[lights][ex:ch02.plane][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch02.triangle_watertight]") {
     // Emitters of every kind among surfaces that emit nothing: a box (6 faces), a triangle, a sphere, a quad,
