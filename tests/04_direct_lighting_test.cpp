@@ -296,7 +296,7 @@ TEST_CASE("Directions to a quad, a triangle and a sphere light fit their pdfs, w
 }
 
 TEST_CASE("Directions to a quad by solid angle fit 1 / Omega, which integrates to 1, near and far",
-          "[statistical][lights][solid_angle]") {
+          "[statistical][lights][solid_angle][ex:ch04.sample_quad_light]") {
     require_warps_fit(solid_angle_quad_warps(), 120, kAlphaPerTest);
 }
 
@@ -607,8 +607,8 @@ TEST_CASE("The solid angle of a rectangle matches its closed forms, on its axis 
     }
 }
 
-TEST_CASE("Solid-angle sampling hands over to area sampling where its maths fails; behind, nothing",
-          "[lights][solid_angle][stability]") {
+TEST_CASE("Solid-angle sampling hands over to area sampling where its maths fails, and gives nothing behind",
+          "[lights][solid_angle][stability][ex:ch04.sample_quad_light]") {
     const QuadLightSampling by = QuadLightSampling::kSolidAngle;
     // Every sample of `lamp` from p drawn by solid angle is area sampling's own sample, field for field.
     auto same_as_area = [&](const QuadLight& lamp, const Vec3& p) {
@@ -690,7 +690,7 @@ TEST_CASE("Solid-angle sampling hands over to area sampling where its maths fail
 }
 
 TEST_CASE("The picker's pdf of a hit on a quad is the density its sample drew that direction with, both ways",
-          "[lights][solid_angle][mis]") {
+          "[lights][solid_angle][mis][ex:ch04.sample_quad_light]") {
     // A rectangle close by, a parallelogram and a far rectangle: the spherical rectangle serves the first and
     // area sampling the others (from p), so the picker's pdf must follow the sampler lamp by lamp.
     LightSet lights;
@@ -729,9 +729,9 @@ TEST_CASE("The picker's pdf of a hit on a quad is the density its sample drew th
 }
 
 TEST_CASE(
-    "Area and solid-angle sampling estimate the exact irradiance of a rectangle; near it, solid angle is "
+    "Area and solid-angle sampling estimate the exact irradiance of a rectangle, and near it solid angle is "
     "less noisy",
-    "[lights][statistical][solid_angle]") {
+    "[lights][statistical][solid_angle][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     // Lambert's polygon formula gives E exactly; a 4 x 4 lamp 0.3 above a tilted receiver, and a 1 x 2 one 3
     // away.
     const Vec3 p{0.2f, 0, 0.1f};
@@ -1077,7 +1077,9 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
 }
 
 TEST_CASE("Direct lighting with quads sampled by solid angle converges to the analytic scene's exact image",
-          "[direct][statistical][solid_angle]") {
+          "[direct][statistical][solid_angle][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
+          "[ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
     const Scene scene = load_scene(scene_path("ch04_analytic.json"));
     const MaterialTable materials(scene, EffectSet::all());
     const auto analytic = find_plane_under_quad(scene, materials);

@@ -20,6 +20,10 @@ check "$ch05" "usage: --min-throughput: $real, got \"0.5x\" (see --help)" "${sma
 check "$ch05" "usage: --study-throughputs: $real, got \"nan\" (see --help)" "${small[@]}" --depth-study --study-throughputs 0.1 nan
 check "$ch08" "usage: --aperture: $real, got \"inf\" (see --help)" "${small[@]}" --variant aperture --aperture inf
 check "$ch08" "usage: --aperture: $real, got \"1e309\" (see --help)" "${small[@]}" --variant aperture --aperture 1e309
+# Chapter 04's --quad-lights, which chapters 06 to 09 take too, names one of its two strategies.
+for exe in "$ch04" "$ch06" "$ch07" "$ch08" "$ch09"; do
+    check "$exe" "usage: --quad-lights: spherical not in {area,solid-angle} (see --help)" "${small[@]}" --quad-lights spherical
+done
 
 # A flag that matters only with another, given without it.
 only() {  # only EXECUTABLE FLAG CONDITION ARGS...
