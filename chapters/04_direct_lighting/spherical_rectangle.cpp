@@ -47,9 +47,9 @@ std::optional<SphericalRectangle> SphericalRectangle::seen_from(const Vec3& p, c
 }
 
 Vec2 SphericalRectangle::sample(Vec2 u) const {
-    // x: the part of the spherical rectangle left of x has area A(x) = u Ω; in the angle a = u Ω + k the
-    // inverse is the plane's cos: c = f / √(f² + b0²) with f = (cos a b0 − b1) / sin a, x = −c z0 / √(1 −
-    // c²).
+    // x: the part left of x has area A(x) = u Ω. With a = u Ω + k, the cosine between the x axis and the
+    // direction (x, 0, z0) is c = sign(f) / √(f² + b0²), f = (cos a b0 − b1) / sin a;
+    // then x = −c z0 / √(1 − c²).
     const double a = double(u.x) * solid_angle_ + k_;
     const double f = (std::cos(a) * b0_ - b1_) / std::sin(a);
     const double c = std::clamp(std::copysign(1.0, f) / length2d(f, b0_), -1.0, 1.0);
