@@ -18,7 +18,9 @@
 #include "04_direct_lighting/direct_render.hpp"
 #include "04_direct_lighting/frame.hpp"
 #include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/quad_light_strategy.hpp"
 #include "04_direct_lighting/sampling.hpp"
+#include "04_direct_lighting/spherical_rectangle.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "04_direct_lighting/texture.hpp"
 #include "random_unit.hpp"
@@ -260,9 +262,9 @@ TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and fin
 
 namespace {
 
-// Every chi-square test of this file (hemisphere 1, cosine 1, cones 3, lobes 3, lights 3, triangle 1), each
-// run at the Šidák-corrected level.
-constexpr int kChiSquareTests = 12;
+// Every chi-square test of this file (hemisphere 1, cosine 1, cones 3, lobes 3, lights 3, triangle 1, quads
+// by solid angle 2), each run at the Šidák-corrected level.
+constexpr int kChiSquareTests = 14;
 const double kAlphaPerTest = test::sidak_level(kChiSquareTests, 0.01);
 
 }  // namespace
@@ -291,6 +293,11 @@ TEST_CASE("Directions to a quad, a triangle and a sphere light fit their pdfs, w
           "[statistical][ex:ch04.cone_solid_angle][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
           "[ex:ch04.uniform_triangle][ex:ch04.uniform_cone_pdf]") {
     require_warps_fit(light_warps(), 110, kAlphaPerTest);
+}
+
+TEST_CASE("Directions to a quad by solid angle fit 1 / Omega, which integrates to 1, near and far",
+          "[statistical][lights][solid_angle][ex:ch04.sample_quad_light]") {
+    require_warps_fit(solid_angle_quad_warps(), 120, kAlphaPerTest);
 }
 
 TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square test",
@@ -547,6 +554,206 @@ TEST_CASE("Light sampling estimates the exact irradiance of a quad, a triangle a
     const double d = double(glm::length(to_centre));
     const Estimate s = light_estimate([&](Vec2 u) { return sample_sphere_light(sphere, p, u); }, 63);
     CHECK(std::abs(s.mean - sphere_irradiance(7, 0.6, d, double(to_centre.y) / d)) <= 4 * s.error);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Quad lights by solid angle (spherical rectangles, quad_light_strategy.hpp): Ω against closed forms, the
+// fallbacks to area sampling where the maths fails, the picker's pdf for MIS, and the irradiance both ways
+
+namespace {
+
+// The exact solid angle of the rectangle [x0, x1] × [y0, y1] lying at distance h below p (p above the origin
+// of x, y), by the corner rule: Ω = F(x1, y1) − F(x0, y1) − F(x1, y0) + F(x0, y0), where F(x, y) = arctan(x y
+// / (h √(x² + y² + h²))) is the solid angle of [0, x] × [0, y].
+double rectangle_solid_angle(double x0, double x1, double y0, double y1, double h) {
+    auto F = [h](double x, double y) { return std::atan(x * y / (h * std::sqrt(x * x + y * y + h * h))); };
+    return F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0);
+}
+
+// A lamp in the plane z = 0 facing +z (U × V = +z): [x0, x0 + w] × [y0, y0 + h].
+QuadLight floor_lamp(Real x0, Real y0, Real w, Real h) {
+    return make_quad_light({x0, y0, 0}, {w, 0, 0}, {0, h, 0}, Color(1));
+}
+
+}  // namespace
+
+TEST_CASE("The solid angle of a rectangle matches its closed forms, on its axis and oblique",
+          "[lights][solid_angle]") {
+    // A square of side a seen from distance d on its axis: Ω = 4 arcsin(a² / (a² + 4 d²)) (a cube's face
+    // from its centre, a = 2, d = 1: 2π/3).
+    for (const auto& [a, d] : {std::pair{2.0, 1.0}, std::pair{1.0, 3.0}, std::pair{0.125, 1.0}}) {
+        const auto view =
+            SphericalRectangle::seen_from(Vec3(0, 0, Real(d)), Vec3(Real(-a / 2), Real(-a / 2), 0),
+                                          Vec3(Real(a), 0, 0), Vec3(0, Real(a), 0));
+        REQUIRE(view);
+        CHECK(view->solid_angle() == Approx(4 * std::asin(a * a / (a * a + 4 * d * d))).epsilon(1e-12));
+    }
+    CHECK(4 * std::asin(0.5) == Approx(2 * std::numbers::pi / 3));
+    // Rectangles off the axis, down to Ω = 1.2e-4 (just above kMinSphericalSolidAngle): 1e-9 relative.
+    const double cases[][5] = {{0.5, 2, -1, 0.25, 1},
+                               {-3, -1, 2, 2.5, 0.25},
+                               {1, 1.5, 1, 1.75, 4},
+                               {-0.25, 0.5, -8, 8, 0.125},
+                               {10, 10.5, 0, 0.5, 1}};
+    for (const auto& c : cases) {
+        const double x0 = c[0], x1 = c[1], y0 = c[2], y1 = c[3], h = c[4];
+        const QuadLight lamp = floor_lamp(Real(x0), Real(y0), Real(x1 - x0), Real(y1 - y0));
+        const auto view = SphericalRectangle::seen_from(Vec3(0, 0, Real(h)), lamp.origin, lamp.u, lamp.v);
+        REQUIRE(view);
+        const double exact = rectangle_solid_angle(x0, x1, y0, y1, h);
+        INFO("rectangle [" << x0 << ", " << x1 << "] x [" << y0 << ", " << y1 << "] at height " << h);
+        CHECK(exact > kMinSphericalSolidAngle);
+        CHECK(view->solid_angle() == Approx(exact).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("Solid-angle sampling hands over to area sampling where its maths fails, and gives nothing behind",
+          "[lights][solid_angle][stability][ex:ch04.sample_quad_light]") {
+    const QuadLightSampling by = QuadLightSampling::kSolidAngle;
+    // Every sample of `lamp` from p drawn by solid angle is area sampling's own sample, field for field.
+    auto same_as_area = [&](const QuadLight& lamp, const Vec3& p) {
+        Pcg32 rng(7, 0);
+        for (int i = 0; i < 100; ++i) {
+            const Vec2 u = rng.next_vec2();
+            const auto a = sample_quad_light(lamp, p, u), s = sample_quad_light(lamp, p, u, by);
+            REQUIRE(a.has_value() == s.has_value());
+            if (!a) continue;
+            CHECK(s->point == a->point);
+            CHECK(s->pdf == a->pdf);
+            CHECK(quad_light_pdf(lamp, p, s->wi, by) == quad_light_pdf(lamp, p, s->wi));
+        }
+    };
+    SECTION("a parallelogram has no spherical rectangle") {
+        const QuadLight lamp = make_quad_light({0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, Color(1));
+        CHECK_FALSE(solid_angle_view(lamp, Vec3(0.5f, 0.5f, 1)));
+        same_as_area(lamp, Vec3(0.5f, 0.5f, 1));
+    }
+    SECTION("a tiny, far lamp: Girard's sum of angles near 2 pi cancels, area sampling is exact") {
+        // A 1 mm square 100 km away: Ω = A / d² = 1e-16 sr. Its four angles are π/2 each to 1e-8, and
+        // γ0 + γ1 + γ2 + γ3 − 2π in double keeps nothing of Ω.
+        const QuadLight lamp = floor_lamp(-5e-4f, -5e-4f, 1e-3f, 1e-3f);
+        const Vec3 p(0, 0, 1e5f);
+        const double exact = double(lamp.area) / (1e5 * 1e5);
+        const auto naive = SphericalRectangle::seen_from(p, lamp.origin, lamp.u, lamp.v);
+        REQUIRE(naive);
+        INFO("naive Omega " << naive->solid_angle() << ", exact " << exact);
+        CHECK_FALSE(std::abs(naive->solid_angle() - exact) < 0.5 * exact);
+        CHECK_FALSE(solid_angle_view(lamp, p));
+        same_as_area(lamp, p);
+        const auto s = sample_quad_light(lamp, p, Vec2(0.5f), by);
+        REQUIRE(s);
+        CHECK(double(s->pdf) == Approx(1 / exact).epsilon(1e-4));
+    }
+    SECTION("p almost in the lamp's plane: above it, beside it, and by an edge") {
+        const QuadLight lamp = floor_lamp(0, 0, 1, 1);
+        // Ω above 6.2 sr (over the lamp) or below 1e-4 sr (beside it, and 1e-9 from the plane by an edge,
+        // where Girard's sum is already 2e-3 off): area sampling.
+        for (const Vec3& p : {Vec3(0.5f, 0.5f, 1e-6f), Vec3(1.5f, 0.5f, 1e-6f), Vec3(0.5f, -1e-3f, 1e-9f)}) {
+            INFO("p = " << p.x << ", " << p.y << ", " << p.z);
+            CHECK_FALSE(solid_angle_view(lamp, p));
+            same_as_area(lamp, p);
+        }
+        const Vec3 grazing(0.5f, -1e-3f, 1e-9f);
+        const double y0 = -double(grazing.y);
+        const auto naive = SphericalRectangle::seen_from(grazing, lamp.origin, lamp.u, lamp.v);
+        REQUIRE(naive);
+        const double grazing_exact = rectangle_solid_angle(-0.5, 0.5, y0, y0 + 1, double(grazing.z));
+        CHECK(std::abs(naive->solid_angle() / grazing_exact - 1) > 1e-3);
+        // By the edge at 1e-6 (Ω = 2e-3 sr) and 0.01 over the middle (Ω = 6.16 sr) the spherical rectangle
+        // serves: its Ω is the closed form's, and every sample is finite, with pdf 1 / Ω.
+        for (const Vec3& p : {Vec3(0.5f, -1e-3f, 1e-6f), Vec3(0.5f, 0.5f, 0.01f)}) {
+            INFO("p = " << p.x << ", " << p.y << ", " << p.z);
+            const auto view = solid_angle_view(lamp, p);
+            REQUIRE(view);
+            const double x0 = -double(p.x), y = -double(p.y);
+            CHECK(view->solid_angle() ==
+                  Approx(rectangle_solid_angle(x0, x0 + 1, y, y + 1, double(p.z))).epsilon(1e-6));
+            Pcg32 rng(8, 0);
+            for (int i = 0; i < 1000; ++i) {
+                const auto s = sample_quad_light(lamp, p, rng.next_vec2(), by);
+                REQUIRE(s);
+                REQUIRE(is_finite(s->point));
+                REQUIRE(double(s->pdf) == Approx(1 / view->solid_angle()));
+                REQUIRE(quad_light_pdf(lamp, p, s->wi, by) == s->pdf);
+            }
+        }
+    }
+    SECTION("behind the one-sided lamp, and in its plane: no sample, density 0") {
+        const QuadLight lamp = floor_lamp(0, 0, 1, 1);
+        for (const Vec3& p : {Vec3(0.5f, 0.5f, -1), Vec3(0.5f, 0.5f, 0), Vec3(2, 0.5f, 0)}) {
+            CHECK_FALSE(solid_angle_view(lamp, p));
+            CHECK_FALSE(sample_quad_light(lamp, p, Vec2(0.3f, 0.6f), by));
+            CHECK(quad_light_pdf(lamp, p, glm::normalize(Vec3(0.5f, 0.5f, 0) - p + Vec3(0, 0, 1e-3f)), by) ==
+                  0);
+        }
+    }
+}
+
+TEST_CASE("The picker's pdf of a hit on a quad is the density its sample drew that direction with, both ways",
+          "[lights][solid_angle][mis][ex:ch04.sample_quad_light]") {
+    // A rectangle close by, a parallelogram and a far rectangle: the spherical rectangle serves the first and
+    // area sampling the others (from p), so the picker's pdf must follow the sampler lamp by lamp.
+    LightSet lights;
+    lights.quads = {make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(2)),
+                    make_quad_light({1, 0, 0.5f}, {0, 1, 0}, {1, 0.5f, 0}, Color(3)),
+                    make_quad_light({-5e-4f, 50, 10}, {0, 1e-3f, 0}, {1e-3f, 0, 0}, Color(1e9f))};
+    for (std::uint32_t i = 0; i < 3; ++i) lights.by_hit.push_back({LightRef::List::kQuads, i});
+    const Vec3 p(0.1f, 0.2f, 0);
+    REQUIRE(solid_angle_view(lights.quads[0], p));
+    REQUIRE_FALSE(solid_angle_view(lights.quads[1], p));
+    REQUIRE_FALSE(solid_angle_view(lights.quads[2], p));
+    for (const QuadLightSampling by : {QuadLightSampling::kArea, QuadLightSampling::kSolidAngle}) {
+        const LightPicker picker(lights, by);
+        CHECK(picker.quad_lights() == by);
+        Pcg32 rng(9, 0);
+        int drawn[3] = {0, 0, 0};
+        for (int k = 0; k < 3000; ++k) {
+            const Real u_pick = rng.next_real();
+            const auto s = picker.sample(p, u_pick, rng.next_vec2());
+            if (!s) continue;
+            const std::size_t i = picker.pick(u_pick);
+            ++drawn[i];
+            Hit hit;  // what a BSDF sample along s->wi meets
+            hit.t = s->distance;
+            hit.normal = s->normal;
+            hit.light = std::int32_t(i);
+            INFO(to_string(by) << ", lamp " << i);
+            REQUIRE(picker.pdf(p, s->wi, hit) == Approx(s->pdf).epsilon(1e-4));
+            const Real alone = quad_light_pdf(lights.quads[i], p, s->wi, by);
+            REQUIRE(picker.pdf(p, s->wi, hit) == Approx(picker.probability(i) * alone).epsilon(1e-3));
+        }
+        CHECK(drawn[0] > 0);
+        CHECK(drawn[1] > 0);
+        CHECK(drawn[2] > 0);
+    }
+}
+
+TEST_CASE(
+    "Area and solid-angle sampling estimate the exact irradiance of a rectangle, and near it solid angle is "
+    "less noisy",
+    "[lights][statistical][solid_angle][ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+    // Lambert's polygon formula gives E exactly; a 4 x 4 lamp 0.3 above a tilted receiver, and a 1 x 2 one 3
+    // away.
+    const Vec3 p{0.2f, 0, 0.1f};
+    const Vec3 n = glm::normalize(Vec3{0.3f, 0, 1});
+    for (const QuadLight& lamp : {make_quad_light({-2, -2, 0.4f}, {0, 4, 0}, {4, 0, 0}, Color(5)),
+                                  make_quad_light({-1, 0, 3}, {0, 2, 0}, {1, 0, 0}, Color(5))}) {
+        const std::array<Vec3d, 4> corners{Vec3d(lamp.origin), Vec3d(lamp.origin + lamp.u),
+                                           Vec3d(lamp.origin + lamp.u + lamp.v), Vec3d(lamp.origin + lamp.v)};
+        const double exact = polygon_irradiance(corners, Vec3d(p), Vec3d(n), 5);
+        Estimate by[2];
+        for (const QuadLightSampling strategy : {QuadLightSampling::kArea, QuadLightSampling::kSolidAngle}) {
+            Pcg32 rng(64, 0);
+            by[int(strategy)] = estimate(20000, [&] {
+                const auto s = sample_quad_light(lamp, p, rng.next_vec2(), strategy);
+                return s ? double(s->radiance.g * std::max(Real(0), glm::dot(s->wi, n)) / s->pdf) : 0.0;
+            });
+            INFO(to_string(strategy) << ": " << by[int(strategy)].mean << " +- " << by[int(strategy)].error
+                                     << ", exact " << exact);
+            CHECK(std::abs(by[int(strategy)].mean - exact) <= 4 * by[int(strategy)].error);
+        }
+        if (lamp.area > 10) CHECK(by[1].error < 0.5 * by[0].error);
+    }
 }
 
 TEST_CASE("Sphere light samples lie on the sphere's near side, inside the cone",
@@ -867,6 +1074,29 @@ TEST_CASE("The analytic scene converges to its exact image without bias",
     // A scene that is not a plane under one quad has no exact image.
     scene.point_lights.push_back({{0, 1, 0}, Color(1)});
     CHECK_FALSE(find_plane_under_quad(scene, materials));
+}
+
+TEST_CASE("Direct lighting with quads sampled by solid angle converges to the analytic scene's exact image",
+          "[direct][statistical][solid_angle][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
+          "[ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch04.direct_light][ex:ch04.lambert]"
+          "[ex:ch04.lambert_polygon][ex:ch04.sample_quad_light]") {
+    const Scene scene = load_scene(scene_path("ch04_analytic.json"));
+    const MaterialTable materials(scene, EffectSet::all());
+    const auto analytic = find_plane_under_quad(scene, materials);
+    REQUIRE(analytic);
+    const World world(scene);
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, 48, 48);
+    const Image exact = exact_image(*analytic, world, camera);
+    const RenderSettings settings{48, 48, 1, 5, 1, ProgressStyle::kNone};
+    DirectOptions options;
+    options.quad_lights = QuadLightSampling::kSolidAngle;
+    const auto rows = shadow_study(world, materials, collect_lights(scene), options, camera, settings, exact,
+                                   {LightSampler::kIndependent}, {4, 64});
+    REQUIRE(rows.size() == 2);
+    CHECK(rows[0].rmse / rows[1].rmse > 3);
+    CHECK(rows[0].rmse / rows[1].rmse < 5.3);
+    for (const ShadowStudyRow& row : rows)
+        CHECK(std::abs(row.mean_error) <= 4 * row.rmse / std::sqrt(48.0 * 48.0));
 }
 
 TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hit, for every kind of emitter",

@@ -91,7 +91,8 @@ Warp uniform_sphere_warp() {
 // Every warp under test, in the order of its seed (101, 102, …; see require_warps_fit).
 std::vector<Warp> warps() {
     std::vector<Warp> w{uniform_hemisphere_warp(), cosine_hemisphere_warp(), uniform_sphere_warp()};
-    for (const auto& group : {cone_warps(), power_cosine_warps(), light_warps()}) {
+    for (const auto& group :
+         {cone_warps(), power_cosine_warps(), light_warps(), solid_angle_quad_warps()}) {
         w.insert(w.end(), group.begin(), group.end());
     }
     return w;

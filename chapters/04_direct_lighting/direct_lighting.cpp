@@ -19,7 +19,7 @@ DirectLighting::DirectLighting(const World& world, const MaterialTable& material
     const std::size_t count = lights_.area_count() + lights_.points.size();
     const bool pick = options_.light_selection == LightSelection::kPower ||
                       (options_.light_selection == LightSelection::kAuto && count > kEveryLightLimit);
-    if (pick) picker_.emplace(lights_);
+    if (pick) picker_.emplace(lights_, options_.quad_lights);
 }
 
 Color DirectLighting::contribution(const Hit& hit, const Vec3& wo, const Bsdf& brdf, const LightSample& s,
@@ -66,7 +66,7 @@ Color DirectLighting::every_light(const Hit& hit, const Vec3& wo, const Bsdf& b,
     const Vec3& p = hit.point;
     for (const QuadLight& light : lights_.quads) {
         for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_quad_light(light, p, light_point(j, rng))) {
+            if (const auto s = sample_quad_light(light, p, light_point(j, rng), options_.quad_lights)) {
                 sum += weight * contribution(hit, wo, b, *s, rays);
             }
         }

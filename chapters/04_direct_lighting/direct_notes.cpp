@@ -13,7 +13,8 @@ std::string count_text(std::size_t n, const std::string& what) {
 std::string lights_note(const DirectLighting& shading, const DirectOptions& options) {
     const LightSet& sampled = shading.lights();
     if (sampled.empty()) return "the scene has no light to sample: no direct light, no shadow rays";
-    return "lights: " + count_text(sampled.quads.size(), "quad") + ", " +
+    return "lights: " + count_text(sampled.quads.size(), "quad") + " (sampled by " +
+           std::string(to_string(options.quad_lights)) + "), " +
            count_text(sampled.triangles.size(), "triangle") + ", " +
            count_text(sampled.spheres.size(), "sphere") + ", " + count_text(sampled.points.size(), "point") +
            (sampled.environment ? ", an environment" : "") + "; " +

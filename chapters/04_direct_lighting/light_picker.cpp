@@ -9,11 +9,12 @@
 
 namespace rt {
 
-LightPicker::LightPicker(const LightSet& lights)
+LightPicker::LightPicker(const LightSet& lights, QuadLightSampling quad_lights)
     : quads_(lights.quads),
       triangles_(lights.triangles),
       spheres_(lights.spheres),
       points_(lights.points),
+      quad_lights_(quad_lights),
       by_hit_(lights.by_hit) {
     for (const QuadLight& q : quads_) weights_.push_back(luminance(q.radiance) * area_of(q));
     for (const TriangleLight& t : triangles_) weights_.push_back(luminance(t.radiance) * area_of(t));
@@ -52,7 +53,7 @@ std::optional<LightSample> LightPicker::sample(const Vec3& p, Real u_pick, Vec2 
     if (!(P > 0)) return std::nullopt;
     std::optional<LightSample> s;
     if (i < quads_.size()) {
-        s = sample_quad_light(quads_[i], p, u);
+        s = sample_quad_light(quads_[i], p, u, quad_lights_);
     } else if (i < quads_.size() + triangles_.size()) {
         s = sample_triangle_light(triangles_[i - quads_.size()], p, u);
     } else if (i < area_count()) {
@@ -79,6 +80,11 @@ Real LightPicker::pdf(const Vec3& p, const Vec3& wi, const Hit& hit) const {
                                                                 : triangles_[ref.index].radiance;
             const Real cos_light = -glm::dot(hit.normal, wi);
             if (!(cos_light > 0)) return 0;
+            if (ref.list == LightRef::List::kQuads && quad_lights_ == QuadLightSampling::kSolidAngle) {
+                // P(light) / Ω where the spherical rectangle drew wi.
+                if (const auto view = solid_angle_view(quads_[ref.index], p))
+                    return probability(ref.index) * Real(1 / view->solid_angle());
+            }
             return luminance(L) * hit.t * hit.t / (cos_light * total_);
         }
         case LightRef::List::kNone:

@@ -7,6 +7,8 @@
 //   pdf(wi) = lum(L) d² / (cos θ_l W):
 // the area cancels, and MIS can weigh a BRDF sample that hit a quad or a triangle knowing only the emitter's
 // radiance, its distance and its cosine. A hit names its light (Hit::light), so pdf() needs no search.
+// Quads sampled by solid angle (quad_light_strategy.hpp) have pdf(wi) = P(light) / Ω where the spherical
+// rectangle serves, and the planar formula above where area sampling stands in.
 // It serves next-event estimation and MIS (chapter 06 on) and the start of light paths (chapter 08).
 #pragma once
 
@@ -16,6 +18,7 @@
 #include "02_intersection/hit.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
+#include "quad_light_strategy.hpp"
 
 namespace rt {
 
@@ -23,13 +26,15 @@ class LightPicker {
   public:
     // The area lights of `lights` (quads, then triangles, then spheres) and its point lights, in that order.
     // The environment is sampled apart: it has no position and no finite power.
-    explicit LightPicker(const LightSet& lights);
+    // Quads are sampled by `quad_lights`.
+    explicit LightPicker(const LightSet& lights, QuadLightSampling quad_lights = QuadLightSampling::kArea);
 
     bool empty() const { return cdf_.empty(); }
     // The lights it picks among (0 when none emits any power).
     std::size_t light_count() const { return cdf_.size(); }
     // Σ Φ / π over every light.
     Real total_weight() const { return total_; }
+    QuadLightSampling quad_lights() const { return quad_lights_; }
     std::size_t area_count() const { return quads_.size() + triangles_.size() + spheres_.size(); }
     // P(light): the probability of picking light `index` (quads, triangles, spheres, then points).
     Real probability(std::size_t index) const;
@@ -55,6 +60,7 @@ class LightPicker {
     std::vector<TriangleLight> triangles_;
     std::vector<SphereLight> spheres_;
     std::vector<PointLight> points_;
+    QuadLightSampling quad_lights_;
     std::vector<LightRef> by_hit_;
     std::vector<Real> weights_;  // Φ / π per light: lum(L) × area, 4 lum(I)
     std::vector<Real> cdf_;

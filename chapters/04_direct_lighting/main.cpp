@@ -9,6 +9,7 @@
 #include "analytic_scene.hpp"
 #include "direct_notes.hpp"
 #include "direct_render.hpp"
+#include "quad_lights_flag.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/run/app.hpp"
 #include "shadow_study_report.hpp"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
             app, options.light_selection,
             "Which lights a hit samples: every (N samples each), power (N lights picked with "
             "probability proportional to power) or auto (every light up to 16 lights, else power)");
+        add_quad_lights_flag(app, options.quad_lights);
         add_enum_option(app, shading_normals,
                         "A smooth mesh's shading normals: bend (the fix), raw (interpolated only) or flat "
                         "(faceted)");

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "03_shadow_rays/ray_offset.hpp"
+#include "quad_light_strategy.hpp"
 #include "rt/core/effect_set.hpp"
 
 namespace rt {
@@ -12,6 +13,7 @@ namespace rt {
 struct TraceOptions {
     EffectSet simulated = EffectSet::all();
     RayOffset offset{};
+    QuadLightSampling quad_lights = QuadLightSampling::kArea;  // how quad lights are sampled (--quad-lights)
 
     bool simulates(Effect effect) const { return simulated.contains(effect); }
 };

@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
                               "five sampling strategies, MIS",
                               "ch06_default.json", kRecursiveChapterEffects};
     auto flags = [&](CLI::App& app) {
-        add_sampling_flag(app, options.strategy);
+        add_sampling_flag(app, options.strategy, options.quad_lights);
         add_sampler_flag(app, options.sampler);
         add_termination_flags(app, termination);
         CLI::Option* irradiance_flag = app.add_flag(

@@ -10,6 +10,7 @@ std::vector<std::string> monte_carlo_notes(const RenderScene& prepared, const Pa
             "a point)");
     }
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
+                    ", quad lights: " + std::string(to_string(options.quad_lights)) +
                     ", sampler: " + std::string(to_string(options.sampler)) +
                     ", termination: " + std::string(to_string(options.termination.rule)));
     if (const auto& sky = prepared.scene.environment; sky && sky->image) {

@@ -6,7 +6,7 @@ PathTracer::PathTracer(const World& world, const MaterialTable& materials, const
                        PathOptions options)
     : world_(world),
       materials_(materials),
-      picker_(lights),
+      picker_(lights, options.quad_lights),
       environment_(lights.environment ? std::optional<Environment>(*lights.environment) : std::nullopt),
       has_unsampled_emitters_(!lights.unsampled.empty()),
       options_(options),

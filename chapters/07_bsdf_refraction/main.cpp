@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
         "ch07_default.json", kRefractionChapterEffects};
     auto flags = [&](CLI::App& app) {
         add_termination_flags(app, termination);
-        add_sampling_flag(app, options.strategy);
+        add_sampling_flag(app, options.strategy, options.quad_lights);
         add_sampler_flag(app, options.sampler);
         CLI::Option* fresnel_flag = app.add_flag(
             "--fresnel-study", fresnel,

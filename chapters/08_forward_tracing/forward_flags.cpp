@@ -1,5 +1,6 @@
 #include "forward_flags.hpp"
 
+#include "04_direct_lighting/quad_lights_flag.hpp"
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/flags/only_with.hpp"
@@ -41,6 +42,7 @@ void add_forward_flags(CLI::App& app, ForwardFlags& flags) {
         ->check(CLI::Range(1, kSafetyDepthCap))
         ->check(combined);
     CLI::Option* sampler_flag = add_sampler_flag(app, flags.combined.paths.sampler);
+    add_quad_lights_flag(app, flags.combined.paths.quad_lights);
     sampler_flag
         ->description("With --tracer combined: where a camera sample's numbers come from: " +
                       joined_names<PointSet>())

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(1, 1 << 30));
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
-        add_sampling_flag(app, options.strategy);
+        add_sampling_flag(app, options.strategy, options.quad_lights);
         add_enum_option(app, walk.distance,
                         "Where light scattered along a medium's segments is looked for: " +
                             joined_names<DistanceSampling>());

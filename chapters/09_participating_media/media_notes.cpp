@@ -11,7 +11,8 @@ std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, cons
                                       : "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"};
     const MaterialTable materials(scene, options.simulated, media_materials());
     for (const std::string& note : materials.notes()) notes.push_back(note);
-    notes.push_back("sampling: " + std::string(to_string(options.strategy)) + ", walk: at most " +
+    notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
+                    ", quad lights: " + std::string(to_string(options.quad_lights)) + ", walk: at most " +
                     std::to_string(walk.max_events) + " scattering events, roulette " +
                     (walk.roulette ? "on" : "off") +
                     ", distance sampling: " + std::string(to_string(walk.distance)) +

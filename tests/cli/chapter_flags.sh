@@ -22,6 +22,10 @@ check "$ch08" "usage: --aperture: $real, got \"inf\" (see --help)" "${small[@]}"
 check "$ch08" "usage: --aperture: $real, got \"1e309\" (see --help)" "${small[@]}" --variant aperture --aperture 1e309
 check "$ch09" "usage: --distance-sampling: foo not in {free-flight,equiangular,mis} (see --help)" "${small[@]}" \
     --distance-sampling foo
+# Chapter 04's --quad-lights, which chapters 06 to 09 take too, names one of its two strategies.
+for exe in "$ch04" "$ch06" "$ch07" "$ch08" "$ch09"; do
+    check "$exe" "usage: --quad-lights: spherical not in {area,solid-angle} (see --help)" "${small[@]}" --quad-lights spherical
+done
 
 # A flag that matters only with another, given without it.
 only() {  # only EXECUTABLE FLAG CONDITION ARGS...

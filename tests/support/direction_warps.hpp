@@ -14,6 +14,7 @@
 
 #include "04_direct_lighting/area_light_sampling.hpp"
 #include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/quad_light_strategy.hpp"
 #include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
 #include "chi_square.hpp"
@@ -116,6 +117,20 @@ inline std::vector<Warp> light_warps() {
                                 ? double(sphere_light_pdf(sphere, Vec3(0)))
                                 : 0.0;
                  }});
+    return w;
+}
+
+// Quads sampled by solid angle (spherical rectangles): the quad of light_warps, and a 4 x 4 lamp 0.3 above p
+// (Ω = 5.45 sr), where directions reach 82 degrees from the lamp's normal.
+inline std::vector<Warp> solid_angle_quad_warps() {
+    std::vector<Warp> w;
+    for (const QuadLight& quad : {make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1)),
+                                  make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(1))}) {
+        const QuadLightSampling by = QuadLightSampling::kSolidAngle;
+        w.push_back({"quad light directions by solid angle, area " + std::to_string(quad.area),
+                     [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u, by)); },
+                     [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d, by)); }});
+    }
     return w;
 }
 
