@@ -16,9 +16,7 @@ std::optional<SphericalRectangle> solid_angle_view(const QuadLight& light, const
     return view;
 }
 
-std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u,
-                                             QuadLightSampling strategy) {
-    if (strategy == QuadLightSampling::kArea) return sample_quad_light(light, p, u);
+std::optional<LightSample> sample_quad_light_by_solid_angle(const QuadLight& light, const Vec3& p, Vec2 u) {
     const auto view = solid_angle_view(light, p);
     if (!view) return sample_quad_light(light, p, u);
     // The direction's point x = s + a U + b V, found by the area sampler at (a, b); its density is 1 / Ω.

@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "area_light_sampling.hpp"
 #include "light_sample.hpp"
 #include "light_set.hpp"
 #include "rt/core/enum_names.hpp"
@@ -35,9 +36,15 @@ inline constexpr Real kRectangleCosine = Real(1e-5);
 // serves instead (a parallelogram, p behind the lamp or in its plane, Ω outside the bounds above).
 std::optional<SphericalRectangle> solid_angle_view(const QuadLight& light, const Vec3& p);
 
-// A sample of `light` from p by `strategy` (area sampling wherever solid_angle_view gives nothing).
-std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u,
-                                             QuadLightSampling strategy);
+// A sample of `light` from p by solid angle (area sampling wherever solid_angle_view gives nothing).
+std::optional<LightSample> sample_quad_light_by_solid_angle(const QuadLight& light, const Vec3& p, Vec2 u);
+// A sample of `light` from p by `strategy`. Inline, so that the default, area sampling, costs one comparison
+// more than calling the area sampler itself.
+inline std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u,
+                                                    QuadLightSampling strategy) {
+    if (strategy == QuadLightSampling::kArea) return sample_quad_light(light, p, u);
+    return sample_quad_light_by_solid_angle(light, p, u);
+}
 // The solid-angle density with which that sampler draws wi from p (0 if wi misses the light).
 Real quad_light_pdf(const QuadLight& light, const Vec3& p, const Vec3& wi, QuadLightSampling strategy);
 
