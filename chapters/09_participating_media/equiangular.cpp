@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "03_shadow_rays/next_float.hpp"
+
 namespace rt {
 
 std::optional<EquiangularSampler> EquiangularSampler::toward(const Ray& ray, const Vec3& light_point,
@@ -22,7 +24,7 @@ Real EquiangularSampler::sample(Real u) const {
     const Real t = (d_ * d_ + delta_ * delta_) * tau / (d_ + delta_ * tau);
     // Rounding may step just outside the segment (or, past θ = π/2 from o, flip the denominator's sign).
     if (!(t >= 0)) return 0;
-    return std::min(t, std::nextafter(t_max_, Real(0)));
+    return std::min(t, next_float_down(t_max_));
 }
 
 Real EquiangularSampler::pdf(Real t) const {

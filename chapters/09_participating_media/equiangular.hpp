@@ -10,8 +10,7 @@
 //   D from the perpendicular vector, not √(|x_l − o|² − Δ²) (which cancels to 0 or a negative number when x_l
 //     is near the line and far from o);
 //   w = atan2(D t_max, D² − Δ (t_max − Δ)) (atan b − atan a = atan2(b − a, 1 + ab)), not the difference of
-//   two
-//     angles that are both ±π/2 in floating point when x_l is near the line beyond the segment;
+//     two angles that are both ±π/2 in floating point when x_l is near the line beyond the segment;
 //   t = (D² + Δ²) τ / (D + Δ τ), τ = tan(u w) (the tangent addition formula applied to θ(0) + u w), exact at
 //     u = 0, with no tan of an angle near ±π/2.
 #pragma once
@@ -35,8 +34,7 @@ class EquiangularSampler {
     // pdf(t) on [0, t_max); 0 outside.
     Real pdf(Real t) const;
 
-    Real delta() const { return delta_; }
-    Real distance() const { return d_; }
+    Real distance() const { return d_; }  // D
 
   private:
     EquiangularSampler(Real delta, Real d, Real width, Real t_max)

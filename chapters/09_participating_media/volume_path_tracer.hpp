@@ -72,7 +72,7 @@ class VolumePathTracer {
     // cosine, and the environment sampled over the whole sphere. With `lit`, the lights' part is weighed by
     // w_ff against the equiangular point of the same segment.
     Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, SampleStream rng,
-                               RayCounts& rays, const std::optional<LitSegment>& lit = std::nullopt) const;
+                               RayCounts& rays, const std::optional<LitSegment>& lit) const;
     // The lights' part of it, from the light sample (u_pick, u); `weight` scales it (the distance MIS).
     Color light_estimate_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Real u_pick,
                                    Vec2 u, Real weight, RayCounts& rays) const;
