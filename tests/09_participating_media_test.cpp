@@ -23,6 +23,7 @@
 #include "09_participating_media/henyey_greenstein.hpp"
 #include "09_participating_media/homogeneous_medium.hpp"
 #include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/media_notes.hpp"
 #include "09_participating_media/media_scenes.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "rt/core/effects.hpp"
@@ -742,11 +743,34 @@ TEST_CASE("Without media the volumetric loop is chapter 06's: the same image to 
             options.strategy = strategy;
             options.sampler = sampler;
             const RenderResult ch06 = render_with(Renderer::kPaths, scene, simulated, settings, options);
-            const RenderResult ch09 = render_with_media(Renderer::kPaths, scene, simulated, settings, options);
+            // This chapter's loop itself (render_with_media hands such a run to chapter 07's, below).
+            const Prepared volumetric(scene, options);
+            const RenderResult ch09 = render_paths(
+                volumetric.tracer,
+                make_pinhole_camera(scene.camera, settings.width, settings.height), settings);
             CHECK(ch06.image.pixels() == ch09.image.pixels());
             CHECK(ch06.rays.total() == ch09.rays.total());
         }
     }
+}
+
+TEST_CASE("A run that simulates no media is chapter 07's render, and its summary says so", "[media]") {
+    const Scene scene = load_scene(scene_path("cornell.json"));
+    const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
+    const RenderSettings settings = small_render(16, 2, 3);
+    const RenderResult ch07 = render_with(Renderer::kPaths, scene, simulated, settings);
+    const RenderResult ch09 = render_with_media(Renderer::kPaths, scene, simulated, settings);
+    CHECK(ch07.image.pixels() == ch09.image.pixels());
+    PathOptions options;
+    options.simulated = simulated;
+    CHECK(media_notes(scene, Renderer::kPaths, options, {}).front() ==
+          "renderer: paths (chapter 07's loop: the scene calls for no media)");
+    // With media the volumetric loop runs, and says so.
+    const Scene fog = load_scene(scene_path("ch09_default.json"));
+    options.simulated = simulated_effects(fog, kMediaChapterEffects);
+    REQUIRE(options.simulated.contains(Effect::kMedia));
+    CHECK(media_notes(fog, Renderer::kPaths, options, {}).front() ==
+          "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)");
 }
 
 // ---------------------------------------------------------------------------------------------------------

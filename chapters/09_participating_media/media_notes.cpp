@@ -8,7 +8,9 @@ std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, cons
                                      const MediumWalk& walk) {
     std::vector<std::string> notes{
         renderer == Renderer::kDirect ? std::string(to_string(renderer))
-                                      : "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"};
+        : options.simulated.contains(Effect::kMedia)
+            ? "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"
+            : "renderer: paths (chapter 07's loop: the scene calls for no media)"};
     const MaterialTable materials(scene, options.simulated, media_materials());
     for (const std::string& note : materials.notes()) notes.push_back(note);
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +

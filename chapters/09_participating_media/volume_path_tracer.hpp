@@ -100,7 +100,7 @@ class VolumePathTracer {
 };
 
 // Renders as chapter 07's render_with does, with this chapter's volumetric loop for paths and its media on
-// the material table.
+// the material table. A run that simulates no media is chapter 07's render.
 RenderResult render_with_media(Renderer renderer, const Scene& scene, const EffectSet& simulated,
                                const RenderSettings& settings, PathOptions options = {}, MediumWalk walk = {},
                                const MaterialHooks& hooks = media_materials());
