@@ -6,10 +6,11 @@ namespace rt {
 
 namespace {
 
-// The largest float below c + 1: x + u rounds up to x + 1 for u just below 1 once x ≥ 1 (3 + (1 − 2⁻²⁴) is 4 in
-// float), which would put the sample in the next pixel; clamping keeps it inside.
+// x + u rounds up to x + 1 for u just below 1 once x ≥ 1 (3 + (1 − 2⁻²⁴) is 4 in float), which would put the
+// sample in the next pixel; such a coordinate becomes the largest float below c + 1, and no other changes.
+Real inside_pixel(Real c, Real p) { return p < c + 1 ? p : std::nextafter(c + 1, c); }
 Vec2 inside_pixel(const Vec2& corner, const Vec2& p) {
-    return glm::min(p, Vec2(std::nextafter(corner.x + 1, corner.x), std::nextafter(corner.y + 1, corner.y)));
+    return {inside_pixel(corner.x, p.x), inside_pixel(corner.y, p.y)};
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // What media cost a scene without them, on assets/scenes/cornell.json: chapter 07's render, chapter 09's
 // (which hands a run without media to chapter 07's loop), and chapter 09's volumetric loop forced onto the
-// scene (what the hand-over saves), in turn, the order rotated each run; each time is the median of the runs.
+// scene (what the hand-over saves), in turn, the order rotated each run; medians of the times, and of each
+// run's ratios to chapter 07 (the renders of a run are close in time, so the machine's drift cancels).
 // Not a test: `ch09_benchmark [runs] [size] [spp]`.
 #include <cstdio>
 #include <cstdlib>
@@ -36,7 +37,7 @@ int main(int argc, char** argv) {
     const VolumePathTracer volumetric(prepared.world, prepared.materials, prepared.lights, options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const char* names[] = {"chapter 07", "chapter 09", "chapter 09's volumetric loop"};
-    std::vector<double> seconds[3], means[3];  // the three images agree: no media here
+    std::vector<double> seconds[3], ratios[3], means[3];  // the three images agree: no media here
     const auto render = [&](int k) {
         if (k == 0) return render_with(choose_renderer(ch07), scene, ch07, settings, {});
         if (k == 1) return render_with_media(choose_renderer(ch09), scene, ch09, settings);
@@ -49,10 +50,11 @@ int main(int argc, char** argv) {
             seconds[k].push_back(r.seconds);
             means[k].push_back(r.image.mean());
         }
+        for (int k = 0; k < 3; ++k) ratios[k].push_back(seconds[k].back() / seconds[0].back());
     }
     std::printf("cornell.json, %dx%d, %d spp, 1 thread, %d alternating runs each\n", size, size, spp, runs);
     for (int k = 0; k < 3; ++k)
         std::printf("  %-29s median %.3f s (image mean %.6f), ratio to chapter 07 %.3f\n", names[k],
-                    median(seconds[k]), means[k].back(), median(seconds[k]) / median(seconds[0]));
+                    median(seconds[k]), means[k].back(), median(ratios[k]));
     return 0;
 }
