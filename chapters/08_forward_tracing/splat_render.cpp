@@ -43,7 +43,7 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
         films.emplace_back(settings.width, settings.height);
     std::vector<std::uint64_t> contributing(films.size(), 0);
     std::vector<std::uint8_t> complete(films.size(), 0);
-    std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
+    std::vector<ThreadRayCounts> rays_per_thread(static_cast<std::size_t>(threads));
     std::uint64_t traced = 0, contributed = 0;
     bool interrupted = false;
     // I = (1 / N) Σ_paths (their splats), over the N paths traced so far.

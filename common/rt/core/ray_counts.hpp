@@ -1,5 +1,5 @@
-// Rays traced, counted by kind. Each render thread counts into its own RayCounts, merged once at the end,
-// so counting costs no contention.
+// Rays traced, counted by kind. Each render thread counts into its own ThreadRayCounts, merged once at the
+// end, so counting costs no contention.
 #pragma once
 
 #include <array>
@@ -28,5 +28,9 @@ struct RayCounts {
         return *this;
     }
 };
+
+// One thread's counts, on a cache line of its own: two threads' counts on one line would pass the line
+// between their cores at every ray either traces (false sharing).
+struct alignas(64) ThreadRayCounts : RayCounts {};
 
 }  // namespace rt

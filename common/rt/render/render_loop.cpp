@@ -70,7 +70,7 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
         return n;
     };
 
-    std::vector<RayCounts> rays_per_thread(static_cast<std::size_t>(threads));
+    std::vector<ThreadRayCounts> rays_per_thread(static_cast<std::size_t>(threads));
     const std::uint64_t samples_resumed = sums.total_count();
     std::atomic<std::uint64_t> samples_done{0};  // by this run
     const auto start = Clock::now();
