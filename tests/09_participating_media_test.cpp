@@ -764,7 +764,7 @@ TEST_CASE("A run that simulates no media is chapter 07's render, and its summary
     PathOptions options;
     options.simulated = simulated;
     CHECK(media_notes(scene, Renderer::kPaths, options, {}).front() ==
-          "renderer: paths (chapter 07's loop: the scene calls for no media)");
+          "renderer: paths (chapter 06's loop, chapter 07's BSDFs: the scene calls for no media)");
     // With media the volumetric loop runs, and says so.
     const Scene fog = load_scene(scene_path("ch09_default.json"));
     options.simulated = simulated_effects(fog, kMediaChapterEffects);

@@ -4,13 +4,21 @@
 
 namespace rt {
 
+namespace {
+
+// Which loop renders: this chapter's only where the run simulates media (render_with_media).
+std::string renderer_note(Renderer renderer, const EffectSet& simulated) {
+    if (renderer == Renderer::kDirect) return std::string(to_string(renderer));
+    if (simulated.contains(Effect::kMedia))
+        return "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)";
+    return "renderer: paths (chapter 06's loop, chapter 07's BSDFs: the scene calls for no media)";
+}
+
+}  // namespace
+
 std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, const PathOptions& options,
                                      const MediumWalk& walk) {
-    std::vector<std::string> notes{
-        renderer == Renderer::kDirect ? std::string(to_string(renderer))
-        : options.simulated.contains(Effect::kMedia)
-            ? "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)"
-            : "renderer: paths (chapter 07's loop: the scene calls for no media)"};
+    std::vector<std::string> notes{renderer_note(renderer, options.simulated)};
     const MaterialTable materials(scene, options.simulated, media_materials());
     for (const std::string& note : materials.notes()) notes.push_back(note);
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
