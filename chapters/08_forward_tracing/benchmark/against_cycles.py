@@ -8,7 +8,8 @@ reference r = (A + B) / 2 made of the two cached halves that `ch07_error_study -
 
     relMSE(x) = mean over pixels and channels of (x - r)^2 / (r^2 + 0.01)  -  relMSE(A, r)
 
-(the second term is the reference's own noise: A - r = (A - B) / 2). It prints, as Markdown tables:
+(the second term is the reference's own noise: A - r = (A - B) / 2). With --cycles-reference-spp, Cycles is
+measured the same way against its own reference, two halves that Cycles renders. It prints, as Markdown tables:
   * each renderer at each spp: median render time, median process wall time, the mean relative MSE, the share
     of the squared error held by the worst 1 % of pixels and the median pixel's error;
   * each renderer's time to --target (1e-3): interpolated in log-log between the two measured points that
@@ -222,6 +223,21 @@ def region_means(image, regions):
 
 # --- running the renderers -------------------------------------------------------------------------------
 
+def converged_reference(stem, size, render_half=None):
+    """r = (A + B) / 2 from the halves STEM_a.pfm and STEM_b.pfm (render_half(seed, out) makes a missing one,
+    seeds 1001 and 1002), and r's own relative MSE, relMSE(A, r)."""
+    for half, seed in (("a", 1001), ("b", 1002)):
+        if render_half and not os.path.exists(stem + "_%s.pfm" % half):
+            partial = stem + "_%s_partial.pfm" % half
+            render_half(seed, partial)
+            os.replace(partial, stem + "_%s.pfm" % half)
+    A, B = read_pfm(stem + "_a.pfm"), read_pfm(stem + "_b.pfm")
+    if (A.width, A.height) != (size, size) or (B.width, B.height) != (size, size):
+        raise SystemExit("against_cycles.py: the reference halves %s_{a,b}.pfm are not %dx%d" % (stem, size, size))
+    ref = Image(A.width, A.height, [0.5 * (a + b) for a, b in zip(A.data, B.data)])
+    return ref, relative_mse(A, ref)
+
+
 def run_command(argv, log):
     start = time.perf_counter()
     proc = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
@@ -312,27 +328,33 @@ def main():
                         "halves at --reference-spp with seeds 1001 and 1002, as reference_SCENE_SIZE_SPPspp_{a,b}.pfm "
                         "in --reference-dir, unless they are there already (then --reference-stem is not used)")
     p.add_argument("--reference-spp", type=int, default=2048)
+    p.add_argument("--cycles-reference-spp", type=int, default=0,
+                   help="measure Cycles against its own converged reference: two halves rendered by Cycles at this "
+                        "spp (seeds 1001 and 1002), cycles_reference_SCENE_SIZE_SPPspp_{a,b}.pfm in "
+                        "--reference-dir; 0 (the default): against the course's reference")
     p.add_argument("--work", default=None, help="folder for the renders and logs (default: a temporary one)")
     p.add_argument("--json", default=None, help="also write every measurement to this JSON file")
     args = p.parse_args()
     args.scene = os.path.abspath(args.scene)
 
+    scene_name = os.path.splitext(os.path.basename(args.scene))[0]
     if args.reference_command:
-        scene_name = os.path.splitext(os.path.basename(args.scene))[0]
         stem = os.path.join(args.reference_dir, "reference_%s_%d_%dspp" % (scene_name, args.size,
                                                                          args.reference_spp))
-        for half, seed in (("a", 1001), ("b", 1002)):
-            if not os.path.exists(stem + "_%s.pfm" % half):
-                partial = stem + "_%s_partial.pfm" % half
-                run_course(args, args.reference_command, args.reference_spp, seed, partial, partial[:-4] + ".log")
-                os.replace(partial, stem + "_%s.pfm" % half)
+        ref, noise = converged_reference(stem, args.size, lambda seed, out: run_course(
+            args, args.reference_command, args.reference_spp, seed, out, out[:-4] + ".log"))
     else:
         stem = os.path.join(args.reference_dir, args.reference_stem.format(size=args.size))
-    A, B = read_pfm(stem + "_a.pfm"), read_pfm(stem + "_b.pfm")
-    if (A.width, A.height) != (args.size, args.size) or (B.width, B.height) != (args.size, args.size):
-        raise SystemExit("against_cycles.py: the reference halves are not %dx%d" % (args.size, args.size))
-    ref = Image(A.width, A.height, [0.5 * (a + b) for a, b in zip(A.data, B.data)])
-    noise = relative_mse(A, ref)
+        ref, noise = converged_reference(stem, args.size)
+    # Cycles against its own converged reference, or against the course's.
+    cycles_ref, cycles_noise = ref, noise
+    if args.cycles_reference_spp:
+        cycles_stem = os.path.join(args.reference_dir, "cycles_reference_%s_%d_%dspp" % (
+            scene_name, args.size, args.cycles_reference_spp))
+        cycles_ref, cycles_noise = converged_reference(cycles_stem, args.size, lambda seed, out: run_cycles(
+            args, args.cycles_reference_spp, seed, out, out[:-4] + ".log"))
+        print("converged means, Cycles' reference / the course's: %.4f (their own relative MSE %.3e and %.3e)" %
+              (sum(cycles_ref.data) / sum(ref.data), cycles_noise, noise), flush=True)
 
     renderers = [("Cycles", None, parse_spp(args.cycles_spp))]
     for item in args.course:
@@ -371,15 +393,16 @@ def main():
                 img = read_pfm(out)
                 if (img.width, img.height) != (args.size, args.size):
                     raise SystemExit("against_cycles.py: %s is %dx%d" % (out, img.width, img.height))
-                raw = relative_mse(img, ref)
-                worst, med = error_shape(img, ref)
+                own_ref, own_noise = (cycles_ref, cycles_noise) if template is None else (ref, noise)
+                raw = relative_mse(img, own_ref)
+                worst, med = error_shape(img, own_ref)
                 results[name][spp].append({"seed": seed, "render_s": render, "wall_s": wall, "op_s": op,
-                                           "rel_mse": max(0.0, raw - noise), "rel_mse_raw": raw,
+                                           "rel_mse": max(0.0, raw - own_noise), "rel_mse_raw": raw,
                                            "worst1_share": worst, "median_pixel": med, "pfm": out,
                                            "load1": os.getloadavg()[0]})
                 print("  repeat %d: %-8s %5d spp seed %d: render %.3f s, wall %.3f s%s, relMSE %.4e" %
                       (rep + 1, name, spp, seed, render, wall,
-                       "" if op is None else " (render operator %.3f s)" % op, max(0.0, raw - noise)),
+                       "" if op is None else " (render operator %.3f s)" % op, max(0.0, raw - own_noise)),
                       flush=True)
     load_after = os.getloadavg()
 
@@ -452,7 +475,8 @@ def main():
           (load_before + load_after + (os.cpu_count() or 0,)))
     if args.json:
         with open(args.json, "w") as f:
-            json.dump({"args": vars(args), "reference_noise": noise, "load_before": load_before,
+            json.dump({"args": vars(args), "reference_noise": noise, "cycles_reference_noise": cycles_noise,
+                       "load_before": load_before,
                        "load_after": load_after, "results": {n: {str(s): v for s, v in d.items()}
                                                              for n, d in results.items()}}, f, indent=1)
 
