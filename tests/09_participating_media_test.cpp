@@ -754,7 +754,11 @@ TEST_CASE("Without media the volumetric loop is chapter 06's: the same image to 
     }
 }
 
-TEST_CASE("A run that simulates no media is chapter 07's render, and its summary says so", "[media]") {
+TEST_CASE("A run that simulates no media is chapter 07's render, and its summary says so",
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("cornell.json"));
     const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
     const RenderSettings settings = small_render(16, 2, 3);
