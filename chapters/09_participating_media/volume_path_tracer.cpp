@@ -210,7 +210,8 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
                 // The density the next-event estimate at `from` drew this direction with (a medium's vertex
                 // has no normal).
                 const Real light_pdf = steps.environment()->pdf(from.normal, ray.direction);
-                path.L += path.beta * steps.environment()->radiance(ray.direction) * steps.met_weight(from, light_pdf);
+                path.L += path.beta * steps.environment()->radiance(ray.direction) *
+                          steps.met_weight(from, light_pdf);
                 if (observer) observer->light_met(path.L, from.specular, path.bounces);
             }
             break;
