@@ -727,7 +727,7 @@ TEST_CASE(
     CHECK(r.image.mean() > 0.02);
 }
 
-TEST_CASE("Without media the volumetric loop is chapter 06's: the same image to the bit, the same rays",
+TEST_CASE("Without media the volumetric loop is chapter 06's to the bit, and the run is chapter 07's render",
           "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
@@ -750,21 +750,11 @@ TEST_CASE("Without media the volumetric loop is chapter 06's: the same image to 
                 make_pinhole_camera(scene.camera, settings.width, settings.height), settings);
             CHECK(ch06.image.pixels() == ch09.image.pixels());
             CHECK(ch06.rays.total() == ch09.rays.total());
+            const RenderResult handed_over =
+                render_with_media(Renderer::kPaths, scene, simulated, settings, options);
+            CHECK(handed_over.image.pixels() == ch06.image.pixels());
         }
     }
-}
-
-TEST_CASE("A run that simulates no media is chapter 07's render, and its summary says so",
-          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
-    const Scene scene = load_scene(scene_path("cornell.json"));
-    const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
-    const RenderSettings settings = small_render(16, 2, 3);
-    const RenderResult ch07 = render_with(Renderer::kPaths, scene, simulated, settings);
-    const RenderResult ch09 = render_with_media(Renderer::kPaths, scene, simulated, settings);
-    CHECK(ch07.image.pixels() == ch09.image.pixels());
     PathOptions options;
     options.simulated = simulated;
     CHECK(media_notes(scene, Renderer::kPaths, options, {}).front() ==

@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
     const VolumePathTracer volumetric(prepared.world, prepared.materials, prepared.lights, options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const char* names[] = {"chapter 07", "chapter 09", "chapter 09's volumetric loop"};
-    std::vector<double> seconds[3], ratios[3], means[3];  // the three images agree: no media here
+    std::vector<double> seconds[3], ratios[3];
+    double means[3] = {0, 0, 0};  // the three images agree: no media here
     const auto render = [&](int k) {
         if (k == 0) return render_with(choose_renderer(ch07), scene, ch07, settings, {});
         if (k == 1) return render_with_media(choose_renderer(ch09), scene, ch09, settings);
@@ -48,13 +49,13 @@ int main(int argc, char** argv) {
             const int k = (i + j) % 3;
             const RenderResult r = render(k);
             seconds[k].push_back(r.seconds);
-            means[k].push_back(r.image.mean());
+            means[k] = r.image.mean();
         }
         for (int k = 0; k < 3; ++k) ratios[k].push_back(seconds[k].back() / seconds[0].back());
     }
     std::printf("cornell.json, %dx%d, %d spp, 1 thread, %d alternating runs each\n", size, size, spp, runs);
     for (int k = 0; k < 3; ++k)
         std::printf("  %-29s median %.3f s (image mean %.6f), ratio to chapter 07 %.3f\n", names[k],
-                    median(seconds[k]), means[k].back(), median(ratios[k]));
+                    median(seconds[k]), means[k], median(ratios[k]));
     return 0;
 }
