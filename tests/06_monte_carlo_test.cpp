@@ -457,9 +457,33 @@ TEST_CASE("Error falls like 1/sqrt(N), and faster with stratified points",
 // ---------------------------------------------------------------------------------------------------------
 // Owen-scrambled Sobol points
 
+namespace {
+
+// Whether each aligned block of 2^m of the points (m = 0 … 12) has one point in each elementary interval of
+// area 2^-m, for every shape 2^-k × 2^-(m−k): a (0, 2)-sequence in base 2. The points are 24-bit fractions.
+bool is_02_sequence(const std::vector<std::uint32_t>& xs, const std::vector<std::uint32_t>& ys) {
+    const int points = int(xs.size());
+    for (int m = 0; m <= 12; ++m) {
+        const int block = 1 << m;
+        for (int first = 0; first + block <= points; first += block) {
+            for (int k = 0; k <= m; ++k) {
+                std::vector<int> cells(std::size_t(block), 0);
+                for (int i = first; i < first + block; ++i) {
+                    const std::uint32_t cx = xs[std::size_t(i)] >> (24 - k);
+                    const std::uint32_t cy = ys[std::size_t(i)] >> (24 - (m - k));
+                    ++cells[std::size_t((cy << k) | cx)];
+                }
+                if (!std::all_of(cells.begin(), cells.end(), [](int c) { return c == 1; })) return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 TEST_CASE("Sobol points: every pair of dimensions is a (0,2)-sequence in each power-of-two block") {
-    // Each aligned block of 2^m points has one point in each elementary interval of area 2^-m, for every
-    // shape 2^-k × 2^-(m−k): the unscrambled points, and the scrambled and padded ones of any seed.
+    // The unscrambled points, and the scrambled and padded ones of any seed.
     constexpr int kPoints = 4096;
     for (std::uint64_t seed : {1ull, 77ull}) {
         for (std::uint32_t pair : {0u, 1u, 5u}) {
@@ -469,24 +493,8 @@ TEST_CASE("Sobol points: every pair of dimensions is a (0,2)-sequence in each po
                 ys[std::size_t(i)] =
                     std::uint32_t(owen_sobol(std::uint32_t(i), 2 * pair + 1, seed) * 0x1p24f);
             }
-            for (int m = 0; m <= 12; ++m) {
-                const int block = 1 << m;
-                bool all_ones = true;
-                for (int first = 0; first < kPoints; first += block) {
-                    for (int k = 0; k <= m; ++k) {
-                        std::vector<int> cells(std::size_t(block), 0);
-                        for (int i = first; i < first + block; ++i) {
-                            const std::uint32_t cx = xs[std::size_t(i)] >> (24 - k);
-                            const std::uint32_t cy = ys[std::size_t(i)] >> (24 - (m - k));
-                            ++cells[std::size_t((cy << k) | cx)];
-                        }
-                        all_ones =
-                            all_ones && std::all_of(cells.begin(), cells.end(), [](int c) { return c == 1; });
-                    }
-                }
-                INFO("seed " << seed << ", pair " << pair << ", blocks of 2^" << m);
-                CHECK(all_ones);
-            }
+            INFO("seed " << seed << ", pair " << pair);
+            CHECK(is_02_sequence(xs, ys));
         }
     }
     // Unscrambled: the van der Corput sequence and Sobol's second dimension, 0, 1/2, 1/4 (3/4 for y), …
@@ -533,16 +541,59 @@ TEST_CASE("Sobol points: uniform over pixels, pairs independent within one pixel
             },
             100000);
     }
-    // 65536 samples of one pixel: dimensions 1 and 2 belong to different pairs, whose shuffles make them
-    // independent; were they not shuffled, a pixel's (x₁, x₂) would lie on a few lines (1 test).
+    // 65536 samples of one pixel: a 1D draw and the next draw's first coordinate come from different pairs,
+    // whose shuffles make them independent; were they not shuffled, a pixel's points would lie on a few
+    // lines (1 test).
     test(
-        "dimensions 1 and 2 of one pixel",
+        "a 1D draw and the next draw of one pixel",
         [&](int i) {
             OwenSobolStream stream(42, std::uint32_t(i), 3);
-            stream.next_real();
-            return stream.next_vec2();
+            const Real first = stream.next_real();
+            return Vec2(first, stream.next_vec2().x);
         },
         65536);
+}
+
+TEST_CASE("Sobol points: each draw of a sample's stream is a (0,2)-sequence, after 1D draws too") {
+    // The path loop draws 1D numbers (which light, roulette) between its 2D ones (a point on a light, a
+    // direction). A 2D draw whose two coordinates came from two different pairs of dimensions would be
+    // stratified along each axis only, not in the square: each draw takes a pair of its own.
+    constexpr int kPoints = 4096;
+    std::vector<std::uint32_t> xs(kPoints), ys(kPoints), xs2(kPoints), ys2(kPoints);
+    for (int i = 0; i < kPoints; ++i) {
+        OwenSobolStream stream(9, std::uint32_t(i), 4);
+        stream.next_vec2();  // the camera ray's point in the pixel
+        stream.next_real();  // which light
+        const Vec2 light = stream.next_vec2();
+        stream.next_real();  // roulette
+        const Vec2 direction = stream.next_vec2();
+        xs[std::size_t(i)] = std::uint32_t(light.x * 0x1p24f);
+        ys[std::size_t(i)] = std::uint32_t(light.y * 0x1p24f);
+        xs2[std::size_t(i)] = std::uint32_t(direction.x * 0x1p24f);
+        ys2[std::size_t(i)] = std::uint32_t(direction.y * 0x1p24f);
+    }
+    CHECK(is_02_sequence(xs, ys));
+    CHECK(is_02_sequence(xs2, ys2));
+}
+
+TEST_CASE("Sobol points: the fast pair is the definitions' composition, bit for bit") {
+    // owen_sobol_pair cancels reversals and reads Sobol's second dimension bit-reversed; the numbers are
+    // those of the definitions: shuffle the index, take the two Sobol dimensions, scramble each.
+    for (std::uint64_t seed : {3ull, 0xdeadbeefcafeull}) {
+        for (std::uint32_t pair : {0u, 1u, 7u}) {
+            for (std::uint32_t index : {0u, 1u, 2u, 3u, 63u, 64u, 1000u, 123456u, 0xffffffffu}) {
+                Pcg32 seeds(seed, pair);
+                const std::uint32_t shuffled = nested_uniform_scramble(index, seeds.next_uint());
+                const std::uint32_t x = nested_uniform_scramble(sobol_bits(shuffled, 0), seeds.next_uint());
+                const std::uint32_t y = nested_uniform_scramble(sobol_bits(shuffled, 1), seeds.next_uint());
+                const Vec2 p = owen_sobol_pair(index, pair, seed);
+                CHECK(p.x == Real(x >> 8u) * Real(0x1.0p-24));
+                CHECK(p.y == Real(y >> 8u) * Real(0x1.0p-24));
+                CHECK(owen_sobol(index, 2 * pair, seed) == p.x);
+                CHECK(owen_sobol(index, 2 * pair + 1, seed) == p.y);
+            }
+        }
+    }
 }
 
 TEST_CASE("Sobol points are a pure function of (pixel, sample, dimension, seed)") {

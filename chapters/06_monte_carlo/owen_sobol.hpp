@@ -46,23 +46,15 @@ class OwenSobolStream {
     // scrambled sequence, of which this is point `sample`.
     OwenSobolStream(std::uint64_t pixel, std::uint32_t sample, std::uint64_t seed);
 
-    // A pair's two coordinates are made together: the second waits in `pending_`.
-    Real next_real() {
-        if (dimension_++ % 2 == 1) return pending_;
-        const Vec2 p = owen_sobol_pair(index_, dimension_ / 2, seed_);
-        pending_ = p.y;
-        return p.x;
-    }
-    Vec2 next_vec2() {
-        const Real u = next_real();
-        return {u, next_real()};
-    }
+    // Each draw takes a pair of dimensions of its own, so that a 2D draw (a direction, a point on a light)
+    // is a (0, 2)-sequence over the pixel's samples; a 1D draw keeps the pair's first coordinate.
+    Real next_real() { return owen_sobol(index_, 2 * pair_++, seed_); }
+    Vec2 next_vec2() { return owen_sobol_pair(index_, pair_++, seed_); }
 
   private:
     std::uint32_t index_;
-    std::uint32_t dimension_ = 0;
+    std::uint32_t pair_ = 0;
     std::uint64_t seed_;
-    Real pending_ = 0;
 };
 
 }  // namespace rt

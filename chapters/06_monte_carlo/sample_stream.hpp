@@ -33,6 +33,7 @@ class SampleStream {
 
     Real next_real() { return sobol_ ? sobol_->next_real() : rng_->next_real(); }
     Vec2 next_vec2() {
+        if (sobol_) return sobol_->next_vec2();
         const Real u = next_real();
         return {u, next_real()};
     }

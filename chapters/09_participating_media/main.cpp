@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
         add_sampling_flag(app, options.strategy, options.quad_lights);
+        add_sampler_flag(app, options.sampler);
         add_enum_option(app, walk.distance,
                         "Where light scattered along a medium's segments is looked for: " +
                             joined_names<DistanceSampling>());

@@ -1,12 +1,12 @@
-// Where the error of the glass Cornell box comes from, measured (not a test): `ch07_error_study` prints the
-// tables of chapter 06's lesson on it.
+// Where the error of a scene comes from, measured (not a test): `ch07_error_study` prints the tables of
+// chapter 06's lesson on it, for the glass Cornell box (cornell.json) or the scene --scene names.
 //  1. One render of --spp samples against a converged reference r = (A + B) / 2 (two halves, cached as PFM;
 //     its own noise mean((A − r)² / (r² + 0.01)) is subtracted): its relative MSE, the share of its squared
 //     error in the worst 1 % of pixels, its median pixel's error, and an error picture (--error-png).
 //  2. The same render's estimate split by the kind of path each term came from (path_parts.hpp: seen, next
-//     event, BSDF hit, caustic), each part's share of the image and of the estimator's variance,
-//     Σ Var[part] / (r² + 0.01) over every pixel and channel (the covariances between the parts are the
-//     rest), over all pixels and over the worst 1 %.
+//     event, BSDF hit, caustic), and by its length (bounces), each part's share of the image and of the
+//     estimator's variance, Σ Var[part] / (r² + 0.01) over every pixel and channel (the covariances between
+//     the parts are the rest), over all pixels and over the worst 1 %.
 //  3. The candidate causes, each a variant of the path loop's options, rendered in turn (alternating, the
 //     mean relative MSE and median seconds of --repeats, each with its own seed) at --spp, and the time to a
 //     relative MSE of --target, extrapolated with relMSE ∝ 1 / time.
@@ -79,17 +79,18 @@ struct Variant {
     PathOptions options;
 };
 
-void run(int size, int spp, int reference_spp, int threads, int repeats, double target,
-         const std::string& cache, const std::string& error_png);
+void run(const std::string& scene_name, int size, int spp, int reference_spp, int threads, int repeats,
+         double target, const std::string& cache, const std::string& error_png);
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("ch07_error_study: where the error of the glass Cornell box comes from", "ch07_error_study");
+    CLI::App app("ch07_error_study: where the error of a scene comes from", "ch07_error_study");
     app.option_defaults()->always_capture_default();
     int size = 150, spp = 256, reference_spp = 8192, threads = 2, repeats = 3;
     double target = 1e-3;
-    std::string cache = ".", error_png;
+    std::string scene = "cornell.json", cache = ".", error_png;
+    app.add_option("--scene", scene, "The scene, a file of assets/scenes");
     app.add_option("--size", size, "Width and height of the renders")->check(CLI::Range(8, 4096));
     app.add_option("--spp", spp, "Samples per pixel of the measured renders")->check(CLI::Range(2, 1 << 16));
     app.add_option("--reference-spp", reference_spp, "Samples per pixel of the reference (two halves)")
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
                    "Write the per-pixel relative squared error (false colour, log10 from 1e-5 to 10) there");
     CLI11_PARSE(app, argc, argv);
     try {
-        run(size, spp, reference_spp, threads, repeats, target, cache, error_png);
+        run(scene, size, spp, reference_spp, threads, repeats, target, cache, error_png);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ch07_error_study: %s\n", e.what());
         return 1;
@@ -121,18 +122,21 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     settings.samples_per_pixel = spp;
     settings.seed = 7;
-    // Layers beside the image: L², then each part and its square.
-    std::array<PixelSums, 1 + 2 * kPathPartCount> layers;
+    // Layers beside the image: L², then each part (the kinds, then the lengths) and its square.
+    constexpr std::size_t kParts = kPathPartCount + kPathLengthCount;
+    std::array<PixelSums, 1 + 2 * kParts> layers;
     const RenderResult split =
         render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
             PathParts parts;
             const Ray ray = camera_ray_of(camera, PixelSampler::kStratified, s, spp, rng, rays);
             const Color L = finite_or_black(tracer.radiance(ray, rng, rays, &parts));
-            std::array<Color, 2 + 2 * kPathPartCount> out;
+            std::array<Color, 2 + 2 * kParts> out;
             out[0] = L;
             out[1] = L * L;
-            for (std::size_t k = 0; k < kPathPartCount; ++k) {
-                const Color p = is_finite(L) ? parts.parts[k] : Color(0);
+            for (std::size_t k = 0; k < kParts; ++k) {
+                const Color p = !is_finite(L)        ? Color(0)
+                                : k < kPathPartCount ? parts.parts[k]
+                                                     : parts.lengths[k - kPathPartCount];
                 out[2 + 2 * k] = p;
                 out[3 + 2 * k] = p * p;
             }
@@ -165,11 +169,11 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
     double v_all = 0, v_worst = 0;
     for (std::size_t i = 0; i < errors.size(); ++i) v_all += relative(variance, r, i);
     for (std::size_t i : worst) v_worst += relative(variance, r, i);
-    std::printf("%-12s %12s %16s %16s\n", "path kind", "of image", "of variance", "of variance in worst 1 %");
     double mean_all = 0;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) mean_all += double(luminance(split.image.at(x, y)));
-    for (std::size_t k = 0; k < kPathPartCount; ++k) {
+    // One row per part: its share of the image, of the variance, of the variance in the worst 1 %.
+    const auto row = [&](const std::string& name, std::size_t k) {
         const Image part = layers[1 + 2 * k].mean_image();
         const Image part_variance = variance_image(layers[1 + 2 * k], layers[2 + 2 * k]);
         double mean = 0, v = 0, vw = 0;
@@ -177,23 +181,26 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
             for (int x = 0; x < size; ++x) mean += double(luminance(part.at(x, y)));
         for (std::size_t i = 0; i < errors.size(); ++i) v += relative(part_variance, r, i);
         for (std::size_t i : worst) vw += relative(part_variance, r, i);
-        std::printf("%-12s %11.1f %% %15.1f %% %15.1f %%\n", to_string(PathPart(k)), 100 * mean / mean_all,
+        std::printf("%-12s %11.1f %% %15.1f %% %15.1f %%\n", name.c_str(), 100 * mean / mean_all,
                     100 * v / v_all, 100 * vw / v_worst);
-    }
+    };
+    std::printf("%-12s %12s %16s %16s\n", "path kind", "of image", "of variance", "of variance in worst 1 %");
+    for (std::size_t k = 0; k < kPathPartCount; ++k) row(to_string(PathPart(k)), k);
+    std::printf("%-12s %12s %16s %16s\n", "bounces", "of image", "of variance", "of variance in worst 1 %");
+    for (std::size_t k = 0; k < kPathLengthCount; ++k)
+        row(std::to_string(k) + (k + 1 == kPathLengthCount ? " or more" : ""), kPathPartCount + k);
 }
 
-void run(int size, int spp, int reference_spp, int threads, int repeats, double target,
-         const std::string& cache, const std::string& error_png) {
-    GlassBoxBenchmark box(size, threads, reference_spp, cache);
+void run(const std::string& scene_name, int size, int spp, int reference_spp, int threads, int repeats,
+         double target, const std::string& cache, const std::string& error_png) {
+    SceneBenchmark box(size, threads, reference_spp, cache, scene_name);
     const Scene& scene = box.scene;
     const EffectSet simulated = box.simulated;
     RenderSettings& settings = box.settings;
     const Image& r = box.reference.image;
     const double noise = box.reference.noise;  // A − r = (A − B) / 2: the mean's own noise
-    std::printf(
-        "ch07_error_study: cornell.json %dx%d, %d spp, %d threads; reference %d spp (its relative MSE "
-        "%.2e)\n",
-        size, size, spp, threads, reference_spp, noise);
+    std::printf("ch07_error_study: %s %dx%d, %d spp, %d threads; reference %d spp (its relative MSE %.2e)\n",
+                scene_name.c_str(), size, size, spp, threads, reference_spp, noise);
 
     // 1 and 2: one render, its estimate split by path kind.
     const RenderScene prepared(scene, simulated, refraction_materials());

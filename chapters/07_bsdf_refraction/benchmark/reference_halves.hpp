@@ -29,19 +29,21 @@ inline Image cached_half(Renderer renderer, const Scene& scene, RenderSettings s
     return image;
 }
 
-// The converged reference r = (A + B) / 2 of the glass Cornell box's two cached halves at the settings' size
-// (chapter 07's paths, seeds 1001 and 1002, `spp` in all, files ch07_reference_cornell_N_SPPspp_a.pfm and
-// _b.pfm in `cache`), and its own noise: the relative MSE of A against r, since A − r = (A − B) / 2.
+// The converged reference r = (A + B) / 2 of a scene's two cached halves at the settings' size (chapter 07's
+// paths, seeds 1001 and 1002, `spp` in all, files ch07_reference_STEM_N_SPPspp_a.pfm and _b.pfm in `cache`,
+// STEM the scene file's name without .json), and its own noise: the relative MSE of A against r, since
+// A − r = (A − B) / 2.
 struct ConvergedReference {
     Image image;
     double noise = 0;
 };
-inline ConvergedReference cornell_reference(const Scene& scene, const RenderSettings& settings, int spp,
-                                            const std::filesystem::path& cache) {
-    const std::string stem = "ch07_reference_cornell_" + std::to_string(settings.width) + "_" +
-                             std::to_string(spp) + "spp";
-    const Image a = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1001, cache / (stem + "_a.pfm"));
-    const Image b = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1002, cache / (stem + "_b.pfm"));
+inline ConvergedReference scene_reference(const Scene& scene, const std::string& stem,
+                                          const RenderSettings& settings, int spp,
+                                          const std::filesystem::path& cache) {
+    const std::string name =
+        "ch07_reference_" + stem + "_" + std::to_string(settings.width) + "_" + std::to_string(spp) + "spp";
+    const Image a = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1001, cache / (name + "_a.pfm"));
+    const Image b = cached_half(Renderer::kPaths, scene, settings, spp / 2, 1002, cache / (name + "_b.pfm"));
     ConvergedReference r{Image(settings.width, settings.height)};
     for (std::size_t p = 0; p < r.image.pixels().size(); ++p)
         r.image.pixels()[p] = (a.pixels()[p] + b.pixels()[p]) * Real(0.5);
@@ -49,19 +51,24 @@ inline ConvergedReference cornell_reference(const Scene& scene, const RenderSett
     return r;
 }
 
-// The glass Cornell box (cornell.json) as chapter 07's error study and chapter 08's time to error measure it:
-// every effect it needs simulated, `size`×`size` pixels on `threads` threads without a progress bar, and its
-// converged reference of `reference_spp` samples from the cache.
-struct GlassBoxBenchmark {
-    Scene scene = load_scene(scene_path("cornell.json"));
+// A scene of assets/scenes (the glass Cornell box, cornell.json, unless named) as chapter 07's error study
+// and chapter 08's time to error measure it: every effect it needs simulated, `size`×`size` pixels on
+// `threads` threads without a progress bar, and its converged reference of `reference_spp` samples from the
+// cache.
+struct SceneBenchmark {
+    std::string name;
+    Scene scene;
     EffectSet simulated = needed(scene) & EffectSet::all();
     RenderSettings settings;
     ConvergedReference reference;
-    GlassBoxBenchmark(int size, int threads, int reference_spp, const std::filesystem::path& cache) {
+    SceneBenchmark(int size, int threads, int reference_spp, const std::filesystem::path& cache,
+                   const std::string& scene_name = "cornell.json")
+        : name(scene_name), scene(load_scene(scene_path(scene_name.c_str()))) {
         settings.width = settings.height = size;
         settings.threads = threads;
         settings.progress = ProgressStyle::kNone;
-        reference = cornell_reference(scene, settings, reference_spp, cache);
+        reference = scene_reference(scene, std::filesystem::path(scene_name).stem().string(), settings,
+                                    reference_spp, cache);
     }
 };
 

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
 
     try {
-        GlassBoxBenchmark box(size, threads, reference_spp, cache);
+        SceneBenchmark box(size, threads, reference_spp, cache);
         const Scene& scene = box.scene;
         const EffectSet simulated = box.simulated;
         RenderSettings& settings = box.settings;
