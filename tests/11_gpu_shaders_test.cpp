@@ -270,9 +270,12 @@ struct Agreement {
     double mean_gpu, mean_cpu;  // of that one seed's images
 };
 
+// The shader draws chapter 06's stratified Pcg32 numbers, so the CPU renders with --sampler stratified.
 Image cpu_image(const Scene& scene, RenderSettings settings, std::uint64_t seed) {
     settings.seed = seed;
-    return render_with(Renderer::kPaths, scene, needed(scene), settings).image;
+    PathOptions options;
+    options.sampler = PointSet::kStratified;
+    return render_with(Renderer::kPaths, scene, needed(scene), settings, options).image;
 }
 
 // The scene at 48×48 pixels, 64 spp, with chapter 07's path renderer on the CPU (seeds 1, 2, 3) and with

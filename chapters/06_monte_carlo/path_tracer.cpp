@@ -46,7 +46,11 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, S
 }
 
 bool PathTracer::roulette(int depth, Color& beta, Real eta_scale, SampleStream rng) const {
-    return continue_path(options_.termination, depth, beta, rng.next_real(), eta_scale);
+    // A number is drawn only from the bounce where Russian roulette starts (a Sobol draw costs a pair's
+    // hashes): before it, and under the depth and throughput rules, q is 0 or 1, and u = 0 decides the same.
+    const TerminationSettings& rule = options_.termination;
+    const bool by_chance = rule.rule == Termination::kRussianRoulette && depth >= rule.roulette_start_depth;
+    return continue_path(rule, depth, beta, by_chance ? rng.next_real() : Real(0), eta_scale);
 }
 
 Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays,

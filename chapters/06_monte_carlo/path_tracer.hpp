@@ -45,7 +45,7 @@ struct PathOptions : TraceOptions {
     // Chapter 05's Russian roulette from bounce 3, under its safety cap of 64 bounces (a cap, not a bias).
     TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
     // Where a sample's numbers come from (sample_stream.hpp; render_paths reads it).
-    PointSet sampler = PointSet::kStratified;
+    PointSet sampler = PointSet::kSobol;
 };
 
 // The vertex a ray left, as the MIS weight of the light it meets needs it.
@@ -160,7 +160,8 @@ Color PathTracer::next_event(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, S
     const Vec3& n = hit.shading_normal;
     Color sum(0);
     if (!picker_.empty()) {
-        const Real u_pick = rng.next_real();
+        // With one light there is nothing to choose, and no number to draw.
+        const Real u_pick = picker_.light_count() > 1 ? rng.next_real() : Real(0);
         const Vec2 u = rng.next_vec2();
         if (const auto s = picker_.sample(hit.point, u_pick, u)) {
             const Real dot_i = glm::dot(s->wi, n);

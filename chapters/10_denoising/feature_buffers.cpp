@@ -3,6 +3,7 @@
 #include "01_ray_generation/camera.hpp"
 #include "01_ray_generation/camera_render.hpp"
 #include "04_direct_lighting/render_scene.hpp"
+#include "06_monte_carlo/render_paths.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "path_features.hpp"
 
@@ -12,17 +13,21 @@ FeatureRender render_features(const Scene& scene, const RenderSettings& settings
     const RenderScene prepared(scene, options.simulated, media_materials());
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
     const VolumePathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
-    const int count = settings.samples_per_pixel;
     // Layers beside the image: L², albedo, albedo², normal, normal², depth, depth².
     std::array<PixelSums, 7> layers;
     FeatureRender out;
-    out.result = render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
-        PathFeatures f;
-        const Color L = finite_or_black(tracer.radiance(
-            camera_ray_of(camera, PixelSampler::kStratified, s, count, rng, rays), rng, rays, &f));
-        const Color n(f.normal), d(f.depth);
-        return std::array<Color, 8>{L, L * L, f.albedo, f.albedo * f.albedo, n, n * n, d, d * d};
-    });
+    out.result =
+        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& sample_rng, RayCounts& counts) {
+            PathFeatures f;
+            // The sample chapter 06's render_paths would trace: the noisy image is chapter 09's, to the bit.
+            const Color L =
+                finite_or_black(trace_camera_sample(options.sampler, camera, settings, s, sample_rng, counts,
+                                                    [&](const Ray& ray, SampleStream rng, RayCounts& rays) {
+                                                        return tracer.radiance(ray, rng, rays, &f);
+                                                    }));
+            const Color n(f.normal), d(f.depth);
+            return std::array<Color, 8>{L, L * L, f.albedo, f.albedo * f.albedo, n, n * n, d, d * d};
+        });
     FeatureBuffers& b = out.buffers;
     b.colour = out.result.image;
     b.colour_variance = variance_image(out.result.sums, layers[0]);

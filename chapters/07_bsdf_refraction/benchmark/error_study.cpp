@@ -24,6 +24,7 @@
 #include "01_ray_generation/camera_render.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
+#include "06_monte_carlo/render_paths.hpp"
 #include "bsdf_render.hpp"
 #include "path_parts.hpp"
 #include "reference_halves.hpp"
@@ -126,10 +127,13 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
     constexpr std::size_t kParts = kPathPartCount + kPathLengthCount;
     std::array<PixelSums, 1 + 2 * kParts> layers;
     const RenderResult split =
-        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& sample_rng, RayCounts& counts) {
             PathParts parts;
-            const Ray ray = camera_ray_of(camera, PixelSampler::kStratified, s, spp, rng, rays);
-            const Color L = finite_or_black(tracer.radiance(ray, rng, rays, &parts));
+            const Color L =
+                finite_or_black(trace_camera_sample(options.sampler, camera, settings, s, sample_rng, counts,
+                                                    [&](const Ray& ray, SampleStream rng, RayCounts& rays) {
+                                                        return tracer.radiance(ray, rng, rays, &parts);
+                                                    }));
             std::array<Color, 2 + 2 * kParts> out;
             out[0] = L;
             out[1] = L * L;

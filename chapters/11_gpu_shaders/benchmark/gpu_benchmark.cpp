@@ -43,9 +43,13 @@ Rates measure(const GlContext& gl, const Scene& scene, const EffectSet& simulate
     // One round unmeasured: the driver's compile, the caches.
     compute.render(settings);
     fragment.render(settings);
+    // The CPU traces the shader's paths: its stratified Pcg32 numbers.
+    PathOptions stratified;
+    stratified.sampler = PointSet::kStratified;
     Rates rates;
     for (int round = 0; round < rounds; ++round) {
-        rates.cpu.push_back(samples_per_second(render_with(Renderer::kPaths, scene, simulated, settings)));
+        rates.cpu.push_back(
+            samples_per_second(render_with(Renderer::kPaths, scene, simulated, settings, stratified)));
         rates.compute.push_back(samples_per_second(compute.render(settings)));
         rates.fragment.push_back(samples_per_second(fragment.render(settings)));
     }

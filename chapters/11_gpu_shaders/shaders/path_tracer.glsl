@@ -56,7 +56,7 @@ vec3 next_event(Hit hit, vec3 wo, Material m, inout Pcg32 rng) {
     const vec3 n = hit.normal;
     vec3 sum = vec3(0.0);
     if (light_count > 0u) {
-        const float u_pick = pcg_next_real(rng);
+        const float u_pick = light_count > 1u ? pcg_next_real(rng) : 0.0;  // one light: nothing to choose
         const vec2 u = pcg_next_vec2(rng);
         LightSample s;
         if (sample_light(hit.point, u_pick, u, s)) {
@@ -162,7 +162,8 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
         previous_pdf = delta ? kInfinity : s.pdf;
         previous_point = hit.point;
         previous_normal = n;
-        if (!continue_path(depth + 1, beta, pcg_next_real(rng), eta_scale)) break;
+        // Chapter 06's roulette step: a number is drawn only from bounce 3, where roulette starts.
+        if (!continue_path(depth + 1, beta, depth + 1 >= 3 ? pcg_next_real(rng) : 0.0, eta_scale)) break;
         ray = spawn_ray(hit, s.wi);
         ++rays_traced[s.transmitted ? kRefractionRay : is_diffuse(m) ? kIndirectRay : kReflectionRay];
     }
