@@ -345,7 +345,7 @@ mkdir -p "$cache"
 if have 06_monte_carlo ch06_monte_carlo; then
     log "chapter 06: convergence of every sampling strategy"
     if [ "$quick" = 1 ]; then side=64; max_spp=64; reference_spp=1024; else side=100; max_spp=1024; reference_spp=8192; fi
-    (cd "$out" && "$(exe 06_monte_carlo ch06_monte_carlo)" --converge --quiet --width $side --height $side \
+    (cd "$out" && "$(exe 06_monte_carlo ch06_monte_carlo)" --converge --sampler stratified --quiet --width $side --height $side \
         --max-spp $max_spp --reference-spp $reference_spp --cache "$cache" --csv ch06_convergence.csv > ch06_convergence.txt)
     (cd "$out" && "$(exe 06_monte_carlo ch06_monte_carlo)" --quiet --width 200 --height 200 --out ch06.png > /dev/null)
     ch06_reference=$cache/ch06_reference_ch06_default_${side}x${side}_${reference_spp}spp.pfm

@@ -216,14 +216,15 @@ void run(const std::string& scene_name, int size, int spp, int reference_spp, in
     // 3. The candidate causes.
     settings.samples_per_pixel = spp;
     std::vector<Variant> variants;
-    variants.push_back({"default", options});
+    variants.push_back({"default (sampler sobol)", options});
     for (int start : {1, 5, 8}) {
         Variant v{nullptr, options};
         v.options.termination.roulette_start_depth = start;
         variants.push_back(v);
     }
-    for (PointSet points : {PointSet::kIndependent, PointSet::kSobol}) {
-        Variant v{points == PointSet::kSobol ? "sampler sobol" : "sampler independent", options};
+    // Every sampler but the default (Sobol).
+    for (PointSet points : {PointSet::kIndependent, PointSet::kStratified}) {
+        Variant v{points == PointSet::kStratified ? "sampler stratified" : "sampler independent", options};
         v.options.sampler = points;
         variants.push_back(v);
     }
