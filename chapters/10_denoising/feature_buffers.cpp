@@ -16,18 +16,13 @@ FeatureRender render_features(const Scene& scene, const RenderSettings& settings
     // Layers beside the image: L², albedo, albedo², normal, normal², depth, depth².
     std::array<PixelSums, 7> layers;
     FeatureRender out;
-    out.result =
-        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& sample_rng, RayCounts& counts) {
-            PathFeatures f;
-            // The sample chapter 06's render_paths would trace: the noisy image is chapter 09's, to the bit.
-            const Color L =
-                finite_or_black(trace_camera_sample(options.sampler, camera, settings, s, sample_rng, counts,
-                                                    [&](const Ray& ray, SampleStream rng, RayCounts& rays) {
-                                                        return tracer.radiance(ray, rng, rays, &f);
-                                                    }));
-            const Color n(f.normal), d(f.depth);
-            return std::array<Color, 8>{L, L * L, f.albedo, f.albedo * f.albedo, n, n * n, d, d * d};
-        });
+    out.result = render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        PathFeatures f;
+        // The sample chapter 06's render_paths would trace: the noisy image is chapter 09's, to the bit.
+        const Color L = sample_radiance(tracer, camera, settings, s, rng, rays, &f);
+        const Color n(f.normal), d(f.depth);
+        return std::array<Color, 8>{L, L * L, f.albedo, f.albedo * f.albedo, n, n * n, d, d * d};
+    });
     FeatureBuffers& b = out.buffers;
     b.colour = out.result.image;
     b.colour_variance = variance_image(out.result.sums, layers[0]);

@@ -127,13 +127,9 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
     constexpr std::size_t kParts = kPathPartCount + kPathLengthCount;
     std::array<PixelSums, 1 + 2 * kParts> layers;
     const RenderResult split =
-        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& sample_rng, RayCounts& counts) {
+        render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
             PathParts parts;
-            const Color L =
-                finite_or_black(trace_camera_sample(options.sampler, camera, settings, s, sample_rng, counts,
-                                                    [&](const Ray& ray, SampleStream rng, RayCounts& rays) {
-                                                        return tracer.radiance(ray, rng, rays, &parts);
-                                                    }));
+            const Color L = sample_radiance(tracer, camera, settings, s, rng, rays, &parts);
             std::array<Color, 2 + 2 * kParts> out;
             out[0] = L;
             out[1] = L * L;
