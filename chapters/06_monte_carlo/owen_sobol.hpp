@@ -24,7 +24,13 @@
 namespace rt {
 
 // Each bit of x mirrored: bit b goes to bit 31 − b.
-std::uint32_t reverse_bits(std::uint32_t x);
+constexpr std::uint32_t reverse_bits(std::uint32_t x) {
+    x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
+    x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
+    x = ((x >> 4u) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4u);
+    x = ((x >> 8u) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8u);
+    return (x >> 16u) | (x << 16u);
+}
 // Laine and Karras's hash: each output bit depends on the input bits at and below it only.
 std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t seed);
 // An Owen scramble of a 32-bit fraction (bit 31 the first digit): reverse, permute, reverse.
