@@ -1,9 +1,10 @@
 // Where the path loop's random numbers come from: a sample's stream of uniform numbers in [0, 1), each draw
-// the next dimension of the sample. The loop draws through this one interface (next_real, next_vec2) from
+// the next dimensions of the sample. The loop draws through this one interface (next_real, next_vec2) from
 //   independent: chapter 01's Pcg32 stream of the (pixel, sample, seed), the camera ray through a uniform
 //                point of the pixel;
-//   stratified:  the same, the camera ray through the sample's stratum of the pixel (the course's default);
-//   sobol:       the Owen-scrambled Sobol sequence of the pixel (owen_sobol.hpp), point `sample` of it.
+//   stratified:  the same, the camera ray through the sample's stratum of the pixel;
+//   sobol:       the Owen-scrambled Sobol sequence of the pixel (owen_sobol.hpp), point `sample` of it, each
+//                draw a pair of its dimensions (the default).
 // Every stream is a pure function of (pixel, sample, seed), so an image is the same for any thread count.
 // Numbers that are handed to a generator rather than drawn here (generator(): code that takes a Pcg32) come
 // from the sample's Pcg32 in every case.
