@@ -130,11 +130,15 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
         render_layers(settings, layers, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
             PathParts parts;
             const Color L = sample_radiance(tracer, camera, settings, s, rng, rays, &parts);
+            // A path whose estimate was not finite counts as black (sample_radiance): so do its parts.
+            Color estimate(0);
+            for (const Color& p : parts.parts) estimate += p;
+            const bool dropped = !is_finite(estimate);
             std::array<Color, 2 + 2 * kParts> out;
             out[0] = L;
             out[1] = L * L;
             for (std::size_t k = 0; k < kParts; ++k) {
-                const Color p = !is_finite(L)        ? Color(0)
+                const Color p = dropped              ? Color(0)
                                 : k < kPathPartCount ? parts.parts[k]
                                                      : parts.lengths[k - kPathPartCount];
                 out[2 + 2 * k] = p;

@@ -56,14 +56,13 @@ inline ConvergedReference scene_reference(const Scene& scene, const std::string&
 // `threads` threads without a progress bar, and its converged reference of `reference_spp` samples from the
 // cache.
 struct SceneBenchmark {
-    std::string name;
     Scene scene;
     EffectSet simulated = needed(scene) & EffectSet::all();
     RenderSettings settings;
     ConvergedReference reference;
     SceneBenchmark(int size, int threads, int reference_spp, const std::filesystem::path& cache,
                    const std::string& scene_name = "cornell.json")
-        : name(scene_name), scene(load_scene(scene_path(scene_name.c_str()))) {
+        : scene(load_scene(scene_path(scene_name.c_str()))) {
         settings.width = settings.height = size;
         settings.threads = threads;
         settings.progress = ProgressStyle::kNone;
