@@ -19,12 +19,14 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "08_forward_tracing/combined_render.hpp"
 #include "09_participating_media/equiangular.hpp"
 #include "09_participating_media/henyey_greenstein.hpp"
 #include "09_participating_media/homogeneous_medium.hpp"
 #include "09_participating_media/media_materials.hpp"
 #include "09_participating_media/media_notes.hpp"
 #include "09_participating_media/media_scenes.hpp"
+#include "09_participating_media/tracer_choice.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "rt/core/effects.hpp"
 #include "rt/core/errors.hpp"
@@ -765,6 +767,58 @@ TEST_CASE("Without media the volumetric loop is chapter 06's to the bit, and the
     REQUIRE(options.simulated.contains(Effect::kMedia));
     CHECK(media_notes(fog, Renderer::kPaths, options, {}).front() ==
           "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)");
+}
+
+TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirrors or glass cast caustics, "
+          "paths elsewhere, and the summary says why",
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+    const RenderSettings settings = small_render(16, 4, 9);
+    // Why a scene gets the tracer it gets (the summary's first line ends with it).
+    const auto because = [&](const Scene& scene) {
+        const TracerChoice choice =
+            choose_tracer(TracerRule::kAuto, {scene, settings, simulated_effects(scene, kMediaChapterEffects)});
+        return std::string(choice.combined ? "combined: " : "paths: ") + choice.because;
+    };
+    const std::string caustics = "mirrors or smooth glass lit by area or point lights: light paths find the "
+                                 "caustics the camera sees (chapter 08)";
+    CHECK(because(load_scene(scene_path("ch08_mirror.json"))) == "combined: " + caustics);
+    CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
+          "paths: no mirror or smooth glass: no caustic for light paths to find");
+    CHECK(because(load_scene(scene_path("ch09_default.json"))) ==
+          "paths: light paths cross no medium (chapter 08)");
+
+    // The glass box: the image is the combined tracer's, to the bit, and chapter 08's summary follows.
+    Scene glass = load_scene(scene_path("cornell.json"));
+    const EffectSet simulated = simulated_effects(glass, kMediaChapterEffects);
+    const ChapterRun chosen = render_by_choice(TracerRule::kAuto, {glass, settings, simulated}, {}, {});
+    CHECK(chosen.notes.front() == "strategy: combined, because " + caustics);
+    CHECK(chosen.notes.at(1).starts_with("tracer: combined; chapter 06's paths (sampler sobol"));
+    CombinedOptions options;
+    const CombinedResult direct = render_combined(glass, simulated, settings, options);
+    REQUIRE(direct.split);
+    CHECK(chosen.result.image.pixels() == direct.render.image.pixels());
+    CHECK(chosen.result.rays.total() == direct.render.rays.total());
+    // --tracer paths: chapter 07's render, as before the choice.
+    const ChapterRun paths = render_by_choice(TracerRule::kPaths, {glass, settings, simulated}, {}, {});
+    CHECK(paths.notes.front() == "strategy: paths, because --tracer paths asks for them");
+    PathOptions path_options;
+    path_options.simulated = simulated;
+    CHECK(paths.result.image.pixels() ==
+          render_with_media(Renderer::kPaths, glass, simulated, settings, path_options).image.pixels());
+    // A piece of a split render is refused before it renders: it would not merge into the whole's bits.
+    RenderSettings piece = settings;
+    piece.samples = SampleRange{0, 2};
+    CHECK_THROWS_WITH(render_by_choice(TracerRule::kAuto, {glass, piece, simulated}, {}, {}),
+                      Catch::Contains("--samples (or MPI ranks): this scene's caustics are rendered by the "
+                                      "combined tracer, which renders whole; --tracer paths renders in pieces"));
+    CHECK(render_by_choice(TracerRule::kPaths, {glass, piece, simulated}, {}, {}).result.image.all_finite());
+    // A lens: light paths reach a pinhole, which would change the picture.
+    glass.camera.aperture = 5;
+    CHECK(because(glass) == "paths: light paths reach a pinhole, and this camera has a lens");
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -20,6 +20,7 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "09_participating_media/media_materials.hpp"
+#include "09_participating_media/tracer_choice.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "rt/core/conductor_presets.hpp"
 #include "rt/core/effects.hpp"
@@ -64,7 +65,8 @@ const std::vector<Chapter>& chapters() {
          }},
         {"ch09", kMediaChapterEffects,
          [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
-             return render_with_media(choose_renderer(simulated), scene, simulated, settings).image;
+             // As the executable renders: the tracer it chooses for the scene (tracer_choice.hpp).
+             return render_by_choice(TracerRule::kAuto, {scene, settings, simulated}, {}, {}).result.image;
          }},
     };
     return list;

@@ -4,20 +4,21 @@
 // scattering); `--distance-sampling` adds equiangular points toward the lights (alone or by MIS).
 // `--walk-study` measures walk lengths against the mean free path and the albedo, `--knob-study` the error
 // and time of a cap on scattering events and of Russian roulette in the medium, `--free-flight-study`
-// spectral MIS against the naive per-channel density.
+// spectral MIS against the naive per-channel density. As the course's most complete renderer it renders a
+// scene whose mirrors or glass cast caustics by chapter 08's combined tracer (`--tracer`, tracer_choice.hpp).
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "media_materials.hpp"
-#include "media_notes.hpp"
 #include "media_studies.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/run/app.hpp"
-#include "volume_path_tracer.hpp"
+#include "tracer_choice.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
     MediumWalk walk;
     bool no_roulette = false;
     PathOptions options;
+    TracerRule tracer = TracerRule::kAuto;
     MediaStudies studies;
     const ChapterInfo chapter{
         "ch09_participating_media",
@@ -35,6 +36,9 @@ int main(int argc, char** argv) {
         add_enum_option(app, walk.distance,
                         "Where light scattered along a medium's segments is looked for: " +
                             joined_names<DistanceSampling>());
+        add_enum_option(app, tracer,
+                        "auto: the strategy that pays on the scene (chapter 08's combined tracer where mirrors "
+                        "or glass cast caustics), or paths always: " + joined_names<TracerRule>());
         add_media_study_flags(app, studies);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
@@ -44,10 +48,7 @@ int main(int argc, char** argv) {
             run_media_study(studies, context.scene, context.settings, options);
             return std::nullopt;
         }
-        const Renderer renderer = choose_renderer(context.simulated);
-        return ChapterRun{
-            render_with_media(renderer, context.scene, context.simulated, context.settings, options, walk),
-            media_notes(context.scene, renderer, options, walk), std::nullopt};
+        return render_by_choice(tracer, context, options, walk);
     };
     return run_chapter(argc, argv, chapter, flags, render);
 }

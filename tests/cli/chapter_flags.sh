@@ -22,6 +22,11 @@ check "$ch08" "usage: --aperture: $real, got \"inf\" (see --help)" "${small[@]}"
 check "$ch08" "usage: --aperture: $real, got \"1e309\" (see --help)" "${small[@]}" --variant aperture --aperture 1e309
 check "$ch09" "usage: --distance-sampling: foo not in {free-flight,equiangular,mis} (see --help)" "${small[@]}" \
     --distance-sampling foo
+check "$ch09" "usage: --tracer: combined not in {auto,paths} (see --help)" "${small[@]}" --tracer combined
+# Chapter 09 renders a scene whose glass casts caustics by the combined tracer, which renders whole: a piece
+# of it is refused before anything renders (--tracer paths renders in pieces).
+check "$ch09" "--samples (or MPI ranks): this scene's caustics are rendered by the combined tracer, which renders whole; --tracer paths renders in pieces" \
+    "${small[@]}" --scene cornell.json --samples 0:1 --out out.png
 # Chapter 04's --quad-lights, which chapters 06 to 09 take too, names one of its two strategies.
 for exe in "$ch04" "$ch06" "$ch07" "$ch08" "$ch09"; do
     check "$exe" "usage: --quad-lights: spherical not in {area,solid-angle} (see --help)" "${small[@]}" --quad-lights spherical
