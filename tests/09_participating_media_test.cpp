@@ -788,8 +788,21 @@ TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirror
     CHECK(because(load_scene(scene_path("ch08_mirror.json"))) == "combined: " + caustics);
     CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
           "paths: no mirror or smooth glass: no caustic for light paths to find");
-    CHECK(because(load_scene(scene_path("ch09_default.json"))) ==
-          "paths: light paths cross no medium (chapter 08)");
+    // In a medium, Cycles' volume sampling, where the flags leave it open.
+    const Scene fog = load_scene(scene_path("ch09_thin_fog.json"));
+    CHECK(because(fog) == "paths: light paths cross no medium (chapter 08); in the medium, equiangular points "
+                          "by MIS and quad lights by solid angle, as Cycles samples volumes");
+    const RunContext fog_run{fog, settings, simulated_effects(fog, kMediaChapterEffects)};
+    const TracerChoice chosen_for_fog = choose_tracer(TracerRule::kAuto, fog_run);
+    CHECK(chosen_for_fog.distance == DistanceSampling::kMis);
+    CHECK(chosen_for_fog.quad_lights == QuadLightSampling::kSolidAngle);
+    const TracerChoice kept = choose_tracer(TracerRule::kAuto, fog_run, {.distance_sampling = true});
+    CHECK_FALSE(kept.distance);
+    CHECK(kept.because == "light paths cross no medium (chapter 08); in the medium, quad lights by solid angle, "
+                          "as Cycles samples volumes");
+    const TracerChoice as_given = choose_tracer(TracerRule::kPaths, fog_run);
+    CHECK_FALSE(as_given.distance);
+    CHECK_FALSE(as_given.quad_lights);
 
     // The glass box: the image is the combined tracer's, to the bit, and chapter 08's summary follows.
     Scene glass = load_scene(scene_path("cornell.json"));

@@ -12,7 +12,6 @@
 #pragma once
 
 #include "rt/core/math.hpp"
-#include "rt/core/random.hpp"
 
 namespace rt {
 
@@ -58,11 +57,11 @@ class Medium {
     virtual Color transmittance(Real distance) const = 0;
     // The phase function of its scattering events; null for a medium that only absorbs.
     virtual const PhaseFunction* phase() const { return nullptr; }
-    // `channel` (0, 1, 2: red, green, blue) is the one colour channel whose density draws the distance,
-    // chosen once per path (a medium of the same σ_t in every channel draws the same either way). A medium
-    // that only absorbs: the flight always reaches t_max, weighted by T(t_max), and draws no random number
-    // (so chapter 07's images do not depend on this hook).
-    virtual FreeFlight sample_free_flight(Real t_max, int /*channel*/, Pcg32&) const {
+    // `channel` (0, 1, 2: red, green, blue) is the one colour channel whose density draws the distance from
+    // the uniform number u, chosen once per path (a medium of the same σ_t in every channel draws the same
+    // either way). A medium that only absorbs: the flight always reaches t_max, weighted by T(t_max); the
+    // path loop draws no u for it (so chapter 07's images do not depend on this hook).
+    virtual FreeFlight sample_free_flight(Real t_max, int /*channel*/, Real /*u*/) const {
         return {false, t_max, transmittance(t_max), Color(1)};
     }
 };

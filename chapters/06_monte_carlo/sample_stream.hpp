@@ -6,8 +6,6 @@
 //   sobol:       the Owen-scrambled Sobol sequence of the pixel (owen_sobol.hpp), point `sample` of it, each
 //                draw a pair of its dimensions (the default).
 // Every stream is a pure function of (pixel, sample, seed), so an image is the same for any thread count.
-// Numbers that are handed to a generator rather than drawn here (generator(): code that takes a Pcg32) come
-// from the sample's Pcg32 in every case.
 #pragma once
 
 #include "owen_sobol.hpp"
@@ -38,8 +36,6 @@ class SampleStream {
         const Real u = next_real();
         return {u, next_real()};
     }
-    // The sample's generator, for code that takes one.
-    Pcg32& generator() { return *rng_; }
 
   private:
     OwenSobolStream* sobol_ = nullptr;

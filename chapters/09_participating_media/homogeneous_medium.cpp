@@ -33,8 +33,8 @@ Color HomogeneousMedium::transmittance(Real distance) const {
     // END EXERCISE
 }
 
-FreeFlight HomogeneousMedium::sample_free_flight(Real t_max, int channel, Pcg32& rng) const {
-    return rt::sample_free_flight(sigma_t, sigma_s, t_max, channel, rng.next_real());
+FreeFlight HomogeneousMedium::sample_free_flight(Real t_max, int channel, Real u) const {
+    return rt::sample_free_flight(sigma_t, sigma_s, t_max, channel, u);
 }
 
 }  // namespace rt

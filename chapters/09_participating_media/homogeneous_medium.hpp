@@ -33,7 +33,7 @@ class HomogeneousMedium final : public Medium {
     explicit HomogeneousMedium(const MediumDesc& desc);
     Color transmittance(Real distance) const override;
     const PhaseFunction* phase() const override { return &phase_; }
-    FreeFlight sample_free_flight(Real t_max, int channel, Pcg32& rng) const override;
+    FreeFlight sample_free_flight(Real t_max, int channel, Real u) const override;
 
     Color sigma_a, sigma_s, sigma_t;
 

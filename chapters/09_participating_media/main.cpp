@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     bool no_roulette = false;
     PathOptions options;
     TracerRule tracer = TracerRule::kAuto;
+    const CLI::Option* distance_flag = nullptr;
+    const CLI::Option* quad_lights_flag = nullptr;
     MediaStudies studies;
     const ChapterInfo chapter{
         "ch09_participating_media",
@@ -32,13 +34,16 @@ int main(int argc, char** argv) {
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
         add_sampling_flag(app, options.strategy, options.quad_lights);
+        quad_lights_flag = app.get_option("--quad-lights");
         add_sampler_flag(app, options.sampler);
-        add_enum_option(app, walk.distance,
-                        "Where light scattered along a medium's segments is looked for: " +
-                            joined_names<DistanceSampling>());
+        distance_flag = add_enum_option(app, walk.distance,
+                                        "Where light scattered along a medium's segments is looked for (with "
+                                        "--tracer auto, mis in a medium unless given): " +
+                                            joined_names<DistanceSampling>());
         add_enum_option(app, tracer,
                         "auto: the strategy that pays on the scene (chapter 08's combined tracer where mirrors "
-                        "or glass cast caustics), or paths always: " + joined_names<TracerRule>());
+                        "or glass cast caustics, Cycles' volume sampling in media), or paths as the flags "
+                        "say: " + joined_names<TracerRule>());
         add_media_study_flags(app, studies);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
@@ -48,7 +53,8 @@ int main(int argc, char** argv) {
             run_media_study(studies, context.scene, context.settings, options);
             return std::nullopt;
         }
-        return render_by_choice(tracer, context, options, walk);
+        const GivenFlags given{distance_flag->count() > 0, quad_lights_flag->count() > 0};
+        return render_by_choice(tracer, context, options, walk, given);
     };
     return run_chapter(argc, argv, chapter, flags, render);
 }

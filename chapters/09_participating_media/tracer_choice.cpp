@@ -25,13 +25,32 @@ bool has_delta_surface(const Scene& scene, const EffectSet& simulated) {
 
 }  // namespace
 
-TracerChoice choose_tracer(TracerRule rule, const RunContext& context) {
+TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlags given) {
     const Scene& scene = context.scene;
     const EffectSet& simulated = context.simulated;
-    const auto paths = [](std::string why) { return TracerChoice{false, std::move(why)}; };
+    const auto chosen = [](bool combined, std::string why) {
+        TracerChoice choice;
+        choice.combined = combined;
+        choice.because = std::move(why);
+        return choice;
+    };
+    const auto paths = [&](std::string why) { return chosen(false, std::move(why)); };
     if (rule == TracerRule::kPaths) return paths("--tracer paths asks for them");
     if (choose_renderer(simulated) == Renderer::kDirect) return paths("the scene calls for direct light only");
-    if (simulated.contains(Effect::kMedia)) return paths("light paths cross no medium (chapter 08)");
+    if (simulated.contains(Effect::kMedia)) {
+        TracerChoice choice = paths("light paths cross no medium (chapter 08)");
+        std::string sampling;
+        if (!given.distance_sampling) {
+            choice.distance = DistanceSampling::kMis;
+            sampling = "equiangular points by MIS";
+        }
+        if (!given.quad_lights) {
+            choice.quad_lights = QuadLightSampling::kSolidAngle;
+            sampling += std::string(sampling.empty() ? "" : " and ") + "quad lights by solid angle";
+        }
+        if (!sampling.empty()) choice.because += "; in the medium, " + sampling + ", as Cycles samples volumes";
+        return choice;
+    }
     if (!has_delta_surface(scene, simulated))
         return paths("no mirror or smooth glass: no caustic for light paths to find");
     const LightSet lights = collect_lights(scene);
@@ -46,14 +65,16 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context) {
                          ": this scene's caustics are rendered by the combined tracer, which renders whole; "
                          "--tracer paths renders in pieces");
     }
-    return {true, "mirrors or smooth glass lit by area or point lights: light paths find the caustics the "
-                  "camera sees (chapter 08)"};
+    return chosen(true, "mirrors or smooth glass lit by area or point lights: light paths find the caustics "
+                        "the camera sees (chapter 08)");
 }
 
-ChapterRun render_by_choice(TracerRule rule, const RunContext& context, PathOptions options,
-                            const MediumWalk& walk) {
-    const TracerChoice choice = choose_tracer(rule, context);
+ChapterRun render_by_choice(TracerRule rule, const RunContext& context, PathOptions options, MediumWalk walk,
+                            GivenFlags given) {
+    const TracerChoice choice = choose_tracer(rule, context, given);
     options.simulated = context.simulated;
+    if (choice.distance) walk.distance = *choice.distance;
+    if (choice.quad_lights) options.quad_lights = *choice.quad_lights;
     ChapterRun run;
     if (choice.combined) {
         CombinedOptions combined;

@@ -140,8 +140,11 @@ Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleSt
 }
 
 FreeFlight VolumePathTracer::fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const {
-    if (path.channel < 0 && medium.phase()) path.channel = pick_channel(rng.next_real());
-    const FreeFlight flight = medium.sample_free_flight(t_max, path.channel, rng.generator());
+    // The distance is a draw of the sample's stream, so Sobol points stratify the choice between the medium
+    // and the surface beyond. A medium that only absorbs draws no number: its flight always reaches t_max.
+    const bool scatters = medium.phase() != nullptr;
+    if (scatters && path.channel < 0) path.channel = pick_channel(rng.next_real());
+    const FreeFlight flight = medium.sample_free_flight(t_max, path.channel, scatters ? rng.next_real() : 0);
     path.beta *= flight.weight;
     if (flight.pdf_ratio != Color(1)) {
         path.spectral_pdf *= flight.pdf_ratio;
