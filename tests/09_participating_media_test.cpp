@@ -788,9 +788,11 @@ TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirror
     CHECK(because(load_scene(scene_path("ch08_mirror.json"))) == "combined: " + caustics);
     CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
           "paths: no mirror or smooth glass: no caustic for light paths to find");
-    // In a medium, Cycles' volume sampling, where the flags leave it open.
+    // In fog, Cycles' volume sampling, where the flags leave it open; inside a shape (the milk), the flags'.
+    CHECK(because(load_scene(scene_path("ch09_default.json"))) ==
+          "paths: light paths cross no medium (chapter 08)");
     const Scene fog = load_scene(scene_path("ch09_thin_fog.json"));
-    CHECK(because(fog) == "paths: light paths cross no medium (chapter 08); in the medium, equiangular points "
+    CHECK(because(fog) == "paths: light paths cross no medium (chapter 08); in the fog, equiangular points "
                           "by MIS and quad lights by solid angle, as Cycles samples volumes");
     const RunContext fog_run{fog, settings, simulated_effects(fog, kMediaChapterEffects)};
     const TracerChoice chosen_for_fog = choose_tracer(TracerRule::kAuto, fog_run);
@@ -798,8 +800,8 @@ TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirror
     CHECK(chosen_for_fog.quad_lights == QuadLightSampling::kSolidAngle);
     const TracerChoice kept = choose_tracer(TracerRule::kAuto, fog_run, {.distance_sampling = true});
     CHECK_FALSE(kept.distance);
-    CHECK(kept.because == "light paths cross no medium (chapter 08); in the medium, quad lights by solid angle, "
-                          "as Cycles samples volumes");
+    CHECK(kept.because == "light paths cross no medium (chapter 08); in the fog, quad lights by solid angle, as "
+                          "Cycles samples volumes");
     const TracerChoice as_given = choose_tracer(TracerRule::kPaths, fog_run);
     CHECK_FALSE(as_given.distance);
     CHECK_FALSE(as_given.quad_lights);

@@ -38,11 +38,11 @@ int main(int argc, char** argv) {
         add_sampler_flag(app, options.sampler);
         distance_flag = add_enum_option(app, walk.distance,
                                         "Where light scattered along a medium's segments is looked for (with "
-                                        "--tracer auto, mis in a medium unless given): " +
+                                        "--tracer auto, mis in fog unless given): " +
                                             joined_names<DistanceSampling>());
         add_enum_option(app, tracer,
                         "auto: the strategy that pays on the scene (chapter 08's combined tracer where mirrors "
-                        "or glass cast caustics, Cycles' volume sampling in media), or paths as the flags "
+                        "or glass cast caustics, Cycles' volume sampling in fog), or paths as the flags "
                         "say: " + joined_names<TracerRule>());
         add_media_study_flags(app, studies);
     };

@@ -39,6 +39,9 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlag
     if (choose_renderer(simulated) == Renderer::kDirect) return paths("the scene calls for direct light only");
     if (simulated.contains(Effect::kMedia)) {
         TracerChoice choice = paths("light paths cross no medium (chapter 08)");
+        // Fog, between the shapes: its points lie anywhere, beside a lamp too. Inside a shape (a walk) the
+        // shape's boundary mostly stands between a point and the lamp, and the flags' own defaults serve.
+        if (!scene.medium || !scene.medium->scatters()) return choice;
         std::string sampling;
         if (!given.distance_sampling) {
             choice.distance = DistanceSampling::kMis;
@@ -48,7 +51,7 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlag
             choice.quad_lights = QuadLightSampling::kSolidAngle;
             sampling += std::string(sampling.empty() ? "" : " and ") + "quad lights by solid angle";
         }
-        if (!sampling.empty()) choice.because += "; in the medium, " + sampling + ", as Cycles samples volumes";
+        if (!sampling.empty()) choice.because += "; in the fog, " + sampling + ", as Cycles samples volumes";
         return choice;
     }
     if (!has_delta_surface(scene, simulated))

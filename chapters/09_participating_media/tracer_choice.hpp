@@ -1,9 +1,9 @@
 // Chapter 09 is the course's most complete renderer, so it chooses, scene by scene, the strategy that pays:
 //   combined (chapter 08): a scene whose mirrors or smooth glass are lit by area or point lights; light paths
 //            find the caustics the camera sees, chapter 06's paths the rest (lesson § 10);
-//   paths:   every other scene; through a medium that scatters, with Cycles' volume sampling where the
-//            flags leave it open: equiangular points by MIS (§ 7) and quad lights by solid angle (chapter 04),
-//            whose density has no 1 / d² to blow up at a point of fog beside the lamp.
+//   paths:   every other scene; through fog (a medium between the shapes that scatters), with Cycles'
+//            volume sampling where the flags leave it open: equiangular points by MIS (§ 7) and quad lights
+//            by solid angle (chapter 04), whose density has no 1 / d² to blow up at a point beside the lamp.
 // The combined tracer is chosen only where it simulates what the paths would: no medium, no environment, no
 // shading normals, a pinhole camera; it renders whole, so such a scene is split into pieces only with
 // `--tracer paths`. The summary says which was chosen and why.
@@ -32,8 +32,8 @@ struct GivenFlags {
 
 struct TracerChoice {
     bool combined = false;
-    std::optional<DistanceSampling> distance;      // set: chosen for the medium
-    std::optional<QuadLightSampling> quad_lights;  // set: chosen for the medium
+    std::optional<DistanceSampling> distance;      // set: chosen for the fog
+    std::optional<QuadLightSampling> quad_lights;  // set: chosen for the fog
     std::string because;                           // the summary's reason
 };
 
