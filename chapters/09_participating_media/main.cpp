@@ -4,8 +4,9 @@
 // scattering); `--distance-sampling` adds equiangular points toward the lights (alone or by MIS).
 // `--walk-study` measures walk lengths against the mean free path and the albedo, `--knob-study` the error
 // and time of a cap on scattering events and of Russian roulette in the medium, `--free-flight-study`
-// spectral MIS against the naive per-channel density. As the course's most complete renderer it renders a
-// scene whose mirrors or glass cast caustics by chapter 08's combined tracer (`--tracer`, tracer_choice.hpp).
+// spectral MIS against the naive per-channel density. As the course's most complete renderer it chooses per
+// scene (`--tracer`, tracer_choice.hpp): chapter 08's combined tracer where mirrors or glass cast caustics,
+// Cycles' volume sampling in fog.
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "media_materials.hpp"
 #include "media_studies.hpp"
@@ -41,9 +42,10 @@ int main(int argc, char** argv) {
                                         "--tracer auto, mis in fog unless given): " +
                                             joined_names<DistanceSampling>());
         add_enum_option(app, tracer,
-                        "auto: the strategy that pays on the scene (chapter 08's combined tracer where mirrors "
-                        "or glass cast caustics, Cycles' volume sampling in fog), or paths as the flags "
-                        "say: " + joined_names<TracerRule>());
+                        "auto: the strategy that pays on the scene (chapter 08's combined tracer where "
+                        "mirrors or glass cast caustics, Cycles' volume sampling in fog), or paths as the "
+                        "flags say: " +
+                            joined_names<TracerRule>());
         add_media_study_flags(app, studies);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {

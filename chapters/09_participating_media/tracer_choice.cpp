@@ -1,7 +1,5 @@
 #include "tracer_choice.hpp"
 
-#include <algorithm>
-
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "08_forward_tracing/combined_render.hpp"
 #include "08_forward_tracing/forward_notes.hpp"
@@ -36,7 +34,8 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlag
     };
     const auto paths = [&](std::string why) { return chosen(false, std::move(why)); };
     if (rule == TracerRule::kPaths) return paths("--tracer paths asks for them");
-    if (choose_renderer(simulated) == Renderer::kDirect) return paths("the scene calls for direct light only");
+    if (choose_renderer(simulated) == Renderer::kDirect)
+        return paths("the scene calls for direct light only");
     if (simulated.contains(Effect::kMedia)) {
         TracerChoice choice = paths("light paths cross no medium (chapter 08)");
         // Fog, between the shapes: its points lie anywhere, beside a lamp too. Inside a shape (a walk) the
@@ -68,8 +67,9 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlag
                          ": this scene's caustics are rendered by the combined tracer, which renders whole; "
                          "--tracer paths renders in pieces");
     }
-    return chosen(true, "mirrors or smooth glass lit by area or point lights: light paths find the caustics "
-                        "the camera sees (chapter 08)");
+    return chosen(true,
+                  "mirrors or smooth glass lit by area or point lights: light paths find the caustics "
+                  "the camera sees (chapter 08)");
 }
 
 ChapterRun render_by_choice(TracerRule rule, const RunContext& context, PathOptions options, MediumWalk walk,
@@ -82,7 +82,8 @@ ChapterRun render_by_choice(TracerRule rule, const RunContext& context, PathOpti
     if (choice.combined) {
         CombinedOptions combined;
         combined.paths = options;
-        const CombinedResult r = render_combined(context.scene, context.simulated, context.settings, combined);
+        const CombinedResult r =
+            render_combined(context.scene, context.simulated, context.settings, combined);
         run = {r.render, combined_notes(context.scene, context.simulated, combined, r), std::nullopt};
     } else {
         const Renderer renderer = choose_renderer(context.simulated);

@@ -1,10 +1,10 @@
-// Time to a relative MSE of 10⁻³ for each --distance-sampling, with quad lights by area and (free flight and
-// MIS, what --tracer auto picks) by solid angle, on a scene of fog: a converged reference (the mean of two MIS
-// renders A and B, its own noise mean((A − B)²) / 4 subtracted, as chapter 06's --converge does), then the
-// five strategies rendered alternately, `runs` times each at `spp` on one thread. An
-// unbiased estimator's relative MSE falls as 1 / time, so time to 10⁻³ = seconds × relative MSE / 10⁻³; the
-// table gives each strategy's median. Not a test:
-// `ch09_distance_benchmark [scene] [size] [spp] [reference spp] [runs]`.
+// Time to a relative MSE of 10⁻³ for each --distance-sampling, with quad lights by area and (free flight
+// and MIS, what --tracer auto picks) by solid angle, on a scene of fog: a converged reference (the mean of
+// two MIS renders A and B, its own noise mean((A − B)²) / 4 subtracted, as chapter 06's --converge does),
+// then the five strategies rendered alternately, `runs` times each at `spp` on one thread. An unbiased
+// estimator's relative MSE falls as 1 / time, so time to 10⁻³ = seconds × relative MSE / 10⁻³; the table
+// gives each strategy's median. Not a test: `ch09_distance_benchmark [scene] [size] [spp] [reference spp]
+// [runs]`.
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -83,13 +83,14 @@ int main(int argc, char** argv) {
         file.c_str(), density, black ? ", black surfaces" : "", size, size, spp, runs, reference_spp,
         reference_noise);
     std::printf(
-        "| distance sampling, quad lights | relative MSE | seconds | shadow rays / sample | time to 1e-3 | vs "
-        "free flight, area |\n");
+        "| distance sampling, quad lights | relative MSE | seconds | shadow rays / sample | time to 1e-3 | "
+        "vs free flight, area |\n");
     std::printf("|---|---|---|---|---|---|\n");
     for (std::size_t k = 0; k < strategies.size(); ++k)
         std::printf("| %s, %s | %.2e | %.3f | %.2f | %.2f s | %.2f× |\n",
                     std::string(to_string(strategies[k].distance)).c_str(),
-                    std::string(to_string(strategies[k].quad_lights)).c_str(), median(errors[k]), median(seconds[k]),
-                    median(shadow[k]), median(times[k]), median(times[k]) / median(times[0]));
+                    std::string(to_string(strategies[k].quad_lights)).c_str(), median(errors[k]),
+                    median(seconds[k]), median(shadow[k]), median(times[k]),
+                    median(times[k]) / median(times[0]));
     return 0;
 }
