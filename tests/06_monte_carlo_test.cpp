@@ -834,7 +834,7 @@ TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
 TEST_CASE("Roulette judges beta with the samples' radiance scale divided out: a path through glass is not "
           "made rarer and brighter, and either way the estimate stays unbiased",
           "[roulette][ex:ch05.termination]") {
-    // Roulette reads no scene: an empty one, under chapter 06's default rule (from bounce 3).
+    // Roulette reads no scene: an empty one, under chapter 06's default rule (from kPathRouletteStart).
     const RenderScene prepared(Scene{}, EffectSet::all());
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, PathOptions{});
     // A path of throughput 0.9 enters glass of η = 1.5: refraction scales its radiance by 1/η², so β is 0.4
@@ -849,12 +849,12 @@ TEST_CASE("Roulette judges beta with the samples' radiance scale divided out: a 
     for (int i = 0; i < n; ++i) {
         Pcg32 a = Pcg32::for_sample(0, std::uint64_t(i), 7), b = a;
         Color beta_robust(inside), beta_naive(inside);
-        if (tracer.roulette(5, beta_robust, eta2, a)) {
+        if (tracer.roulette(kPathRouletteStart, beta_robust, eta2, a)) {
             ++robust_survived;
             robust_sum += double(beta_robust.g);
             robust_leaving = std::max(robust_leaving, beta_robust.g * eta2);
         }
-        if (tracer.roulette(5, beta_naive, 1, b)) {
+        if (tracer.roulette(kPathRouletteStart, beta_naive, 1, b)) {
             ++naive_survived;
             naive_sum += double(beta_naive.g);
             naive_leaving = std::max(naive_leaving, beta_naive.g * eta2);

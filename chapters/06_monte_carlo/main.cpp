@@ -15,7 +15,7 @@
 int main(int argc, char** argv) {
     using namespace rt;
     PathOptions options;
-    TerminationFlags termination;
+    TerminationFlags termination{options.termination, std::nullopt};  // chapter 06's rule until --termination
     bool irradiance = false;
     int irradiance_runs = 200;
     bool converge = false;

@@ -40,10 +40,18 @@ namespace rt {
 // Effects read: "direct" (light arriving from emitters at surfaces), "shadows" (shadow rays; without it every
 // light sample counts as visible), "indirect" (light after more than one diffuse or glossy bounce). The
 // material table holds what "glossy", "reflection" and "refraction" change.
+// Where this chapter's roulette starts: bounce 8, not chapter 05's 3. With next-event estimation and MIS the
+// first bounces are cheap and carry most of the light; a roulette that starts sooner multiplies the few paths
+// it keeps by 1 / q, and that noise costs more time than the bounces it saves (lesson 06, § "Where roulette
+// starts").
+inline constexpr int kPathRouletteStart = 8;
+
 struct PathOptions : TraceOptions {
     SamplingStrategy strategy = SamplingStrategy::kMis;
-    // Chapter 05's Russian roulette from bounce 3, under its safety cap of 64 bounces (a cap, not a bias).
-    TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap};
+    // Chapter 05's Russian roulette from bounce kPathRouletteStart, under its safety cap of 64 bounces (a
+    // cap, not a bias).
+    TerminationSettings termination{Termination::kRussianRoulette, kSafetyDepthCap, Real(0.01),
+                                    kPathRouletteStart};
     // Where a sample's numbers come from (sample_stream.hpp; render_paths reads it).
     PointSet sampler = PointSet::kSobol;
 };

@@ -13,8 +13,8 @@
 
 int main(int argc, char** argv) {
     using namespace rt;
-    TerminationFlags termination;
     PathOptions options;
+    TerminationFlags termination{options.termination, std::nullopt};  // chapter 06's rule until --termination
     bool fresnel = false;
     bool depth = false;
     GlassDepthRequest depth_request;

@@ -21,6 +21,7 @@ constexpr TerminationSettings kWalkRoulette{.rule = Termination::kRussianRoulett
 VolumePathTracer::VolumePathTracer(const World& world, const MaterialTable& materials, const LightSet& lights,
                                    PathOptions options, MediumWalk walk)
     : steps_(world, materials, lights, options),
+      targets_(lights, QuadLightSampling::kArea),
       world_(world),
       materials_(materials),
       exterior_(materials.exterior()),
@@ -112,10 +113,15 @@ std::optional<LitSegment> VolumePathTracer::lit_segment(const Medium& medium, co
     return LitSegment{ray, t_max, homogeneous, 0};
 }
 
+std::optional<Vec3> VolumePathTracer::equiangular_target(const LitSegment& lit, Real u_pick, Vec2 u) const {
+    const auto s = targets_.sample(lit.ray.origin, u_pick, u);
+    return s ? std::optional<Vec3>(s->point) : std::nullopt;
+}
+
 Real VolumePathTracer::equiangular_pdf(const LitSegment& lit, Real t, Real u_pick, Vec2 u) const {
-    const auto s = steps_.lights().sample(lit.ray.origin, u_pick, u);
-    if (!s) return 0;
-    const auto sampler = EquiangularSampler::toward(lit.ray, s->point, lit.t_max);
+    const auto target = equiangular_target(lit, u_pick, u);
+    if (!target) return 0;
+    const auto sampler = EquiangularSampler::toward(lit.ray, *target, lit.t_max);
     return sampler ? sampler->pdf(t) : Real(0);
 }
 
@@ -126,9 +132,9 @@ Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleSt
     const Real u_pick = rng.next_real();
     const Vec2 u = rng.next_vec2();
     const Real u_t = rng.next_real();
-    const auto reference = steps_.lights().sample(lit.ray.origin, u_pick, u);
-    if (!reference) return Color(0);
-    const auto sampler = EquiangularSampler::toward(lit.ray, reference->point, lit.t_max);
+    const auto target = equiangular_target(lit, u_pick, u);
+    if (!target) return Color(0);
+    const auto sampler = EquiangularSampler::toward(lit.ray, *target, lit.t_max);
     if (!sampler) return Color(0);
     const Real t = sampler->sample(u_t);
     const Real p_eq = sampler->pdf(t);

@@ -79,8 +79,12 @@ class VolumePathTracer {
     // The segment [0, t_max) of `ray` through `medium`, when the run's distance sampling serves it (a grey
     // medium that scatters, a finite segment, lights to sample, next-event estimation on).
     std::optional<LitSegment> lit_segment(const Medium& medium, const Ray& ray, Real t_max) const;
+    // The point x_l the equiangular sampler aims at: the light (u_pick, u) picks, and a point on it by area
+    // (seen from the segment's start). Any point of the light serves; one by area costs no spherical
+    // rectangle. None when that light's emitting side faces away.
+    std::optional<Vec3> equiangular_target(const LitSegment& lit, Real u_pick, Vec2 u) const;
     // p_eq(t): the density of the equiangular sampler that the light sample (u_pick, u) sets up on `lit`
-    // (toward the point it picks seen from the segment's start); 0 when there is none.
+    // (toward equiangular_target); 0 when there is none.
     Real equiangular_pdf(const LitSegment& lit, Real t, Real u_pick, Vec2 u) const;
     // The segment's equiangular point: t ∝ 1 / |x(t) − x_l|², its next-event estimate toward the same light
     // sample, T(t) σ_s w_eq / p_eq(t) (the path's β before the segment multiplies it).
@@ -92,6 +96,7 @@ class VolumePathTracer {
     Color shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const;
 
     PathTracer steps_;  // chapter 06's loop, whose steps this one calls
+    LightPicker targets_;  // the lights, quads by area: where equiangular_target draws x_l
     const World& world_;
     const MaterialTable& materials_;
     const Medium* exterior_;  // the medium between the shapes (null: empty space)

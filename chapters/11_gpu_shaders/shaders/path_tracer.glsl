@@ -1,6 +1,6 @@
 // Chapter 06's path loop (PathTracer::radiance) with multiple importance sampling, as chapter 07 renders
 // with it: next-event estimation (one light picked by power, and the environment) weighted by the power
-// heuristic against BSDF sampling, chapter 05's Russian roulette from bounce 3 under a cap of 64 bounces,
+// heuristic against BSDF sampling, chapter 05's Russian roulette from bounce 8 under a cap of 64 bounces,
 // chapter 07's smooth dielectric and Beer–Lambert interiors. The same random numbers are drawn in the same
 // order as on the CPU, so one (pixel, sample) follows the same path on both up to rounding.
 
@@ -90,13 +90,15 @@ vec3 next_event(Hit hit, vec3 wo, Material m, inout Pcg32 rng) {
     return sum;
 }
 
-// Chapter 05's continue_path with Russian roulette: q = min(1, max β η-scale) from bounce 3, 0 at bounce 64
-// (chapter 06's loop judges β with refraction's 1/η² divided out: eta_scale = Π η²).
+// Chapter 05's continue_path with Russian roulette: q = min(1, max β η-scale) from kRouletteStart, 0 at bounce
+// 64 (chapter 06's loop judges β with refraction's 1/η² divided out: eta_scale = Π η²).
+const int kRouletteStart = 8;  // chapter 06's kPathRouletteStart
 bool continue_path(int depth, inout vec3 beta, float u, float eta_scale) {
     float q = 0.0;
     const vec3 judged = beta * eta_scale;
     const float largest = max(max(judged.r, judged.g), judged.b);
-    if (depth < 64 && all_finite(judged) && largest > 0.0) q = depth < 3 ? 1.0 : min(1.0, largest);
+    if (depth < 64 && all_finite(judged) && largest > 0.0)
+        q = depth < kRouletteStart ? 1.0 : min(1.0, largest);
     if (!(u < q)) return false;
     if (q < 1.0) beta /= q;
     return true;
@@ -162,8 +164,9 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
         previous_pdf = delta ? kInfinity : s.pdf;
         previous_point = hit.point;
         previous_normal = n;
-        // Chapter 06's roulette step: a number is drawn only from bounce 3, where roulette starts.
-        if (!continue_path(depth + 1, beta, depth + 1 >= 3 ? pcg_next_real(rng) : 0.0, eta_scale)) break;
+        // Chapter 06's roulette step: a number is drawn only from kRouletteStart, where roulette starts.
+        if (!continue_path(depth + 1, beta, depth + 1 >= kRouletteStart ? pcg_next_real(rng) : 0.0, eta_scale))
+            break;
         ray = spawn_ray(hit, s.wi);
         ++rays_traced[s.transmitted ? kRefractionRay : is_diffuse(m) ? kIndirectRay : kReflectionRay];
     }
