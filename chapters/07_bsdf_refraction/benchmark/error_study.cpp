@@ -242,7 +242,7 @@ void run(const std::string& scene_name, int size, int spp, int reference_spp, in
     for (std::size_t v = 0; v < variants.size(); ++v) {
         const double t = median(seconds[v]);
         const double e = std::accumulate(rel[v].begin(), rel[v].end(), 0.0) / double(rel[v].size());
-        std::printf("%-28s %12.4e %10.3f %14.1f s\n", variants[v].name.c_str(), e, t, t * e / target);
+        std::printf("%-28s %12.4e %10.3f %14.3g s\n", variants[v].name.c_str(), e, t, t * e / target);
     }
 }
 
