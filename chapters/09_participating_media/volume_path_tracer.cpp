@@ -127,8 +127,8 @@ Real VolumePathTracer::equiangular_pdf(const LitSegment& lit, Real t, Real u_pic
 
 Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleStream rng,
                                                  RayCounts& rays) const {
-    // ∫ T(t) σ_s L_light(x(t)) dt ≈ T(t) σ_s L̂_light(x(t)) w_eq(t) / p_eq(t), t ~ p_eq, the light sample
-    // (u_pick, u) both setting up the sampler and, from x(t), estimating L_light.
+    // ∫ T(t) σ_s L_light(x(t)) dt ≈ T(t) σ_s L̂_light(x(t)) w_eq(t) / p_eq(t), t ~ p_eq, the numbers
+    // (u_pick, u) both aiming the sampler and, from x(t), drawing the light sample that estimates L_light.
     const Real u_pick = rng.next_real();
     const Vec2 u = rng.next_vec2();
     const Real u_t = rng.next_real();

@@ -86,8 +86,8 @@ class VolumePathTracer {
     // p_eq(t): the density of the equiangular sampler that the light sample (u_pick, u) sets up on `lit`
     // (toward equiangular_target); 0 when there is none.
     Real equiangular_pdf(const LitSegment& lit, Real t, Real u_pick, Vec2 u) const;
-    // The segment's equiangular point: t ∝ 1 / |x(t) − x_l|², its next-event estimate toward the same light
-    // sample, T(t) σ_s w_eq / p_eq(t) (the path's β before the segment multiplies it).
+    // The segment's equiangular point: t ∝ 1 / |x(t) − x_l|², its next-event estimate from the same numbers
+    // (u_pick, u), T(t) σ_s w_eq / p_eq(t) (the path's β before the segment multiplies it).
     Color in_scattered_equiangular(const LitSegment& lit, SampleStream rng, RayCounts& rays) const;
     // The transmittance from ray.origin to ray.at(t_max) (a shadow ray): through media, across
     // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
