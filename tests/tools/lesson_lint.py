@@ -18,7 +18,7 @@ import re
 import sys
 from pathlib import Path
 
-MAX_WORDS = 6000
+MAX_WORDS = 5000
 
 MONTH = r"(?:January|February|March|April|May|June|July|August|September|October|November|December)"
 FLAGS = [
