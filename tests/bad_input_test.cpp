@@ -450,9 +450,10 @@ TEST_CASE("Every number of an OBJ file is read strictly, and an error names its 
     CHECK(obj_error(tri + "f 1 2 +3\n") == "line 4, column 7: " + index + "\"+3\"");
     CHECK(obj_error(tri + "f 1 2 4\n") == "line 4, column 7: " + index + "\"4\"");  // checked at the end
     CHECK(obj_error(tri + "f 1 2\n") == "line 4, column 1: a face must have at least 3 vertices, got 2");
-    CHECK(obj_error(tri + "f 1/1 2 3\n") ==
-          "line 4, column 5: texture coordinate index must be a whole number in [1, 0] (or negative, counting "
-          "back from the last), got \"1\"");
+    CHECK(
+        obj_error(tri + "vt 0 0\nf 1/2 2 3\n") ==
+        "line 5, column 5: texture coordinate index must be a whole number in [1, 1] (or negative, counting "
+        "back from the last), got \"2\"");
     CHECK(obj_error(tri + "vn 0 0 x\n") == "line 4, column 8: " + vertex + "\"x\"");
     CHECK(obj_error(tri + "curv 0 1 2\n") ==
           "line 4, column 1: unknown statement \"curv\"; expected v, vt, vn, f, o, g, s, usemtl, mtllib, l or p");
@@ -801,4 +802,156 @@ TEST_CASE("An interrupt once the render is done lets the complete image be writt
         CHECK_FALSE(fs::exists("i.partial.pfm"));
     });
     fs::remove_all(folder);
+}
+
+namespace {
+
+// The one line loading `scene` (in tests/data/bad_scenes) gives, and the line expected.tsv gives for it.
+std::pair<std::string, std::string> bad_scene_message(const std::string& scene) {
+    std::string message;
+    in_folder(kBadScenes, [&] { message = error_of([&] { load_scene(scene); }); });
+    return {message, expected_messages().at(scene)};
+}
+
+// A scene of one sphere whose albedo is the texture `file`.
+std::string textured_scene(const std::string& file) {
+    return "{" + std::string(kCamera) +
+           R"(, "materials": {"w": {"type": "diffuse", "albedo": {"texture": ")" + file +
+           R"("}}}, "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "w"}]})";
+}
+
+}  // namespace
+
+TEST_CASE("A C1 control character in a name is escaped, as a control byte is", "[bad_input][message]") {
+    // U+009B is the one-character CSI: "\u009b[2J" would clear a terminal that takes C1 controls.
+    CHECK(shown("\xc2\x9b[2Jred.png") == "\"\\u009b[2Jred.png\"");
+    CHECK(printable("a\xc2\x85z") == "a\\u0085z");
+    // Other characters stay as they are.
+    CHECK(shown("caf\xc3\xa9.png") == "\"caf\xc3\xa9.png\"");
+    CHECK(printable("\xc2\xa0\xe2\x82\xac") == "\xc2\xa0\xe2\x82\xac");
+    const auto [message, expected] = bad_scene_message("texture_c1_name.json");
+    CHECK(message == expected);
+    CHECK(message.find("\xc2\x9b") == std::string::npos);
+}
+
+TEST_CASE("A byte that is not UTF-8 in a folder's name is escaped as \\xNN", "[bad_input][message]") {
+    CHECK(shown("caf\xe9/scene.json") == "\"caf\\xe9/scene.json\"");
+    CHECK(error_of([] { load_scene("caf\xe9/scene.json"); }) ==
+          "\"caf\\xe9/scene.json\": must be a scene file (JSON), got no such file");
+    // An overlong form, a surrogate, a sequence cut short: each byte escaped.
+    CHECK(printable("\xc0\xaf") == "\\xc0\\xaf");
+    CHECK(printable("\xed\xa0\x80") == "\\xed\\xa0\\x80");
+    CHECK(printable("\xe2\x82") == "\\xe2\\x82");
+    // A cut never splits a character into bytes that are not UTF-8.
+    CHECK(printable("ab\xe2\x82\xac", 3) == "ab...");
+}
+
+TEST_CASE("A texture that is a GIF, BMP, TGA, PPM or HDR image is refused: textures are PNG or JPEG",
+          "[bad_input][texture]") {
+    const auto [message, expected] = bad_scene_message("texture_gif.json");
+    CHECK(message == expected);
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        using namespace std::string_literals;
+        // Each one pixel, as stb_image would decode it.
+        const std::map<std::string, std::string> files = {
+            {"one.bmp",
+             "BM\x3a\0\0\0\0\0\0\0\x36\0\0\0\x28\0\0\0\1\0\0\0\1\0\0\0\1\0\x18\0\0\0\0\0\4\0\0\0"s +
+                 std::string(16, '\0') + "\x40\x80\xc0\0"s},
+            {"one.tga", "\0\0\2\0\0\0\0\0\0\0\0\0\1\0\1\0\x18\0\x40\x80\xc0"s},
+            {"one.ppm", "P6\n1 1\n255\n\xc0\x80\x40"s},
+            {"one.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n\x80\x80\x80\x81"s},
+        };
+        const std::map<std::string, std::string> kinds = {
+            {"one.bmp", "a BMP image"},
+            {"one.tga", "neither (the file starts with \"\\x00\\x00\\x02\\x00\\x00\\x00\\x00\\x00\")"},
+            {"one.ppm", "a PPM image"},
+            {"one.hdr", "a Radiance HDR image"}};
+        for (const auto& entry : files) {
+            const std::string& file = entry.first;
+            INFO(file);
+            std::ofstream(file, std::ios::binary) << entry.second;
+            CHECK(error_of([&] { parse_scene(textured_scene(file), "t.json"); }) ==
+                  "t.json: materials.w.albedo.texture: " + file + ": must be a PNG or JPEG image, got " +
+                      kinds.at(file));
+        }
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("A PNG whose palette index is past its palette is refused, naming the pixel",
+          "[bad_input][texture]") {
+    const auto [message, expected] = bad_scene_message("texture_palette_index.json");
+    CHECK(message == expected);
+    // Two colours, indices 0 and 1, colour 0 transparent (tRNS): within the palette, so it loads.
+    const char kTwoColours[] =
+        "\x89\x50\x4e\x47\x0d\x0a\x1a\x0a\x00\x00\x00\x0d\x49\x48\x44\x52\x00\x00\x00\x02\x00\x00\x00\x01"
+        "\x08\x03\x00\x00\x00\xc3\xfc\x8f\xb8\x00\x00\x00\x06\x50\x4c\x54\x45\xff\x00\x00\x00\x00\xff\x6c"
+        "\xa1\xfd\x8e\x00\x00\x00\x01\x74\x52\x4e\x53\x00\x40\xe6\xd8\x66\x00\x00\x00\x0b\x49\x44\x41\x54"
+        "\x78\xda\x63\x60\x60\x04\x00\x00\x04\x00\x02\x2c\xde\x48\xad\x00\x00\x00\x00\x49\x45\x4e\x44\xae"
+        "\x42\x60\x82";
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        std::ofstream("two.png", std::ios::binary) << std::string(kTwoColours, sizeof kTwoColours - 1);
+        const Scene scene = parse_scene(textured_scene("two.png"), "t.json");
+        REQUIRE(scene.materials.size() == 1);
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("A PNG with a chunk whose CRC does not match its data is refused, naming the chunk",
+          "[bad_input][texture]") {
+    const auto [message, expected] = bad_scene_message("texture_bad_crc.json");
+    CHECK(message == expected);
+    const auto [truncated, truncated_expected] = bad_scene_message("texture_truncated.json");
+    CHECK(truncated == truncated_expected);
+}
+
+TEST_CASE("A PFM whose scale is not 1 or -1 is refused, not read as if it were", "[bad_input][image]") {
+    const fs::path folder = temporary_folder();
+    in_folder(folder, [&] {
+        const float rgb[3] = {0.5f, 0.25f, 1};
+        for (const char* scale : {"-2.0", "0.5"}) {
+            INFO(scale);
+            {
+                std::ofstream out("scaled.pfm", std::ios::binary);
+                out << "PF\n1 1\n" << scale << "\n";
+                out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
+            }
+            CHECK(error_of([] { read_pfm("scaled.pfm"); }) ==
+                  "scaled.pfm: PFM header's scale must be 1 or -1 (its sign gives the byte order; no other "
+                  "magnitude is read), got " +
+                      std::string(scale[0] == '-' ? "-2" : "0.5"));
+        }
+    });
+    fs::remove_all(folder);
+}
+
+TEST_CASE("An OBJ index before any v, vt or vn line says there is none, not a range [1, 0]",
+          "[bad_input][obj]") {
+    auto obj_error = [](const std::string& text) { return error_of([&] { parse_obj(text, 1e9); }); };
+    const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    CHECK(obj_error(tri + "f 1//1 2//1 3//1\nvn 0 0 1\n") ==
+          "line 4, column 6: normal index \"1\" refers to a vn line, but none comes before it");
+    CHECK(obj_error(tri + "f 1/1 2/1 3/1\n") ==
+          "line 4, column 5: texture coordinate index \"1\" refers to a vt line, but none comes before it");
+    CHECK(obj_error("f -1 -2 -3\n") ==
+          "line 1, column 3: vertex index \"-1\" refers to a v line, but none comes "
+          "before it");
+    CHECK(obj_error("f 1 2 3\n") ==
+          "line 1, column 3: vertex index \"1\" refers to a v line, but none comes "
+          "before it");
+}
+
+TEST_CASE("A PLY index or count of 4294967295 is printed whole, not as 4.29497e+09", "[bad_input][ply]") {
+    auto ply_error = [](const std::string& bytes) { return error_of([&] { parse_ply(bytes, 1e9); }); };
+    auto header = [](const char* list) {
+        return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 1\nproperty list " +
+               std::string(list) + " vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+    };
+    CHECK(ply_error(header("uchar uint") + "3 0 1 4294967295\n") ==
+          "line 13: element face 0: vertex_indices: a vertex index must be in [0, 2], got 4294967295");
+    CHECK(ply_error(header("uint uint") + "4294967295 0 1 2\n") ==
+          "line 13: element face 0: vertex_indices: a face must have 3 to 65536 vertices, got 4294967295");
 }

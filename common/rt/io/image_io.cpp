@@ -155,6 +155,14 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
                          std::to_string(kMaxImageSide) + "] and a non-zero scale, got " +
                          std::to_string(width) + " " + std::to_string(height) + " " + show_number(scale));
     }
+    // The scale's sign gives the byte order; its magnitude, a unit for the pixels, is not read: one other
+    // than 1 is refused, not ignored.
+    if (std::abs(scale) != 1) {
+        throw InputError(name +
+                         ": PFM header's scale must be 1 or -1 (its sign gives the byte order; no other "
+                         "magnitude is read), got " +
+                         show_number(scale));
+    }
     // One whitespace byte ends the header; a CRLF line end would shift every pixel by a byte.
     const int after_scale = in.get();
     if (after_scale == '\r' && in.peek() == '\n') {

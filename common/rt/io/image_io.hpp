@@ -32,7 +32,8 @@ bool encode_png(const Image& image, std::FILE* file);
 bool encode_pfm(const Image& image, std::FILE* file);
 // What read_pfm accepts in a pixel: any finite value, or radiance (finite and >= 0, as a reference image's).
 enum class PfmPixels { kFinite, kRadiance };
-// Reads a colour PFM ("PF"), either byte order. Throws InputError naming the file and what is wrong.
+// Reads a colour PFM ("PF"), either byte order, scale 1 (its magnitude, a unit for the pixels, is taken by no
+// reader of the course: another is refused). Throws InputError naming the file and what is wrong.
 Image read_pfm(const std::filesystem::path& path, PfmPixels pixels = PfmPixels::kFinite);
 
 // Checks before rendering that `path` can be written: it is not a folder, and its folder exists, is a folder

@@ -62,6 +62,11 @@ class Reader {
         return x;
     }
 
+    // The statement that gives an item of the list `what` names.
+    static const char* keyword_of(std::string_view what) {
+        return what == "vertex" ? "v" : what == "normal" ? "vn" : "vt";
+    }
+
     // An index of an OBJ list of `count` items so far ("vertex", "texture coordinate", "normal"): 1..count,
     // or -1..-count counting back. Returns it from 0.
     std::uint32_t index(const Token& t, std::string_view part, std::size_t column, std::size_t count,
@@ -73,6 +78,10 @@ class Reader {
         const auto r = std::from_chars(part.data(), part.data() + part.size(), value);
         const Token shown_part{part, column};
         if (part.empty()) fail(column, expected + "nothing (in " + found(t) + ")");
+        if (count == 0) {
+            fail(column, std::string(what) + " index " + found(shown_part) + " refers to a " +
+                             keyword_of(what) + " line, but none comes before it");
+        }
         if (r.ec == std::errc::result_out_of_range) fail(column, expected + found(shown_part));
         if (r.ec != std::errc() || r.ptr != part.data() + part.size() || part[0] == '+')
             fail(column, expected + found(shown_part));

@@ -5,7 +5,6 @@
 #include <bit>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -73,10 +72,10 @@ struct VertexLayout {
     std::optional<std::size_t> x, y, z, nx, ny, nz, u, v;
 };
 
+// The shortest text that reads back as x: 4294967295 as it is, not as 4.29497e+09.
 std::string show(double x) {
     char text[32];
-    std::snprintf(text, sizeof text, "%g", x);
-    return text;
+    return std::string(text, std::to_chars(text, text + sizeof text, x).ptr);
 }
 
 std::vector<std::string_view> words_of(std::string_view line) {
