@@ -7,10 +7,11 @@ CONCEPTS below is the course's concept index: for each idea, the lesson section 
 folder and a heading of its README.md) and the words that show a lesson using it. Lessons are read in the
 map's order (chapters/NN_*/README.md by NN, each from top to bottom). A use is too early when it comes in an
 earlier chapter than the teaching section, or in the same lesson above it. Prints one line per concept and
-lesson used too early:
-    chapters/01_ray_generation/README.md:63: uses the estimator's variance and 1/√N ("1/√N") before it is
-    taught (in chapters/01_ray_generation/README.md § Monte Carlo in one page, line 80); 3 more uses
-and fails too when a teaching section is missing or does not use its own concept's words.
+lesson that uses it too early, at its first such use:
+    chapters/04_x/README.md:158: uses sampling by inversion ("CDFs") before it is taught (in
+    chapters/06_y/README.md § Sampling, line 84); 4 more uses
+or, when the section the index names is missing, one line at the concept's first use ("taught nowhere").
+A teaching section that never says any of its concept's words fails too.
 Exits 1 if anything is found, 0 otherwise. Only the Python 3 standard library is used.
 """
 
