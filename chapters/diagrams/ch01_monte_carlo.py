@@ -39,9 +39,11 @@ def estimator_figure():
     integrand.set_title("f: 1 left of an edge; 16 uniform samples")
 
     sigma = math.sqrt(EDGE * (1 - EDGE))
-    ns = list(range(1, MAX_SAMPLES + 1))
+    # Every N up to 64, then every 1/32 of an octave: the curves look the same, the SVG is a tenth the size.
+    ns = sorted({n for n in range(1, 65)} | {round(2 ** (k / 32)) for k in range(192, 385)})
     for _ in range(RUNS):
-        runs.plot(ns, running_means(rng), color=RAY, lw=0.8, alpha=0.8)
+        means = running_means(rng)
+        runs.plot(ns, [means[n - 1] for n in ns], color=RAY, lw=0.8, alpha=0.8)
     for k, style in ((1, "--"), (2, ":")):
         for sign in (1, -1):
             runs.plot(ns, [EDGE + sign * k * sigma / math.sqrt(n) for n in ns], color=ACCENT, lw=1.2, ls=style)
