@@ -19,6 +19,10 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
 
   exercises.py list                     every exercise: name, file:line, function, lesson section (fails when
                                         a mark names no section or one its lesson lacks)
+  exercises.py map [--check]            the course map's "needs first" column, written from the tests' [ex:...]
+                                        tags (the chapters whose exercises they need, less those needed
+                                        through another), and the exercises per chapter; --check fails where
+                                        README.md's map or a stated exercise count disagrees
   exercises.py generate OUT             the student edition in OUT: each marked body becomes a line that
                                         throws "not implemented: chNN.name — see <lesson> § <section>"
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
@@ -47,6 +51,8 @@ import sys
 from pathlib import Path
 
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
+from exercise_tool.course_map import (chapters_needed, map_problems, needs_first,  # noqa: E402
+                                     needs_first_cell)
 from exercise_tool.edition import generate, set_shader_switch  # noqa: E402
 from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
 from exercise_tool.test_runs import (UnitTest, exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
@@ -62,6 +68,30 @@ def command_list(args: argparse.Namespace) -> int:
         print(f"{e.name:32} {e.where():48} {e.function + '()':28} {e.reference()}")
     print(f"{len(exercises)} exercises in {len({e.chapter for e in exercises})} chapters")
     return 0
+
+
+MAP_DOCUMENTS = ["README.md", "common/README.md", "chapters/README.md"]  # where an exercise count may be stated
+
+
+def command_map(args: argparse.Namespace) -> int:
+    """The course map's "needs first" column from the tests' exercise tags; --check: README.md's map and every
+    exercise count stated in MAP_DOCUMENTS agree with them."""
+    exercises = find_exercises(args.root)
+    direct = needs_first(chapters_needed(args.root))
+    per_chapter = {}
+    for e in exercises:
+        per_chapter[e.chapter[2:]] = per_chapter.get(e.chapter[2:], 0) + 1
+    print(f"{'chapter':8} {'needs first':14} exercises")
+    for chapter in sorted(direct):
+        print(f"{chapter:8} {needs_first_cell(direct[chapter]):14} {per_chapter.get(chapter, 0)}")
+    print(f"{len(exercises)} exercises in {len(per_chapter)} chapters")
+    if not args.check:
+        return 0
+    problems = map_problems(args.root, exercises, MAP_DOCUMENTS)
+    for problem in problems:
+        print(problem)
+    print("the course map agrees with the tests' tags" if not problems else f"{len(problems)} disagreements")
+    return 1 if problems else 0
 
 
 def command_generate(args: argparse.Namespace) -> int:
@@ -399,6 +429,9 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--root", type=Path, default=ROOT, help="the repository (default: this tool's)")
     commands = parser.add_subparsers(dest="command", required=True)
     commands.add_parser("list", help="every marked exercise")
+    m = commands.add_parser("map", help="the course map's \"needs first\" column, from the tests' exercise tags")
+    m.add_argument("--check", action="store_true", help="fail where README.md's map or an exercise count "
+                   "disagrees")
     g = commands.add_parser("generate", help="write the student edition")
     g.add_argument("out", help="an empty folder outside the repository (or under its ignored build/)")
     g.add_argument("--only", help="stub only these chapters or exercises: ch02 or ch01.camera_ray,ch02.quad")
@@ -428,7 +461,7 @@ def main(argv: list[str]) -> int:
     w.add_argument("-v", "--verbose", action="store_true", help="name each wrong solution and the test catching it")
     args = parser.parse_args(argv)
     try:
-        return {"list": command_list, "generate": command_generate, "status": command_status,
+        return {"list": command_list, "map": command_map, "generate": command_generate, "status": command_status,
                 "check": command_check, "lint": command_lint, "deps": command_deps,
                 "wrong": command_wrong}[args.command](args)
     except ToolError as error:
