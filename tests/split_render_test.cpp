@@ -294,8 +294,8 @@ TEST_CASE("A whole render in one process leaves the sample range unset, so a stu
 
 TEST_CASE("A scene's fingerprint covers its textures' texels and its meshes' normals and texture coordinates",
           "[split]") {
-    // Pieces rendered with another texture image, or a mesh with other vn or vt lines, were merged and resumed
-    // as one render: only the scene file, the mesh positions and triangles and the environment image counted.
+    // Pieces rendered with another texture image, or a mesh with other vn or vt lines, were merged and
+    // resumed as one render: only the scene file, mesh positions and triangles and the environment counted.
     const fs::path textured = scene_path("ch04_textured.json"), smooth = scene_path("ch04_smooth_mesh.json");
     const Scene wood = load_scene(textured), torus = load_scene(smooth);
     const std::uint64_t wood_print = scene_fingerprint(wood, textured);
