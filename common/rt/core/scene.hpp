@@ -206,7 +206,7 @@ struct EnvironmentLight {
 // A file the scene read: the scene file itself, a mesh, a texture or an environment image. A run may write no
 // output over it (run_files.hpp).
 struct SceneInput {
-    std::string what;            // "the scene's texture"
+    std::string what;            // "the texture of materials.wood"
     std::filesystem::path path;  // as it was opened: the scene's folder joined with the name the scene gives
 };
 
