@@ -512,6 +512,31 @@ TEST_CASE("The Cornell box loads as assets/scenes/README.md describes it", "[sce
     CHECK(scene.has_area_lights());
 }
 
+TEST_CASE("A loaded scene lists every file it read: the scene, its textures, meshes and environment image",
+          "[scene]") {
+    // What a run's outputs are checked against (app.cpp): each path as the loader opened it.
+    const auto inputs_of = [](const char* name) {
+        const fs::path assets = assets_dir().lexically_normal();
+        std::vector<std::string> inputs;
+        for (const SceneInput& input : load_scene(scene_path(name)).inputs) {
+            const fs::path path = input.path.lexically_normal().lexically_relative(assets);
+            inputs.push_back(input.what + " " + path.generic_string());
+        }
+        return inputs;
+    };
+    CHECK(inputs_of("ch04_textured.json") ==
+          std::vector<std::string>{"the scene scenes/ch04_textured.json",
+                                   "the texture of materials.crate textures/ch04_wood.png",
+                                   "the texture of materials.wood textures/ch04_wood.png"});
+    CHECK(inputs_of("ch04_smooth_mesh.json") ==
+          std::vector<std::string>{"the scene scenes/ch04_smooth_mesh.json",
+                                   "the mesh of shapes[2] meshes/ch04_torus.obj",
+                                   "the mesh of shapes[3] meshes/ch04_torus.ply"});
+    CHECK(inputs_of("ch06_sky.json") == std::vector<std::string>{"the scene scenes/ch06_sky.json",
+                                                                 "the environment image environments/sky.hdr"});
+    CHECK(inputs_of("cornell.json") == std::vector<std::string>{"the scene scenes/cornell.json"});
+}
+
 TEST_CASE("Scene errors name the file, the place and what was expected", "[scene]") {
     const std::string camera = kMinimalCamera;
     CHECK(load_error(R"({"camera": {"from": [0,0,0], "at": [0,0,-1], "vfov": 0}})") ==

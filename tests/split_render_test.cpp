@@ -15,11 +15,14 @@
 #include "rt/core/errors.hpp"
 #include "rt/core/pixel_sums.hpp"
 #include "rt/core/sample_range.hpp"
+#include "rt/io/assets.hpp"
 #include "rt/io/film.hpp"
+#include "rt/io/scene_loader.hpp"
 #include "rt/render/interrupt.hpp"
 #include "rt/render/render_loop.hpp"
 #include "rt/run/film_merge.hpp"
 #include "rt/run/mpi_split.hpp"
+#include "rt/run/render_identity.hpp"
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -287,4 +290,42 @@ TEST_CASE("A whole render in one process leaves the sample range unset, so a stu
     REQUIRE(piece.samples.has_value());
     CHECK(piece.samples->first == 8);
     CHECK(piece.samples->end == 24);
+}
+
+TEST_CASE("A scene's fingerprint covers its textures' texels and its meshes' normals and texture coordinates",
+          "[split]") {
+    // Pieces rendered with another texture image, or a mesh with other vn or vt lines, were merged and
+    // resumed as one render: only the scene file, mesh positions and triangles and the environment counted.
+    const fs::path textured = scene_path("ch04_textured.json"), smooth = scene_path("ch04_smooth_mesh.json");
+    const Scene wood = load_scene(textured), torus = load_scene(smooth);
+    const std::uint64_t wood_print = scene_fingerprint(wood, textured);
+    const std::uint64_t torus_print = scene_fingerprint(torus, smooth);
+    CHECK(scene_fingerprint(wood, textured) == wood_print);  // the same files: the same fingerprint
+
+    const auto with_texture = [&](auto change) {
+        Scene scene = wood;
+        for (Material& m : scene.materials) {
+            if (!m.texture) continue;
+            if (auto* image = std::get_if<ImageTextureDesc>(&m.texture->pattern)) {
+                TextureImage texels = *image->image;
+                change(texels);
+                image->image = std::make_shared<const TextureImage>(texels);
+            }
+        }
+        return scene_fingerprint(scene, textured);
+    };
+    CHECK(with_texture([](TextureImage& t) { t.texels[5].g += Real(0.25); }) != wood_print);
+    CHECK(with_texture([](TextureImage& t) { t.width *= 2, t.height /= 2; }) != wood_print);
+
+    const auto with_mesh = [&](auto change) {
+        Scene scene = torus;
+        for (Shape& shape : scene.shapes) {
+            if (auto* mesh = std::get_if<MeshShape>(&shape.geometry)) change(*mesh);
+        }
+        return scene_fingerprint(scene, smooth);
+    };
+    CHECK(with_mesh([](MeshShape& m) { m.normals[3].x = -m.normals[3].x; }) != torus_print);
+    CHECK(with_mesh([](MeshShape& m) { m.normal_corners[0][1] = m.normal_corners[0][0]; }) != torus_print);
+    CHECK(with_mesh([](MeshShape& m) { m.texture_coordinates[2].x += Real(0.5); }) != torus_print);
+    CHECK(with_mesh([](MeshShape& m) { m.texture_corners[0][1] = m.texture_corners[0][0]; }) != torus_print);
 }

@@ -3,7 +3,9 @@
 # of one is lost under another (exit 2, one line, before any work, nothing changed), by name or by a link:
 #  1. rt_merge --out naming a piece (its x.film), rt_compare --out naming image A or B;
 #  2. a run's --heat or --csv naming a file the run writes (x.partial.png, written when interrupted; x.pfm),
-#     or its scene; --resume NAME.partial.film may still be replaced by the run's own film;
+#     or its scene; --resume NAME.partial.film may still be replaced by the run's own film; any output (the
+#     image, the radiance, the heat maps, the partial image, the film) naming a file the scene reads (a
+#     texture, the environment image, a mesh);
 #  3. what rt_merge prints of a film (its chapter, scene and flags) and of a piece's name, escaped: no newline,
 #     escape byte or NUL reaches the terminal.
 here=$(cd "$(dirname "$0")" && pwd)
@@ -20,6 +22,25 @@ ln -s p0.film alias.film
 "$exe" --width 16 --height 8 --spp 1 --threads 2 --quiet --out ca.png > /dev/null 2>&1 || fail "ca.png failed"
 cp ca.png cb.png
 cp "$here/../../assets/scenes/ch01_default.json" scene.json
+# A scene that reads a texture (and another named like a partial image), an environment image (a PFM) and a
+# mesh named like a film.
+S="$P/scene_files" && mkdir -p "$S"
+cp "$here/../../assets/textures/ch04_wood.png" "$S/wood.png"
+cp ca.png "$S/x.partial.png"
+cp ca.pfm "$S/sky.pfm"
+cp "$here/../../assets/meshes/ch04_torus.obj" "$S/torus.film"
+cat > "$S/scene.json" <<'JSON'
+{
+  "camera": {"from": [0, 1, 5], "at": [0, 0, 0]},
+  "materials": {"wood": {"type": "diffuse", "albedo": {"texture": "wood.png"}},
+                "tiles": {"type": "diffuse", "albedo": {"texture": "x.partial.png"}},
+                "matte": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+  "shapes": [{"type": "sphere", "center": [-1.5, 0, 0], "radius": 0.5, "material": "wood"},
+             {"type": "sphere", "center": [1.5, 0, 0], "radius": 0.5, "material": "tiles"},
+             {"type": "mesh", "file": "torus.film", "material": "matte"}],
+  "lights": [{"type": "environment", "image": "sky.pfm"}]
+}
+JSON
 inputs_before=$(snapshot "$P")
 unchanged() { [ "$(snapshot "$P")" = "$inputs_before" ] || fail "$1: an input was changed"; }
 
@@ -59,6 +80,25 @@ expect_bad_input "--csv naming the scene" \
     "$name: --csv: the table $P/scene.json is the scene $P/scene.json: it would be replaced; give another name" \
     0 -- "$exe" "${base[@]}" --aa-study --scene "$P/scene.json" --csv "$P/scene.json"
 unchanged "--csv naming the scene"
+# The files the scene reads are inputs: no output may replace one.
+scene_files=("$exe" "${base[@]}" --scene "$S/scene.json")
+expect_bad_input "--out naming the scene's texture" \
+    "$name: --out: the image $S/wood.png is the texture of materials.wood $S/wood.png: it would be replaced; give another name" \
+    0 -- "${scene_files[@]}" --out "$S/wood.png"
+expect_bad_input "--out whose radiance is the scene's environment image" \
+    "$name: --out: the radiance $S/sky.pfm is the environment image $S/sky.pfm: it would be replaced; give another name" \
+    0 -- "${scene_files[@]}" --out "$S/sky.png"
+expect_bad_input "--heat naming the scene's texture" \
+    "$name: --heat: the heat maps ../pieces/scene_files/wood.png is the texture of materials.wood $S/wood.png: it would be replaced; give another name" \
+    0 -- "${scene_files[@]}" --out out.png --heat ../pieces/scene_files/wood.png
+expect_bad_input "--out whose partial image is the scene's texture" \
+    "$name: --out: the partial image $S/x.partial.png is the texture of materials.tiles $S/x.partial.png: it would be replaced; give another name" \
+    0 -- "${scene_files[@]}" --out "$S/x.png"
+expect_bad_input "--samples whose film is the scene's mesh" \
+    "$name: --out: the film $S/torus.film is the mesh of shapes[2] $S/torus.film: it would be replaced; give another name" \
+    0 -- "${scene_files[@]}" --samples 0:2 --out "$S/torus.png"
+unchanged "an output naming a file the scene reads"
+(cd "$work" && "${scene_files[@]}" --out scene_files.png > /dev/null 2>&1) || fail "the scene with files was not rendered"
 # --resume may continue a film into the same name (an interrupted run's film, continued and interrupted again).
 cp "$P/p0.film" "$work/again.film"
 (cd "$work" && "$exe" "${base[@]}" --samples 0:4 --resume again.film --out again.png > /dev/null 2>&1) ||

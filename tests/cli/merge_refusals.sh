@@ -3,8 +3,9 @@
 # naming the offending piece, and no file written: rt_merge given a gap, an overlap, pieces of other renders
 # (seed, size, samples per pixel, chapter flags, scene, chapter), an interrupted piece, a corrupt, truncated or
 # other-version film, a film holding values no render writes (a negative sum, one past what its samples
-# reach, a NaN flag), or a file that is no film; a chapter given a bad --samples or a --resume film that does
-# not fit or holds such values.
+# reach, a NaN flag), or a file that is no film; pieces of a scene whose texture image or mesh normals or
+# texture coordinates changed between them; a chapter given a bad --samples or a --resume film that does not
+# fit or holds such values.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 exe=$1
@@ -28,6 +29,32 @@ piece scene 2:4 --scene "$here/../../assets/scenes/cornell.json"
 "$exe" --width 16 --height 9 --spp 6 --threads 2 --quiet --samples 2:4 --out size.png > /dev/null 2>&1 || fail "size piece"
 "$exe" --width 16 --height 8 --spp 8 --threads 2 --quiet --samples 2:4 --out spp.png > /dev/null 2>&1 || fail "spp piece"
 "$other" "${base[@]}" --samples 2:4 --out chapter.png > /dev/null 2>&1 || fail "chapter piece"
+# One scene's pieces, its files changed between them: its texture image (b.png in place of wood.png), its
+# mesh's first normal, its mesh's first texture coordinate. Restored, a piece fits again.
+S="$pieces/scene_files" && mkdir -p "$S"
+cp "$here/../../assets/textures/ch04_wood.png" "$S/wood.png.original" && cp "$S/wood.png.original" "$S/wood.png"
+cp "$here/../../assets/meshes/ch04_torus.obj" "$S/torus.obj.original" && cp "$S/torus.obj.original" "$S/torus.obj"
+cat > "$S/scene.json" <<'JSON'
+{
+  "camera": {"from": [0, 1, 5], "at": [0, 0, 0]},
+  "materials": {"wood": {"type": "diffuse", "albedo": {"texture": "wood.png"}},
+                "matte": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+  "shapes": [{"type": "sphere", "center": [-1.5, 0, 0], "radius": 0.5, "material": "wood"},
+             {"type": "mesh", "file": "torus.obj", "material": "matte"}]
+}
+JSON
+piece files_a 0:2 --scene "$S/scene.json"
+piece files_c 4:6 --scene "$S/scene.json"
+cp b.png "$S/wood.png"
+piece texture 2:4 --scene "$S/scene.json"
+cp "$S/wood.png.original" "$S/wood.png"
+sed -i '0,/^vn /s/^vn .*/vn 0.6 0.8 0/' "$S/torus.obj"
+piece normal 2:4 --scene "$S/scene.json"
+cp "$S/torus.obj.original" "$S/torus.obj"
+sed -i '0,/^vt /s/^vt .*/vt 0.5 0.5/' "$S/torus.obj"
+piece uv 2:4 --scene "$S/scene.json"
+cp "$S/torus.obj.original" "$S/torus.obj"
+piece files_b 2:4 --scene "$S/scene.json"
 # Corrupt: one byte of the pixel data changed. Truncated: the last 100 bytes cut. Version: the version field
 # (bytes 8-11) set to 2. Not a film: a PFM.
 cp b.film corrupt.film && printf '\x55' | dd of=corrupt.film bs=1 seek=500 conv=notrunc status=none
@@ -94,6 +121,13 @@ refused "other chapter flags" "$P/flags.film: not a piece of the same render as 
     "$P/a.film" "$P/flags.film" "$P/c.film"
 refused "another scene" "$P/scene.film: not a piece of the same render as $P/a.film: scene cornell.json" \
     "$P/a.film" "$P/scene.film" "$P/c.film"
+"$merge" --out "$scratch/files.png" "$P/files_a.film" "$P/files_b.film" "$P/files_c.film" > /dev/null 2>&1 ||
+    fail "pieces of one scene, its files restored, were not merged"
+for changed in texture normal uv; do
+    refused "another $changed in the scene's files" \
+        "$P/$changed.film: not a piece of the same render as $P/files_a.film: scene scene.json (its files' fingerprint " \
+        "$P/files_a.film" "$P/$changed.film" "$P/files_c.film"
+done
 refused "another chapter" "$P/chapter.film: not a piece of the same render as $P/a.film: chapter $(basename "$other"), expected $name" \
     "$P/a.film" "$P/chapter.film" "$P/c.film"
 refused "a corrupt film" "$P/corrupt.film: corrupt: its checksum does not match its contents" \
@@ -127,6 +161,11 @@ chapter_refused "--samples empty range" "--samples: must be A:B with 0 <= A < B 
 chapter_refused "--samples past spp" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 0:7" --samples 0:7
 chapter_refused "--samples not a range" "--samples: must be A:B with 0 <= A < B <= 6 (the samples per pixel), got 2" --samples 2
 chapter_refused "--resume another seed" "--resume: $P/seed.film: a film of another render: seed 7, expected 1" --resume "$P/seed.film"
+sed -i '0,/^vn /s/^vn .*/vn 0.6 0.8 0/' "$S/torus.obj"
+chapter_refused "--resume after the mesh's normals changed" \
+    "--resume: $P/files_a.film: a film of another render: scene scene.json (its files' fingerprint " \
+    --scene "$S/scene.json" --resume "$P/files_a.film"
+cp "$S/torus.obj.original" "$S/torus.obj"
 chapter_refused "--resume a negative sum" "--resume: $P/negative.film: pixel (0, 0) has a sum of -1e+12" --resume "$P/negative.film"
 chapter_refused "--resume corrupt" "--resume: $P/corrupt.film: corrupt" --resume "$P/corrupt.film"
 chapter_refused "--resume moved" "--resume: $P/b.film: takes samples 2:4: --samples can only extend it (2:B, B >= 4), got 0:6" \

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -202,8 +203,16 @@ struct EnvironmentLight {
     Real rotate_y = 0;                   // degrees, counter-clockwise looking down +y
 };
 
+// A file the scene read: the scene file itself, a mesh, a texture or an environment image. A run may write no
+// output over it (run_files.hpp).
+struct SceneInput {
+    std::string what;            // "the texture of materials.wood"
+    std::filesystem::path path;  // as it was opened: the scene's folder joined with the name the scene gives
+};
+
 struct Scene {
-    std::string file;  // where it was loaded from, for messages
+    std::string file;                // where it was loaded from, for messages
+    std::vector<SceneInput> inputs;  // every file it read, in the order read: the scene file first
     CameraDesc camera;
     ImageDesc image;
     std::vector<Material> materials;

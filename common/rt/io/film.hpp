@@ -20,7 +20,7 @@ inline constexpr std::uint32_t kFilmVersion = 1;
 struct FilmIdentity {
     std::string chapter;           // "ch06_monte_carlo"
     std::string scene;             // the scene file's name, for messages only
-    std::uint64_t scene_hash = 0;  // FNV-1a of the scene file's bytes and of its meshes' (scene_fingerprint)
+    std::uint64_t scene_hash = 0;  // FNV-1a of every file the scene read (scene_fingerprint)
     std::string options;           // the chapter's own flags as given, "--strategy=mis --max-depth=8"
     int width = 0;
     int height = 0;

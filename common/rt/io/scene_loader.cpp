@@ -65,6 +65,24 @@ EffectSet read_effects(const Node& node) {
     return effects;
 }
 
+// Every file the scene read, in the order its readers opened them, by the same paths: the scene file, the
+// materials' textures, the meshes, the environment image (each name joined to the scene's folder).
+std::vector<SceneInput> files_read(const Scene& scene, const fs::path& file) {
+    const fs::path folder = file.parent_path();
+    std::vector<SceneInput> inputs{{"the scene", file}};
+    for (const Material& m : scene.materials) {
+        const auto* image = m.texture ? std::get_if<ImageTextureDesc>(&m.texture->pattern) : nullptr;
+        if (image) inputs.push_back({"the texture of materials." + shown_name(m.name), folder / image->file});
+    }
+    for (const Shape& shape : scene.shapes) {
+        if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry))
+            inputs.push_back({"the mesh of " + shape.place, folder / mesh->file});
+    }
+    if (scene.environment && scene.environment->image)
+        inputs.push_back({"the environment image", folder / scene.environment->image_file});
+    return inputs;
+}
+
 }  // namespace
 
 Scene parse_scene(const std::string& text, const fs::path& file) {
@@ -116,6 +134,7 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
     }
     if (top.has("medium")) scene.medium = read_medium(top["medium"]);
     if (top.has("effects")) scene.effects = read_effects(top["effects"]);
+    scene.inputs = files_read(scene, file);
     return scene;
 }
 

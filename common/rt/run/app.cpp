@@ -228,11 +228,11 @@ fs::path output_png(const CoreOptions& options, const ChapterInfo& chapter) {
     return png;
 }
 
-// Every file this run may write, finished or partial, is one of its own and no input, and is probed before
-// the render starts: its staging file is created and removed (staged_file.hpp). (x.film only when the run
-// writes one: a piece of a render, or a resumed one.)
+// Every file this run may write, finished or partial, is one of its own and no input (a file the scene read,
+// --reference, the --resume film), and is probed before the render starts: its staging file is created and
+// removed (staged_file.hpp). (x.film only when the run writes one: a piece of a render, or a resumed one.)
 void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter, const fs::path& png,
-                   const fs::path& scene_file) {
+                   const Scene& scene) {
     const CoreOptions& options = flags.core;
     const SplitOptions& split = flags.split;
     if (!options.heat.empty() && fs::path(options.heat).extension() != ".png")
@@ -242,7 +242,8 @@ void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chap
     if (!options.heat.empty()) outputs.push_back({"--heat", "the heat maps", options.heat});
     if (const CLI::Option* csv = app.get_option_no_throw("--csv"); csv && csv->count() > 0)
         outputs.push_back({"--csv", "the table", csv->as<std::string>()});
-    std::vector<RunFile> inputs{{"--scene", "the scene", scene_file}};
+    std::vector<RunFile> inputs;
+    for (const SceneInput& input : scene.inputs) inputs.push_back({"--scene", input.what, input.path});
     if (!options.reference.empty()) inputs.push_back({"--reference", "the reference", options.reference});
     // The film --resume continues may be replaced by this run's own film, which holds all of its samples.
     const bool resume_replaced_by_film = std::any_of(outputs.begin(), outputs.end(), [&](const RunFile& f) {
@@ -345,7 +346,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     const Scene scene = load_scene(scene_file);
     RenderSettings settings = render_settings(flags.core, scene, mpi);
     const fs::path png = output_png(flags.core, chapter);
-    if (!flags.live.live) probe_outputs(app, flags, chapter, png, scene_file);
+    if (!flags.live.live) probe_outputs(app, flags, chapter, png, scene);
     const Reference reference = read_reference(flags.core.reference, settings);
     const SplitPlan plan =
         plan_split(flags.split, film_identity(app, flags, chapter, scene, scene_file, settings), mpi, settings);

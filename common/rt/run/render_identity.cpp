@@ -9,6 +9,15 @@
 
 namespace rt {
 
+namespace {
+
+template <class T>
+std::uint64_t hash_of(const std::vector<T>& values, std::uint64_t hash) {
+    return fnv1a(values.data(), values.size() * sizeof(T), hash);
+}
+
+}  // namespace
+
 std::uint64_t scene_fingerprint(const Scene& scene, const std::filesystem::path& scene_file) {
     std::ifstream in(scene_file, std::ios::binary);
     std::ostringstream text;
@@ -17,13 +26,22 @@ std::uint64_t scene_fingerprint(const Scene& scene, const std::filesystem::path&
     std::uint64_t hash = fnv1a(text.str());
     for (const Shape& shape : scene.shapes) {
         if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry)) {
-            hash = fnv1a(mesh->positions.data(), mesh->positions.size() * sizeof(Vec3), hash);
-            hash = fnv1a(mesh->triangles.data(), mesh->triangles.size() * sizeof(mesh->triangles[0]), hash);
+            hash = hash_of(mesh->positions, hash);
+            hash = hash_of(mesh->triangles, hash);
+            hash = hash_of(mesh->normals, hash);
+            hash = hash_of(mesh->normal_corners, hash);
+            hash = hash_of(mesh->texture_coordinates, hash);
+            hash = hash_of(mesh->texture_corners, hash);
         }
     }
-    if (scene.environment && scene.environment->image) {
-        const std::vector<Color>& pixels = scene.environment->image->pixels();
-        hash = fnv1a(pixels.data(), pixels.size() * sizeof(Color), hash);
+    if (scene.environment && scene.environment->image)
+        hash = hash_of(scene.environment->image->pixels(), hash);
+    for (const Material& m : scene.materials) {
+        const auto* texture = m.texture ? std::get_if<ImageTextureDesc>(&m.texture->pattern) : nullptr;
+        if (!texture) continue;
+        const int size[2] = {texture->image->width, texture->image->height};
+        hash = fnv1a(size, sizeof size, hash);
+        hash = hash_of(texture->image->texels, hash);
     }
     return hash;
 }

@@ -12,8 +12,10 @@
 
 namespace rt {
 
-// FNV-1a of the scene file's bytes, then of every mesh's vertices and triangles as loaded (so an edited OBJ
-// file changes it too). Throws InputError when the file cannot be read.
+// FNV-1a of the scene file's bytes, then of what was loaded from every other file it read (Scene::inputs):
+// each mesh's positions, triangles, normals and texture coordinates with their corners, the environment
+// image's pixels, each image texture's size and texels. So an edited mesh, texture or environment image
+// changes it too. Throws InputError when the scene file cannot be read.
 std::uint64_t scene_fingerprint(const Scene& scene, const std::filesystem::path& scene_file);
 
 // The options given on the command line other than `core` (the core flags, which a film records apart or
