@@ -273,7 +273,7 @@ TEST_CASE("A film is input: negative sums, sums beyond its samples' reach and Na
     // The parts of 2^50 and above: never negative, and below 2^128 a sample.
     Film high_negative = piece({0, 3});
     high_negative.sums.at(3, 2).high[2] = -1;
-    refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 (its parts of 2^50 and above) in channel 2"));
+    refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 in channel 2") && Catch::Contains("parts of 2^50 and above"));
     Film high_huge = piece({0, 3});
     high_huge.sums.at(3, 2).high[0] = (Int128(3) << 78) + 1;
     refused(high_huge, Catch::Contains("in channel 0 for 3 samples, outside [0, 1.02085e+39]"));

@@ -140,20 +140,20 @@ void check_film_values(const Film& film, const std::string& name) {
             wrong =
                 "holds a NaN or infinite sample: the render that wrote it failed; render this piece again";
         }
-        auto outside = [&](std::size_t c, const char* part, double sum, double low, double high) {
-            return "has a sum of " + format_double(sum) + " (" + part + ") in channel " + std::to_string(c) +
-                   " for " + std::to_string(p.count) + " samples, outside [" + format_double(low) + ", " +
-                   format_double(high) + "] (radiance is never negative, and a sample is below " +
-                   format_double(kSampleLimit) + ")";
+        auto outside = [&](std::size_t c, double sum, double low, double high, const std::string& limit) {
+            return "has a sum of " + format_double(sum) + " in channel " + std::to_string(c) + " for " +
+                   std::to_string(p.count) + " samples, outside [" + format_double(low) + ", " +
+                   format_double(high) + "] (radiance is never negative, and " + limit + ")";
         };
         for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
             const Int128 low = p.channels[c], high = p.high[c], count = p.count;
             if (low < count * least || low > count * most) {
-                wrong = outside(c, "its parts below 2^50", double(low) * 0x1p-56, double(count * least) * 0x1p-56,
-                                double(count * most) * 0x1p-56);
+                wrong = outside(c, double(low) * 0x1p-56, double(count * least) * 0x1p-56,
+                                double(count * most) * 0x1p-56, "a sample's part below 2^50 is at most 2^50");
             } else if (high < 0 || high > count * most_high) {
-                wrong = outside(c, "its parts of 2^50 and above", double(high) * kHighUnit, 0,
-                                double(count * most_high) * kHighUnit);
+                wrong = outside(c, double(high) * kHighUnit, 0, double(count * most_high) * kHighUnit,
+                                "a sample is below " + format_double(kSampleLimit) +
+                                    "; this is the sum of the samples' parts of 2^50 and above");
             }
         }
         if (!wrong.empty()) {
