@@ -139,8 +139,8 @@ TEST_CASE("Scenes at the edge of what is allowed still load", "[bad_input]") {
         parse_scene(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1], "vfov": 179.9}})", "e.json"));
 }
 
-TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR, a negative pixel and a scale "
-          "that overflows refused",
+TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR, a negative pixel and a scaled "
+          "pixel above 10^9 refused, one of 10^9 loaded",
           "[bad_input]") {
     const fs::path folder = temporary_folder();
     in_folder(folder, [&] {
@@ -170,7 +170,16 @@ TEST_CASE("An environment image: OpenEXR refused where the build has no OpenEXR,
                   parse_scene("{" + std::string(kCamera) +
                                   R"(, "lights": [{"type": "environment", "image": "bright.pfm", "scale": 1e9}]})",
                               "e.json");
-              }) == "e.json: lights[0].scale: makes pixel (0, 0) of the image infinite, got 1e+09");
+              }) == "e.json: lights[0].scale: 1e+09 makes pixel (0, 0) of the image 1e+47, above 1e+09, the limit of "
+                    "every radiance in a scene (as of emission, intensity and radiance), which keeps chapter 11's "
+                    "float sums of samples finite");
+        Image edge(1, 1);
+        edge.at(0, 0) = Color(2e9f, 0, 1);
+        write_pfm(edge, "edge.pfm");
+        const Scene scene = parse_scene(
+            "{" + std::string(kCamera) + R"(, "lights": [{"type": "environment", "image": "edge.pfm", "scale": 0.5}]})",
+            "e.json");
+        CHECK(scene.environment->radiance.r == 1e9f);
     });
     fs::remove_all(folder);
 }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -270,6 +271,38 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
         ++scenes;
     }
     CHECK(scenes >= 20);
+}
+
+// A point light of 1e9 at 1e-4 above a white floor, seen from straight above through a field of view so
+// narrow that every pixel looks at the spot below the light: (1/π) · I / h² = 1e9 / (π 1e-8) ≈ 3.18e16.
+constexpr const char* kBrightFloor = R"({"camera": {"from": [0, 5e-4, 0], "at": [0, 0, 0], "up": [0, 0, 1],
+    "vfov": 1e-3},
+  "materials": {"white": {"type": "diffuse", "albedo": [1, 1, 1]}},
+  "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"}],
+  "lights": [{"type": "point", "position": [0, 1e-4, 0], "intensity": [1e9, 1e9, 1e9]}]})";
+
+TEST_CASE("A point light of 1e9 at 1e-4 above a white floor renders 1e9 / (π 1e-8) in every chapter, unclamped",
+          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.wide_bvh_traversal]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
+          "[ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    const Scene scene = parse_scene(kBrightFloor, "bright_floor.json");
+    check_scene(scene, "bright_floor.json");
+    const double exact = 1e9 / (std::numbers::pi * 1e-8);
+    for (const Chapter& chapter : chapters()) {
+        const Image image = chapter.render(scene, simulated_effects(scene, chapter.supported), tiny_settings());
+        double lowest = exact, highest = exact;
+        for (const Color& pixel : image.pixels()) {
+            for (int c = 0; c < 3; ++c) {
+                lowest = std::min(lowest, double(pixel[c]));
+                highest = std::max(highest, double(pixel[c]));
+            }
+        }
+        INFO(chapter.name << ": pixels from " << lowest << " to " << highest << ", exactly " << exact);
+        CHECK(lowest > exact * (1 - 1e-5));
+        CHECK(highest < exact * (1 + 1e-5));
+    }
 }
 
 TEST_CASE("400 random scenes render the same, within noise, with needed ∩ supported as with all supported",

@@ -121,9 +121,43 @@ TEST_CASE("NaN and infinite samples make the pixel NaN or infinite, as float add
     CHECK(std::isnan(m.r));  // +inf and -inf
     CHECK(m.g == inf);
     CHECK(std::isnan(m.b));
-    PixelSum huge;  // beyond ±2^50, a sample is clamped: its pixel stays finite
-    huge.add(Color(Real(1e30), Real(-1e30), 0));
-    CHECK(huge.mean() == Color(Real(0x1p50), Real(-0x1p50), 0));
+}
+
+TEST_CASE("Samples up to float's largest are summed, merged and filmed exactly, none clamped", "[split]") {
+    // A point light of 1e9 at 1e-4 above a white floor (1e9 / (π 1e-8)), float's largest, and an ordinary
+    // sample beside them.
+    const Real largest = std::numeric_limits<float>::max();
+    const Color first(Real(3.1830989e16), largest, Real(0.5)), second(Real(3.1830989e16), Real(3e38), Real(2e15));
+    PixelSum one;
+    one.add(first);
+    CHECK(one.mean() == first);
+    PixelSum two;
+    two.add(first);
+    two.add(second);
+    const Color mean((double(first.r) + double(second.r)) / 2, (double(first.g) + double(second.g)) / 2,
+                     (double(first.b) + double(second.b)) / 2);
+    CHECK(two.mean() == mean);
+    PixelSum negative;  // below −2^50 too
+    negative.add(Color(-largest, Real(-1e20), Real(-0x1p50)));
+    CHECK(negative.mean() == Color(-largest, Real(-1e20), Real(-0x1p50)));
+    if constexpr (sizeof(Real) > sizeof(float)) {  // a double build: beyond the sums, a sample counts as infinite
+        PixelSum beyond;
+        beyond.add(Color(Real(0x1p128), 0, 0));
+        CHECK(beyond.mean().r == kInfinity);
+    }
+    // Two pieces of one sample each, filmed, read back and merged: the whole's sum, bit for bit.
+    const FilmIdentity id{"ch00_test", "test.json", 42, "", 1, 1, 2, 3};
+    auto piece = [&](SampleRange range, const Color& sample) {
+        Film film{id, range, PixelSums(1, 1)};
+        film.sums.at(0, 0).add(sample);
+        return film;
+    };
+    const fs::path file = fs::temp_directory_path() / "rt_split_render_bright.film";
+    write_film(piece({1, 2}, second), file);
+    const Film merged = merge_films({{"a.film", piece({0, 1}, first)}, {"b.film", read_film(file)}});
+    CHECK(merged.sums.at(0, 0) == two);
+    CHECK(merged.sums.mean_image().at(0, 0) == mean);
+    fs::remove(file);
 }
 
 TEST_CASE("split_range cuts a range into contiguous parts differing by at most one sample", "[split]") {
@@ -239,6 +273,13 @@ TEST_CASE("A film is input: negative sums, sums beyond its samples' reach and Na
     Film huge = piece({0, 3});
     huge.sums.at(3, 2).channels[0] = (Int128(1) << 126) + 1;
     refused(huge, Catch::Contains("in channel 0 for 3 samples, outside [-4.57764e-05, 3.3777e+15]"));
+    // The parts of 2^50 and above: never negative, and below 2^128 a sample.
+    Film high_negative = piece({0, 3});
+    high_negative.sums.at(3, 2).high[2] = -1;
+    refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 in channel 2") && Catch::Contains("parts of 2^50 and above"));
+    Film high_huge = piece({0, 3});
+    high_huge.sums.at(3, 2).high[0] = (Int128(3) << 78) + 1;
+    refused(high_huge, Catch::Contains("in channel 0 for 3 samples, outside [0, 1.02085e+39]"));
     Film nan = piece({0, 3});
     nan.sums.at(3, 2).non_finite = PixelSum::kNan << 3;
     refused(nan, Catch::Contains("holds a NaN or infinite sample"));

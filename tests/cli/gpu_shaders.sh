@@ -8,6 +8,8 @@
 #     one (whole passes) written when a pass was done.
 #  4. On llvmpipe, an image wider than its largest texture (16384 pixels), which rendered black with exit 0:
 #     refused before rendering, exit 2, naming the limit, for both shaders.
+#  5. An environment image of 3e38 (its float sums overflowed: exit 1, "a bug in the chapter"): refused at
+#     load as in every chapter, exit 2 and the line tests/data/bad_scenes/expected.tsv gives it.
 # Exits 77 (skipped) after 1 when this machine has no OpenGL for 2.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
@@ -71,4 +73,11 @@ if [ "$llvmpipe" = 1 ]; then
             "$exe" --width 16385 --height 1 --spp 1 --quiet --shader "$shader" --out out.png
     done
 fi
+# 5.
+data="$here/../data/bad_scenes"
+scene=environment_image_beyond_limit.json
+expected=$(awk -F'\t' -v f="$scene" '$1 == f { print $2 }' "$data/expected.tsv")
+[ -n "$expected" ] || fail "$scene: no line in expected.tsv"
+expect_bad_input "$name --scene $scene" "$name: $expected" 0 -- \
+    env -C "$data" "$exe" --scene "$scene" --width 8 --height 8 --spp 4 --quiet --out "$work/out.png"
 finish

@@ -59,7 +59,7 @@ piece files_b 2:4 --scene "$S/scene.json"
 # (bytes 8-11) set to 2. Not a film: a PFM.
 cp b.film corrupt.film && printf '\x55' | dd of=corrupt.film bs=1 seek=500 conv=notrunc status=none
 head -c -100 b.film > truncated.film
-cp b.film version.film && printf '\x02' | dd of=version.film bs=1 seek=8 conv=notrunc status=none
+cp b.film version.film && printf '\x01' | dd of=version.film bs=1 seek=8 conv=notrunc status=none
 # Interrupted: b.film's range widened to 2:5 (checksum recomputed), so its pixels have 2 of its 3 samples.
 python3 - b.film interrupted.film <<'PY'
 import struct, sys
@@ -84,7 +84,7 @@ def write(name, red=None, flags=None):
     if red is not None:
         d[at:at + 16] = (red & ((1 << 128) - 1)).to_bytes(16, "little")
     if flags is not None:
-        struct.pack_into("<I", d, at + 52, flags)
+        struct.pack_into("<I", d, at + 100, flags)  # after the three sums and the three high parts, the count
     h = 0xcbf29ce484222325
     for b in d:
         h = ((h ^ b) * 0x100000001b3) & 0xffffffffffffffff
@@ -134,7 +134,7 @@ refused "a corrupt film" "$P/corrupt.film: corrupt: its checksum does not match 
     "$P/a.film" "$P/corrupt.film" "$P/c.film"
 refused "a truncated film" "$P/truncated.film: corrupt: its checksum does not match its contents" \
     "$P/a.film" "$P/truncated.film" "$P/c.film"
-refused "another version" "$P/version.film: film version 2, this program reads version 1" \
+refused "another version" "$P/version.film: film version 1, this program reads version 2" \
     "$P/a.film" "$P/version.film" "$P/c.film"
 refused "a PFM" "$P/b.pfm: not a film file (it does not start with \"rt-film\")" "$P/a.film" "$P/b.pfm" "$P/c.film"
 refused "a missing piece" "$P/none.film: must be a film file, got no such file" "$P/a.film" "$P/none.film"

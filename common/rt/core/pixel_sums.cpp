@@ -7,21 +7,27 @@
 namespace rt {
 namespace {
 
-Real channel_mean(Int128 sum, std::uint32_t count, std::uint32_t flags) {
+Real channel_mean(double sum, std::uint32_t count, std::uint32_t flags) {
     const bool plus = (flags & PixelSum::kPlusInfinity) != 0, minus = (flags & PixelSum::kMinusInfinity) != 0;
     if ((flags & PixelSum::kNan) != 0 || (plus && minus)) return std::numeric_limits<Real>::quiet_NaN();
     if (plus) return kInfinity;
     if (minus) return -kInfinity;
     if (count == 0) return 0;
-    return Real(double(sum) * 0x1p-56 / double(count));
+    return Real(sum / double(count));
 }
 
 }  // namespace
 
+// Without a high part (every sample below 2^50), the low part's value alone, converted once.
+double PixelSum::total(int c) const {
+    const std::size_t i = std::size_t(c);
+    const double low = double(channels[i]) * 0x1p-56;
+    return high[i] == 0 ? low : double(high[i]) * kHighUnit + low;
+}
+
 Color PixelSum::mean() const {
     Color m;
-    for (int c = 0; c < 3; ++c)
-        m[c] = channel_mean(channels[std::size_t(c)], count, (non_finite >> (3 * c)) & 7u);
+    for (int c = 0; c < 3; ++c) m[c] = channel_mean(total(c), count, (non_finite >> (3 * c)) & 7u);
     return m;
 }
 
@@ -56,11 +62,10 @@ Color variance_of_mean(const PixelSum& sum, const PixelSum& squares) {
     const double n = double(sum.count);
     if (sum.count < 2) return Color(0);
     Color variance;
-    for (std::size_t c = 0; c < 3; ++c) {
-        const double total = double(sum.channels[c]) * 0x1p-56;
-        const double total_squares = double(squares.channels[c]) * 0x1p-56;
+    for (int c = 0; c < 3; ++c) {
+        const double total = sum.total(c), total_squares = squares.total(c);
         const double s2 = (total_squares - total * total / n) / (n - 1);
-        variance[int(c)] = Real(std::max(s2, 0.0) / n);
+        variance[c] = Real(std::max(s2, 0.0) / n);
     }
     return variance;
 }

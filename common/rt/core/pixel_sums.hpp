@@ -1,15 +1,17 @@
-// Exact per-pixel sums of samples. Each channel of each sample is turned into a whole number of units of
-// 2^-56 (truncated toward zero) and added into a 128-bit integer: integer addition is exact, so the sums are
-// the same bits whatever order the samples are added in, on one thread or many, in one run or in pieces
-// merged later (rt_merge), in one process or many (MPI). A pixel's value is then its sum over its sample
-// count, rounded once.
+// Exact per-pixel sums of samples. Each channel of each sample is turned into whole numbers of units and
+// added into 128-bit integers: integer addition is exact, so the sums are the same bits whatever order the
+// samples are added in, on one thread or many, in one run or in pieces merged later (rt_merge), in one process
+// or many (MPI). A pixel's value is then its sum over its sample count, rounded once.
 //
-// Range: a sample's channel is clamped to ±2^50 (about 1.1e15, far above any radiance of the course), so
-// kMaxSamplesPerPixel (2^20) samples cannot overflow; NaN and infinite samples are kept as flags, which make
-// the pixel NaN or infinite as floating-point addition would (and the run then fails: no image may hold one).
+// Range: every finite float. A channel v is split exactly into its part of 2^50 and above, counted in units of
+// 2^50 (at most 2^78 a sample), and the rest, counted in units of 2^-56 (truncated toward zero, at most 2^106
+// a sample): kMaxSamplesPerPixel (2^20) samples stay inside 128 bits in both. A sample below 2^50 (the fast
+// path below 2^7 included) has no high part and adds exactly what it did before the split. A sample of 2^128
+// or more (only a double build computes one) is beyond the sums and counts as infinite; NaN and infinite
+// samples are kept as flags, which make the pixel NaN or infinite as floating-point addition would (and the
+// run then fails: no image may hold one).
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -23,14 +25,16 @@ namespace rt {
 __extension__ typedef __int128 Int128;
 
 inline constexpr int kSumFractionBits = 56;
-inline constexpr double kSampleLimit = 0x1p50;
+inline constexpr double kHighUnit = 0x1p50;      // the unit of a sample's high part
+inline constexpr double kSampleLimit = 0x1p128;  // every sample is below it in magnitude, or counts as infinite
 
 // One pixel's samples summed exactly.
 struct PixelSum {
     // Flags of `non_finite`, for channel c shifted left by 3c.
     static constexpr std::uint32_t kNan = 1, kPlusInfinity = 2, kMinusInfinity = 4, kAllFlags = 0777;
 
-    std::array<Int128, 3> channels{};  // Σ samples, in units of 2^-kSumFractionBits
+    std::array<Int128, 3> channels{};  // Σ samples' parts below kHighUnit, in units of 2^-kSumFractionBits
+    std::array<Int128, 3> high{};      // Σ samples' parts of kHighUnit and above, in units of kHighUnit
     std::uint32_t count = 0;           // samples summed
     std::uint32_t non_finite = 0;      // flags of the samples that were NaN or infinite
 
@@ -47,24 +51,35 @@ struct PixelSum {
         ++count;
     }
     void add(const PixelSum& other) {
-        for (std::size_t c = 0; c < 3; ++c) channels[c] += other.channels[c];
+        for (std::size_t c = 0; c < 3; ++c) {
+            channels[c] += other.channels[c];
+            high[c] += other.high[c];
+        }
         count += other.count;
         non_finite |= other.non_finite;
     }
+    // Channel c's sum, in double.
+    double total(int c) const;
     // The sum over the count (0 for no sample), rounded to Real.
     Color mean() const;
     bool operator==(const PixelSum&) const = default;
 
   private:
     void add_channel(int c, double value) {
-        if (!std::isfinite(value)) {
+        if (!(std::fabs(value) < kSampleLimit)) {
             const std::uint32_t flag = std::isnan(value) ? kNan : value > 0 ? kPlusInfinity : kMinusInfinity;
             non_finite |= flag << (3 * c);
             return;
         }
-        const double units = std::clamp(value, -kSampleLimit, kSampleLimit) * 0x1p56;
+        const std::size_t i = std::size_t(c);
+        if (std::fabs(value) >= kHighUnit) {  // both parts exact: a multiple of 2^50, and the rest below it
+            const double units = std::trunc(value / kHighUnit);
+            high[i] += Int128(units);
+            value -= units * kHighUnit;
+        }
+        const double units = value * 0x1p56;
         // Both conversions truncate toward zero; the 64-bit one is a single instruction.
-        channels[std::size_t(c)] += std::fabs(units) < 0x1p63 ? Int128(std::int64_t(units)) : Int128(units);
+        channels[i] += std::fabs(units) < 0x1p63 ? Int128(std::int64_t(units)) : Int128(units);
     }
 };
 

@@ -27,7 +27,7 @@ std::string format_double(double x) {
 static_assert(std::endian::native == std::endian::little, "films are written and read little-endian");
 
 constexpr char kMagic[8] = {'r', 't', '-', 'f', 'i', 'l', 'm', '\n'};
-constexpr std::size_t kPixelBytes = 3 * 16 + 4 + 4;
+constexpr std::size_t kPixelBytes = 3 * 16 + 3 * 16 + 4 + 4;
 constexpr std::uint32_t kMaxTextBytes = 1 << 16;
 
 class Writer {
@@ -122,10 +122,12 @@ std::string first_difference(const FilmIdentity& expected, const FilmIdentity& o
 void check_film_values(const Film& film, const std::string& name) {
     const std::uint32_t samples = std::uint32_t(film.range.size());
     const int width = film.sums.width();
-    // Per sample, in units of 2^-kSumFractionBits: at most kSampleLimit, and at least −2^-16 (radiance
-    // is never negative; a colour computed as (d + 1) / 2 of a unit vector may round a hair below 0).
-    const Int128 most = Int128(kSampleLimit) << kSumFractionBits;
+    // Per sample, its part below kHighUnit in units of 2^-kSumFractionBits: at most kHighUnit, and at least
+    // −2^-16 (radiance is never negative; a colour computed as (d + 1) / 2 of a unit vector may round a hair
+    // below 0); its high part in units of kHighUnit: at most kSampleLimit / kHighUnit, and never negative.
+    const Int128 most = Int128(kHighUnit) << kSumFractionBits;
     const Int128 least = -(Int128(1) << (kSumFractionBits - 16));
+    const Int128 most_high = Int128(kSampleLimit / kHighUnit);
     for (std::size_t i = 0; i < film.sums.pixels().size(); ++i) {
         const PixelSum& p = film.sums.pixels()[i];
         std::string wrong;
@@ -138,15 +140,20 @@ void check_film_values(const Film& film, const std::string& name) {
             wrong =
                 "holds a NaN or infinite sample: the render that wrote it failed; render this piece again";
         }
+        auto outside = [&](std::size_t c, double sum, double low, double high, const std::string& limit) {
+            return "has a sum of " + format_double(sum) + " in channel " + std::to_string(c) + " for " +
+                   std::to_string(p.count) + " samples, outside [" + format_double(low) + ", " +
+                   format_double(high) + "] (radiance is never negative, and " + limit + ")";
+        };
         for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
-            const Int128 sum = p.channels[c], count = p.count;
-            if (sum < count * least || sum > count * most) {
-                wrong = "has a sum of " + format_double(double(sum) * 0x1p-56) + " in channel " +
-                        std::to_string(c) + " for " + std::to_string(p.count) + " samples, outside [" +
-                        format_double(double(count * least) * 0x1p-56) + ", " +
-                        format_double(double(count * most) * 0x1p-56) +
-                        "] (radiance is never negative, and a sample is at most " +
-                        format_double(kSampleLimit) + ")";
+            const Int128 low = p.channels[c], high = p.high[c], count = p.count;
+            if (low < count * least || low > count * most) {
+                wrong = outside(c, double(low) * 0x1p-56, double(count * least) * 0x1p-56,
+                                double(count * most) * 0x1p-56, "a sample's part below 2^50 is at most 2^50");
+            } else if (high < 0 || high > count * most_high) {
+                wrong = outside(c, double(high) * kHighUnit, 0, double(count * most_high) * kHighUnit,
+                                "a sample is below " + format_double(kSampleLimit) +
+                                    "; this is the sum of the samples' parts of 2^50 and above");
             }
         }
         if (!wrong.empty()) {
@@ -172,6 +179,7 @@ bool encode_film(const Film& film, std::FILE* file) {
     out.bytes().reserve(out.bytes().size() + film.sums.pixels().size() * kPixelBytes + 8);
     for (const PixelSum& p : film.sums.pixels()) {
         for (const Int128 c : p.channels) out.put(c);
+        for (const Int128 c : p.high) out.put(c);
         out.put(p.count);
         out.put(p.non_finite);
     }
@@ -243,6 +251,7 @@ Film read_film(const fs::path& path) {
     for (std::size_t i = 0; i < pixels; ++i) {
         PixelSum& p = film.sums.pixels()[i];
         for (Int128& c : p.channels) c = in.get<Int128>();
+        for (Int128& c : p.high) c = in.get<Int128>();
         p.count = in.get<std::uint32_t>();
         p.non_finite = in.get<std::uint32_t>();
     }

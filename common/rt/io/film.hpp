@@ -13,7 +13,7 @@
 
 namespace rt {
 
-inline constexpr std::uint32_t kFilmVersion = 1;
+inline constexpr std::uint32_t kFilmVersion = 2;  // 1 had no high parts (pixel_sums.hpp)
 
 // What makes two films pieces of one render: the same chapter, scene, flags, size, samples per pixel and
 // seed.
@@ -44,9 +44,9 @@ struct Film {
 
 // A film is input: every pixel must be what `range.size()` samples of a render can sum to — no more samples,
 // no unknown flag, no NaN or infinite sample (the render that wrote it failed), no negative sum (radiance is
-// never negative; 2^-16 a sample of rounding is let through) and no sum beyond its samples' limit
-// (kSampleLimit each, so a whole render's sum, at most kMaxSamplesPerPixel samples, stays far inside 128
-// bits). Throws InputError naming `name` and the first pixel that is not.
+// never negative; 2^-16 a sample of rounding is let through) and no sum beyond its samples' limits
+// (pixel_sums.hpp: each sample's part below 2^50 at most 2^50, its high part below kSampleLimit, so a whole
+// render's sums, at most kMaxSamplesPerPixel samples, stay far inside 128 bits). Throws InputError naming `name` and the first pixel that is not.
 void check_film_values(const Film& film, const std::string& name);
 
 // The film's bytes into an open file (false when a write failed), and the film written all or nothing

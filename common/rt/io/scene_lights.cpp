@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <memory>
 
 #include "rt/io/environment_image.hpp"
@@ -16,7 +15,7 @@ namespace {
 constexpr std::string_view kLightTypes[] = {"point", "environment"};
 
 // An environment light: a constant `radiance`, or an `image` (environment_image.hpp) with its `scale` and
-// `rotate_y`. The image's radiance must stay finite in float once scaled.
+// `rotate_y`. The image's radiance, once scaled, is at most kLargestNumber, as every radiance in a scene.
 EnvironmentLight read_environment(const Node& node, const fs::path& scene_folder) {
     node.expect_object(std::array<std::string_view, 5>{"type", "radiance", "image", "scale", "rotate_y"},
                        "an environment light");
@@ -46,9 +45,17 @@ EnvironmentLight read_environment(const Node& node, const fs::path& scene_folder
         const double sin_theta = std::sin(kPi * (y + 0.5) / image->height());
         for (int x = 0; x < image->width(); ++x) {
             const Vec3d scaled = Vec3d(image->at(x, y)) * double(light.scale);
-            if (!(std::max({scaled.x, scaled.y, scaled.z}) <= double(std::numeric_limits<Real>::max()))) {
-                (node.has("scale") ? node["scale"] : file).fail("makes pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                   ") of the image infinite, got " + show(double(light.scale)));
+            const double brightest = std::max({scaled.x, scaled.y, scaled.z});
+            if (brightest > kLargestNumber) {
+                const std::string pixel = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")";
+                const std::string why = ", above " + show(kLargestNumber) +
+                                        ", the limit of every radiance in a scene (as of emission, intensity " +
+                                        "and radiance), which keeps chapter 11's float sums of samples finite";
+                if (node.has("scale")) {
+                    node["scale"].fail(show(double(light.scale)) + " makes " + pixel + " of the image " +
+                                       show(brightest) + why);
+                }
+                file.fail(shown_name(light.image_file) + ": " + pixel + " is " + show(brightest) + why);
             }
             sum += scaled * sin_theta;
         }
