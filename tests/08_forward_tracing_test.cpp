@@ -26,6 +26,7 @@
 #include "rt/core/effects.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/render/interrupt.hpp"
 #include "support/chi_square.hpp"
 
 using namespace rt;
@@ -372,6 +373,32 @@ TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threa
     CHECK(one.caustics.contributing_paths > 0);
     // Both tracers' rays are counted: the light paths' own (shadow-kind first rays) among them.
     CHECK(one.render.rays.total() == one.paths.rays.total() + one.caustics.render.rays.total());
+}
+
+TEST_CASE("An interrupted combined render equals the whole render of the samples it kept, caustics included",
+          "[ch08][interrupt]" kCombinedTracerExercises) {
+    // The caustic under the glass sphere is the light paths' share: a partial image without them was too dark.
+    const Scene scene = load_scene(scene_path("ch08_default.json"));
+    const EffectSet all = needed(scene) & EffectSet::all();
+    // 512 light paths per camera sample of 16 × 16 pixels: 2^17, one wave of 8 chunks of 2^14 paths, so the
+    // light paths of the samples kept are whole waves, as many as the whole render of those samples traces.
+    CombinedOptions options;
+    options.light_paths_per_sample = 512;
+    options.paths.sampler = PointSet::kIndependent;  // a sample's numbers do not depend on the sample count
+    int passes = 0;
+    AfterEachPass stop_after_first([&](const PassReport&) {
+        if (++passes == 1) set_interrupt_requested(true);  // as if Ctrl-C came at the end of the first pass
+    });
+    RenderSettings settings = settings_of(16, 16, 64, 7);
+    settings.observer = &stop_after_first;
+    const CombinedResult interrupted = render_combined(scene, all, settings, options);
+    set_interrupt_requested(false);
+    const CombinedResult whole = render_combined(scene, all, settings_of(16, 16, 1, 7), options);
+    REQUIRE(whole.caustics.contributing_paths > 0);
+    CHECK(interrupted.render.interrupted);
+    CHECK(interrupted.render.samples_per_pixel == 1);
+    CHECK(interrupted.caustics.render.samples == whole.caustics.render.samples);
+    CHECK(interrupted.render.image.pixels() == whole.render.image.pixels());
 }
 
 TEST_CASE("Under an environment light the combined tracer is chapter 06's loop alone, bit for bit",

@@ -141,12 +141,15 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
     return added;
 }
 
+LightPathFunction light_paths_of(const LightTracer& tracer) {
+    return [&tracer](std::uint64_t, Pcg32& rng, Image& film, RayCounts& rays) {
+        return tracer.trace(rng, film, rays);
+    };
+}
+
 SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings& settings,
                                  std::uint64_t path_count) {
-    return render_light_paths(settings, path_count,
-                              [&](std::uint64_t, Pcg32& rng, Image& film, RayCounts& rays) {
-                                  return tracer.trace(rng, film, rays);
-                              });
+    return render_light_paths(settings, path_count, light_paths_of(tracer));
 }
 
 std::uint64_t paths_per_image(const RenderSettings& settings) {

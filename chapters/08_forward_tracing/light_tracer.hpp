@@ -94,6 +94,8 @@ class LightTracer {
     LightTracerOptions options_;
 };
 
+// Each light path traced by `tracer` (not copied: it must outlive the function).
+LightPathFunction light_paths_of(const LightTracer& tracer);
 // N light paths with `tracer` (deterministic for any thread count, see splat_render.hpp).
 SplatResult render_light_tracing(const LightTracer& tracer, const RenderSettings& settings,
                                  std::uint64_t path_count);

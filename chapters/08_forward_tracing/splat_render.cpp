@@ -6,6 +6,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "rt/render/interrupt.hpp"
@@ -30,105 +31,122 @@ std::uint64_t chunk_size(int width, int height) {
 
 SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
                                const LightPathFunction& trace) {
+    SplatRender render(settings, path_count, trace);
+    render.trace_until(path_count);
+    return render.result();
+}
+
+SplatRender::SplatRender(const RenderSettings& settings, std::uint64_t path_count, LightPathFunction trace)
+    : settings_(settings),
+      path_count_(path_count),
+      trace_(std::move(trace)),
+      threads_(settings.threads > 0 ? settings.threads
+                                    : int(std::max(1u, std::thread::hardware_concurrency()))),
+      chunk_(chunk_size(settings.width, settings.height)),
+      chunk_count_((path_count + chunk_ - 1) / chunk_),
+      pixels_(std::size_t(settings.width) * std::size_t(settings.height)),
+      sums_(pixels_, Vec3d(0)),
+      rays_per_thread_(static_cast<std::size_t>(threads_)) {
+    for (std::uint64_t c = 0; c < std::min(kChunksPerWave, chunk_count_); ++c)
+        films_.emplace_back(settings.width, settings.height);
+    contributing_.assign(films_.size(), 0);
+    complete_.assign(films_.size(), 0);
+}
+
+void SplatRender::trace_until(std::uint64_t paths) {
     const auto start = std::chrono::steady_clock::now();
-    const int threads =
-        settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-    const std::uint64_t chunk = chunk_size(settings.width, settings.height);
-    const std::uint64_t chunk_count = (path_count + chunk - 1) / chunk;
-    const std::size_t pixels = std::size_t(settings.width) * std::size_t(settings.height);
-
-    std::vector<Vec3d> sums(pixels, Vec3d(0));
-    std::vector<Image> films;
-    for (std::uint64_t c = 0; c < std::min(kChunksPerWave, chunk_count); ++c)
-        films.emplace_back(settings.width, settings.height);
-    std::vector<std::uint64_t> contributing(films.size(), 0);
-    std::vector<std::uint8_t> complete(films.size(), 0);
-    std::vector<ThreadRayCounts> rays_per_thread(static_cast<std::size_t>(threads));
-    std::uint64_t traced = 0, contributed = 0;
-    bool interrupted = false;
-    // I = (1 / N) Σ_paths (their splats), over the N paths traced so far.
-    auto image_so_far = [&] {
-        Image image(settings.width, settings.height);
-        const double scale = traced > 0 ? 1.0 / double(traced) : 0.0;
-        for (std::size_t p = 0; p < pixels; ++p) image.pixels()[p] = Color(sums[p] * scale);
-        return image;
-    };
-    auto rays_so_far = [&] {
-        RayCounts rays;
-        for (const RayCounts& c : rays_per_thread) rays += c;
-        return rays;
-    };
-
-    for (std::uint64_t wave = 0; wave < chunk_count; wave += kChunksPerWave) {
+    while (next_wave_ < chunk_count_ && traced_ < std::min(paths, path_count_) && !interrupted_) {
         if (interrupt_requested()) {
-            interrupted = true;
+            interrupted_ = true;
             break;
         }
-        const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count - wave);
-        std::fill(complete.begin(), complete.end(), std::uint8_t(0));
-        std::atomic<std::uint64_t> next{0};
-        std::exception_ptr failure;
-        std::mutex failure_mutex;
-        auto worker = [&](int thread_index) {
-            RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
-            try {
-                for (std::uint64_t c = next++; c < wave_chunks; c = next++) {
-                    Image& film = films[c];
-                    std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
-                    std::uint64_t count = 0;
-                    const std::uint64_t first = (wave + c) * chunk;
-                    const std::uint64_t end = std::min(path_count, first + chunk);
-                    bool stopped = false;
-                    for (std::uint64_t i = first; i < end && !stopped; ++i) {
-                        Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
-                        if (trace(i, rng, film, rays)) ++count;
-                        // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
-                        stopped =
-                            (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
-                    }
-                    contributing[c] = count;
-                    complete[c] = stopped ? 0 : 1;
-                }
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-                next = wave_chunks;  // the others stop after their chunk
-            }
-        };
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
-        worker(0);
-        for (std::thread& t : pool) t.join();
-        if (failure) std::rethrow_exception(failure);
-        // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only
-        // the chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
-        for (std::uint64_t c = 0; c < wave_chunks; ++c) {
-            if (!complete[c]) {
-                interrupted = true;
-                break;
-            }
-            const std::vector<Color>& film = films[c].pixels();
-            for (std::size_t p = 0; p < pixels; ++p) sums[p] += Vec3d(film[p]);
-            contributed += contributing[c];
-            traced += std::min(path_count, (wave + c + 1) * chunk) - (wave + c) * chunk;
-        }
-        if (interrupted) break;
-        if (settings.observer && !interrupt_requested()) {
+        trace_wave();
+        if (!interrupted_ && settings_.observer && !interrupt_requested()) {
             const Image image = image_so_far();
-            settings.observer->after_pass(PassReport{image, std::uint32_t(traced / pixels), traced,
-                                                     rays_so_far(), traced, seconds_since(start)});
+            settings_.observer->after_pass(PassReport{image, std::uint32_t(traced_ / pixels_), traced_,
+                                                      rays_so_far(), traced_,
+                                                      seconds_ + seconds_since(start)});
         }
     }
+    seconds_ += seconds_since(start);
+}
 
+void SplatRender::trace_wave() {
+    const std::uint64_t wave = next_wave_;
+    const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count_ - wave);
+    next_wave_ += wave_chunks;
+    std::fill(complete_.begin(), complete_.end(), std::uint8_t(0));
+    std::atomic<std::uint64_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failure_mutex;
+    auto worker = [&](int thread_index) {
+        RayCounts& rays = rays_per_thread_[std::size_t(thread_index)];
+        try {
+            for (std::uint64_t c = next++; c < wave_chunks; c = next++) {
+                Image& film = films_[c];
+                std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
+                std::uint64_t count = 0;
+                const std::uint64_t first = (wave + c) * chunk_;
+                const std::uint64_t end = std::min(path_count_, first + chunk_);
+                bool stopped = false;
+                for (std::uint64_t i = first; i < end && !stopped; ++i) {
+                    Pcg32 rng = Pcg32::for_sample(i, 0, settings_.seed);
+                    if (trace_(i, rng, film, rays)) ++count;
+                    // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
+                    stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
+                }
+                contributing_[c] = count;
+                complete_[c] = stopped ? 0 : 1;
+            }
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+            next = wave_chunks;  // the others stop after their chunk
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads_; ++t) pool.emplace_back(worker, t);
+    worker(0);
+    for (std::thread& t : pool) t.join();
+    if (failure) std::rethrow_exception(failure);
+    // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only the
+    // chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
+    for (std::uint64_t c = 0; c < wave_chunks; ++c) {
+        if (!complete_[c]) {
+            interrupted_ = true;
+            break;
+        }
+        const std::vector<Color>& film = films_[c].pixels();
+        for (std::size_t p = 0; p < pixels_; ++p) sums_[p] += Vec3d(film[p]);
+        contributed_ += contributing_[c];
+        traced_ += std::min(path_count_, (wave + c + 1) * chunk_) - (wave + c) * chunk_;
+    }
+}
+
+// I = (1 / N) Σ_paths (their splats), over the N paths traced so far.
+Image SplatRender::image_so_far() const {
+    Image image(settings_.width, settings_.height);
+    const double scale = traced_ > 0 ? 1.0 / double(traced_) : 0.0;
+    for (std::size_t p = 0; p < pixels_; ++p) image.pixels()[p] = Color(sums_[p] * scale);
+    return image;
+}
+
+RayCounts SplatRender::rays_so_far() const {
+    RayCounts rays;
+    for (const RayCounts& c : rays_per_thread_) rays += c;
+    return rays;
+}
+
+SplatResult SplatRender::result() const {
     SplatResult out;
-    out.contributing_paths = contributed;
+    out.contributing_paths = contributed_;
     RenderResult& r = out.render;
     r.image = image_so_far();
     r.rays = rays_so_far();
-    r.samples = traced;
-    r.samples_per_pixel = int(traced / std::max<std::uint64_t>(1, pixels));
-    r.interrupted = interrupted;
-    r.seconds = seconds_since(start);
+    r.samples = traced_;
+    r.samples_per_pixel = int(traced_ / std::max<std::uint64_t>(1, pixels_));
+    r.interrupted = interrupted_;
+    r.seconds = seconds_;
     return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "rt/core/image.hpp"
 #include "rt/core/random.hpp"
@@ -32,5 +33,38 @@ std::uint64_t chunk_size(int width, int height);
 // `interrupted` is set and the image averages the paths of the chunks merged).
 SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
                                const LightPathFunction& trace);
+
+// render_light_paths taken in steps, with the same waves of chunks and so the same bits: trace_until(n)
+// traces waves until n paths (or all) are merged, and result() is the image of the paths merged so far.
+// Chapter 08's combined tracer traces its light paths this way, between the camera's passes
+// (combined_render.hpp).
+class SplatRender {
+  public:
+    SplatRender(const RenderSettings& settings, std::uint64_t path_count, LightPathFunction trace);
+    void trace_until(std::uint64_t paths);
+    SplatResult result() const;
+
+  private:
+    void trace_wave();  // the next kChunksPerWave chunks, merged in chunk order
+    Image image_so_far() const;
+    RayCounts rays_so_far() const;
+
+    RenderSettings settings_;
+    std::uint64_t path_count_;
+    LightPathFunction trace_;
+    int threads_;
+    std::uint64_t chunk_;
+    std::uint64_t chunk_count_;
+    std::size_t pixels_;
+    std::vector<Vec3d> sums_;   // of the films merged
+    std::vector<Image> films_;  // one per chunk of a wave
+    std::vector<std::uint64_t> contributing_;
+    std::vector<std::uint8_t> complete_;
+    std::vector<ThreadRayCounts> rays_per_thread_;
+    std::uint64_t next_wave_ = 0;  // its first chunk
+    std::uint64_t traced_ = 0, contributed_ = 0;
+    bool interrupted_ = false;
+    double seconds_ = 0;  // spent in trace_until
+};
 
 }  // namespace rt

@@ -49,6 +49,8 @@ int merge(int argc, char** argv) {
         if (rt::signal_received()) break;
         films.push_back({piece, rt::read_film(piece)});
     }
+    // A signal stops the reading: the pieces left unread are missing by no fault of theirs.
+    if (rt::signal_received() && rt::stop_before_writing("rt_merge")) return rt::interrupted_exit_status();
     const rt::Film whole = rt::merge_films(std::move(films));
     const rt::Image image = whole.sums.mean_image();
     rt::check_finite(image);

@@ -81,6 +81,7 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
     const int per_pass = pass_samples(range.size());
     for (int first = range.first, end = range.first + 1; first < range.end && !interrupt_requested();
          first = end, end = std::min(range.end, end + per_pass)) {
+        if (settings.before_pass) settings.before_pass(end);
         std::atomic<int> next_tile{0};
         std::atomic<int> workers_running{threads};
         auto worker = [&](int thread_index) {

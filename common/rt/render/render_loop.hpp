@@ -40,6 +40,9 @@ struct RenderSettings {
     // What watches the render (not owned; render_observer.hpp): the app's heat maps, the live view. None:
     // nothing is measured.
     RenderObserver* observer = nullptr;
+    // Work the render does before each pass, told the end of the pass's samples (chapter 08's combined
+    // tracer traces there the light paths of the camera samples the image will then have). None by default.
+    std::function<void(int end)> before_pass = nullptr;
 };
 
 // The samples a render with these settings takes.
