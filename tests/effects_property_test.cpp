@@ -4,10 +4,10 @@
 // image within noise as its render with everything it supports (narrowed by the scene's "effects" list when
 // it has one: the list is the user's choice, printed by the run). Chapters 03 (point lights), 04 (direct
 // light, stand-ins for mirrors and glass), 07 (paths, dielectrics) and 09 (media) render each scene as their
-// executables do; chapter 08 as its light tracer, chapter 10 its path loop before the denoiser (a filter whose
-// pixels are not independent, which the comparison assumes), chapter 11 its compute shader where OpenGL is
-// there (RT_EFFECTS_ON_GPU; once built, a missing context is said and skipped). Besides the shipped scenes,
-// those of tests/data/effects_scenes: what went wrong there once (issue 43).
+// executables do; chapter 08 as its light tracer, chapter 10 its path loop before the denoiser (a filter
+// whose pixels are not independent, which the comparison assumes), chapter 11 its compute shader where OpenGL
+// is there (RT_EFFECTS_ON_GPU; once built, a missing context is said and skipped). Besides the shipped
+// scenes, those of tests/data/effects_scenes: what went wrong there once (issue 43).
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -117,12 +117,11 @@ std::vector<Chapter> chapters_here() {
     std::vector<Chapter> list = chapters();
 #ifdef RT_EFFECTS_ON_GPU
     if (gpu()) {
-        list.push_back({"ch11", kGpuChapterEffects,
-                        [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
-                            return GpuRenderer(*gpu(), scene, simulated, ShaderKind::kCompute)
-                                .render(settings)
-                                .image;
-                        }});
+        list.push_back(
+            {"ch11", kGpuChapterEffects,
+             [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
+                 return GpuRenderer(*gpu(), scene, simulated, ShaderKind::kCompute).render(settings).image;
+             }});
     }
 #endif
     return list;
@@ -319,8 +318,8 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
           "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
           "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction][ex:ch11.bvh_traversal]"
-          "[ex:ch11.next_real][ex:ch11.pcg]") {
+          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]"
+          "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]") {
     int scenes = 0;
     for (const auto& entry : std::filesystem::directory_iterator(assets_dir() / "scenes")) {
         if (entry.path().extension() != ".json") continue;
@@ -331,19 +330,19 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
     CHECK(scenes >= 20);
 }
 
-TEST_CASE("The scenes of tests/data/effects_scenes render the same, within noise, with needed ∩ supported as "
-          "with all supported",
-          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine]"
-          "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
-          "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
-          "[ex:ch09.volume_vertex]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction][ex:ch11.bvh_traversal]"
-          "[ex:ch11.next_real][ex:ch11.pcg]") {
+TEST_CASE(
+    "The scenes of tests/data/effects_scenes render the same with needed ∩ supported as with all",
+    "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+    "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
+    "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine]"
+    "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+    "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch09.volume_vertex]"
+    "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]"
+    "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]") {
     int scenes = 0;
     const std::filesystem::path folder = std::filesystem::path(RT_TESTS_DIR) / "data" / "effects_scenes";
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
@@ -354,18 +353,19 @@ TEST_CASE("The scenes of tests/data/effects_scenes render the same, within noise
     CHECK(scenes >= 3);
 }
 
-TEST_CASE("400 random scenes render the same, within noise, with needed ∩ supported as with all supported",
-          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine]"
-          "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
-          "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
-          "[ex:ch09.volume_vertex]"
-          "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction][ex:ch11.bvh_traversal]"
-          "[ex:ch11.next_real][ex:ch11.pcg]") {
+TEST_CASE(
+    "400 random scenes render the same, within noise, with needed ∩ supported as with all supported",
+    "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+    "[ex:ch02.sphere_stable][ex:ch02.triangle_watertight][ex:ch02.wide_bvh_traversal]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.cosine_hemisphere]"
+    "[ex:ch04.direct_light][ex:ch04.glossy][ex:ch04.lambert][ex:ch04.mirror][ex:ch04.power_cosine]"
+    "[ex:ch04.power_cosine_pdf][ex:ch04.retroreflective][ex:ch04.sample_quad_light][ex:ch04.uniform_cone]"
+    "[ex:ch04.uniform_triangle][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch09.volume_vertex]"
+    "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]"
+    "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]") {
     int compared = 0;
     for (std::uint64_t i = 0; i < 400; ++i) {
         const std::string text = SceneDraw(i).text();

@@ -19,8 +19,8 @@ namespace rt {
 int wrap_texel(int i, int n, TextureWrap wrap);
 // The image's colour at uv, filtered as desc.filter says.
 Color image_at(const ImageTextureDesc& desc, Vec2 uv);
-// The checker's colour at uv, in double: a plane's coordinates far from the origin (Hit::uv) keep the fraction
-// float would round away.
+// The checker's colour at uv, in double: a plane's coordinates far from the origin (Hit::uv) keep the
+// fraction float would round away.
 Color checker_at(const CheckerDesc& desc, Vec2d uv);
 
 // Either kind, as the material table holds it.

@@ -15,7 +15,8 @@ namespace rt {
 
 // What chapter 08 simulates: chapter 07's effects but shading normals. The light tracer's BSDF would need its
 // adjoint for them (Veach 1997, 5.3): smooth meshes are shaded faceted here.
-inline constexpr EffectSet kForwardChapterEffects = kRefractionChapterEffects.without({Effect::kShadingNormals});
+inline constexpr EffectSet kForwardChapterEffects =
+    kRefractionChapterEffects.without({Effect::kShadingNormals});
 
 enum class Tracer { kForward, kReverse, kCombined };
 

@@ -75,8 +75,10 @@ TextureDesc read_checker(const Node& node) {
         const Node scale = checker["scale"];
         desc.scale = scale.positive();
         if (desc.scale > kLargestCheckerScale) {
-            scale.fail("must be at most 1048576 (2^20: float resolves coordinates near 1 to 2^-24, 16 steps "
-                       "a square), got " + show(desc.scale));
+            scale.fail(
+                "must be at most 1048576 (2^20: float resolves coordinates near 1 to 2^-24, 16 steps "
+                "a square), got " +
+                show(desc.scale));
         }
     }
     return {desc, (desc.even + desc.odd) / Real(2)};

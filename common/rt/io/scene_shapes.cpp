@@ -82,9 +82,9 @@ void read_ply_into(MeshShape& mesh, std::string_view bytes) {
     if (!mesh.texture_coordinates.empty()) mesh.texture_corners = mesh.triangles;
 }
 
-// A mirroring transform turns every face's corners clockwise as seen from outside, so that the mesh would face
-// (and emit) inward: the second and third corners of each triangle, and of its normals and texture coordinates,
-// trade places, and each face turns counter-clockwise from outside again.
+// A mirroring transform turns every face's corners clockwise as seen from outside, so that the mesh would
+// face (and emit) inward: the second and third corners of each triangle, and of its normals and texture
+// coordinates, trade places, and each face turns counter-clockwise from outside again.
 void keep_outside_after_mirroring(MeshShape& mesh) {
     for (auto* corners : {&mesh.triangles, &mesh.normal_corners, &mesh.texture_corners}) {
         for (auto& triangle : *corners) std::swap(triangle[1], triangle[2]);
@@ -100,8 +100,8 @@ bool is_ply(const fs::path& path) {
 // A mesh file's triangles, read strictly: OBJ, or PLY by its extension (.ply, any case). Polygons are split
 // into fans (0, k, k + 1). A mesh whose every face has no area after its transform (repeated or collinear
 // vertices, or coordinates so small that float's cross product underflows) is refused, as a lone triangle of
-// no area is. Normals follow the transform's inverse transpose and are normalised; a mirroring transform keeps
-// the mesh's outside (keep_outside_after_mirroring).
+// no area is. Normals follow the transform's inverse transpose and are normalised; a mirroring transform
+// keeps the mesh's outside (keep_outside_after_mirroring).
 MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     MeshShape mesh;
     const Node file = node["file"];
