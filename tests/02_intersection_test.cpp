@@ -1133,7 +1133,7 @@ TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the 
     std::vector<Shape> shapes{{SphereShape{{0, 0, 0}, 2}, 0, "s"}};
     Scene scene = scene_of(shapes);
     const Ray down{{0, 5, 0}, {0, -1, 0}};
-    CHECK(World(scene).intersect(down)->uv == Vec2{0});
+    CHECK(World(scene).intersect(down)->uv == Vec2d{0});
     scene.materials[0].texture = TextureDesc{CheckerDesc{}, Color(0.5f)};
     const auto top = World(scene).intersect(down);
     REQUIRE(top);
@@ -1152,7 +1152,7 @@ TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane"
         const auto q = World(scene_of(quad), {TriangleTest::kWatertight, accel})
                            .intersect(Ray{{0, 0.5f, 0}, {0, 0, -1}});
         REQUIRE(q);
-        CHECK(q->uv == Vec2{0.25f, 0.75f});
+        CHECK(q->uv == Vec2d{0.25f, 0.75f});
         // A triangle's barycentrics (b1, b2) of its second and third vertices.
         std::vector<Shape> triangle{
             {TriangleShape{{Vec3{0, 0, -5}, Vec3{4, 0, -5}, Vec3{0, 4, -5}}}, 0, "t"}};
@@ -1175,7 +1175,7 @@ TEST_CASE("Texture coordinates of a quad, a box's faces, a triangle and a plane"
         const auto p =
             World(scene_of(plane), {TriangleTest::kWatertight, accel}).intersect(Ray{{2, 3, -7}, {0, -1, 0}});
         REQUIRE(p);
-        CHECK(p->uv == Vec2{-7, 2});
+        CHECK(p->uv == Vec2d{-7, 2});
     }
 }
 
@@ -1211,7 +1211,7 @@ TEST_CASE("A smooth mesh's hit interpolates its vertex normals and texture coord
         glm::normalize(0.5f * mesh.normals[0] + 0.25f * mesh.normals[1] + 0.25f * mesh.normals[2]);
     CHECK(glm::length(hit->shading_normal - expected) < 1e-6f);
     CHECK(hit->normal == Vec3(0, 0, 1));
-    CHECK(glm::length(hit->uv - Vec2(0.625f, 0.25f)) < 1e-6f);  // 0.5 (0.5, 0) + 0.25 (1, 0) + 0.25 (0.5, 1)
+    CHECK(glm::length(hit->uv - Vec2d(0.625f, 0.25f)) < 1e-6);  // 0.5 (0.5, 0) + 0.25 (1, 0) + 0.25 (0.5, 1)
     // From behind, the geometric normal turns to the viewer, and the shading normal with it.
     const auto back = world.intersect(Ray{{0.25f, 0.25f, -1}, {0, 0, 1}});
     REQUIRE(back);
@@ -1230,7 +1230,7 @@ TEST_CASE("A mesh without normals is faceted and its texture coordinates are the
     const auto hit = world.intersect(Ray{{0.25f, 0.5f, 1}, {0, 0, -1}});
     REQUIRE(hit);
     CHECK(hit->shading_normal == hit->normal);
-    CHECK(hit->uv == Vec2(0.25f, 0.5f));
+    CHECK(hit->uv == Vec2d(0.25f, 0.5f));
 }
 
 TEST_CASE(

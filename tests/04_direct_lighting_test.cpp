@@ -1362,3 +1362,25 @@ TEST_CASE("The textured scene loads its image once, decoded, and renders finite 
     CHECK(one.image.all_finite());
     CHECK(one.image.pixels() == two.image.pixels());
 }
+
+TEST_CASE("A plane's checker alternates square by square as far as 3e7 from the origin, as at the origin",
+          "[texture][ex:ch02.plane]") {
+    const CheckerDesc checker{Color(1), Color(0), 1};
+    // The floor y = 0 through the origin, squares of one unit; its uv are (z, x).
+    const Scene scene = parse_scene(R"({"camera": {"from": [0, 1, 0], "at": [0, 0, -1]},
+        "materials": {"tiles": {"type": "diffuse", "albedo": {"checker": {"scale": 1}}}},
+        "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "tiles"}]})",
+                                    "far.json");
+    const World world(scene);
+    // From 1 above the point (X, 0, X) (X even: float holds it exactly) to the centres of eight squares in a
+    // row: square i has ⌊z⌋ + ⌊x⌋ = 2X + i, even (white) where i is.
+    for (const Real far : {Real(0), Real(1e6), Real(3e7)}) {
+        for (int i = 0; i < 8; ++i) {
+            INFO("X = " << far << ", square " << i);
+            const Ray ray{{far, 1, far}, glm::normalize(Vec3(Real(i) + Real(0.5), -1, 0.5))};
+            const std::optional<Hit> hit = world.intersect(ray);
+            REQUIRE(hit);
+            CHECK(checker_at(checker, hit->uv) == (i % 2 == 0 ? Color(1) : Color(0)));
+        }
+    }
+}

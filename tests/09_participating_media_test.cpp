@@ -1160,3 +1160,40 @@ TEST_CASE("A chromatic medium keeps free flight under --distance-sampling mis: t
     CHECK(a.image.pixels() == b.image.pixels());
     CHECK(a.rays[RayKind::kShadow] == b.rays[RayKind::kShadow]);
 }
+
+TEST_CASE("An environment behind endless fog is named in the summary: none of its light arrives, exactly",
+          "[media][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch04.sample_quad_light][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch09.free_flight][ex:ch09.hg_sample]"
+          "[ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    const RenderSettings settings = small_render(8, 4, 3);
+    const auto run = [&](const std::string& medium) {
+        const Scene scene = parse_scene(std::string(R"({"camera": {"from": [0, 0, 0], "at": [0, 0, -1]},
+            "lights": [{"type": "environment", "radiance": [1, 2, 3]}], "medium": )") +
+                                            medium + "}",
+                                        "fog.json");
+        return render_by_choice(TracerRule::kAuto,
+                                {scene, settings, simulated_effects(scene, kMediaChapterEffects)}, {}, {});
+    };
+    const auto note_in = [](const ChapterRun& r) {
+        for (const std::string& note : r.notes) {
+            if (note.rfind("environment:", 0) == 0) return note;
+        }
+        return std::string("no note");
+    };
+    // Fog whose mean free path is a million times the scene still fills all space: the exact answer is 0.
+    const ChapterRun thin = run(R"({"sigma_a": [1e-7, 1e-7, 1e-7], "sigma_s": [1e-6, 1e-6, 1e-6]})");
+    CHECK(note_in(thin) ==
+          "environment: none of its light arrives in r, g, b: the fog (top-level medium) fills "
+          "all space, and light from infinitely far is extinguished wherever sigma_a + "
+          "sigma_s > 0");
+    for (const Color& pixel : thin.result.image.pixels()) CHECK(pixel == Color(0));
+    // A channel the fog leaves clear sees the environment whole, and the note names only the others.
+    const ChapterRun green = run(R"({"sigma_a": [0.5, 0, 0.5]})");
+    CHECK(note_in(green) ==
+          "environment: none of its light arrives in r, b: the fog (top-level medium) fills "
+          "all space, and light from infinitely far is extinguished wherever sigma_a + "
+          "sigma_s > 0");
+    for (const Color& pixel : green.result.image.pixels()) CHECK(pixel == Color(0, 2, 0));
+    // Clear air: no note.
+    CHECK(note_in(run(R"({"sigma_a": [0, 0, 0]})")) == "no note");
+}

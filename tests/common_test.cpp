@@ -826,3 +826,34 @@ TEST_CASE("The scene loader reads a mesh as PLY by its extension, quads as fans,
     CHECK(rt::needed(scene).contains(rt::Effect::kShadingNormals));
     fs::remove_all(folder);
 }
+
+TEST_CASE(
+    "A mesh mirrored by its transform keeps its outside: every face still turns counter-clockwise from it",
+    "[scene]") {
+    const fs::path folder = temporary_folder();
+    // A tetrahedron whose faces turn counter-clockwise seen from outside, its centroid at the origin.
+    std::ofstream(folder / "tetrahedron.obj") << "v 1 1 1\nv -1 -1 1\nv -1 1 -1\nv 1 -1 -1\n"
+                                                 "vn 1 1 1\nvn -1 -1 1\nvn -1 1 -1\nvn 1 -1 -1\n"
+                                                 "f 1//1 2//2 4//4\nf 1//1 3//3 2//2\nf 1//1 4//4 3//3\n"
+                                                 "f 2//2 3//3 4//4\n";
+    for (const char* scale : {"1", "[-1, 1, 1]", "[1, -2, 1]", "[-1, -1, -1]", "[-1, -1, 1]"}) {
+        INFO("scale " << scale);
+        const Scene scene =
+            parse_scene("{" + std::string(kMinimalCamera) +
+                            R"(, "materials": {"white": {"type": "diffuse"}}, "shapes": [{"type":
+            "mesh", "file": "tetrahedron.obj", "transform": {"scale": )" +
+                            scale + R"(}, "material": "white"}]})",
+                        folder / "mesh.json");
+        const auto& mesh = std::get<MeshShape>(scene.shapes[0].geometry);
+        for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+            const auto& [a, b, c] = mesh.triangles[i];
+            const Vec3 face_normal =
+                glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+            const Vec3 centroid = (mesh.positions[a] + mesh.positions[b] + mesh.positions[c]) / Real(3);
+            CHECK(glm::dot(face_normal, centroid) > 0);  // the mesh's centre stays at the origin
+            // Each corner's normal (the transform's inverse transpose) agrees with the face's side.
+            for (int k = 0; k < 3; ++k)
+                CHECK(glm::dot(face_normal, mesh.normals[mesh.normal_corners[i][k]]) > 0);
+        }
+    }
+}

@@ -19,10 +19,11 @@ struct Hit {
     Vec3 shading_normal{0, 0, 1};
     // Texture coordinates (chapter 04's textures): a quad's (a, b) of origin + a u + b v (a box's faces are
     // quads: each face's own), a triangle's barycentrics (b1, b2), a mesh's (OBJ vt, PLY u v) interpolated or
-    // (b1, b2) without them, a plane's coordinates in its tangent basis (plane_uv, in scene units), and a
-    // sphere's (φ / 2π, 1 − θ / π) about its y axis (sphere_uv). A sphere's costs an atan2 and an acos, so it
-    // is computed only when the sphere's material has a texture: (0, 0) otherwise.
-    Vec2 uv{0};
+    // (b1, b2) without them, a plane's coordinates in its tangent basis (plane_uv, in scene units; in double
+    // for a ray from far away, plane_texture_uv), and a sphere's (φ / 2π, 1 − θ / π) about its y axis
+    // (sphere_uv). A sphere's costs an atan2 and an acos, so it is computed only when the sphere's material
+    // has a texture: (0, 0) otherwise. Double, so that a plane's far from the origin keep their fractions.
+    Vec2d uv{0};
     int material = -1;            // index into Scene::materials
     std::uint32_t primitive = 0;  // the primitive's index in the World
     // The light this surface is: k for the k-th primitive, in scene order, whose material emits (a box

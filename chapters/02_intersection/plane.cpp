@@ -27,4 +27,9 @@ Vec2 plane_uv(const Plane& plane, const Vec3& p) {
     return {glm::dot(offset, plane.tangent), glm::dot(offset, plane.bitangent)};
 }
 
+Vec2d plane_texture_uv(const Plane& plane, const Ray& ray, Real t) {
+    const Vec3d offset = Vec3d(ray.origin) - Vec3d(plane.point) + double(t) * Vec3d(ray.direction);
+    return {glm::dot(offset, Vec3d(plane.tangent)), glm::dot(offset, Vec3d(plane.bitangent))};
+}
+
 }  // namespace rt

@@ -376,7 +376,9 @@ Hit World::make_hit(const Ray& ray, const Candidate& found) const {
         hit.point = p.plane.point + along_t + along_b;
         hit.point_error = gamma_bound(5) * (abs(p.plane.point) + abs(along_t) + abs(along_b));
         hit.material = p.material;
-        hit.uv = uv;
+        const bool far = std::max({std::abs(ray.origin.x), std::abs(ray.origin.y), std::abs(ray.origin.z)}) >
+                         kFarFromOrigin;
+        hit.uv = far ? plane_texture_uv(p.plane, ray, found.t) : Vec2d(uv);
         set_face_normal(hit, ray.direction, p.plane.normal);
         return hit;
     }

@@ -37,13 +37,14 @@ Color image_at(const ImageTextureDesc& desc, Vec2 uv) {
            (1 - fx) * fy * texel(i, j + 1) + fx * fy * texel(i + 1, j + 1);
 }
 
-Color checker_at(const CheckerDesc& desc, Vec2 uv) {
-    const Real squares = std::floor(desc.scale * uv.x) + std::floor(desc.scale * uv.y);
-    return std::fmod(squares, Real(2)) == 0 ? desc.even : desc.odd;
+Color checker_at(const CheckerDesc& desc, Vec2d uv) {
+    const double scale = desc.scale;
+    const double squares = std::floor(scale * uv.x) + std::floor(scale * uv.y);
+    return std::fmod(squares, 2.0) == 0 ? desc.even : desc.odd;
 }
 
-Color Texture::at(Vec2 uv) const {
-    if (const auto* image = std::get_if<ImageTextureDesc>(&desc_.pattern)) return image_at(*image, uv);
+Color Texture::at(Vec2d uv) const {
+    if (const auto* image = std::get_if<ImageTextureDesc>(&desc_.pattern)) return image_at(*image, Vec2(uv));
     return checker_at(std::get<CheckerDesc>(desc_.pattern), uv);
 }
 

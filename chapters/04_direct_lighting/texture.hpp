@@ -19,13 +19,15 @@ namespace rt {
 int wrap_texel(int i, int n, TextureWrap wrap);
 // The image's colour at uv, filtered as desc.filter says.
 Color image_at(const ImageTextureDesc& desc, Vec2 uv);
-Color checker_at(const CheckerDesc& desc, Vec2 uv);
+// The checker's colour at uv, in double: a plane's coordinates far from the origin (Hit::uv) keep the
+// fraction float would round away.
+Color checker_at(const CheckerDesc& desc, Vec2d uv);
 
 // Either kind, as the material table holds it.
 class Texture {
   public:
     explicit Texture(const TextureDesc& desc) : desc_(desc) {}
-    Color at(Vec2 uv) const;
+    Color at(Vec2d uv) const;
 
   private:
     TextureDesc desc_;

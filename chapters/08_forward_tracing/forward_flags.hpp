@@ -5,12 +5,18 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "07_bsdf_refraction/bsdf_render.hpp"
 #include "combined_render.hpp"
 #include "forward_study.hpp"
 #include "light_tracer.hpp"
 #include "rt/core/enum_names.hpp"
 
 namespace rt {
+
+// What chapter 08 simulates: chapter 07's effects but shading normals. The light tracer's BSDF would need its
+// adjoint for them (Veach 1997, 5.3): smooth meshes are shaded faceted here.
+inline constexpr EffectSet kForwardChapterEffects =
+    kRefractionChapterEffects.without({Effect::kShadingNormals});
 
 enum class Tracer { kForward, kReverse, kCombined };
 

@@ -24,9 +24,7 @@ int main(int argc, char** argv) {
         "Chapter 08: forward (light) tracing: paths from the lights, through an aperture or connected to the "
         "camera",
         "ch08_default.json",
-        // The light tracer's BSDF would need its adjoint for shading normals (Veach 1997, 5.3): smooth meshes
-        // are shaded faceted here.
-        kRefractionChapterEffects.without({Effect::kShadingNormals}),
+        kForwardChapterEffects,
         {},
         [&] { return forward.renders_whole_because(); }};
     auto flags = [&](CLI::App& app) { add_forward_flags(app, forward); };

@@ -16,6 +16,19 @@ std::string renderer_note(Renderer renderer, const EffectSet& simulated) {
 
 }  // namespace
 
+std::string environment_behind_fog_note(const Scene& scene, const EffectSet& simulated) {
+    if (!simulated.contains(Effect::kMedia) || !scene.environment || !scene.medium) return "";
+    const Color sigma_t = scene.medium->sigma_t();
+    std::string channels;
+    for (int c = 0; c < 3; ++c) {
+        if (sigma_t[c] > 0) channels += std::string(channels.empty() ? "" : ", ") + "rgb"[c];
+    }
+    if (channels.empty()) return "";
+    return "environment: none of its light arrives in " + channels +
+           ": the fog (top-level medium) fills all space, and light from infinitely far is extinguished "
+           "wherever sigma_a + sigma_s > 0";
+}
+
 std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, const PathOptions& options,
                                      const MediumWalk& walk) {
     std::vector<std::string> notes{renderer_note(renderer, options.simulated)};
@@ -29,6 +42,8 @@ std::vector<std::string> media_notes(const Scene& scene, Renderer renderer, cons
                     (walk.distance == DistanceSampling::kFreeFlight
                          ? ""
                          : " (on grey media's segments that end at a surface; others keep free flight)"));
+    if (std::string fog = environment_behind_fog_note(scene, options.simulated); !fog.empty())
+        notes.push_back(std::move(fog));
     return notes;
 }
 

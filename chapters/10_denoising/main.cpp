@@ -5,6 +5,7 @@
 // `--study` measures what the filters buy against a converged reference: error, SSIM, time, the samples plain
 // path tracing needs for the same error, the bias, and where denoising loses.
 #include "07_bsdf_refraction/bsdf_render.hpp"
+#include "09_participating_media/media_notes.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
 #include "denoise_flags.hpp"
 #include "denoise_study.hpp"
@@ -36,13 +37,15 @@ int main(int argc, char** argv) {
         // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same
         // image as the noisy one of a whole render, without the features, to be merged by rt_merge.
         const SampleRange all{0, settings.samples_per_pixel};
+        const std::string fog = environment_behind_fog_note(context.scene, context.simulated);
         if (settings.resume || (settings.samples && *settings.samples != all)) {
-            return ChapterRun{
+            ChapterRun piece{
                 render_with_media(Renderer::kPaths, context.scene, context.simulated, settings, options),
                 {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media; a piece of the "
-                 "render: "
-                 "no features, not denoised"},
+                 "render: no features, not denoised"},
                 std::nullopt};
+            if (!fog.empty()) piece.notes.push_back(fog);
+            return piece;
         }
         if (denoising.study) {
             run_denoise_study(context.scene, settings, options, denoise_settings, denoising.study_options);
@@ -53,6 +56,7 @@ int main(int argc, char** argv) {
                        {"renderer: chapter 09's path loop with chapter 07's BSDFs and its media, recording "
                         "albedo, normal and depth at the first non-delta vertex"},
                        std::nullopt};
+        if (!fog.empty()) run.notes.push_back(fog);
         if (rendered.result.interrupted) {
             run.notes.push_back("interrupted: the partial image is written as it is, not denoised");
             return run;

@@ -19,6 +19,10 @@
 
 namespace rt {
 
+// What chapter 11 simulates: chapter 07's effects but shading normals (the shader shades meshes faceted).
+inline constexpr EffectSet kGpuChapterEffects =
+    EffectSet::all().without({Effect::kMedia, Effect::kShadingNormals});
+
 enum class ShaderKind { kCompute, kFragment };
 
 constexpr auto names_of(ShaderKind) {

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
         "Chapter 11: the path tracer as a GLSL shader (compute or fragment), headless "
         "OpenGL 4.5 through EGL, on a GPU or on Mesa's llvmpipe",
         "ch07_default.json",
-        EffectSet::all().without({Effect::kMedia, Effect::kShadingNormals}),
+        kGpuChapterEffects,
         {},
         [] {
             return "the GPU sums each pixel's samples in float, not in the exact sums a piece of "

@@ -19,6 +19,7 @@ using Real = float;
 #endif
 using Vec2 = glm::vec<2, Real>;
 using Vec3 = glm::vec<3, Real>;
+using Vec2d = glm::dvec2;
 using Vec3d = glm::dvec3;
 // Linear RGB radiance (or reflectance) of one pixel or one path.
 using Color = glm::vec<3, Real>;

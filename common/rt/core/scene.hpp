@@ -136,6 +136,8 @@ struct Transform {
     Vec3 apply_to_point(const Vec3& p) const;
     // A surface normal follows the inverse transpose: n / scale, then the rotations (not normalised).
     Vec3 apply_to_normal(const Vec3& n) const;
+    // Whether it turns the space inside out, as a mirror does: an odd number of negative scale factors.
+    bool mirrors() const { return (scale.x < 0) != ((scale.y < 0) != (scale.z < 0)); }
 
   private:
     Vec3 rotate(Vec3 v) const;  // about x, then y, then z

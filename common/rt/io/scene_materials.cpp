@@ -60,6 +60,10 @@ TextureDesc read_image_texture(const Node& node, const fs::path& scene_folder) {
     return {desc, mean};
 }
 
+// A checker's squares are 1 / scale of a texture coordinate: the smallest that float, with its steps of 2^-24
+// on coordinates near 1 (a quad's, a triangle's, a sphere's), still draws with 16 steps across.
+constexpr Real kLargestCheckerScale = 1 << 20;
+
 TextureDesc read_checker(const Node& node) {
     node.expect_object(std::array<std::string_view, 1>{"checker"}, "a checker texture");
     const Node checker = node["checker"];
@@ -67,7 +71,16 @@ TextureDesc read_checker(const Node& node) {
     CheckerDesc desc;
     if (checker.has("even")) desc.even = checker["even"].color_in(1);
     if (checker.has("odd")) desc.odd = checker["odd"].color_in(1);
-    if (checker.has("scale")) desc.scale = checker["scale"].positive();
+    if (checker.has("scale")) {
+        const Node scale = checker["scale"];
+        desc.scale = scale.positive();
+        if (desc.scale > kLargestCheckerScale) {
+            scale.fail(
+                "must be at most 1048576 (2^20: float resolves coordinates near 1 to 2^-24, 16 steps "
+                "a square), got " +
+                show(desc.scale));
+        }
+    }
     return {desc, (desc.even + desc.odd) / Real(2)};
 }
 

@@ -1,6 +1,7 @@
 #include "rt/io/scene_shapes.hpp"
 
 #include <cstdint>
+#include <utility>
 
 #include "rt/io/input_file.hpp"
 #include "rt/io/obj_parser.hpp"
@@ -81,6 +82,15 @@ void read_ply_into(MeshShape& mesh, std::string_view bytes) {
     if (!mesh.texture_coordinates.empty()) mesh.texture_corners = mesh.triangles;
 }
 
+// A mirroring transform turns every face's corners clockwise as seen from outside, so that the mesh would
+// face (and emit) inward: the second and third corners of each triangle, and of its normals and texture
+// coordinates, trade places, and each face turns counter-clockwise from outside again.
+void keep_outside_after_mirroring(MeshShape& mesh) {
+    for (auto* corners : {&mesh.triangles, &mesh.normal_corners, &mesh.texture_corners}) {
+        for (auto& triangle : *corners) std::swap(triangle[1], triangle[2]);
+    }
+}
+
 bool is_ply(const fs::path& path) {
     std::string extension = path.extension().string();
     for (char& c : extension) c = char(std::tolower((unsigned char)c));
@@ -90,7 +100,8 @@ bool is_ply(const fs::path& path) {
 // A mesh file's triangles, read strictly: OBJ, or PLY by its extension (.ply, any case). Polygons are split
 // into fans (0, k, k + 1). A mesh whose every face has no area after its transform (repeated or collinear
 // vertices, or coordinates so small that float's cross product underflows) is refused, as a lone triangle of
-// no area is. Normals follow the transform's inverse transpose and are normalised.
+// no area is. Normals follow the transform's inverse transpose and are normalised; a mirroring transform
+// keeps the mesh's outside (keep_outside_after_mirroring).
 MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
     MeshShape mesh;
     const Node file = node["file"];
@@ -124,6 +135,7 @@ MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
             check_within_limits(node["transform"], "vertex " + std::to_string(i + 1), mesh.positions[i]);
         }
     }
+    if (mesh.transform.mirrors()) keep_outside_after_mirroring(mesh);
     for (std::size_t i = 0; i < mesh.normals.size(); ++i) {
         const Vec3 n = mesh.transform.apply_to_normal(mesh.normals[i]);
         if (!normalisable(n)) {
