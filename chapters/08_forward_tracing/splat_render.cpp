@@ -1,14 +1,11 @@
 #include "splat_render.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <vector>
 
 #include "rt/render/interrupt.hpp"
+#include "rt/render/parallel_for.hpp"
 
 namespace rt {
 namespace {
@@ -31,8 +28,7 @@ std::uint64_t chunk_size(int width, int height) {
 SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t path_count,
                                const LightPathFunction& trace) {
     const auto start = std::chrono::steady_clock::now();
-    const int threads =
-        settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = thread_count(settings.threads);
     const std::uint64_t chunk = chunk_size(settings.width, settings.height);
     const std::uint64_t chunk_count = (path_count + chunk - 1) / chunk;
     const std::size_t pixels = std::size_t(settings.width) * std::size_t(settings.height);
@@ -66,40 +62,25 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
         }
         const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count - wave);
         std::fill(complete.begin(), complete.end(), std::uint8_t(0));
-        std::atomic<std::uint64_t> next{0};
-        std::exception_ptr failure;
-        std::mutex failure_mutex;
-        auto worker = [&](int thread_index) {
-            RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
-            try {
-                for (std::uint64_t c = next++; c < wave_chunks; c = next++) {
-                    Image& film = films[c];
-                    std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
-                    std::uint64_t count = 0;
-                    const std::uint64_t first = (wave + c) * chunk;
-                    const std::uint64_t end = std::min(path_count, first + chunk);
-                    bool stopped = false;
-                    for (std::uint64_t i = first; i < end && !stopped; ++i) {
-                        Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
-                        if (trace(i, rng, film, rays)) ++count;
-                        // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
-                        stopped =
-                            (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
-                    }
-                    contributing[c] = count;
-                    complete[c] = stopped ? 0 : 1;
+        // A chunk not started (the engine stops handing them out at an interrupt) stays incomplete.
+        parallel_for(
+            wave_chunks, {.threads = threads, .stop = interrupt_requested}, [&](std::size_t c, int thread) {
+                RayCounts& rays = rays_per_thread[std::size_t(thread)];
+                Image& film = films[c];
+                std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
+                std::uint64_t count = 0;
+                const std::uint64_t first = (wave + c) * chunk;
+                const std::uint64_t end = std::min(path_count, first + chunk);
+                bool stopped = false;
+                for (std::uint64_t i = first; i < end && !stopped; ++i) {
+                    Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
+                    if (trace(i, rng, film, rays)) ++count;
+                    // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
+                    stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
                 }
-            } catch (...) {
-                const std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-                next = wave_chunks;  // the others stop after their chunk
-            }
-        };
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
-        worker(0);
-        for (std::thread& t : pool) t.join();
-        if (failure) std::rethrow_exception(failure);
+                contributing[c] = count;
+                complete[c] = stopped ? 0 : 1;
+            });
         // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only
         // the chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
         for (std::uint64_t c = 0; c < wave_chunks; ++c) {

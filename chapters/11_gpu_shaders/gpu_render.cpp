@@ -14,6 +14,7 @@
 #include "gl_program.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/render/interrupt.hpp"
+#include "rt/render/parallel_for.hpp"
 #include "rt/render/progress.hpp"
 
 namespace rt {
@@ -231,27 +232,28 @@ RenderResult GpuRenderer::render(const RenderSettings& settings) const {
          first = end, end = std::min(spp, end + per_pass)) {
         glCopyImageSubData(total, GL_TEXTURE_2D, 0, 0, 0, 0, backup, GL_TEXTURE_2D, 0, 0, 0, 0, width, height,
                            1);
-        bool cut = false;
+        // The pass's rows are the engine's items, all on this thread (the OpenGL context is this thread's): a
+        // row not yet drawn starts a band there, and the band's other rows are then handed on at no cost.
+        int drawn = 0;  // rows [0, drawn) have the pass's samples
         std::uint64_t pass_taken = 0;
-        for (int y0 = 0; y0 < height;) {
-            if (interrupt_requested()) {
-                cut = true;
-                break;
-            }
-            const int band = std::min(rows, height - y0);
-            const auto band_start = Clock::now();
-            run_band(y0, band, first, end - first);
-            const double seconds = std::chrono::duration<double>(Clock::now() - band_start).count();
-            s.counters.read(counts.data(), sizeof counts);
-            s.counters.zero();
-            for (std::size_t k = 0; k < counts.size(); ++k) result.rays.add(RayKind(k), counts[k]);
-            if (seconds < kShortestDispatch) rows = std::min(2 * rows, height);
-            if (seconds > kLongestDispatch) rows = std::max(1, rows / 2);
-            y0 += band;
-            pass_taken += std::uint64_t(band) * std::uint64_t(width) * std::uint64_t(end - first);
-            progress.show(double(samples_kept + pass_taken) / total_samples,
-                          std::chrono::duration<double>(Clock::now() - start).count());
-        }
+        parallel_for(
+            std::size_t(height), {.threads = 1, .stop = interrupt_requested}, [&](std::size_t row, int) {
+                if (int(row) < drawn) return;
+                const int band = std::min(rows, height - drawn);
+                const auto band_start = Clock::now();
+                run_band(drawn, band, first, end - first);
+                const double seconds = std::chrono::duration<double>(Clock::now() - band_start).count();
+                s.counters.read(counts.data(), sizeof counts);
+                s.counters.zero();
+                for (std::size_t k = 0; k < counts.size(); ++k) result.rays.add(RayKind(k), counts[k]);
+                if (seconds < kShortestDispatch) rows = std::min(2 * rows, height);
+                if (seconds > kLongestDispatch) rows = std::max(1, rows / 2);
+                drawn += band;
+                pass_taken += std::uint64_t(band) * std::uint64_t(width) * std::uint64_t(end - first);
+                progress.show(double(samples_kept + pass_taken) / total_samples,
+                              std::chrono::duration<double>(Clock::now() - start).count());
+            });
+        const bool cut = drawn < height;  // an interrupt stopped the pass
         if (cut) {
             glCopyImageSubData(backup, GL_TEXTURE_2D, 0, 0, 0, 0, total, GL_TEXTURE_2D, 0, 0, 0, 0, width,
                                height, 1);
