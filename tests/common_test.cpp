@@ -27,6 +27,7 @@
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/flags/enum_flag.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
@@ -478,6 +479,29 @@ TEST_CASE("An enum's one table of names gives to_string, parsing and its error, 
     CHECK(fruit == Fruit::kPlum);
     std::vector<std::string> fig{"fig", "--fruit"};
     CHECK_THROWS_WITH(app.parse(fig), "--fruit: fig not in {apple,pear,plum}");
+}
+
+TEST_CASE("A study's shared options take their name and help from one table, and are refused without the study",
+          "[flags]") {
+    CLI::App app("test", "test");
+    bool study = false;
+    std::string csv;
+    int reference_spp = 8;
+    CLI::Option* study_flag = app.add_flag("--aa-study", study, "A study");
+    const CLI::Option* csv_option = add_study_option(app, kCsvOption, csv, {{study_flag}});
+    const CLI::Option* spp_option = add_reference_spp_option(app, reference_spp, 2, {{study_flag}}, "Its own words");
+    CHECK(csv_option->get_name() == "--csv");
+    CHECK(csv_option->get_description() == "With --aa-study: also write the table as CSV");
+    CHECK(spp_option->get_name() == "--reference-spp");
+    CHECK(spp_option->get_description() == "Its own words");
+    std::vector<std::string> alone{"t.csv", "--csv"};  // CLI11 reads the vector last first
+    CHECK_THROWS_WITH(app.parse(alone), Catch::Contains("only with --aa-study"));
+    std::vector<std::string> too_few{"1", "--reference-spp", "--aa-study"};
+    CHECK_THROWS(app.parse(too_few));
+    std::vector<std::string> both{"4", "--reference-spp", "t.csv", "--csv", "--aa-study"};
+    app.parse(both);
+    CHECK(csv == "t.csv");
+    CHECK(reference_spp == 4);
 }
 
 TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as the command line sets them",
