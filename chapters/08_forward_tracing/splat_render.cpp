@@ -19,6 +19,28 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+struct ChunkTraced {
+    std::uint64_t contributing = 0;  // paths that added to the film
+    bool complete = false;           // false: an interrupt cut it short
+};
+
+// Traces paths [first, end) into `film` (zeroed first), each from its own stream; gives up within
+// kInterruptCheck paths of an interrupt.
+ChunkTraced trace_chunk(std::uint64_t first, std::uint64_t end, std::uint64_t seed,
+                        const LightPathFunction& trace, Image& film, RayCounts& rays) {
+    std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
+    ChunkTraced out;
+    bool stopped = false;
+    for (std::uint64_t i = first; i < end && !stopped; ++i) {
+        Pcg32 rng = Pcg32::for_sample(i, 0, seed);
+        if (trace(i, rng, film, rays)) ++out.contributing;
+        // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
+        stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
+    }
+    out.complete = !stopped;
+    return out;
+}
+
 }  // namespace
 
 std::uint64_t chunk_size(int width, int height) {
@@ -63,24 +85,15 @@ SplatResult render_light_paths(const RenderSettings& settings, std::uint64_t pat
         const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count - wave);
         std::fill(complete.begin(), complete.end(), std::uint8_t(0));
         // A chunk not started (the engine stops handing them out at an interrupt) stays incomplete.
-        parallel_for(
-            wave_chunks, {.threads = threads, .stop = interrupt_requested}, [&](std::size_t c, int thread) {
-                RayCounts& rays = rays_per_thread[std::size_t(thread)];
-                Image& film = films[c];
-                std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
-                std::uint64_t count = 0;
-                const std::uint64_t first = (wave + c) * chunk;
-                const std::uint64_t end = std::min(path_count, first + chunk);
-                bool stopped = false;
-                for (std::uint64_t i = first; i < end && !stopped; ++i) {
-                    Pcg32 rng = Pcg32::for_sample(i, 0, settings.seed);
-                    if (trace(i, rng, film, rays)) ++count;
-                    // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
-                    stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
-                }
-                contributing[c] = count;
-                complete[c] = stopped ? 0 : 1;
-            });
+        parallel_for(wave_chunks, {.threads = threads, .stop = interrupt_requested},
+                     [&](std::size_t c, int thread) {
+                         const std::uint64_t first = (wave + c) * chunk;
+                         const ChunkTraced traced_chunk =
+                             trace_chunk(first, std::min(path_count, first + chunk), settings.seed, trace,
+                                         films[c], rays_per_thread[std::size_t(thread)]);
+                         contributing[c] = traced_chunk.contributing;
+                         complete[c] = traced_chunk.complete ? 1 : 0;
+                     });
         // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only
         // the chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
         for (std::uint64_t c = 0; c < wave_chunks; ++c) {
