@@ -1338,3 +1338,10 @@ TEST_CASE("A conductor is a reflector of the effects, stood in for by its normal
     REQUIRE(before.notes().size() == 2);
     CHECK(before.notes()[0].find("chapter 07") != std::string::npos);
 }
+
+TEST_CASE("The renderer and the path parts are named by their names_of tables", "[names]") {
+    CHECK(all_names<Renderer>() ==
+          std::vector<std::string>{"direct (chapter 04)", "paths (chapter 06's loop, chapter 07's BSDFs)"});
+    CHECK(all_names<PathPart>() == std::vector<std::string>{"seen", "next event", "BSDF hit", "caustic"});
+    CHECK(to_string(PathPart::kBsdfHit) == "BSDF hit");
+}

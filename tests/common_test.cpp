@@ -6,11 +6,14 @@
 #include <array>
 #include <atomic>
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <stdexcept>
+#include <thread>
 #include <vector>
 
 #ifdef RT_TEST_OPENEXR
@@ -24,6 +27,7 @@
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/flags/enum_flag.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
@@ -32,6 +36,7 @@
 #include "rt/io/scene_loader.hpp"
 #include "rt/live/live_knobs.hpp"
 #include "rt/render/interrupt.hpp"
+#include "rt/render/parallel_for.hpp"
 #include "rt/render/render_loop.hpp"
 
 using namespace rt;
@@ -208,6 +213,67 @@ TEST_CASE("The largest uniform real is the largest float below 1", "[random]") {
     CHECK(Real(0xFFFFFF) * Real(0x1.0p-24) == kOneMinusEpsilon);
     CHECK(kOneMinusEpsilon < 1);
     CHECK(std::nextafter(kOneMinusEpsilon, Real(2)) == 1);
+}
+
+TEST_CASE("The parallel engine runs every item once, on any number of threads", "[render][parallel]") {
+    for (int threads : {1, 2, 3, 8}) {
+        std::vector<std::atomic<int>> runs(1000);
+        std::atomic<int> bad_thread{0};
+        const bool whole = parallel_for(runs.size(), {.threads = threads}, [&](std::size_t item, int thread) {
+            if (thread < 0 || thread >= threads) ++bad_thread;
+            ++runs[item];
+        });
+        CHECK(whole);
+        CHECK(bad_thread == 0);
+        CHECK(std::all_of(runs.begin(), runs.end(), [](const std::atomic<int>& n) { return n == 1; }));
+    }
+}
+
+TEST_CASE("The parallel engine on one thread runs every item in order on the calling thread", "[render][parallel]") {
+    std::vector<std::size_t> order;
+    bool elsewhere = false;
+    const std::thread::id caller = std::this_thread::get_id();
+    parallel_for(5, {.threads = 1}, [&](std::size_t item, int) {
+        order.push_back(item);
+        elsewhere = elsewhere || std::this_thread::get_id() != caller;
+    });
+    CHECK(order == std::vector<std::size_t>{0, 1, 2, 3, 4});
+    CHECK_FALSE(elsewhere);
+}
+
+namespace {
+std::atomic<int> items_before_stop{0};
+bool stop_after_three() { return items_before_stop.fetch_add(1) >= 3; }
+}  // namespace
+
+TEST_CASE("The parallel engine starts no item once stopped, and says it stopped", "[render][parallel]") {
+    items_before_stop = 0;
+    int ran = 0;
+    const bool whole = parallel_for(10, {.threads = 1, .stop = stop_after_three}, [&](std::size_t, int) { ++ran; });
+    CHECK_FALSE(whole);
+    CHECK(ran == 3);
+}
+
+TEST_CASE("The parallel engine rethrows the first exception once every thread has finished its item",
+          "[render][parallel]") {
+    std::atomic<int> started{0}, finished{0};
+    auto run = [&] {
+        parallel_for(64, {.threads = 4}, [&](std::size_t item, int) {
+            ++started;
+            if (item == 0) throw std::runtime_error("first");
+            std::this_thread::sleep_for(std::chrono::milliseconds(item == 1 ? 100 : 20));
+            if (item == 1) throw std::runtime_error("second");
+            ++finished;
+        });
+    };
+    CHECK_THROWS_WITH(run(), "first");
+    // Every item that started had ended (finished or thrown) before the rethrow, and the failure stopped the
+    // hand-out early.
+    CHECK(started - finished <= 2);
+    CHECK(started < 64);
+    const int finished_at_rethrow = finished;
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    CHECK(finished == finished_at_rethrow);
 }
 
 TEST_CASE("The render loop gives the same image, bit for bit, for 1 and 2 threads", "[render]") {
@@ -413,6 +479,29 @@ TEST_CASE("An enum's one table of names gives to_string, parsing and its error, 
     CHECK(fruit == Fruit::kPlum);
     std::vector<std::string> fig{"fig", "--fruit"};
     CHECK_THROWS_WITH(app.parse(fig), "--fruit: fig not in {apple,pear,plum}");
+}
+
+TEST_CASE("A study's shared options take their name and help from one table, and are refused without the study",
+          "[flags]") {
+    CLI::App app("test", "test");
+    bool study = false;
+    std::string csv;
+    int reference_spp = 8;
+    CLI::Option* study_flag = app.add_flag("--aa-study", study, "A study");
+    const CLI::Option* csv_option = add_study_option(app, kCsvOption, csv, {{study_flag}});
+    const CLI::Option* spp_option = add_reference_spp_option(app, reference_spp, 2, {{study_flag}}, "Its own words");
+    CHECK(csv_option->get_name() == "--csv");
+    CHECK(csv_option->get_description() == "With --aa-study: also write the table as CSV");
+    CHECK(spp_option->get_name() == "--reference-spp");
+    CHECK(spp_option->get_description() == "Its own words");
+    std::vector<std::string> alone{"t.csv", "--csv"};  // CLI11 reads the vector last first
+    CHECK_THROWS_WITH(app.parse(alone), Catch::Contains("only with --aa-study"));
+    std::vector<std::string> too_few{"1", "--reference-spp", "--aa-study"};
+    CHECK_THROWS(app.parse(too_few));
+    std::vector<std::string> both{"4", "--reference-spp", "t.csv", "--csv", "--aa-study"};
+    app.parse(both);
+    CHECK(csv == "t.csv");
+    CHECK(reference_spp == 4);
 }
 
 TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as the command line sets them",

@@ -41,11 +41,4 @@ double exact_coverage(const FilmEdge& edge, int x, int y) {
     return std::abs(twice_area) / 2;
 }
 
-Image exact_coverage_image(const FilmEdge& edge, int width, int height) {
-    Image image(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) image.at(x, y) = Color(Real(exact_coverage(edge, x, y)));
-    return image;
-}
-
 }  // namespace rt

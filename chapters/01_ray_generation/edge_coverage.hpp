@@ -5,7 +5,6 @@
 #pragma once
 
 #include "camera.hpp"
-#include "rt/core/image.hpp"
 
 namespace rt {
 
@@ -22,8 +21,5 @@ bool inside(const FilmEdge& edge, const Vec3& direction);
 // The exact area of pixel [x, x+1] × [y, y+1] inside the half-plane: the unit square clipped by the line
 // (one Sutherland–Hodgman step), then the shoelace formula.
 double exact_coverage(const FilmEdge& edge, int x, int y);
-
-// The exact coverage of every pixel, as a grey image.
-Image exact_coverage_image(const FilmEdge& edge, int width, int height);
 
 }  // namespace rt

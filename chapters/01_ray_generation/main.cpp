@@ -4,6 +4,7 @@
 #include "edge_coverage.hpp"
 #include "ray_generation_render.hpp"
 #include "rt/flags/enum_flag.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
@@ -19,8 +20,7 @@ int main(int argc, char** argv) {
         app.add_option("--edge-tilt", tilt_degrees, "Tilt of the edge from the vertical, degrees");
         CLI::Option* study_flag = app.add_flag(
             "--aa-study", study, "Measure edge error against time for each sampler and 1..256 spp");
-        app.add_option("--csv", csv, "With --aa-study: also write the table as CSV")
-            ->check(only_with({{study_flag}}));
+        add_study_option(app, kCsvOption, csv, {{study_flag}});
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;

@@ -8,6 +8,7 @@
 #include "offset_study_report.hpp"
 #include "ray_offset.hpp"
 #include "rt/flags/enum_flag.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 #include "scene_scale.hpp"
 #include "shadow_notes.hpp"
@@ -37,8 +38,7 @@ int main(int argc, char** argv) {
         app.add_option("--study-scales", study_request.scales,
                        "With --offset-study: the scales (default 1e-3 1 1e3 1e5)")
             ->check(only_with({{study_flag}}));
-        app.add_option("--csv", study_request.csv, "With --offset-study: also write the table as CSV")
-            ->check(only_with({{study_flag}}));
+        add_study_option(app, kCsvOption, study_request.csv, {{study_flag}});
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RayOffset offset = make_ray_offset(method, epsilon);

@@ -11,6 +11,7 @@
 #include "direct_render.hpp"
 #include "quad_lights_flag.hpp"
 #include "rt/flags/enum_flag.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 #include "shadow_study_report.hpp"
 
@@ -42,8 +43,7 @@ int main(int argc, char** argv) {
             "--shadow-study", study,
             "On the analytic scene (default ch04_analytic.json): RMSE to the exact image and time for "
             "1, 4, 16, 64, 256 shadow samples per pixel, for both light samplers");
-        app.add_option("--csv", csv, "With --shadow-study: also write the table as CSV")
-            ->check(only_with({{study_flag}}));
+        add_study_option(app, kCsvOption, csv, {{study_flag}});
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const RenderSettings& settings = context.settings;

@@ -9,6 +9,7 @@
 #include "furnace.hpp"
 #include "gi_notes.hpp"
 #include "gi_render.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 #include "termination_flags.hpp"
 
@@ -45,8 +46,7 @@ int main(int argc, char** argv) {
                        "With --depth-study: the throughput rule's thresholds (default 0.01 0.1)")
             ->check(CLI::Range(0.0, 1.0))
             ->check(only_with({{study_flag}}));
-        app.add_option("--csv", study_request.csv, "With --depth-study: also write the table as CSV")
-            ->check(only_with({{study_flag}}));
+        add_study_option(app, kCsvOption, study_request.csv, {{study_flag}});
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (study) {

@@ -30,7 +30,6 @@ class Environment {
 
     // No light at all: a black constant, or an image whose every pixel is black.
     bool black() const { return black_; }
-    bool has_image() const { return image_ != nullptr; }
 
     // The radiance arriving from direction `w` (unit), that is, of a ray leaving the scene along w.
     Color radiance(const Vec3& w) const {

@@ -9,6 +9,7 @@
 #include "irradiance_study.hpp"
 #include "monte_carlo_notes.hpp"
 #include "path_tracer.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 #include "sampling_flags.hpp"
 
@@ -45,16 +46,10 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(1, 1 << 16))
             ->check(power_of_two())
             ->check(with_converge);
-        app.add_option("--reference-spp", converge_request.reference_spp,
-                       "With --converge: spp of the reference")
-            ->check(CLI::Range(2, 1 << 20))
-            ->check(with_converge);
-        app.add_option("--cache", converge_request.cache,
-                       "With --converge: folder of the cached reference PFM")
-            ->check(with_converge);
-        app.add_option("--csv", converge_request.csv,
-                       "With --converge: the CSV file; the plots go beside it (_spp.png, _time.png)")
-            ->check(with_converge);
+        add_reference_spp_option(app, converge_request.reference_spp, 2, {{converge_flag}});
+        add_study_option(app, kCacheOption, converge_request.cache, {{converge_flag}});
+        add_study_option(app, kCsvOption, converge_request.csv, {{converge_flag}},
+                         "With --converge: the CSV file; the plots go beside it (_spp.png, _time.png)");
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (irradiance) {

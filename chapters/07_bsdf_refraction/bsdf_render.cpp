@@ -7,11 +7,6 @@
 
 namespace rt {
 
-std::string_view to_string(Renderer renderer) {
-    return renderer == Renderer::kDirect ? "direct (chapter 04)"
-                                         : "paths (chapter 06's loop, chapter 07's BSDFs)";
-}
-
 Renderer choose_renderer(const EffectSet& simulated) {
     if (simulated.without(kDirectRendererEffects).empty()) return Renderer::kDirect;
     return Renderer::kPaths;

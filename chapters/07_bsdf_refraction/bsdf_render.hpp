@@ -13,6 +13,7 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "refraction_materials.hpp"
 #include "rt/core/effect_set.hpp"
+#include "rt/core/enum_names.hpp"
 #include "rt/core/scene.hpp"
 #include "rt/render/render_loop.hpp"
 
@@ -23,8 +24,12 @@ inline constexpr EffectSet kRefractionChapterEffects = EffectSet::all().without(
 
 enum class Renderer { kDirect, kPaths };
 
-// "direct (chapter 04)" or "paths (chapter 06's loop, chapter 07's BSDFs)".
-std::string_view to_string(Renderer renderer);
+// Its names, for the notes (no flag takes them: the effects choose the renderer).
+constexpr auto names_of(Renderer) {
+    return enum_names<Renderer>("renderer",
+                                {{Renderer::kDirect, "direct (chapter 04)"},
+                                 {Renderer::kPaths, "paths (chapter 06's loop, chapter 07's BSDFs)"}});
+}
 
 inline constexpr EffectSet kDirectRendererEffects{Effect::kCameraRays, Effect::kShadows, Effect::kDirect,
                                                   Effect::kGlossy};

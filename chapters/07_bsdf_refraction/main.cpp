@@ -9,6 +9,7 @@
 #include "depth_study.hpp"
 #include "fresnel_study.hpp"
 #include "refraction_notes.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
@@ -33,20 +34,14 @@ int main(int argc, char** argv) {
         CLI::Option* depth_flag = app.add_flag(
             "--depth-study", depth,
             "RMSE against a converged reference and time for each --depths (fixed maximum depth)");
-        app.add_option("--csv", depth_request.csv,
-                       "With --fresnel-study: write R(theta) both ways to this CSV file; with --depth-study: "
-                       "its table")
-            ->check(only_with({{fresnel_flag}, {depth_flag}}));
+        add_study_option(app, kCsvOption, depth_request.csv, {{fresnel_flag}, {depth_flag}},
+                         "With --fresnel-study: write R(theta) both ways to this CSV file; with --depth-study: "
+                         "its table");
         app.add_option("--depths", depth_request.depths, "With --depth-study: the maximum depths")
             ->check(CLI::Range(1, 1000))
             ->check(only_with({{depth_flag}}));
-        app.add_option("--reference-spp", depth_request.reference_spp,
-                       "With --depth-study: spp of the reference")
-            ->check(CLI::Range(1, 1 << 20))
-            ->check(only_with({{depth_flag}}));
-        app.add_option("--cache", depth_request.cache,
-                       "With --depth-study: folder of the cached reference PFM")
-            ->check(only_with({{depth_flag}}));
+        add_reference_spp_option(app, depth_request.reference_spp, 1, {{depth_flag}});
+        add_study_option(app, kCacheOption, depth_request.cache, {{depth_flag}});
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         const Scene& scene = context.scene;

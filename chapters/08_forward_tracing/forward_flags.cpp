@@ -4,6 +4,7 @@
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/flags/only_with.hpp"
+#include "rt/flags/study_flags.hpp"
 
 namespace rt {
 
@@ -70,19 +71,16 @@ void add_forward_flags(CLI::App& app, ForwardFlags& flags) {
     app.add_option("--study-paths", study.fraction_paths, "With --forward-study: light paths per fraction")
         ->check(CLI::Range(1000, 1 << 30))
         ->check(with_study);
-    app.add_option("--reference-spp", study.reference_spp,
-                   "With --forward-study: spp of chapter 06's converged reference")
-        ->check(CLI::Range(2, 1 << 20))
-        ->check(with_study);
+    add_reference_spp_option(app, study.reference_spp, 2, {{study_flag}},
+                             "With --forward-study: spp of chapter 06's converged reference");
     app.add_option("--glass-reference-spp", study.glass_reference_spp,
                    "With --forward-study: spp of the mirror and glass scenes' references")
         ->check(CLI::Range(2, 1 << 20))
         ->check(with_study);
-    app.add_option("--cache", study.cache,
-                   "With --forward-study: folder of the converged references (chapter 06's cache files)")
-        ->check(with_study);
-    app.add_option("--csv", study.csv, "With --forward-study: also write the time-to-RMSE table as CSV")
-        ->check(with_study);
+    add_study_option(app, kCacheOption, study.cache, {{study_flag}},
+                     "With --forward-study: folder of the converged references (chapter 06's cache files)");
+    add_study_option(app, kCsvOption, study.csv, {{study_flag}},
+                     "With --forward-study: also write the time-to-RMSE table as CSV");
 }
 
 }  // namespace rt

@@ -29,11 +29,12 @@ RenderSettings study_settings(const StudyOptions& o, int spp) {
     return s;
 }
 
-Reference reference_of(const StudyScene& s, const StudyOptions& o) {
-    std::printf("  converged reference (chapter 06, MIS, %d spp) ...", o.reference_spp);
+// Chapter 06's cached converged reference (convergence.hpp) of `s` at `spp`, said as `renderer`.
+Reference reference_of(const StudyScene& s, const StudyOptions& o, int spp, const char* renderer) {
+    std::printf("  converged reference (%s, %d spp) ...", renderer, spp);
     std::fflush(stdout);
-    const Reference ref = converged_reference(s.prepared, PathOptions{}, s.camera, study_settings(o, 1),
-                                              o.reference_spp, o.cache);
+    const Reference ref =
+        converged_reference(s.prepared, PathOptions{}, s.camera, study_settings(o, 1), spp, o.cache);
     std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
                 ref.file.string().c_str(), std::sqrt(ref.noise_mse));
     return ref;
@@ -78,7 +79,7 @@ struct TimedRmse {
 void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n2. Time to the same RMSE as chapter 06's reverse path tracer (%s, %dx%d, %d threads)\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size, o.threads);
-    const Reference ref = reference_of(s, o);
+    const Reference ref = reference_of(s, o, o.reference_spp, "chapter 06, MIS");
     std::vector<TimedRmse> forward;
     std::vector<double> fs, fr;
     const LightTracer light(s.prepared.world, s.importance, s.prepared.lights, s.camera,
@@ -117,65 +118,17 @@ void time_to_same_rmse(const StudyScene& s, const StudyOptions& o) {
                         (std::string("path tracer, ") + std::string(to_string(strategy))).c_str(), spp, rmse,
                         r.seconds, t, t / r.seconds);
             if (csv)
-                csv << "reverse (" << to_string(strategy) << ")," << spp << ',' << rmse << ',' << r.seconds << ',' << t << ','
-                    << t / r.seconds << '\n';
+                csv << "reverse (" << to_string(strategy) << ")," << spp << ',' << rmse << ',' << r.seconds
+                    << ',' << t << ',' << t / r.seconds << '\n';
         }
     }
-}
-
-// The converged image of a scene with mirrors and glass: chapter 07's path tracer, renders A and B of
-// spp / 2 each (seeds 1001, 1002), cached as <cache>/ch08_reference_<stem>_<W>x<H>_<spp>spp.pfm (the mean)
-// and ..._half.pfm (A); its own MSE is estimated as mean((A − B)²) / 4.
-Reference glass_reference(const StudyScene& s, const StudyOptions& o) {
-    namespace fs = std::filesystem;
-    const std::string stem = "ch08_reference_" + fs::path(s.scene.file).stem().string() + "_" +
-                             std::to_string(o.size) + "x" + std::to_string(o.size) + "_" +
-                             std::to_string(o.glass_reference_spp) + "spp";
-    Reference ref;
-    ref.file = fs::path(o.cache) / (stem + ".pfm");
-    ref.spp = o.glass_reference_spp;
-    const fs::path half = fs::path(o.cache) / (stem + "_half.pfm");
-    std::printf("  converged reference (chapter 07's path tracer, %d spp) ...", o.glass_reference_spp);
-    std::fflush(stdout);
-    Image a;
-    if (fs::exists(ref.file) && fs::exists(half)) {
-        ref.image = read_pfm(ref.file);
-        a = read_pfm(half);
-        ref.cached = ref.image.width() == o.size && ref.image.height() == o.size && a.width() == o.size &&
-                     a.height() == o.size;
-    }
-    if (!ref.cached) {
-        for (const fs::path& file : {half, ref.file}) check_writable("--cache", file);
-        const PathTracer tracer(s.prepared.world, s.prepared.materials, s.prepared.lights, PathOptions{});
-        RenderSettings settings = study_settings(o, o.glass_reference_spp / 2);
-        settings.seed = 1001;
-        const RenderResult ra = render_paths(tracer, s.camera, settings);
-        settings.seed = 1002;
-        const RenderResult rb = render_paths(tracer, s.camera, settings);
-        a = ra.image;
-        ref.image = Image(o.size, o.size);
-        for (std::size_t i = 0; i < a.pixel_count(); ++i)
-            ref.image.pixels()[i] = (ra.image.pixels()[i] + rb.image.pixels()[i]) * Real(0.5);
-        ref.seconds = ra.seconds + rb.seconds;
-        write_pfm(a, half);
-        write_pfm(ref.image, ref.file);
-    }
-    // B = 2 ref − A, so (A − B)² = 4 (A − ref)²: the noise MSE is mean((A − ref)²).
-    double sum = 0;
-    for (std::size_t i = 0; i < a.pixel_count(); ++i) {
-        const Vec3d d = Vec3d(a.pixels()[i]) - Vec3d(ref.image.pixels()[i]);
-        sum += glm::dot(d, d);
-    }
-    ref.noise_mse = sum / double(3 * a.pixel_count());
-    std::printf(" %s %s (its own RMSE about %.2e)\n", ref.cached ? "read" : "rendered and wrote",
-                ref.file.string().c_str(), std::sqrt(ref.noise_mse));
-    return ref;
 }
 
 void wins_and_losses(const StudyScene& s, const StudyOptions& o) {
     std::printf("\n3. Where forward tracing wins and loses (%s, %dx%d): RMSE per region of the image\n",
                 std::filesystem::path(s.scene.file).filename().c_str(), o.size, o.size);
-    const Reference ref = glass_reference(s, o);
+    // A scene with mirrors and glass: chapter 06's loop on chapter 07's materials (s.prepared's).
+    const Reference ref = reference_of(s, o, o.glass_reference_spp, "chapter 07's path tracer");
     // The regions: pixels whose centre sees a mirror first; pixels the caustic lights (the light tracer's
     // caustic paths alone give at least 10% of the reference); the rest.
     LightTracerOptions caustic_options = LightTracerOptions{};

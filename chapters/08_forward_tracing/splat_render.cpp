@@ -1,15 +1,12 @@
 #include "splat_render.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "rt/render/interrupt.hpp"
+#include "rt/render/parallel_for.hpp"
 
 namespace rt {
 namespace {
@@ -21,6 +18,28 @@ constexpr std::uint64_t kInterruptCheck = 1024;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct ChunkTraced {
+    std::uint64_t contributing = 0;  // paths that added to the film
+    bool complete = false;           // false: an interrupt cut it short
+};
+
+// Traces paths [first, end) into `film` (zeroed first), each from its own stream; gives up within
+// kInterruptCheck paths of an interrupt.
+ChunkTraced trace_chunk(std::uint64_t first, std::uint64_t end, std::uint64_t seed,
+                        const LightPathFunction& trace, Image& film, RayCounts& rays) {
+    std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
+    ChunkTraced out;
+    bool stopped = false;
+    for (std::uint64_t i = first; i < end && !stopped; ++i) {
+        Pcg32 rng = Pcg32::for_sample(i, 0, seed);
+        if (trace(i, rng, film, rays)) ++out.contributing;
+        // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
+        stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
+    }
+    out.complete = !stopped;
+    return out;
 }
 
 }  // namespace
@@ -40,8 +59,7 @@ SplatRender::SplatRender(const RenderSettings& settings, std::uint64_t path_coun
     : settings_(settings),
       path_count_(path_count),
       trace_(std::move(trace)),
-      threads_(settings.threads > 0 ? settings.threads
-                                    : int(std::max(1u, std::thread::hardware_concurrency()))),
+      threads_(thread_count(settings.threads)),
       chunk_(chunk_size(settings.width, settings.height)),
       chunk_count_((path_count + chunk_ - 1) / chunk_),
       pixels_(std::size_t(settings.width) * std::size_t(settings.height)),
@@ -76,39 +94,14 @@ void SplatRender::trace_wave() {
     const std::uint64_t wave_chunks = std::min(kChunksPerWave, chunk_count_ - wave);
     next_wave_ += wave_chunks;
     std::fill(complete_.begin(), complete_.end(), std::uint8_t(0));
-    std::atomic<std::uint64_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto worker = [&](int thread_index) {
-        RayCounts& rays = rays_per_thread_[std::size_t(thread_index)];
-        try {
-            for (std::uint64_t c = next++; c < wave_chunks; c = next++) {
-                Image& film = films_[c];
-                std::fill(film.pixels().begin(), film.pixels().end(), Color(0));
-                std::uint64_t count = 0;
-                const std::uint64_t first = (wave + c) * chunk_;
-                const std::uint64_t end = std::min(path_count_, first + chunk_);
-                bool stopped = false;
-                for (std::uint64_t i = first; i < end && !stopped; ++i) {
-                    Pcg32 rng = Pcg32::for_sample(i, 0, settings_.seed);
-                    if (trace_(i, rng, film, rays)) ++count;
-                    // Ctrl-C: give up this chunk (it is not merged) within a few thousand paths.
-                    stopped = (i - first) % kInterruptCheck == kInterruptCheck - 1 && interrupt_requested();
-                }
-                contributing_[c] = count;
-                complete_[c] = stopped ? 0 : 1;
-            }
-        } catch (...) {
-            const std::lock_guard<std::mutex> lock(failure_mutex);
-            if (!failure) failure = std::current_exception();
-            next = wave_chunks;  // the others stop after their chunk
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads_; ++t) pool.emplace_back(worker, t);
-    worker(0);
-    for (std::thread& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    // A chunk not started (the engine stops handing them out at an interrupt) stays incomplete.
+    parallel_for(wave_chunks, {.threads = threads_, .stop = interrupt_requested}, [&](std::size_t c, int thread) {
+        const std::uint64_t first = (wave + c) * chunk_;
+        const ChunkTraced traced = trace_chunk(first, std::min(path_count_, first + chunk_), settings_.seed, trace_,
+                                               films_[c], rays_per_thread_[std::size_t(thread)]);
+        contributing_[c] = traced.contributing;
+        complete_[c] = traced.complete ? 1 : 0;
+    });
     // The merge, in chunk order: the same sums whatever thread traced which chunk. When interrupted, only the
     // chunks before the first incomplete one, so the image averages paths 0 … traced − 1.
     for (std::uint64_t c = 0; c < wave_chunks; ++c) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "rt/flags/only_with.hpp"
+#include "rt/flags/study_flags.hpp"
 #include "volume_path_tracer.hpp"
 #include "walk_study.hpp"
 
@@ -72,9 +73,7 @@ void add_media_study_flags(CLI::App& app, MediaStudies& studies) {
     app.add_option("--caps", studies.caps, "With --knob-study: the caps on scattering events")
         ->check(CLI::Range(1, 1 << 30))
         ->check(only_with({{knob_flag}}));
-    app.add_option("--reference-spp", studies.reference_spp, "With --knob-study: spp of the reference")
-        ->check(CLI::Range(1, 1 << 20))
-        ->check(only_with({{knob_flag}}));
+    add_reference_spp_option(app, studies.reference_spp, 1, {{knob_flag}});
     app.add_flag("--free-flight-study", studies.free_flight,
                  "Spectral MIS against the naive per-channel density on a chromatic medium");
 }

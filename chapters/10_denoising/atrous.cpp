@@ -1,6 +1,6 @@
 #include "atrous.hpp"
 
-#include "parallel_rows.hpp"
+#include "rt/render/parallel_for.hpp"
 
 namespace rt {
 
@@ -41,7 +41,8 @@ Image atrous_filter(const FeatureBuffers& buffers, const AtrousSettings& setting
     const int width = buffers.colour.width(), height = buffers.colour.height();
     std::vector<GuidePixel> level = guide_pixels(buffers), next(level.size());
     for (int i = 0, step = 1; i < settings.levels; ++i, step *= 2) {
-        for_each_row(height, threads, [&](int y) {
+        parallel_for(std::size_t(height), {.threads = threads}, [&](std::size_t row, int) {
+            const int y = int(row);
             for (int x = 0; x < width; ++x)
                 next[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
                     atrous_pixel(level, width, height, x, y, step, settings.edges);

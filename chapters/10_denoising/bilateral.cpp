@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parallel_rows.hpp"
+#include "rt/render/parallel_for.hpp"
 
 namespace rt {
 namespace {
@@ -53,7 +53,8 @@ Image bilateral_filter(const FeatureBuffers& buffers, const BilateralSettings& s
     const int width = buffers.colour.width(), height = buffers.colour.height();
     const std::vector<GuidePixel> guides = guide_pixels(buffers);
     Image out(width, height);
-    for_each_row(height, threads, [&](int y) {
+    parallel_for(std::size_t(height), {.threads = threads}, [&](std::size_t row, int) {
+        const int y = int(row);
         for (int x = 0; x < width; ++x) {
             Color sum(0);
             const Real total =

@@ -6,6 +6,7 @@
 
 #include "rt/flags/enum_flag.hpp"
 #include "rt/flags/only_with.hpp"
+#include "rt/flags/study_flags.hpp"
 
 namespace rt {
 
@@ -46,11 +47,8 @@ void add_denoise_flags(CLI::App& app, DenoiseFlags& flags) {
     }
     const CLI::Validator with_study = only_with({{study_flag}});
     StudyOptions& study = flags.study_options;
-    app.add_option("--reference-spp", study.reference_spp, "With --study: spp of the reference")
-        ->check(CLI::Range(1, 1 << 20))
-        ->check(with_study);
-    app.add_option("--cache", study.cache, "With --study: folder of the cached reference PFM")
-        ->check(with_study);
+    add_reference_spp_option(app, study.reference_spp, 1, {{study_flag}});
+    add_study_option(app, kCacheOption, study.cache, {{study_flag}});
     app.add_option("--runs", study.runs, "With --study: independent runs for the bias")
         ->check(CLI::Range(2, 64))
         ->check(with_study);

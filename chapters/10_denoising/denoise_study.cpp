@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/depth_study.hpp"
@@ -48,9 +49,8 @@ struct PlainPoint {
 
 PlainPoint plain_point(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
                        int spp, const Image& reference) {
-    const RenderResult r =
-        render_with_media(Renderer::kPaths, scene, options.simulated, with(settings, spp, settings.seed),
-                          options);
+    const RenderResult r = render_with_media(Renderer::kPaths, scene, options.simulated,
+                                             with(settings, spp, settings.seed), options);
     return {spp, compare(r.image, reference).relative_mse, r.seconds, r.image};
 }
 
@@ -206,75 +206,77 @@ Image crop(const Image& image, const PixelRect& rect) {
     return out;
 }
 
-void run_denoise_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
-                       const DenoiseSettings& denoise_settings, const StudyOptions& study) {
-    // Its outputs are probed before it renders (its cached reference: chapter 07's depth study).
-    if (!study.crops.empty()) check_writable("--crops", std::filesystem::path(study.crops) / "ch10_whole.png");
-    const int spp = settings.samples_per_pixel;
-    std::printf("denoising study: %s, %dx%d, %d spp, seed %llu, %d threads\n", scene.file.c_str(),
-                settings.width, settings.height, spp, static_cast<unsigned long long>(settings.seed),
-                settings.threads);
-    std::printf("reference: %d spp, chapter 07's renderer, seed %llu ...\n", study.reference_spp,
-                static_cast<unsigned long long>(settings.seed + 1000));
-    std::fflush(stdout);
-    bool cached = false;
-    const Image reference = glass_depth_reference(scene, with(settings, spp, settings.seed), options,
-                                                  study.reference_spp, study.cache, cached);
-    std::printf("  %s\n\n", cached ? "read from the cache" : "rendered and cached");
+namespace {
 
-    // 1. Each denoiser at the run's spp.
+// What the study's sections share: its inputs, the reference, and section 1's render and filters.
+struct StudyRun {
+    const Scene& scene;
+    const RenderSettings& settings;
+    const PathOptions& options;
+    const DenoiseSettings& denoise_settings;
+    const StudyOptions& study;
+    int spp;  // the run's
+    Image reference;
+    FeatureRender render;            // the run's render with its features
+    std::vector<Denoised> denoised;  // each of kDenoisers on it
+    double render_seconds = 0, plain_seconds = 0, noisy_error = 0;
+};
+
+// 1. Each denoiser at the run's spp.
+void denoisers_at_run_spp(StudyRun& r) {
     // The times of a render with features and of plain path tracing at the run's spp, measured alternately
     // (three of each, medians), so that the machine's load falls on both alike.
     std::vector<double> feature_times, plain_times;
-    FeatureRender render;
     for (int i = 0; i < 3; ++i) {
-        render = render_features(scene, with(settings, spp, settings.seed), options);
-        feature_times.push_back(render.result.seconds);
-        plain_times.push_back(render_with_media(Renderer::kPaths, scene, options.simulated,
-                                                with(settings, spp, settings.seed), options)
+        r.render = render_features(r.scene, with(r.settings, r.spp, r.settings.seed), r.options);
+        feature_times.push_back(r.render.result.seconds);
+        plain_times.push_back(render_with_media(Renderer::kPaths, r.scene, r.options.simulated,
+                                                with(r.settings, r.spp, r.settings.seed), r.options)
                                   .seconds);
     }
     std::sort(feature_times.begin(), feature_times.end());
     std::sort(plain_times.begin(), plain_times.end());
-    const double render_seconds = feature_times[1], plain_seconds = plain_times[1];
-    std::vector<Denoised> denoised;
-    for (Denoiser d : kDenoisers) denoised.push_back(timed_denoise(render.buffers, d, denoise_settings));
-    const double noisy_error = compare(render.buffers.colour, reference).relative_mse;
+    r.render_seconds = feature_times[1];
+    r.plain_seconds = plain_times[1];
+    for (Denoiser d : kDenoisers)
+        r.denoised.push_back(timed_denoise(r.render.buffers, d, r.denoise_settings));
+    r.noisy_error = compare(r.render.buffers.colour, r.reference).relative_mse;
     std::printf(
         "1. the denoisers at %d spp (render %.3f s with the features, %.3f s without: medians of 3, taken "
         "alternately; filter: median of 3)\n",
-        spp, render_seconds, plain_seconds);
+        r.spp, r.render_seconds, r.plain_seconds);
     std::printf("  %-10s %12s %12s %8s %13s %9s %9s %14s\n", "denoiser", "rel. MSE", "RMSE", "SSIM",
                 "mean error", "filter s", "total s", "x closer");
-    for (std::size_t i = 0; i < denoised.size(); ++i) {
-        const ErrorMetrics e = compare(denoised[i].image, reference);
+    for (std::size_t i = 0; i < r.denoised.size(); ++i) {
+        const ErrorMetrics e = compare(r.denoised[i].image, r.reference);
         std::printf("  %-10s %12.4e %12.4e %8.4f %+13.4e %9.3f %9.3f %14.2f\n",
                     to_string(kDenoisers[i]).data(), e.relative_mse, e.rmse,
-                    ssim(denoised[i].image, reference), e.mean_error, denoised[i].seconds,
-                    render_seconds + denoised[i].seconds, noisy_error / e.relative_mse);
+                    ssim(r.denoised[i].image, r.reference), e.mean_error, r.denoised[i].seconds,
+                    r.render_seconds + r.denoised[i].seconds, r.noisy_error / e.relative_mse);
     }
     std::printf("\n");
     std::fflush(stdout);
+}
 
-    // 2. Equal error: plain path tracing at doubling spp.
-    std::vector<PlainPoint> points{plain_point(scene, settings, options, spp, reference)};
-    double hardest = noisy_error;
-    for (std::size_t i = 1; i < denoised.size(); ++i)
-        hardest = std::min(hardest, compare(denoised[i].image, reference).relative_mse);
-    const int cap = std::max(spp, study.reference_spp / 4);
+// 2. Equal error: plain path tracing at doubling spp, up to `cap`.
+std::vector<PlainPoint> equal_error_table(const StudyRun& r, int cap) {
+    std::vector<PlainPoint> points{plain_point(r.scene, r.settings, r.options, r.spp, r.reference)};
+    double hardest = r.noisy_error;
+    for (std::size_t i = 1; i < r.denoised.size(); ++i)
+        hardest = std::min(hardest, compare(r.denoised[i].image, r.reference).relative_mse);
     while (points.back().relative_mse > hardest && points.back().spp * 2 <= cap)
-        points.push_back(plain_point(scene, settings, options, points.back().spp * 2, reference));
+        points.push_back(plain_point(r.scene, r.settings, r.options, points.back().spp * 2, r.reference));
     std::printf("2. equal error: plain path tracing (no features, no filter) at doubling spp\n");
     std::printf("  %8s %12s %9s\n", "spp", "rel. MSE", "time s");
     for (const PlainPoint& p : points) std::printf("  %8d %12.4e %9.3f\n", p.spp, p.relative_mse, p.seconds);
     std::printf("  %-10s %12s %14s %14s %14s %14s\n", "denoiser", "rel. MSE", "plain spp", "measured s",
                 "linear s", "x sooner");
-    for (std::size_t i = 1; i < denoised.size(); ++i) {
-        const double target = compare(denoised[i].image, reference).relative_mse;
+    for (std::size_t i = 1; i < r.denoised.size(); ++i) {
+        const double target = compare(r.denoised[i].image, r.reference).relative_mse;
         const EqualError eq = equal_error(points, target);
-        const double total = render_seconds + denoised[i].seconds;
+        const double total = r.render_seconds + r.denoised[i].seconds;
         // Path tracing's time is linear in spp: the plain render's median at the run's spp, scaled.
-        const double linear = plain_seconds * eq.spp / spp;
+        const double linear = r.plain_seconds * eq.spp / r.spp;
         if (eq.below_first) {
             std::printf("  %-10s %12.4e %14s %14s %14s %14s\n", to_string(kDenoisers[i]).data(), target,
                         "< run's", "-", "-", "loses");
@@ -288,35 +290,44 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
         "   linear: the plain median at %d spp times plain spp / %d; x sooner = linear / (render with "
         "features "
         "+ filter))\n\n",
-        spp, spp);
+        r.spp, r.spp);
     std::fflush(stdout);
+    return points;
+}
 
-    // 3. The bias over independent runs.
+// 3. The bias over independent runs: each denoiser's image of each run.
+std::vector<std::vector<Image>> bias_over_runs(const StudyRun& r) {
     std::vector<std::vector<Image>> runs(std::size(kDenoisers));
-    for (int k = 0; k < study.runs; ++k) {
-        const FeatureRender r =
-            render_features(scene, with(settings, spp, settings.seed + 1 + std::uint64_t(k)), options);
+    for (int k = 0; k < r.study.runs; ++k) {
+        const FeatureRender run = render_features(
+            r.scene, with(r.settings, r.spp, r.settings.seed + 1 + std::uint64_t(k)), r.options);
         for (std::size_t i = 0; i < std::size(kDenoisers); ++i)
-            runs[i].push_back(denoise(r.buffers, kDenoisers[i], denoise_settings).image);
+            runs[i].push_back(denoise(run.buffers, kDenoisers[i], r.denoise_settings).image);
     }
     std::printf(
         "3. bias: %d independent runs at %d spp; relative terms (each over r^2 + 0.01), MSE = bias^2 + "
         "variance\n",
-        study.runs, spp);
+        r.study.runs, r.spp);
     std::printf("  %-10s %12s %12s %12s %10s\n", "denoiser", "rel. MSE", "variance", "bias^2", "bias share");
-    const PixelRect whole{0, 0, reference.width(), reference.height()};
+    const PixelRect whole{0, 0, r.reference.width(), r.reference.height()};
     for (std::size_t i = 0; i < std::size(kDenoisers); ++i) {
-        const BiasSplit b = bias_split(runs[i], reference, whole);
+        const BiasSplit b = bias_split(runs[i], r.reference, whole);
         std::printf("  %-10s %12.4e %12.4e %12.4e %9.1f%%\n", to_string(kDenoisers[i]).data(), b.mse,
                     b.variance, b.mse - b.variance, 100.0 * (b.mse - b.variance) / b.mse);
     }
     std::printf("\n");
+    return runs;
+}
 
-    // 4. The failure regions, against plain path tracing at the spp that matches the best filter overall.
-    const EqualError matched_error = equal_error(points, compare(denoised[2].image, reference).relative_mse);
-    // At most the doubling renders' cap: past it the equal-error spp is extrapolated, and too costly to render.
+// 4. The failure regions, against plain path tracing at the spp that matches the best filter overall.
+void failure_regions(const StudyRun& r, const std::vector<PlainPoint>& points, int cap,
+                     const std::vector<std::vector<Image>>& runs) {
+    const EqualError matched_error =
+        equal_error(points, compare(r.denoised[2].image, r.reference).relative_mse);
+    // At most the doubling renders' cap: past it the equal-error spp is extrapolated, and too costly to
+    // render.
     const int matched_spp = std::clamp(int(std::lround(matched_error.spp)), 1, cap);
-    const PlainPoint matched = plain_point(scene, settings, options, matched_spp, reference);
+    const PlainPoint matched = plain_point(r.scene, r.settings, r.options, matched_spp, r.reference);
     std::printf(
         "4. regions: relative MSE of each; plain path tracing at %d spp, which reaches atrous's error on the "
         "whole image%s;\n   SSIM; atrous's bias share over the runs. Where atrous is worse than the plain "
@@ -325,54 +336,55 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
     std::printf("  %-31s %11s %11s %11s %11s %8s %8s %7s\n", "region", "noisy", "bilateral", "atrous",
                 "plain", "SSIM at.", "SSIM pl.", "bias");
     for (const StudyRegion& region : cornell_regions()) {
-        const PixelRect rect = pixels_of(region, reference.width(), reference.height());
-        const Image ref = crop(reference, rect);
+        const PixelRect rect = pixels_of(region, r.reference.width(), r.reference.height());
+        const Image ref = crop(r.reference, rect);
         std::printf("  %-31s", region.name);
-        for (const Denoised& d : denoised)
-            std::printf(" %11.4e", compare(d.image, reference, rect).relative_mse);
-        std::printf(" %11.4e", compare(matched.image, reference, rect).relative_mse);
-        const BiasSplit b = bias_split(runs[2], reference, rect);
-        std::printf(" %8.4f %8.4f %6.0f%%\n", ssim(crop(denoised[2].image, rect), ref),
+        for (const Denoised& d : r.denoised)
+            std::printf(" %11.4e", compare(d.image, r.reference, rect).relative_mse);
+        std::printf(" %11.4e", compare(matched.image, r.reference, rect).relative_mse);
+        const BiasSplit b = bias_split(runs[2], r.reference, rect);
+        std::printf(" %8.4f %8.4f %6.0f%%\n", ssim(crop(r.denoised[2].image, rect), ref),
                     ssim(crop(matched.image, rect), ref), 100.0 * (b.mse - b.variance) / b.mse);
-        if (!study.crops.empty()) {
+        if (!r.study.crops.empty()) {
             std::vector<Image> strip{upscale(ref, 2)};
-            for (const Denoised& d : denoised) strip.push_back(upscale(crop(d.image, rect), 2));
+            for (const Denoised& d : r.denoised) strip.push_back(upscale(crop(d.image, rect), 2));
             write_png(side_by_side(strip),
-                      std::filesystem::path(study.crops) / ("ch10_" + slug(region.name) + ".png"));
+                      std::filesystem::path(r.study.crops) / ("ch10_" + slug(region.name) + ".png"));
         }
     }
-    if (!study.crops.empty()) {
-        std::vector<Image> strip{half_size(reference)};
-        for (const Denoised& d : denoised) strip.push_back(half_size(d.image));
-        write_png(side_by_side(strip), std::filesystem::path(study.crops) / "ch10_whole.png");
+    if (!r.study.crops.empty()) {
+        std::vector<Image> strip{half_size(r.reference)};
+        for (const Denoised& d : r.denoised) strip.push_back(half_size(d.image));
+        write_png(side_by_side(strip), std::filesystem::path(r.study.crops) / "ch10_whole.png");
         std::printf(
             "  wrote the strips (reference | noisy | bilateral | atrous; the regions at twice their size, "
             "the "
             "whole image at half) into %s\n",
-            study.crops.c_str());
+            r.study.crops.c_str());
     }
     std::printf("\n");
-    if (!study.sweeps) return;
+}
 
-    // 5. Sweeps, one parameter at a time from the settings given.
-    std::printf("5. sweeps at %d spp, one parameter at a time\n", spp);
+// 5. Sweeps, one parameter at a time from the settings given.
+void sweeps(const StudyRun& r) {
+    std::printf("5. sweeps at %d spp, one parameter at a time\n", r.spp);
     std::printf("  %-17s %-6s %12s %8s %12s %12s %9s\n", "parameter", "value", "rel. MSE", "SSIM", "rods",
                 "caustic", "filter s");
     auto sweep_edges = [&](Denoiser d, const char* name, Real EdgeStopping::*member,
                            std::initializer_list<Real> values) {
         for (Real v : values) {
-            DenoiseSettings s = denoise_settings;
+            DenoiseSettings s = r.denoise_settings;
             EdgeStopping& edges = d == Denoiser::kAtrous ? s.atrous.edges : s.bilateral.edges;
             edges.*member = v;
-            const Denoised out = denoise(render.buffers, d, s);
-            print_sweep_row(name, number(v), out.image, out.seconds, reference);
+            const Denoised out = denoise(r.render.buffers, d, s);
+            print_sweep_row(name, number(v), out.image, out.seconds, r.reference);
         }
     };
     for (int levels : {1, 2, 3, 4, 5, 6, 7}) {
-        DenoiseSettings s = denoise_settings;
+        DenoiseSettings s = r.denoise_settings;
         s.atrous.levels = levels;
-        const Denoised out = denoise(render.buffers, Denoiser::kAtrous, s);
-        print_sweep_row("atrous levels", std::to_string(levels), out.image, out.seconds, reference);
+        const Denoised out = denoise(r.render.buffers, Denoiser::kAtrous, s);
+        print_sweep_row("atrous levels", std::to_string(levels), out.image, out.seconds, r.reference);
     }
     const Real off = kInfinity;
     sweep_edges(Denoiser::kAtrous, "atrous colour", &EdgeStopping::colour, {0.5, 1, 2, 4, 8, off});
@@ -380,12 +392,39 @@ void run_denoise_study(const Scene& scene, const RenderSettings& settings, const
     sweep_edges(Denoiser::kAtrous, "atrous depth", &EdgeStopping::depth, {0.01, 0.05, 0.2, off});
     sweep_edges(Denoiser::kAtrous, "atrous albedo", &EdgeStopping::albedo, {0.03, 0.1, 0.3, off});
     for (Real sigma : {1.0f, 2.0f, 3.0f, 5.0f}) {
-        DenoiseSettings s = denoise_settings;
+        DenoiseSettings s = r.denoise_settings;
         s.bilateral.spatial = sigma;
-        const Denoised out = denoise(render.buffers, Denoiser::kBilateral, s);
-        print_sweep_row("bilateral sigma_s", number(sigma), out.image, out.seconds, reference);
+        const Denoised out = denoise(r.render.buffers, Denoiser::kBilateral, s);
+        print_sweep_row("bilateral sigma_s", number(sigma), out.image, out.seconds, r.reference);
     }
     sweep_edges(Denoiser::kBilateral, "bilateral colour", &EdgeStopping::colour, {0.5, 1, 2, 4, off});
+}
+
+}  // namespace
+
+void run_denoise_study(const Scene& scene, const RenderSettings& settings, const PathOptions& options,
+                       const DenoiseSettings& denoise_settings, const StudyOptions& study) {
+    // Its outputs are probed before it renders (its cached reference: chapter 07's depth study).
+    if (!study.crops.empty())
+        check_writable("--crops", std::filesystem::path(study.crops) / "ch10_whole.png");
+    const int spp = settings.samples_per_pixel;
+    std::printf("denoising study: %s, %dx%d, %d spp, seed %llu, %d threads\n", scene.file.c_str(),
+                settings.width, settings.height, spp, static_cast<unsigned long long>(settings.seed),
+                settings.threads);
+    std::printf("reference: %d spp, chapter 07's renderer, seed %llu ...\n", study.reference_spp,
+                static_cast<unsigned long long>(settings.seed + 1000));
+    std::fflush(stdout);
+    bool cached = false;
+    Image reference = glass_depth_reference(scene, with(settings, spp, settings.seed), options,
+                                            study.reference_spp, study.cache, cached);
+    std::printf("  %s\n\n", cached ? "read from the cache" : "rendered and cached");
+    StudyRun run{scene, settings, options, denoise_settings, study, spp, std::move(reference), {}, {}};
+    denoisers_at_run_spp(run);
+    const int cap = std::max(spp, study.reference_spp / 4);
+    const std::vector<PlainPoint> points = equal_error_table(run, cap);
+    const std::vector<std::vector<Image>> runs = bias_over_runs(run);
+    failure_regions(run, points, cap, runs);
+    if (study.sweeps) sweeps(run);
 }
 
 }  // namespace rt

@@ -122,13 +122,4 @@ GlContext::~GlContext() {
     eglReleaseThread();
 }
 
-std::string why_no_gl() {
-    try {
-        const GlContext context;
-        return {};
-    } catch (const GlUnavailable& e) {
-        return e.what();
-    }
-}
-
 }  // namespace rt

@@ -49,7 +49,4 @@ class GlContext {
     bool software_ = false;
 };
 
-// Why no context can be made here (the GlUnavailable message), or empty when one can: for tests to skip.
-std::string why_no_gl();
-
 }  // namespace rt

@@ -5,6 +5,7 @@
 // one thread.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -40,6 +41,66 @@ std::string load_average() {
 bool identical(const Image& a, const Image& b) {
     return a.pixels().size() == b.pixels().size() &&
            std::equal(a.pixels().begin(), a.pixels().end(), b.pixels().begin());
+}
+
+// Samples per second on 1 and 2 threads (indexed by the count): the median of `repeats` renders of
+// settings.samples_per_pixel, in wall-clock and in processor time; and the image of each count's last render.
+struct Throughput {
+    double rate[3] = {0, 0, 0}, cpu_rate[3] = {0, 0, 0};
+    Image images[3];
+};
+
+Throughput measure_throughput(const PathTracer& tracer, const PinholeCamera& camera, RenderSettings settings,
+                              int repeats) {
+    const int size = settings.width, spp = settings.samples_per_pixel;
+    Throughput out;
+    std::uint64_t rays = 0;
+    for (int threads : {1, 2}) {
+        settings.threads = threads;
+        std::vector<double> seconds, cpu_seconds;
+        for (int r = 0; r < repeats; ++r) {
+            const std::clock_t cpu_start = std::clock();
+            RenderResult result = render_paths(tracer, camera, settings);
+            cpu_seconds.push_back(double(std::clock() - cpu_start) / CLOCKS_PER_SEC);
+            seconds.push_back(result.seconds);
+            rays = result.rays.total();
+            out.images[threads] = std::move(result.image);
+        }
+        out.rate[threads] = double(size) * size * spp / median(seconds);
+        out.cpu_rate[threads] = double(size) * size * spp / median(cpu_seconds);
+        std::printf(
+            "  %d thread%s: %.3g samples/s, %.3g rays/s (median of %d renders of %d spp: %.3f s); %.3g "
+            "samples per processor second\n",
+            threads, threads == 1 ? " " : "s", out.rate[threads], double(rays) / median(seconds), repeats,
+            spp, median(seconds), out.cpu_rate[threads]);
+    }
+    return out;
+}
+
+// One render with `settings`, its relative MSE to `ref` printed: its seconds.
+double time_to_error(const PathTracer& tracer, const PinholeCamera& camera, const RenderSettings& settings,
+                     const Reference& ref) {
+    const RenderResult r = render_paths(tracer, camera, settings);
+    const double reached = compare(r.image, ref.image).relative_mse - ref.noise_relative_mse;
+    std::printf("  %d thread%s: %d spp in %.2f s, relative MSE %.3e (minus the reference's noise)\n",
+                settings.threads, settings.threads == 1 ? " " : "s", settings.samples_per_pixel, r.seconds,
+                reached);
+    return r.seconds;
+}
+
+// The table of samples per second and time to `target` on 1 and 2 threads, and the targets met.
+void print_summary(const Throughput& throughput, const std::array<double, 3>& time_to_target, double target,
+                   bool same) {
+    const double(&rate)[3] = throughput.rate;
+    const double speedup = rate[2] / rate[1];
+    std::printf("\n| threads | samples/s | time to relative MSE %.0e |\n|---|---|---|\n", target);
+    for (int threads : {1, 2})
+        std::printf("| %d | %.3g | %.2f s |\n", threads, rate[threads], time_to_target[std::size_t(threads)]);
+    std::printf(
+        "\ntargets: 2 threads >= 3e6 samples/s: %s (%.3g); 2 threads >= 1.8x one: %s (%.2fx); "
+        "identical images: %s\n",
+        rate[2] >= 3e6 ? "met" : "NOT met", rate[2], speedup >= 1.8 ? "met" : "NOT met", speedup,
+        same ? "yes" : "NO");
 }
 
 }  // namespace
@@ -81,30 +142,11 @@ int main(int argc, char** argv) {
                     scene_file.c_str(), size, size, sampling.c_str(), std::thread::hardware_concurrency(),
                     load_average().c_str());
 
-        // Samples per second: the median of `repeats` renders of `spp` samples per pixel.
         settings.samples_per_pixel = spp;
-        double rate[3] = {0, 0, 0}, cpu_rate[3] = {0, 0, 0};
-        Image images[3];
-        std::uint64_t rays = 0;
-        for (int threads : {1, 2}) {
-            settings.threads = threads;
-            std::vector<double> seconds, cpu_seconds;
-            for (int r = 0; r < repeats; ++r) {
-                const std::clock_t cpu_start = std::clock();
-                RenderResult result = render_paths(tracer, camera, settings);
-                cpu_seconds.push_back(double(std::clock() - cpu_start) / CLOCKS_PER_SEC);
-                seconds.push_back(result.seconds);
-                rays = result.rays.total();
-                images[threads] = std::move(result.image);
-            }
-            rate[threads] = double(size) * size * spp / median(seconds);
-            cpu_rate[threads] = double(size) * size * spp / median(cpu_seconds);
-            std::printf(
-                "  %d thread%s: %.3g samples/s, %.3g rays/s (median of %d renders of %d spp: %.3f s); %.3g "
-                "samples per processor second\n",
-                threads, threads == 1 ? " " : "s", rate[threads], double(rays) / median(seconds), repeats,
-                spp, median(seconds), cpu_rate[threads]);
-        }
+        const Throughput throughput = measure_throughput(tracer, camera, settings, repeats);
+        const double(&rate)[3] = throughput.rate;
+        const double(&cpu_rate)[3] = throughput.cpu_rate;
+        const Image(&images)[3] = throughput.images;
         const double speedup = rate[2] / rate[1];
         const bool same = identical(images[1], images[2]);
         std::printf("  2 threads / 1 thread: %.2fx; image bit-identical on 1 and 2 threads: %s\n", speedup,
@@ -126,24 +168,12 @@ int main(int argc, char** argv) {
         std::printf("  relative MSE at %d spp: %.3e -> about %d spp for %.0e\n", spp, measured, needed,
                     target);
         settings.samples_per_pixel = needed;
-        double time_to_target[3] = {0, 0, 0};
+        std::array<double, 3> time_to_target{};
         for (int threads : {1, 2}) {
             settings.threads = threads;
-            const RenderResult r = render_paths(tracer, camera, settings);
-            const double reached = compare(r.image, ref.image).relative_mse - ref.noise_relative_mse;
-            time_to_target[threads] = r.seconds;
-            std::printf("  %d thread%s: %d spp in %.2f s, relative MSE %.3e (minus the reference's noise)\n",
-                        threads, threads == 1 ? " " : "s", needed, r.seconds, reached);
+            time_to_target[std::size_t(threads)] = time_to_error(tracer, camera, settings, ref);
         }
-        std::printf("\n| threads | samples/s | time to relative MSE %.0e |\n|---|---|---|\n", target);
-        for (int threads : {1, 2}) {
-            std::printf("| %d | %.3g | %.2f s |\n", threads, rate[threads], time_to_target[threads]);
-        }
-        std::printf(
-            "\ntargets: 2 threads >= 3e6 samples/s: %s (%.3g); 2 threads >= 1.8x one: %s (%.2fx); "
-            "identical images: %s\n",
-            rate[2] >= 3e6 ? "met" : "NOT met", rate[2], speedup >= 1.8 ? "met" : "NOT met", speedup,
-            same ? "yes" : "NO");
+        print_summary(throughput, time_to_target, target, same);
         return 0;
     } catch (const InputError& e) {
         std::fprintf(stderr, "ch06_benchmark: %s\n", e.what());

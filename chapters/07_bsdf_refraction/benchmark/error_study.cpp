@@ -189,7 +189,7 @@ void split_by_path_kind(const RenderScene& prepared, const PinholeCamera& camera
                     100 * v / v_all, 100 * vw / v_worst);
     };
     std::printf("%-12s %12s %16s %16s\n", "path kind", "of image", "of variance", "of variance in worst 1 %");
-    for (std::size_t k = 0; k < kPathPartCount; ++k) row(to_string(PathPart(k)), k);
+    for (std::size_t k = 0; k < kPathPartCount; ++k) row(std::string(to_string(PathPart(k))), k);
     std::printf("%-12s %12s %16s %16s\n", "bounces", "of image", "of variance", "of variance in worst 1 %");
     for (std::size_t k = 0; k < kPathLengthCount; ++k)
         row(std::to_string(k) + (k + 1 == kPathLengthCount ? " or more" : ""), kPathPartCount + k);

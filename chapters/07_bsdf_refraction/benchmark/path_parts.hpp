@@ -17,6 +17,7 @@
 #include <cstddef>
 
 #include "06_monte_carlo/path_observer.hpp"
+#include "rt/core/enum_names.hpp"
 #include "rt/core/math.hpp"
 
 namespace rt {
@@ -25,10 +26,11 @@ enum class PathPart : std::size_t { kSeen, kNextEvent, kBsdfHit, kCaustic };
 inline constexpr std::size_t kPathPartCount = 4;
 inline constexpr std::size_t kPathLengthCount = 5;  // 0, 1, 2, 3, and 4 or more bounces
 
-// "seen", "next event", "BSDF hit" or "caustic".
-inline const char* to_string(PathPart part) {
-    constexpr std::array<const char*, kPathPartCount> names{"seen", "next event", "BSDF hit", "caustic"};
-    return names[std::size_t(part)];
+constexpr auto names_of(PathPart) {
+    return enum_names<PathPart>("path part", {{PathPart::kSeen, "seen"},
+                                              {PathPart::kNextEvent, "next event"},
+                                              {PathPart::kBsdfHit, "BSDF hit"},
+                                              {PathPart::kCaustic, "caustic"}});
 }
 
 class PathParts final : public PathObserver {

@@ -4,13 +4,11 @@
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include "rt/render/interrupt.hpp"
+#include "rt/render/parallel_for.hpp"
 #include "rt/render/progress.hpp"
 
 namespace rt {
@@ -46,8 +44,7 @@ PixelSums starting_sums(const RenderSettings& settings) {
 
 RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const TileFunction& render_tile) {
     const SampleRange range = samples_taken(settings);
-    const int threads =
-        settings.threads > 0 ? settings.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = thread_count(settings.threads);
     Progress progress(settings.progress);
 
     const int tiles_x = (settings.width + kTileSize - 1) / kTileSize;
@@ -75,49 +72,22 @@ RenderResult render_tiles(const RenderSettings& settings, PixelSums& sums, const
     std::atomic<std::uint64_t> samples_done{0};  // by this run
     const auto start = Clock::now();
 
-    std::exception_ptr failure;  // the first exception a sample threw, on any thread
-    std::mutex failure_mutex;
-    std::atomic<bool> failed{false};
     const int per_pass = pass_samples(range.size());
     for (int first = range.first, end = range.first + 1; first < range.end && !interrupt_requested();
          first = end, end = std::min(range.end, end + per_pass)) {
         if (settings.before_pass) settings.before_pass(end);
-        std::atomic<int> next_tile{0};
-        std::atomic<int> workers_running{threads};
-        auto worker = [&](int thread_index) {
-            RayCounts& rays = rays_per_thread[std::size_t(thread_index)];
-            try {
-                for (int tile = next_tile++; tile < tile_count && !interrupt_requested() && !failed;
-                     tile = next_tile++) {
-                    const auto [x0, y0, x1, y1] = tile_bounds(tile);
-                    const std::uint64_t taken = samples_in(x0, y0, x1, y1, first, end);
-                    if (taken == 0) continue;
-                    if (!render_tile(x0, y0, x1, y1, first, end, rays)) break;
-                    samples_done += taken;
-                }
-            } catch (...) {
-                // An exception cannot cross a thread: keep the first, stop the others, rethrow it below.
-                const std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-                failed = true;
-            }
-            --workers_running;
-        };
         auto fraction_done = [&] { return double(samples_resumed + samples_done.load()) / total_samples; };
-        std::vector<std::thread> pool;
-        for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
-        if (progress.animated()) {
-            std::thread own(worker, 0);
-            while (workers_running.load() > 0) {
-                progress.show(fraction_done(), seconds_since(start));
-                std::this_thread::sleep_for(std::chrono::milliseconds(100));
-            }
-            own.join();
-        } else {
-            worker(0);
-        }
-        for (auto& t : pool) t.join();
-        if (failure) std::rethrow_exception(failure);
+        ParallelOptions options{.threads = threads, .stop = interrupt_requested};
+        if (progress.animated())
+            options.show_progress = [&] { progress.show(fraction_done(), seconds_since(start)); };
+        parallel_for(std::size_t(tile_count), options, [&](std::size_t tile, int thread) {
+            const auto [x0, y0, x1, y1] = tile_bounds(int(tile));
+            const std::uint64_t taken = samples_in(x0, y0, x1, y1, first, end);
+            if (taken == 0) return;
+            // A pass cut short by an interrupt is dropped; the engine then starts no further tile.
+            if (render_tile(x0, y0, x1, y1, first, end, rays_per_thread[std::size_t(thread)]))
+                samples_done += taken;
+        });
         progress.show(fraction_done(), seconds_since(start));
         if (settings.observer && !interrupt_requested()) {
             RayCounts rays;
