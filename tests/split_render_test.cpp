@@ -112,6 +112,21 @@ TEST_CASE("An exact mean is the float mean, rounded once", "[split]") {
     CHECK(PixelSum{}.mean() == Color(0));
 }
 
+TEST_CASE("A pixel's sum stays 64 bytes, its high parts out of line and copied with it", "[split]") {
+    CHECK(sizeof(PixelSum) == 64);
+    PixelSum huge;
+    huge.add(Color(0x1p60f, 1, 0x1p100f));
+    const PixelSum copy = huge;
+    huge.add(Color(0x1p60f, 1, 0x1p100f));
+    CHECK(copy.high() == HighParts{1 << 10, 0, Int128(1) << 50});
+    CHECK(huge.high() == HighParts{2 << 10, 0, Int128(2) << 50});
+    PixelSum merged = copy;
+    merged.add(copy);
+    CHECK(merged == huge);
+    CHECK(merged != copy);
+    CHECK(PixelSum{}.high() == HighParts{});
+}
+
 TEST_CASE("NaN and infinite samples make the pixel NaN or infinite, as float addition would", "[split]") {
     const Real inf = std::numeric_limits<Real>::infinity(), nan = std::numeric_limits<Real>::quiet_NaN();
     PixelSum p;
@@ -275,10 +290,10 @@ TEST_CASE("A film is input: negative sums, sums beyond its samples' reach and Na
     refused(huge, Catch::Contains("in channel 0 for 3 samples, outside [-4.57764e-05, 3.3777e+15]"));
     // The parts of 2^50 and above: never negative, and below 2^128 a sample.
     Film high_negative = piece({0, 3});
-    high_negative.sums.at(3, 2).high[2] = -1;
+    high_negative.sums.at(3, 2).add_high({0, 0, -1});
     refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 in channel 2") && Catch::Contains("parts of 2^50 and above"));
     Film high_huge = piece({0, 3});
-    high_huge.sums.at(3, 2).high[0] = (Int128(3) << 78) + 1;
+    high_huge.sums.at(3, 2).add_high({(Int128(3) << 78) + 1, 0, 0});
     refused(high_huge, Catch::Contains("in channel 0 for 3 samples, outside [0, 1.02085e+39]"));
     Film nan = piece({0, 3});
     nan.sums.at(3, 2).non_finite = PixelSum::kNan << 3;

@@ -13,7 +13,7 @@ if ldd "$exe" 2> /dev/null | grep -q asan; then
 fi
 limited() { (ulimit -v 1000000; exec "$exe" "$@"); }  # 1 GB of address space
 expect_bad_input "16384x16384 under 1 GB" \
-    "$n: --width/--height: image size 16384x16384 needs 33.3 GB of buffers, more than half of the 1.0 GB this process may use (ulimit -v)" 0 -- \
+    "$n: --width/--height: image size 16384x16384 needs 20.4 GB of buffers, more than half of the 1.0 GB this process may use (ulimit -v)" 0 -- \
     limited --width 16384 --height 16384 --quiet
 truncate -s 3G "$scratch/huge.json"  # sparse: no disk used
 expect_bad_input "a 3 GB scene under 1 GB" \

@@ -18,11 +18,11 @@ Real channel_mean(double sum, std::uint32_t count, std::uint32_t flags) {
 
 }  // namespace
 
-// Without a high part (every sample below 2^50), the low part's value alone, converted once.
+// Without high parts (every sample below 2^50), the low part's value alone, converted once.
 double PixelSum::total(int c) const {
     const std::size_t i = std::size_t(c);
     const double low = double(channels[i]) * 0x1p-56;
-    return high[i] == 0 ? low : double(high[i]) * kHighUnit + low;
+    return high_ ? double((*high_)[i]) * kHighUnit + low : low;
 }
 
 Color PixelSum::mean() const {

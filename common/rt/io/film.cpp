@@ -145,8 +145,9 @@ void check_film_values(const Film& film, const std::string& name) {
                    std::to_string(p.count) + " samples, outside [" + format_double(low) + ", " +
                    format_double(high) + "] (radiance is never negative, and " + limit + ")";
         };
+        const HighParts high_parts = p.high();
         for (std::size_t c = 0; c < 3 && wrong.empty(); ++c) {
-            const Int128 low = p.channels[c], high = p.high[c], count = p.count;
+            const Int128 low = p.channels[c], high = high_parts[c], count = p.count;
             if (low < count * least || low > count * most) {
                 wrong = outside(c, double(low) * 0x1p-56, double(count * least) * 0x1p-56,
                                 double(count * most) * 0x1p-56, "a sample's part below 2^50 is at most 2^50");
@@ -179,7 +180,7 @@ bool encode_film(const Film& film, std::FILE* file) {
     out.bytes().reserve(out.bytes().size() + film.sums.pixels().size() * kPixelBytes + 8);
     for (const PixelSum& p : film.sums.pixels()) {
         for (const Int128 c : p.channels) out.put(c);
-        for (const Int128 c : p.high) out.put(c);
+        for (const Int128 c : p.high()) out.put(c);
         out.put(p.count);
         out.put(p.non_finite);
     }
@@ -251,7 +252,9 @@ Film read_film(const fs::path& path) {
     for (std::size_t i = 0; i < pixels; ++i) {
         PixelSum& p = film.sums.pixels()[i];
         for (Int128& c : p.channels) c = in.get<Int128>();
-        for (Int128& c : p.high) c = in.get<Int128>();
+        HighParts high;
+        for (Int128& c : high) c = in.get<Int128>();
+        p.add_high(high);
         p.count = in.get<std::uint32_t>();
         p.non_finite = in.get<std::uint32_t>();
     }

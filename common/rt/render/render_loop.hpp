@@ -13,6 +13,7 @@
 #include <functional>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "rt/core/image.hpp"
 #include "rt/core/pixel_sums.hpp"
@@ -137,7 +138,6 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
                         sum.add(values[0]);
                         for (std::size_t k = 0; k < Extra; ++k) layers[k].add(values[k + 1]);
                     }
-                    tile[slot] = sum;
                     if (measures_cost) {
                         auto traced = [&](RayKind k) { return rays[k] - before[k]; };
                         cost[slot] = {rays.total() - before.total(),
@@ -145,13 +145,14 @@ RenderResult render_layers(const RenderSettings& settings, std::array<PixelSums,
                                           traced(RayKind::kIndirect),
                                       std::uint64_t(sum.count - count_before)};
                     }
+                    tile[slot] = std::move(sum);
                 }
             }
             for (int y = y0; y < y1; ++y) {
                 for (int x = x0; x < x1; ++x) {
                     const std::size_t slot = std::size_t((y - y0) * detail::kTileSize + (x - x0));
-                    sums.at(x, y) = tile[slot];
-                    for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = tile_extra[slot][k];
+                    sums.at(x, y) = std::move(tile[slot]);
+                    for (std::size_t k = 0; k < Extra; ++k) extra[k].at(x, y) = std::move(tile_extra[slot][k]);
                     if (measures_cost) settings.observer->add_cost(x, y, cost[slot]);
                 }
             }

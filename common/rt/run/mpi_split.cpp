@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "rt/core/errors.hpp"
 
@@ -28,6 +29,32 @@ extern "C" void add_pixel_sums(void* in, void* inout, int* length, MPI_Datatype*
     const auto* from = static_cast<const PixelSum*>(in);
     auto* to = static_cast<PixelSum*>(inout);
     for (int i = 0; i < *length; ++i) to[i].add(from[i]);
+}
+
+// The same for the pixels' high parts (pixel_sums.hpp), which a PixelSum keeps out of line.
+extern "C" void add_high_parts(void* in, void* inout, int* length, MPI_Datatype*) {
+    const auto* from = static_cast<const HighParts*>(in);
+    auto* to = static_cast<HighParts*>(inout);
+    for (int i = 0; i < *length; ++i)
+        for (std::size_t c = 0; c < 3; ++c) to[i][c] += from[i][c];
+}
+
+// Reduces `data` (n items of `bytes` each, rank 0's in place) with `add` onto rank 0, in slices (an MPI count
+// is an int).
+void reduce_to_root(void* data, std::size_t n, std::size_t bytes, MPI_User_function* add, bool root) {
+    MPI_Datatype item;
+    MPI_Type_contiguous(int(bytes), MPI_BYTE, &item);
+    MPI_Type_commit(&item);
+    MPI_Op op;
+    MPI_Op_create(add, 1, &op);
+    constexpr std::size_t kSlice = 1 << 20;
+    for (std::size_t at = 0; at < n; at += kSlice) {
+        char* slice = static_cast<char*>(data) + at * bytes;
+        const int count = int(std::min(kSlice, n - at));
+        MPI_Reduce(root ? MPI_IN_PLACE : slice, root ? slice : nullptr, count, item, op, 0, MPI_COMM_WORLD);
+    }
+    MPI_Op_free(&op);
+    MPI_Type_free(&item);
 }
 #endif
 
@@ -63,23 +90,21 @@ MpiSession::~MpiSession() {
 void MpiSession::gather(RenderResult& result) const {
     if (size_ == 1) return;
 #ifdef RT_HAVE_MPI
-    MPI_Datatype pixel;
-    MPI_Type_contiguous(int(sizeof(PixelSum)), MPI_BYTE, &pixel);
-    MPI_Type_commit(&pixel);
-    MPI_Op add;
-    MPI_Op_create(add_pixel_sums, 1, &add);
+    // A pixel's high parts are behind a pointer, which means nothing to another process: when any rank has
+    // one, they are taken out (leaving plain bytes) and reduced on their own.
     std::vector<PixelSum>& sums = result.sums.pixels();
-    constexpr std::size_t kSlice = 1 << 20;
-    for (std::size_t at = 0; at < sums.size(); at += kSlice) {
-        const int n = int(std::min(kSlice, sums.size() - at));
-        if (is_root()) {
-            MPI_Reduce(MPI_IN_PLACE, sums.data() + at, n, pixel, add, 0, MPI_COMM_WORLD);
-        } else {
-            MPI_Reduce(sums.data() + at, nullptr, n, pixel, add, 0, MPI_COMM_WORLD);
-        }
+    const bool any_high = on_any_rank(std::any_of(sums.begin(), sums.end(),
+                                                  [](const PixelSum& p) { return p.high() != HighParts{}; }));
+    std::vector<HighParts> high;
+    if (any_high) {
+        high.reserve(sums.size());
+        for (PixelSum& p : sums) high.push_back(p.take_high());
     }
-    MPI_Op_free(&add);
-    MPI_Type_free(&pixel);
+    reduce_to_root(sums.data(), sums.size(), sizeof(PixelSum), add_pixel_sums, is_root());
+    if (any_high) {
+        reduce_to_root(high.data(), high.size(), sizeof(HighParts), add_high_parts, is_root());
+        for (std::size_t i = 0; i < sums.size(); ++i) sums[i].add_high(high[i]);
+    }
     auto sum_in_place = [&](void* data, int n, MPI_Datatype type, MPI_Op op) {
         MPI_Reduce(is_root() ? MPI_IN_PLACE : data, is_root() ? data : nullptr, n, type, op, 0,
                    MPI_COMM_WORLD);
