@@ -1,11 +1,14 @@
 // Chapter 04: direct lighting. The BRDFs (ρ/π, energy, reciprocity, sampling hooks), light sampling (points
 // on the light, pdfs, the far sphere), the exact irradiance formulas against brute Monte Carlo, and renders:
 // the analytic scene against its exact image, ray counts, and the default scene end to end.
+#include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "01_ray_generation/camera.hpp"
@@ -18,11 +21,14 @@
 #include "04_direct_lighting/direct_render.hpp"
 #include "04_direct_lighting/frame.hpp"
 #include "04_direct_lighting/irradiance.hpp"
+#include "04_direct_lighting/quad_emitter.hpp"
 #include "04_direct_lighting/quad_light_strategy.hpp"
 #include "04_direct_lighting/sampling.hpp"
-#include "04_direct_lighting/spherical_rectangle.hpp"
+#include "04_direct_lighting/sphere_emitter.hpp"
 #include "04_direct_lighting/sphere_light_sampling.hpp"
+#include "04_direct_lighting/spherical_rectangle.hpp"
 #include "04_direct_lighting/texture.hpp"
+#include "04_direct_lighting/triangle_emitter.hpp"
 #include "random_unit.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/random.hpp"
@@ -36,6 +42,13 @@ using namespace rt;
 using namespace rt::test;
 
 namespace {
+
+// The kind of each light of `lights`, in their order.
+std::vector<std::string_view> kinds_of(const LightSet& lights) {
+    std::vector<std::string_view> kinds;
+    for (const auto& light : lights.lights) kinds.push_back(light->kind());
+    return kinds;
+}
 
 // A Monte Carlo estimate: the mean of n samples and its standard error.
 struct Estimate {
@@ -693,15 +706,18 @@ TEST_CASE("The picker's pdf of a hit on a quad is the density its sample drew th
           "[lights][solid_angle][mis][ex:ch04.sample_quad_light]") {
     // A rectangle close by, a parallelogram and a far rectangle: the spherical rectangle serves the first and
     // area sampling the others (from p), so the picker's pdf must follow the sampler lamp by lamp.
+    const QuadLight quads[] = {make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(2)),
+                               make_quad_light({1, 0, 0.5f}, {0, 1, 0}, {1, 0.5f, 0}, Color(3)),
+                               make_quad_light({-5e-4f, 50, 10}, {0, 1e-3f, 0}, {1e-3f, 0, 0}, Color(1e9f))};
     LightSet lights;
-    lights.quads = {make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(2)),
-                    make_quad_light({1, 0, 0.5f}, {0, 1, 0}, {1, 0.5f, 0}, Color(3)),
-                    make_quad_light({-5e-4f, 50, 10}, {0, 1e-3f, 0}, {1e-3f, 0, 0}, Color(1e9f))};
-    for (std::uint32_t i = 0; i < 3; ++i) lights.by_hit.push_back({LightRef::List::kQuads, i});
+    for (int i = 0; i < 3; ++i) {
+        lights.lights.push_back(std::make_shared<QuadEmitter>(quads[i]));
+        lights.by_hit.push_back(i);
+    }
     const Vec3 p(0.1f, 0.2f, 0);
-    REQUIRE(solid_angle_view(lights.quads[0], p));
-    REQUIRE_FALSE(solid_angle_view(lights.quads[1], p));
-    REQUIRE_FALSE(solid_angle_view(lights.quads[2], p));
+    REQUIRE(solid_angle_view(quads[0], p));
+    REQUIRE_FALSE(solid_angle_view(quads[1], p));
+    REQUIRE_FALSE(solid_angle_view(quads[2], p));
     for (const QuadLightSampling by : {QuadLightSampling::kArea, QuadLightSampling::kSolidAngle}) {
         const LightPicker picker(lights, by);
         CHECK(picker.quad_lights() == by);
@@ -719,7 +735,7 @@ TEST_CASE("The picker's pdf of a hit on a quad is the density its sample drew th
             hit.light = std::int32_t(i);
             INFO(to_string(by) << ", lamp " << i);
             REQUIRE(picker.pdf(p, s->wi, hit) == Approx(s->pdf).epsilon(1e-4));
-            const Real alone = quad_light_pdf(lights.quads[i], p, s->wi, by);
+            const Real alone = quad_light_pdf(quads[i], p, s->wi, by);
             REQUIRE(picker.pdf(p, s->wi, hit) == Approx(picker.probability(i) * alone).epsilon(1e-3));
         }
         CHECK(drawn[0] > 0);
@@ -937,6 +953,71 @@ TEST_CASE("A point light gives rho/pi I cos / d^2 and a uniform sky gives rho L,
     CHECK(blocked_shading.radiance(Ray{{0, 0.25f, 0}, {0, -1, 0}}, rng, sky_rays) == Color(0));
 }
 
+TEST_CASE("A distant light gives rho/pi E cos theta on a plane, everywhere, and casts shadows",
+          "[direct][lights][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.direct_light][ex:ch04.lambert]") {
+    // Its light travels 60 degrees from straight down, so the floor (albedo 0.5) reads 0.5 E cos 60° / π
+    // in every pixel, whether every light is sampled or one is picked by power.
+    const std::string lights =
+        R"("lights": [{"type": "distant", "direction": [0.8660254, -0.5, 0], "irradiance": [2, 4, 6]}])";
+    const std::string floor = R"({"camera": {"from": [0, 3, 0.01], "at": [0, 0, 0], "vfov": 60},
+      "materials": {"white": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+      "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"})";
+    const Scene scene = parse_scene(floor + "], " + lights + "}", "distant.json");
+    REQUIRE(collect_lights(scene).lights.size() == 1);
+    for (const LightSelection selection : {LightSelection::kEvery, LightSelection::kPower}) {
+        DirectOptions options;
+        options.light_selection = selection;
+        const RenderResult r = render_scene(scene, options);
+        CHECK(r.rays[RayKind::kShadow] == 32u * 32u);
+        for (int c = 0; c < 3; ++c) {
+            const double expected = 0.5 * 2 * (c + 1) * 0.5 / std::numbers::pi;
+            for (const Color& pixel : r.image.pixels())
+                REQUIRE(double(pixel[c]) == Approx(expected).epsilon(1e-5));
+        }
+    }
+    // A square roof over the middle of the floor shades the pixels under its shadow, and only them.
+    const std::string roof =
+        R"(, {"type": "quad", "origin": [-0.5, 0.5, -0.5], "u": [1, 0, 0], "v": [0, 0, 1], "material": "white"})";
+    const RenderResult shaded =
+        render_scene(parse_scene(floor + roof + "], " + lights + "}", "distant.json"), {});
+    int dark = 0;
+    for (const Color& pixel : shaded.image.pixels()) dark += pixel == Color(0) ? 1 : 0;
+    CHECK(dark > 0);
+    CHECK(dark < 32 * 32 / 2);
+}
+
+TEST_CASE("A spot light gives rho/pi I falloff cos / d^2: full inside, smooth in the band, nothing outside",
+          "[direct][lights][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.direct_light][ex:ch04.lambert]") {
+    // 2 above the floor, pointing straight down: full intensity within 20 degrees of the axis, none
+    // beyond 30.
+    const Scene scene = parse_scene(R"({"camera": {"from": [0, 3, 0.01], "at": [0, 0, 0]},
+      "materials": {"white": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+      "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"}],
+      "lights": [{"type": "spot", "position": [0, 2, 0], "at": [0, 0, 0], "intensity": [10, 10, 10],
+                  "cone_angle": 30, "cone_delta": 10}]})",
+                                    "spot.json");
+    const World world(scene);
+    const MaterialTable materials(scene, EffectSet::all());
+    const DirectLighting shading(world, materials, collect_lights(scene), {});
+    Pcg32 rng(71, 0);
+    const double cos_end = std::cos(30 * std::numbers::pi / 180),
+                 cos_start = std::cos(20 * std::numbers::pi / 180);
+    for (const double degrees : {0.0, 8.0, 19.0, 21.0, 25.0, 29.0, 31.0, 40.0}) {
+        const double x = 2 * std::tan(degrees * std::numbers::pi / 180);
+        const double d2 = x * x + 4, cos_theta = 2 / std::sqrt(d2);
+        const double t = std::clamp((cos_theta - cos_end) / (cos_start - cos_end), 0.0, 1.0);
+        const double falloff = t * t * (3 - 2 * t);
+        RayCounts rays;
+        const Color L = shading.radiance(Ray{{Real(x), 1, 0}, {0, -1, 0}}, rng, rays);
+        INFO(degrees << " degrees from the axis");
+        CHECK(double(L.g) ==
+              Approx(0.5 / std::numbers::pi * 10 * falloff * cos_theta / d2).epsilon(1e-5).margin(1e-12));
+        CHECK(rays[RayKind::kShadow] == (degrees < 30 ? 1u : 0u));  // none traced outside the cone
+    }
+}
+
 TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and agrees with every light",
           "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
           "[ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
@@ -1122,37 +1203,35 @@ TEST_CASE("A hit knows its light: Hit::light names the LightSet light the ray hi
                                     "lights.json");
     const World world(scene);
     const LightSet lights = collect_lights(scene);
-    REQUIRE(lights.quads.size() == 7);
-    REQUIRE(lights.triangles.size() == 1);
-    REQUIRE(lights.spheres.size() == 1);
+    // In the samplers' order: the 7 quads (the 6 box faces and the quad), the triangle, the sphere.
+    REQUIRE(kinds_of(lights) == std::vector<std::string_view>{"quad", "quad", "quad", "quad", "quad", "quad",
+                                                              "quad", "triangle", "sphere"});
     REQUIRE(lights.by_hit.size() == 9);  // the 6 box faces, the triangle, the sphere, the quad
     Pcg32 rng(90, 0);
     int checked = 0;
-    auto aim_at = [&](const Vec3& target, LightRef::List list, std::uint32_t index) {
+    auto aim_at = [&](const Vec3& target, int index) {
         // From far outside the scene's emitters, along a line through the target, so the first hit is on
         // the emitter the target lies on (or on something nearer, which the test then skips).
         const Vec3 from = target + Real(30) * glm::normalize(Vec3(0.3f, 0.2f, 1));
         const auto hit = world.intersect(Ray{from, glm::normalize(target - from)});
         if (!hit || glm::length(hit->point - target) > 1e-3f) return;
         REQUIRE(hit->light >= 0);
-        const LightRef ref = lights.by_hit[std::size_t(hit->light)];
-        CHECK(ref.list == list);
-        CHECK(ref.index == index);
+        CHECK(lights.by_hit[std::size_t(hit->light)] == index);
         ++checked;
     };
     for (int s = 0; s < 200; ++s) {
         const Vec2 u = rng.next_vec2();
-        for (std::uint32_t i = 0; i < lights.quads.size(); ++i) {
-            const QuadLight& q = lights.quads[i];
-            aim_at(q.origin + u.x * q.u + u.y * q.v, LightRef::List::kQuads, i);
+        for (int i = 0; i < 7; ++i) {
+            const QuadLight& q = static_cast<const QuadEmitter&>(*lights.lights[std::size_t(i)]).quad();
+            aim_at(q.origin + u.x * q.u + u.y * q.v, i);
         }
-        const TriangleLight& t = lights.triangles[0];
+        const TriangleLight& t = static_cast<const TriangleEmitter&>(*lights.lights[7]).triangle();
         const Real b1 = 1 - std::sqrt(u.x), b2 = u.y * std::sqrt(u.x);
-        aim_at((1 - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2, LightRef::List::kTriangles, 0);
-        const SphereLight& sphere = lights.spheres[0];
+        aim_at((1 - b1 - b2) * t.p0 + b1 * t.p1 + b2 * t.p2, 7);
+        const SphereLight& sphere = static_cast<const SphereEmitter&>(*lights.lights[8]).sphere();
         aim_at(sphere.center +
                    sphere.radius * glm::normalize(Vec3(0.3f, 0.2f, 1) + Real(0.5) * random_unit(rng)),
-               LightRef::List::kSpheres, 0);
+               8);
     }
     CHECK(checked > 500);
     // The emissive plane is no light, and a surface that emits nothing has none.
@@ -1171,8 +1250,7 @@ TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 
           "[ex:ch04.uniform_cone]") {
     const Scene scene = load_scene(scene_path("ch04_default.json"));
     const LightSet lights = collect_lights(scene);
-    CHECK(lights.quads.size() == 1);
-    CHECK(lights.spheres.size() == 1);
+    CHECK(kinds_of(lights) == std::vector<std::string_view>{"quad", "sphere"});
     const RenderResult one = render_scene(scene, {}, 40, 2, 1);
     const RenderResult two = render_scene(scene, {}, 40, 2, 2);
     CHECK(one.image.all_finite());

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <string>
 #include <variant>
@@ -11,12 +12,12 @@
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
-#include "04_direct_lighting/sampling.hpp"
 #include "04_direct_lighting/frame.hpp"
+#include "04_direct_lighting/sampling.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
-#include "08_forward_tracing/camera_caustic_cut.hpp"
 #include "06_monte_carlo/warp_pdfs.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "08_forward_tracing/camera_caustic_cut.hpp"
 #include "08_forward_tracing/camera_importance.hpp"
 #include "08_forward_tracing/combined_render.hpp"
 #include "08_forward_tracing/forward_study.hpp"
@@ -220,8 +221,8 @@ TEST_CASE("Lights are picked by power, and the light paths' starting throughput 
         const auto e = emitters.sample(u_pick, a, b);
         REQUIRE(e);
         sum += double(luminance(e->beta));
-        from_point += e->point_light;
-        if (!e->point_light) {
+        from_point += e->delta_light;
+        if (!e->delta_light) {
             CHECK(glm::dot(e->direction, e->origin.normal) >= 0);  // one-sided: into the front
             CHECK(e->origin.point.y >= 0);
             CHECK(e->origin.point.y <= 1);
@@ -230,6 +231,45 @@ TEST_CASE("Lights are picked by power, and the light paths' starting throughput 
     // Every sample's β₀ is the total power (β₀ = Φ_i / P_i), so the mean is exact up to rounding.
     CHECK(sum / kSamples == Approx(quad_power + point_power).epsilon(1e-4));
     CHECK(double(from_point) / kSamples == Approx(point_power / (quad_power + point_power)).epsilon(0.02));
+}
+
+TEST_CASE("Spot and distant lights start light paths whose throughput averages to their power",
+          "[ch08][statistical][lights]") {
+    // A spot of I = 3 with a 40-degree cone and a 10-degree band: Φ = 2π I (1 − (cos 30° + cos 40°) / 2); a
+    // distant light of E = 2: Φ = π r² E, r = √3 the radius of the sphere around the unit sphere's box (β₀
+    // exactly that in every path).
+    const Scene scene = scene_from(R"({
+      "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
+      "materials": {"grey": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+      "shapes": [{"type": "sphere", "center": [1, 2, 3], "radius": 1, "material": "grey"}],
+      "lights": [{"type": "spot", "position": [0, 4, 0], "at": [0, 0, 0], "intensity": [3, 3, 3],
+                  "cone_angle": 40, "cone_delta": 10},
+                 {"type": "distant", "direction": [0, 0, -2], "irradiance": [2, 2, 2]}]})");
+    const double pi = std::numbers::pi, degree = pi / 180;
+    const double spot_power = 2 * pi * 3 * (1 - (std::cos(30 * degree) + std::cos(40 * degree)) / 2);
+    const double distant_power = pi * 3 * 2;
+    const EmitterSampler emitters(collect_lights(scene));
+    REQUIRE(emitters.light_count() == 2);
+    CHECK(emitters.total_power() == Approx(spot_power + distant_power).epsilon(1e-5));
+    Pcg32 rng(5, 1);
+    double sum = 0;
+    constexpr int kSamples = 200'000;
+    for (int i = 0; i < kSamples; ++i) {
+        const Real u_pick = rng.next_real();
+        const Vec2 a = rng.next_vec2(), b = rng.next_vec2();
+        const auto e = emitters.sample(u_pick, a, b);
+        REQUIRE(e);
+        REQUIRE(e->delta_light);
+        sum += double(luminance(e->beta));
+        if (e->origin.point.y > 3.9f) {  // the spot: from its point, within its cone about −y
+            CHECK(e->direction.y <= -std::cos(40 * degree) + 1e-6);
+        } else {  // the distant light: along −z, from the disk of radius r one radius before the centre
+            CHECK(e->direction == Vec3(0, 0, -1));
+            CHECK(double(e->origin.point.z) == Approx(3 + std::sqrt(3.0)).epsilon(1e-6));
+            CHECK(glm::length(Vec2(e->origin.point.x - 1, e->origin.point.y - 2)) <= std::sqrt(3.0f) + 1e-5f);
+        }
+    }
+    CHECK(sum / kSamples == Approx(spot_power + distant_power).epsilon(0.01));
 }
 
 TEST_CASE("Connecting light paths to the pinhole converges to chapter 06's image of the Cornell box",

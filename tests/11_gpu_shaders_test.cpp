@@ -377,6 +377,22 @@ TEST_CASE("The compute shader's thin lens renders the glass Cornell box out of f
     check_agreement("cornell.json with a thin lens", ShaderKind::kCompute, &scene);
 }
 
+TEST_CASE(
+    "The compute shader renders spot and distant lights as the CPU does",
+    "[gpu]" SHADER_EXERCISES
+    "[image][lights][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
+    // The glass Cornell box, its lamp dimmed, lit also by a spot on the floor (its band crossing the glass
+    // sphere) and by a distant light slanting in through the open front.
+    Scene scene = load_scene(scene_path("cornell.json"));
+    for (Material& m : scene.materials) m.emission *= Real(0.25);
+    scene.spot_lights.push_back(SpotLight{{278, 540, 278}, {278, 0, 278}, Color(2e5f), 35, 15});
+    scene.distant_lights.push_back(DistantLight{glm::normalize(Vec3(0.3f, -0.5f, 1)), Color(3)});
+    check_agreement("cornell.json with a spot and a distant light", ShaderKind::kCompute, &scene);
+}
+
 TEST_CASE("The shader's white furnaces of glass return the light of the sky",
           "[gpu]" SHADER_EXERCISES "[image]") {
     // A glass sphere under a uniform sky of radiance 1, in nothing else: every path returns 1 (chapter 07).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -12,20 +13,14 @@
 
 namespace rt {
 
-double largest_coordinate(const Scene& scene) {
-    double largest = 0;
-    const auto take = [&](const Vec3& p) {
-        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(double(p[i])));
-    };
-    take(scene.camera.from);
-    take(scene.camera.at);
-    for (const PointLight& light : scene.point_lights) take(light.position);
+void for_each_shape_extent(const Scene& scene, const std::function<void(const Vec3&)>& take) {
     for (const Shape& shape : scene.shapes) {
         std::visit(
             [&](const auto& g) {
                 using T = std::decay_t<decltype(g)>;
                 if constexpr (std::is_same_v<T, SphereShape>) {
-                    take(glm::abs(g.center) + Vec3(g.radius));
+                    take(g.center - Vec3(g.radius));
+                    take(g.center + Vec3(g.radius));
                 } else if constexpr (std::is_same_v<T, QuadShape>) {
                     for (const Vec3& p : {g.origin, g.origin + g.u, g.origin + g.v, g.origin + g.u + g.v})
                         take(p);
@@ -45,6 +40,21 @@ double largest_coordinate(const Scene& scene) {
             },
             shape.geometry);
     }
+}
+
+double largest_coordinate(const Scene& scene) {
+    double largest = 0;
+    const auto take = [&](const Vec3& p) {
+        for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(double(p[i])));
+    };
+    take(scene.camera.from);
+    take(scene.camera.at);
+    for (const PointLight& light : scene.point_lights) take(light.position);
+    for (const SpotLight& light : scene.spot_lights) {
+        take(light.position);
+        take(light.at);
+    }
+    for_each_shape_extent(scene, take);
     return largest;
 }
 
@@ -74,6 +84,11 @@ Scene scale_scene(const Scene& scene, Real s) {
     out.camera.at *= s;
     for (PointLight& light : out.point_lights) {
         light.position *= s;
+        light.intensity *= s * s;
+    }
+    for (SpotLight& light : out.spot_lights) {
+        light.position *= s;
+        light.at *= s;
         light.intensity *= s * s;
     }
     for (Shape& shape : out.shapes) {

@@ -59,6 +59,10 @@ std::vector<std::string> shading_notes(const Scene& scene) {
             "emissive shapes are seen by the camera but light nothing: area lights are simulated from " +
             lights_from + " on");
     }
+    if (!scene.distant_lights.empty() || !scene.spot_lights.empty()) {
+        notes.push_back("distant and spot lights light nothing here: they are simulated from " + lights_from +
+                        " on");
+    }
     if (scene.environment) {
         notes.push_back(
             "the environment is seen as the background but lights nothing: it is a light source from " +

@@ -10,7 +10,7 @@
 namespace rt {
 
 std::optional<PlaneUnderQuad> find_plane_under_quad(const Scene& scene, const MaterialTable& materials) {
-    if (scene.shapes.size() != 2 || !scene.point_lights.empty() || scene.environment) return std::nullopt;
+    if (scene.shapes.size() != 2 || scene.has_delta_lights() || scene.environment) return std::nullopt;
     const PlaneShape* plane = nullptr;
     const LambertBrdf* plane_brdf = nullptr;
     const Shape* lamp = nullptr;

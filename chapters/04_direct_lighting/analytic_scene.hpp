@@ -8,7 +8,7 @@
 
 #include "01_ray_generation/camera.hpp"
 #include "02_intersection/world.hpp"
-#include "light_set.hpp"
+#include "area_lights.hpp"
 #include "material_table.hpp"
 #include "rt/core/image.hpp"
 #include "rt/core/scene.hpp"

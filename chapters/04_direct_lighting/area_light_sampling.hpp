@@ -5,8 +5,8 @@
 
 #include <optional>
 
+#include "area_lights.hpp"
 #include "light_sample.hpp"
-#include "light_set.hpp"
 
 namespace rt {
 
@@ -14,6 +14,14 @@ namespace rt {
 // callers drop such samples (they carry no light: the light is seen edge-on).
 inline Real area_to_solid_angle_pdf(Real distance, Real cos_light, Real area) {
     return distance * distance / (cos_light * area);
+}
+
+// The picker's density for a direction wi that met a planar light of radiance L at distance d and cosine
+// cos θ_l: P(light) pdf_light = (lum(L) A / W) (d² / (cos θ_l A)) = lum(L) d² / (cos θ_l W), W the picker's
+// total weight. The area cancels: MIS weighs a BSDF sample that hit a quad or a triangle knowing only the
+// emitter's radiance, its distance and its cosine.
+inline Real picked_planar_pdf(const Color& radiance, Real distance, Real cos_light, Real total_weight) {
+    return luminance(radiance) * distance * distance / (cos_light * total_weight);
 }
 
 // x = origin + u₁ U + u₂ V. Nothing when p is behind the light (it emits one-sided) or sees it edge-on.

@@ -4,11 +4,8 @@
 
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "03_shadow_rays/shadow_ray.hpp"
-#include "area_light_sampling.hpp"
 #include "frame.hpp"
-#include "point_light_sampling.hpp"
 #include "sampling.hpp"
-#include "sphere_light_sampling.hpp"
 
 namespace rt {
 
@@ -16,7 +13,7 @@ DirectLighting::DirectLighting(const World& world, const MaterialTable& material
                                DirectOptions options)
     : world_(world), materials_(materials), lights_(std::move(lights)), options_(options) {
     options_.shadow_samples = std::max(1, options_.shadow_samples);
-    const std::size_t count = lights_.area_count() + lights_.points.size();
+    const std::size_t count = lights_.lights.size();
     const bool pick = options_.light_selection == LightSelection::kPower ||
                       (options_.light_selection == LightSelection::kAuto && count > kEveryLightLimit);
     if (pick) picker_.emplace(lights_, options_.quad_lights);
@@ -63,31 +60,19 @@ Color DirectLighting::every_light(const Hit& hit, const Vec3& wo, const Bsdf& b,
     const int n = options_.shadow_samples;
     const Real weight = Real(1) / Real(n);
     Color sum(0);
-    const Vec3& p = hit.point;
-    for (const QuadLight& light : lights_.quads) {
+    for (const auto& light : lights_.lights) {
+        // A delta light has one direction, whose L_e / pdf is all it gives (a point light: I / d²): one
+        // sample, no u drawn.
+        if (light->is_delta()) {
+            if (const auto s = light->sample(hit.point, Vec2(0), options_.quad_lights))
+                sum += contribution(hit, wo, b, *s, rays);
+            continue;
+        }
         for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_quad_light(light, p, light_point(j, rng), options_.quad_lights)) {
+            if (const auto s = light->sample(hit.point, light_point(j, rng), options_.quad_lights)) {
                 sum += weight * contribution(hit, wo, b, *s, rays);
             }
         }
-    }
-    for (const TriangleLight& light : lights_.triangles) {
-        for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_triangle_light(light, p, light_point(j, rng))) {
-                sum += weight * contribution(hit, wo, b, *s, rays);
-            }
-        }
-    }
-    for (const SphereLight& light : lights_.spheres) {
-        for (int j = 0; j < n; ++j) {
-            if (const auto s = sample_sphere_light(light, p, light_point(j, rng))) {
-                sum += weight * contribution(hit, wo, b, *s, rays);
-            }
-        }
-    }
-    // A point light is a delta: its one direction carries E = I cos θ / d², i.e. L_e / pdf = I / d².
-    for (const PointLight& light : lights_.points) {
-        if (const auto s = sample_point_light(light, p)) sum += contribution(hit, wo, b, *s, rays);
     }
     return sum;
     // END EXERCISE

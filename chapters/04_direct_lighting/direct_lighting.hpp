@@ -77,7 +77,8 @@ class DirectLighting {
   private:
     // The point of [0, 1)² that light sample j of N is warped from.
     Vec2 light_point(int j, Pcg32& rng) const;
-    // Σ over every area and point light of (1 / N) Σ_j f L cos / pdf, with their shadow rays.
+    // Σ over every light of (1 / N) Σ_j f L cos / pdf (a delta light: its one sample), with their shadow
+    // rays.
     Color every_light(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;
     // (1 / N) Σ_j f L cos / pdf over N lights picked by power.
     Color picked_lights(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, Pcg32& rng, RayCounts& rays) const;

@@ -1,5 +1,9 @@
 #include "direct_notes.hpp"
 
+#include <string_view>
+#include <utility>
+#include <vector>
+
 #include "03_shadow_rays/environment_note.hpp"
 
 namespace rt {
@@ -10,14 +14,26 @@ std::string count_text(std::size_t n, const std::string& what) {
     return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
+// "7 quads, 1 sphere, 2 points": the lights counted by kind, in their order.
+std::string kinds_text(const LightSet& lights) {
+    std::vector<std::pair<std::string_view, std::size_t>> counts;
+    for (const auto& light : lights.lights) {
+        if (counts.empty() || counts.back().first != light->kind()) counts.emplace_back(light->kind(), 0);
+        ++counts.back().second;
+    }
+    std::string text;
+    for (const auto& [kind, n] : counts)
+        text += (text.empty() ? "" : ", ") + count_text(n, std::string(kind));
+    return text;
+}
+
 std::string lights_note(const DirectLighting& shading, const DirectOptions& options) {
     const LightSet& sampled = shading.lights();
     if (sampled.empty()) return "the scene has no light to sample: no direct light, no shadow rays";
-    return "lights: " + count_text(sampled.quads.size(), "quad") + " (sampled by " +
-           std::string(to_string(options.quad_lights)) + "), " +
-           count_text(sampled.triangles.size(), "triangle") + ", " +
-           count_text(sampled.spheres.size(), "sphere") + ", " + count_text(sampled.points.size(), "point") +
-           (sampled.environment ? ", an environment" : "") + "; " +
+    const std::string kinds = kinds_text(sampled);
+    return "lights: " + kinds +
+           (sampled.environment ? std::string(kinds.empty() ? "" : ", ") + "an environment" : "") +
+           " (quads sampled by " + std::string(to_string(options.quad_lights)) + "); " +
            count_text(std::size_t(options.shadow_samples), "shadow sample") +
            (shading.picks_lights() ? " per hit, each from a light picked by power, "
                                    : " per light per hit, ") +

@@ -13,8 +13,8 @@
 #include <optional>
 
 #include "area_light_sampling.hpp"
+#include "area_lights.hpp"
 #include "light_sample.hpp"
-#include "light_set.hpp"
 #include "rt/core/enum_names.hpp"
 #include "spherical_rectangle.hpp"
 

@@ -8,8 +8,8 @@
 
 #include <optional>
 
+#include "area_lights.hpp"
 #include "light_sample.hpp"
-#include "light_set.hpp"
 
 namespace rt {
 

@@ -59,7 +59,7 @@ Scene make_furnace_scene(const Furnace& furnace, const Vec3& eye, const Vec3& at
 }
 
 std::optional<Furnace> find_furnace(const Scene& scene, const World& world) {
-    if (scene.shapes.empty() || !scene.point_lights.empty() || scene.environment) return std::nullopt;
+    if (scene.shapes.empty() || scene.has_delta_lights() || scene.environment) return std::nullopt;
     const int material = scene.shapes.front().material;
     for (const Shape& s : scene.shapes) {
         if (s.material != material) return std::nullopt;

@@ -26,20 +26,20 @@ struct Arrival {
 };
 
 Arrival arrival(const IrradianceCase& c, const Vec3& wi) {
-    if (!c.lights.quads.empty()) {
-        const QuadLight& q = c.lights.quads[0];
+    if (c.quad) {
+        const QuadLight& q = *c.quad;
         const Real pdf = quad_light_pdf(q, kOrigin, wi);
         return {pdf > 0 ? q.radiance.g : Real(0), pdf};
     }
-    if (!c.lights.spheres.empty()) {
-        const SphereLight& s = c.lights.spheres[0];
+    if (c.sphere) {
+        const SphereLight& s = *c.sphere;
         const Real d = glm::length(s.center);
         const Real ratio = s.radius / d;
         const Vec3 local = make_frame(s.center / d).to_local(wi);
         const Real pdf = uniform_cone_pdf(local, one_minus_cos_stable(ratio * ratio));
         return {pdf > 0 ? s.radiance.g : Real(0), pdf};
     }
-    if (c.lights.environment) return {c.lights.environment->radiance.g, cosine_hemisphere_pdf(wi.z)};
+    if (c.environment) return {c.environment->radiance.g, cosine_hemisphere_pdf(wi.z)};
     return {0, 0};
 }
 
@@ -52,13 +52,13 @@ struct Drawn {
 
 Drawn light_sample(const IrradianceCase& c, Vec2 u) {
     std::optional<LightSample> s;
-    if (!c.lights.quads.empty())
-        s = sample_quad_light(c.lights.quads[0], kOrigin, u);
-    else if (!c.lights.spheres.empty())
-        s = sample_sphere_light(c.lights.spheres[0], kOrigin, u);
-    else if (c.lights.environment) {
+    if (c.quad)
+        s = sample_quad_light(*c.quad, kOrigin, u);
+    else if (c.sphere)
+        s = sample_sphere_light(*c.sphere, kOrigin, u);
+    else if (c.environment) {
         const Vec3 wi = sample_cosine_hemisphere(u);
-        return {wi, cosine_hemisphere_pdf(wi.z), c.lights.environment->radiance.g};
+        return {wi, cosine_hemisphere_pdf(wi.z), c.environment->radiance.g};
     }
     if (!s) return {{0, 0, 1}, 0, 0};
     return {s->wi, s->pdf, s->radiance.g};
@@ -106,25 +106,28 @@ std::vector<IrradianceCase> irradiance_cases() {
     std::vector<IrradianceCase> cases;
     {
         // A 1×1 square at height 1, its near edge over p's x = 0.2, facing down (u × v = −z).
-        IrradianceCase c{"quad", {}, 0};
+        IrradianceCase c;
+        c.name = "quad";
         const Vec3 origin{0.2f, -0.5f, 1}, u{0, 1, 0}, v{1, 0, 0};
-        c.lights.quads.push_back(make_quad_light(origin, u, v, Color(1)));
+        c.quad = make_quad_light(origin, u, v, Color(1));
         const std::vector<Vec3d> polygon{Vec3d(origin), Vec3d(origin + u), Vec3d(origin + u + v),
                                          Vec3d(origin + v)};
         c.exact = polygon_irradiance(polygon, Vec3d(0), Vec3d(0, 0, 1), 1.0);
         cases.push_back(c);
     }
     {
-        IrradianceCase c{"sphere", {}, 0};
+        IrradianceCase c;
+        c.name = "sphere";
         const Vec3 center{1, 0, 2};
-        c.lights.spheres.push_back({center, 0.5f, Color(1)});
+        c.sphere = SphereLight{center, 0.5f, Color(1)};
         const double d = glm::length(Vec3d(center));
         c.exact = sphere_irradiance(1.0, 0.5, d, double(center.z) / d);
         cases.push_back(c);
     }
     {
-        IrradianceCase c{"sky", {}, 0};
-        c.lights.environment = EnvironmentLight{Color(1)};
+        IrradianceCase c;
+        c.name = "sky";
+        c.environment = EnvironmentLight{Color(1)};
         c.exact = sky_irradiance(1.0);
         cases.push_back(c);
     }

@@ -7,10 +7,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include "04_direct_lighting/light_set.hpp"
+#include "04_direct_lighting/area_lights.hpp"
+#include "rt/core/scene.hpp"
 #include "sample_stream.hpp"
 #include "sampling_strategy.hpp"
 
@@ -19,8 +21,11 @@ namespace rt {
 // One emitter over p = 0 with n = +z: a quad light, a sphere light or a uniform sky, of radiance 1.
 struct IrradianceCase {
     std::string name;
-    LightSet lights;  // exactly one of: a quad, a sphere, an environment
-    double exact;     // E from the closed form (Lambert's polygon formula, π (r/d)² cos θ, π L)
+    // Exactly one of: a quad, a sphere, an environment.
+    std::optional<QuadLight> quad;
+    std::optional<SphereLight> sphere;
+    std::optional<EnvironmentLight> environment;
+    double exact = 0;  // E from the closed form (Lambert's polygon formula, π (r/d)² cos θ, π L)
 };
 
 // The three cases of the lesson: a 1×1 quad light at height 1 off to one side, a sphere of radius 0.5 at

@@ -4,10 +4,11 @@ namespace rt {
 
 std::vector<std::string> monte_carlo_notes(const RenderScene& prepared, const PathOptions& options) {
     std::vector<std::string> notes = prepared.materials.notes();
-    if (!prepared.scene.point_lights.empty()) {
+    if (prepared.scene.has_delta_lights()) {
         notes.push_back(
-            "point lights are deltas: only the light and mis strategies see them (no sampled direction hits "
-            "a point)");
+            "point, distant and spot lights are deltas: only the light and mis strategies see them (no "
+            "sampled "
+            "direction hits them)");
     }
     notes.push_back("sampling: " + std::string(to_string(options.strategy)) +
                     ", quad lights: " + std::string(to_string(options.quad_lights)) +

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string_view>
 
 #include "07_bsdf_refraction/refraction_materials.hpp"
+#include "light_emission.hpp"
 
 namespace rt {
 namespace {
@@ -24,8 +26,21 @@ std::vector<std::string> scene_notes(const Scene& scene, const MaterialTable& ma
     if (forward && lights.environment) {
         notes.push_back("the environment light is not traced forward (no light paths start from it): black");
     }
-    if (forward && !lights.points.empty()) {
-        notes.push_back("point lights light the scene but are not seen themselves (as in every chapter)");
+    // One note per kind, in the lights' order: a delta light is never seen; a kind not traced forward lights
+    // nothing here.
+    std::vector<std::string_view> noted;
+    for (const auto& light : lights.lights) {
+        const std::string_view kind = light->kind();
+        if (!forward || std::find(noted.begin(), noted.end(), kind) != noted.end()) continue;
+        noted.push_back(kind);
+        if (!traced_forward(*light)) {
+            notes.push_back(std::string(kind) +
+                            " lights are not traced forward (no light paths start from them): "
+                            "what only they light is black");
+        } else if (light->is_delta()) {
+            notes.push_back(std::string(kind) +
+                            " lights light the scene but are not seen themselves (as in every chapter)");
+        }
     }
     for (const std::string& u : lights.unsampled) notes.push_back("emitter not sampled as a light: " + u);
     return notes;

@@ -53,7 +53,7 @@ bool LightTracer::connect(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, cons
 }
 
 bool LightTracer::connect_light(const EmissionSample& e, Image& film, RayCounts& rays) const {
-    if (e.point_light) return false;
+    if (e.delta_light) return false;
     const Vec3 to_eye = camera_.eye - e.origin.point;
     const Real r2 = glm::dot(to_eye, to_eye);
     if (!(r2 > 0)) return false;
@@ -95,7 +95,7 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
     const LightPathSet wanted_paths = options_.paths;
     if (connecting && options_.simulates(Effect::kCameraRays) && wanted_paths == LightPathSet::kAll)
         added |= connect_light(*e, film, rays);
-    Ray ray = e->point_light ? Ray{e->origin.point, e->direction}
+    Ray ray = e->delta_light ? Ray{e->origin.point, e->direction}
                              : spawn_ray(e->origin, e->direction, options_.offset);
     rays.add(RayKind::kShadow);
     Color relative(1);         // Π f cos θ / pdf: β = β₀ relative

@@ -2,16 +2,25 @@
 
 #include <cstdio>
 #include <type_traits>
+#include <typeindex>
+#include <unordered_map>
 #include <variant>
 
 #include "02_intersection/box.hpp"
 #include "02_intersection/plane.hpp"
 #include "02_intersection/world.hpp"
 #include "04_direct_lighting/brdf.hpp"
+#include "04_direct_lighting/distant_emitter.hpp"
+#include "04_direct_lighting/point_emitter.hpp"
+#include "04_direct_lighting/quad_emitter.hpp"
+#include "04_direct_lighting/sphere_emitter.hpp"
+#include "04_direct_lighting/spot_emitter.hpp"
+#include "04_direct_lighting/triangle_emitter.hpp"
 #include "07_bsdf_refraction/conductor.hpp"
 #include "07_bsdf_refraction/dielectric.hpp"
 #include "07_bsdf_refraction/fresnel.hpp"
 #include "07_bsdf_refraction/rough_dielectric.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {
@@ -21,7 +30,7 @@ GpuVec4 v4(const Vec3& v, Real w = 0) {
 }
 
 // The primitives of the scene in scene order, each with its light: the k-th emissive bounded primitive is
-// Hit::light k (chapter 02's numbering), which LightSet::by_hit maps to a list of the picker.
+// Hit::light k (chapter 02's numbering), which LightSet::by_hit maps to its place among the picker's lights.
 class PrimitiveList {
   public:
     PrimitiveList(const LightSet& lights, const LightPicker& picker) : lights_(lights), picker_(picker) {}
@@ -38,19 +47,9 @@ class PrimitiveList {
 
   private:
     std::uint32_t light_of(std::size_t k) const {
-        if (picker_.empty() || k >= lights_.by_hit.size()) return GpuPrimitive::kNoLight;
-        const LightRef ref = lights_.by_hit[k];
-        switch (ref.list) {
-            case LightRef::List::kQuads:
-                return ref.index;
-            case LightRef::List::kTriangles:
-                return std::uint32_t(picker_.quads().size()) + ref.index;
-            case LightRef::List::kSpheres:
-                return std::uint32_t(picker_.quads().size() + picker_.triangles().size()) + ref.index;
-            case LightRef::List::kNone:
-                break;
-        }
-        return GpuPrimitive::kNoLight;
+        if (picker_.empty() || k >= lights_.by_hit.size() || lights_.by_hit[k] < 0)
+            return GpuPrimitive::kNoLight;
+        return std::uint32_t(lights_.by_hit[k]);
     }
 
     const LightSet& lights_;
@@ -162,44 +161,89 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
     return g;
 }
 
-// The picker's lights in its order (quads, triangles, spheres, points) with P(light) and the cdf.
+GpuLight quad_light_record(const Light& light) {
+    const QuadLight& q = static_cast<const QuadEmitter&>(light).quad();
+    GpuLight l;
+    l.info.x = GpuLight::kQuad;
+    l.a = v4(q.origin);
+    l.b = v4(q.u);
+    l.c = v4(q.v, q.area);
+    l.normal = v4(q.normal);
+    l.radiance = v4(q.radiance);
+    return l;
+}
+
+GpuLight triangle_light_record(const Light& light) {
+    const TriangleLight& t = static_cast<const TriangleEmitter&>(light).triangle();
+    GpuLight l;
+    l.info.x = GpuLight::kTriangle;
+    l.a = v4(t.p0);
+    l.b = v4(t.p1);
+    l.c = v4(t.p2, t.area);
+    l.normal = v4(t.normal);
+    l.radiance = v4(t.radiance);
+    return l;
+}
+
+GpuLight sphere_light_record(const Light& light) {
+    const SphereLight& s = static_cast<const SphereEmitter&>(light).sphere();
+    GpuLight l;
+    l.info.x = GpuLight::kSphere;
+    l.a = v4(s.center, s.radius);
+    l.radiance = v4(s.radiance);
+    return l;
+}
+
+GpuLight point_light_record(const Light& light) {
+    const PointLight& p = static_cast<const PointEmitter&>(light).point();
+    GpuLight l;
+    l.info.x = GpuLight::kPoint;
+    l.a = v4(p.position);
+    l.radiance = v4(p.intensity);
+    return l;
+}
+
+GpuLight distant_light_record(const Light& light) {
+    const auto& distant = static_cast<const DistantEmitter&>(light);
+    GpuLight l;
+    l.info.x = GpuLight::kDistant;
+    l.a = v4(-distant.light().direction);
+    l.b = v4(distant.scene().center, distant.scene().radius);
+    l.radiance = v4(distant.light().irradiance);
+    return l;
+}
+
+GpuLight spot_light_record(const Light& light) {
+    const auto& spot = static_cast<const SpotEmitter&>(light);
+    GpuLight l;
+    l.info.x = GpuLight::kSpot;
+    l.a = v4(spot.spot().position);
+    l.b = v4(spot.axis(), spot.cos_end());
+    l.c = v4(Vec3(spot.cos_start(), 0, 0));
+    l.radiance = v4(spot.spot().intensity);
+    return l;
+}
+
+// The record the shaders read for `light`, by its class (lights.glsl samples each kind).
+GpuLight light_record(const Light& light) {
+    using Record = GpuLight (*)(const Light&);
+    static const std::unordered_map<std::type_index, Record> by_class{
+        {typeid(QuadEmitter), quad_light_record},       {typeid(TriangleEmitter), triangle_light_record},
+        {typeid(SphereEmitter), sphere_light_record},   {typeid(PointEmitter), point_light_record},
+        {typeid(DistantEmitter), distant_light_record}, {typeid(SpotEmitter), spot_light_record},
+    };
+    const auto found = by_class.find(typeid(light));
+    if (found == by_class.end())
+        throw InputError(std::string(light.kind()) +
+                         " lights are not in the shaders (chapter 06 renders them)");
+    return found->second(light);
+}
+
+// The picker's lights in its order with P(light) and the cdf.
 std::vector<GpuLight> light_records(const LightPicker& picker) {
     std::vector<GpuLight> out;
     if (picker.empty()) return out;
-    for (const QuadLight& q : picker.quads()) {
-        GpuLight l;
-        l.info.x = GpuLight::kQuad;
-        l.a = v4(q.origin);
-        l.b = v4(q.u);
-        l.c = v4(q.v, q.area);
-        l.normal = v4(q.normal);
-        l.radiance = v4(q.radiance);
-        out.push_back(l);
-    }
-    for (const TriangleLight& t : picker.triangles()) {
-        GpuLight l;
-        l.info.x = GpuLight::kTriangle;
-        l.a = v4(t.p0);
-        l.b = v4(t.p1);
-        l.c = v4(t.p2, t.area);
-        l.normal = v4(t.normal);
-        l.radiance = v4(t.radiance);
-        out.push_back(l);
-    }
-    for (const SphereLight& s : picker.spheres()) {
-        GpuLight l;
-        l.info.x = GpuLight::kSphere;
-        l.a = v4(s.center, s.radius);
-        l.radiance = v4(s.radiance);
-        out.push_back(l);
-    }
-    for (const PointLight& p : picker.points()) {
-        GpuLight l;
-        l.info.x = GpuLight::kPoint;
-        l.a = v4(p.position);
-        l.radiance = v4(p.intensity);
-        out.push_back(l);
-    }
+    for (std::size_t i = 0; i < picker.light_count(); ++i) out.push_back(light_record(picker.light(i)));
     for (std::size_t i = 0; i < out.size(); ++i) {
         out[i].normal.w = float(picker.probability(i));
         out[i].radiance.w = float(picker.cdf()[i]);

@@ -55,7 +55,7 @@ static_assert(sizeof(GpuMaterial) == 80);
 
 // shaders/lights.glsl's Light.
 struct GpuLight {
-    enum Kind : std::uint32_t { kQuad = 0, kTriangle = 1, kSphere = 2, kPoint = 3 };
+    enum Kind : std::uint32_t { kQuad = 0, kTriangle = 1, kSphere = 2, kPoint = 3, kDistant = 4, kSpot = 5 };
     GpuUvec4 info{0};
     GpuVec4 a{0}, b{0}, c{0};
     GpuVec4 normal{0};    // w: P(light)

@@ -1,11 +1,14 @@
 // Chapter 04's LightPicker on the GPU: one light picked by power from the running sums of P(light) (the
-// same cdf), then a point on it: quads and triangles by area, spheres by solid angle, point lights as
-// deltas. The lights are in the picker's order: quads, triangles, spheres, points.
+// same cdf), then a point on it: quads and triangles by area, spheres by solid angle, point, distant and
+// spot lights as deltas. The lights are in the picker's order: quads, triangles, spheres, points, distant
+// lights, spots.
 
-const uint kQuadLight = 0u, kTriangleLight = 1u, kSphereLight = 2u, kPointLight = 3u;
+const uint kQuadLight = 0u, kTriangleLight = 1u, kSphereLight = 2u, kPointLight = 3u, kDistantLight = 4u,
+           kSpotLight = 5u;
 
 // info.x = kind; a, b, c by kind: quad origin, u, v; triangle p0, p1, p2; sphere (centre, radius); point
-// position. normal = (unit normal, P(light)), radiance = (L or I, cdf), c.w = area.
+// position; distant (−direction), (scene centre, scene radius); spot position, (axis, cos θ_end),
+// (cos θ_start). normal = (unit normal, P(light)), radiance = (L, I or E, cdf), c.w = area.
 struct Light {
     uvec4 info;
     vec4 a;
@@ -101,12 +104,28 @@ bool sample_light(vec3 p, float u_pick, vec2 u, out LightSample s) {
         found = toward_planar(x, light.normal.xyz, light.c.w, light.radiance.rgb, p, s);
     } else if (light.info.x == kSphereLight) {
         found = sample_sphere_light(light, p, u, s);
+    } else if (light.info.x == kDistantLight) {
+        // DistantEmitter::sample: the shadow ray ends past every shape.
+        const float reach = max(1.0, length(p - light.b.xyz) + 2.0 * light.b.w);
+        s = LightSample(p + reach * light.a.xyz, light.a.xyz, light.radiance.rgb, 1.0, false);
+        found = true;
     } else {
         const vec3 to_light = light.a.xyz - p;
         const float d2 = dot(to_light, to_light);
         if (d2 > 0.0) {
             s = LightSample(light.a.xyz, to_light / sqrt(d2), light.radiance.rgb / d2, 1.0, false);
             found = true;
+        }
+        if (found && light.info.x == kSpotLight) {
+            // SpotEmitter::falloff toward p: smoothstep in cos θ from cos θ_end to cos θ_start.
+            const float c = dot(light.b.xyz, -s.wi), cos_end = light.b.w, cos_start = light.c.x;
+            float falloff = c < cos_end ? 0.0 : 1.0;
+            if (cos_start > cos_end) {
+                const float t = clamp((c - cos_end) / (cos_start - cos_end), 0.0, 1.0);
+                falloff = t * t * (3.0 - 2.0 * t);
+            }
+            s.radiance *= falloff;
+            found = falloff > 0.0;
         }
     }
     if (found) s.pdf *= P;

@@ -38,7 +38,7 @@ std::optional<Effect> effect_of(const Material& m) {
 
 EffectSet needed(const Scene& scene) {
     EffectSet content{Effect::kCameraRays};
-    const bool lights = !scene.point_lights.empty() || scene.environment || scene.has_area_lights();
+    const bool lights = scene.has_lights();
     // Anything lights can shine on: a surface that reflects or transmits their light, or a medium that
     // scatters it (its light arrives only by scattering: without shadows, direct and indirect it stays
     // black). Only dielectrics hold a medium, and every dielectric counts.

@@ -27,6 +27,14 @@ bool Scene::has_area_lights() const {
     return false;
 }
 
+bool Scene::has_delta_lights() const {
+    return !point_lights.empty() || !distant_lights.empty() || !spot_lights.empty();
+}
+
+bool Scene::has_lights() const {
+    return has_delta_lights() || environment || has_area_lights();
+}
+
 std::vector<bool> Scene::used_materials() const {
     std::vector<bool> used(materials.size(), false);
     for (const Shape& s : shapes) used[std::size_t(s.material)] = true;

@@ -192,6 +192,21 @@ struct PointLight {
     Vec3 position{0};
     Color intensity{1};  // radiant intensity, W/sr
 };
+// Parallel light from far away (the sun): `direction` (unit) is the way it travels; a surface facing it
+// receives `irradiance`, W/m².
+struct DistantLight {
+    Vec3 direction{0, -1, 0};
+    Color irradiance{1};
+};
+// A point light shining from `position` toward `at` (pbrt's spot): its full intensity within
+// cone_angle − cone_delta degrees of that axis, falling off smoothly to zero at cone_angle.
+struct SpotLight {
+    Vec3 position{0};
+    Vec3 at{0, -1, 0};
+    Color intensity{1};  // W/sr, on the axis
+    Real cone_angle = 30;
+    Real cone_delta = 5;
+};
 // The light of every ray that leaves the scene: one constant radiance, or an image in latitude–longitude
 // (row 0 looks up, +y; the map turned by rotate_y degrees about +y), which chapter 06 samples by importance.
 struct EnvironmentLight {
@@ -220,12 +235,18 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Shape> shapes;
     std::vector<PointLight> point_lights;
+    std::vector<DistantLight> distant_lights;
+    std::vector<SpotLight> spot_lights;
     std::optional<EnvironmentLight> environment;
     std::optional<MediumDesc> medium;  // what fills the space outside every shape, where the camera is (fog)
     std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
 
     const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }
     bool has_area_lights() const;
+    // Point, distant or spot lights: the lights no ray meets.
+    bool has_delta_lights() const;
+    // Any light at all: area lights, delta lights, an environment.
+    bool has_lights() const;
     // used[i]: whether some shape is made of material i.
     std::vector<bool> used_materials() const;
 };

@@ -12,7 +12,39 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kLightTypes[] = {"point", "environment"};
+constexpr std::string_view kLightTypes[] = {"point", "distant", "spot", "environment"};
+
+// A distant light: the way its light travels and the irradiance of a surface facing it.
+DistantLight read_distant(const Node& node) {
+    node.expect_object(std::array<std::string_view, 3>{"type", "direction", "irradiance"}, "a distant light");
+    return DistantLight{glm::normalize(node["direction"].direction()),
+                        node["irradiance"].color_in(kLargestNumber)};
+}
+
+// A spot light: its axis from `position` toward `at` (they must differ), its cone of cone_angle degrees in
+// (0, 180] with a falloff band of cone_delta degrees in [0, cone_angle] at the edge.
+SpotLight read_spot(const Node& node) {
+    node.expect_object(
+        std::array<std::string_view, 6>{"type", "position", "at", "intensity", "cone_angle", "cone_delta"},
+        "a spot light");
+    SpotLight spot;
+    spot.position = node["position"].vec3();
+    spot.at = node["at"].vec3();
+    if (!normalisable(spot.at - spot.position)) {
+        node["at"].fail(
+            "must differ from position, so that at - position is a direction, got at - position = " +
+            show(spot.at - spot.position));
+    }
+    spot.intensity = node["intensity"].color_in(kLargestNumber);
+    if (node.has("cone_angle")) spot.cone_angle = node["cone_angle"].real_in(0, 180, true, false);
+    if (node.has("cone_delta"))
+        spot.cone_delta = node["cone_delta"].real_in(0, double(spot.cone_angle), false, false);
+    if (spot.cone_delta > spot.cone_angle) {
+        node["cone_angle"].fail("must be at least cone_delta (" + show(double(spot.cone_delta)) + "), got " +
+                                show(double(spot.cone_angle)));
+    }
+    return spot;
+}
 
 // An environment light: a constant `radiance`, or an `image` (environment_image.hpp) with its `scale` and
 // `rotate_y`. The image's radiance, once scaled, is at most kLargestNumber, as every radiance in a scene.
@@ -74,12 +106,16 @@ void read_light(const Node& node, Scene& scene, const fs::path& scene_folder) {
     if (type == "point") {
         node.expect_object(std::array<std::string_view, 3>{"type", "position", "intensity"}, "a point light");
         scene.point_lights.push_back({node["position"].vec3(), node["intensity"].color_in(kLargestNumber)});
+    } else if (type == "distant") {
+        scene.distant_lights.push_back(read_distant(node));
+    } else if (type == "spot") {
+        scene.spot_lights.push_back(read_spot(node));
     } else if (type == "environment") {
         if (scene.environment) node.fail("a scene has at most one environment light");
         scene.environment = read_environment(node, scene_folder);
     } else {
         node["type"].fail("unknown light type " + quote(type) + suggestion(type, kLightTypes) +
-                          "; expected point or environment");
+                          "; expected point, distant, spot or environment");
     }
 }
 
