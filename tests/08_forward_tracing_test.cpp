@@ -96,7 +96,7 @@ struct ForwardTracer {
     MaterialTable materials;
     LightTracer tracer;
     ForwardTracer(const StudyScene& s, const EffectSet& simulated, LightTracerOptions options = {})
-        : materials(s.scene, simulated, refraction_materials(), Transport::kImportance),
+        : materials(s.scene, simulated, refraction_materials(Transport::kImportance)),
           tracer(s.prepared.world, materials, s.prepared.lights, s.camera, simulating(options, simulated)) {}
     static LightTracerOptions simulating(LightTracerOptions options, const EffectSet& simulated) {
         options.simulated = simulated;
@@ -285,10 +285,10 @@ TEST_CASE("Connecting light paths to the pinhole converges to chapter 06's image
 TEST_CASE(
     "Connecting light paths to the pinhole converges to chapter 06's image of a room lit by a point light",
     "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
-          "[ex:ch06.uniform_sphere][ex:ch08.connect][ex:ch08.pinhole_importance]"
-          "[ex:ch08.project_direction]") {
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.path_tracer]"
+    "[ex:ch06.uniform_sphere][ex:ch08.connect][ex:ch08.pinhole_importance]"
+    "[ex:ch08.project_direction]") {
     const StudyScene s(scene_from(kPointLightRoom), 12, 12);
     check_forward_matches_reverse(s, 1024);
 }
@@ -356,9 +356,10 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
     "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"      \
     "[ex:ch08.pinhole_importance][ex:ch08.project_direction]"
 
-TEST_CASE("Paths for all but the camera caustics, plus light paths for those, converge to chapter 06's "
-          "image with less variance",
-          "[ch08][statistical]" kCombinedTracerExercises) {
+TEST_CASE(
+    "Paths for all but the camera caustics, plus light paths for those, converge to chapter 06's "
+    "image with less variance",
+    "[ch08][statistical]" kCombinedTracerExercises) {
     const Scene scene = load_scene(scene_path("ch08_default.json"));
     const EffectSet all = needed(scene) & EffectSet::all();
     constexpr int kSide = 16, kBatches = 16, kSpp = 64;
@@ -808,10 +809,10 @@ TEST_CASE(
     "Light paths through rough glass converge to chapter 06's image: forward and reverse agree within "
     "error bars",
     "[ch08][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.fresnel_exact]"
-          "[ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.fresnel_exact]"
+    "[ex:ch07.refract][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     // Chapter 08's Cornell box with its sphere frosted (roughness 0.3): not a delta, so light paths connect
     // to the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
     const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);
@@ -852,7 +853,8 @@ TEST_CASE("The light tracer reports its image after each wave of paths, and the 
     const SplatResult r = render_light_paths(settings, 20 * chunk, trace);
     CHECK(samples == std::vector<std::uint64_t>{8 * chunk, 16 * chunk, 20 * chunk});
     const auto per_pixel = [&](std::uint64_t paths) { return std::uint32_t(paths / pixels); };
-    CHECK(fewest == std::vector<std::uint32_t>{per_pixel(8 * chunk), per_pixel(16 * chunk), per_pixel(20 * chunk)});
+    CHECK(fewest ==
+          std::vector<std::uint32_t>{per_pixel(8 * chunk), per_pixel(16 * chunk), per_pixel(20 * chunk)});
     REQUIRE(last.pixel_count() == r.render.image.pixel_count());
     for (std::size_t i = 0; i < last.pixel_count(); ++i) {
         REQUIRE(last.pixels()[i] == r.render.image.pixels()[i]);

@@ -60,8 +60,8 @@ double hg_moment(double g, K k) {
     return 2 * kPiD * sum;
 }
 
-// The radiance a VolumePathTracer returns along `ray`: the mean and standard error of `paths` paths, per channel
-// (the green channel unless asked).
+// The radiance a VolumePathTracer returns along `ray`: the mean and standard error of `paths` paths, per
+// channel (the green channel unless asked).
 struct Estimate {
     double means[3] = {0, 0, 0}, errors[3] = {0, 0, 0};
     double mean = 0, error = 0;  // of the green channel
@@ -462,7 +462,8 @@ TEST_CASE(
     "0.7",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
     "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
+    "vertex]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1.5f, 2000);
         INFO("g = " << g << ": worst pixel " << f.worst_sigmas << " standard errors off, largest error "
@@ -477,7 +478,8 @@ TEST_CASE(
     "Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
     "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
+    "vertex]") {
     const std::vector<FurnaceCheck> channels =
         furnace_channels({Color(0), Color(0.5f, 2, 8), 0.3f}, 1.5f, 2000);
     for (int channel = 0; channel < 3; ++channel) {
@@ -494,7 +496,8 @@ TEST_CASE(
     "Energy: a medium of albedo 0.8 never returns more than the furnace gives in",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
     "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
-    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
+    "vertex]") {
     const Prepared p(medium_sphere_scene({Color(0.4f), Color(1.6f), 0.5f}, 1.5f));
     const PinholeCamera camera = make_pinhole_camera(p.scene.camera, 6, 6);
     for (int y = 0; y < 6; ++y) {
@@ -515,9 +518,9 @@ TEST_CASE(
 TEST_CASE(
     "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
     "and T1 = 0.10617, by quadrature and by the walk cut after one event",
-          "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
-          "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+    "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
     gauss_legendre(200, mu, w);
@@ -544,9 +547,9 @@ TEST_CASE(
 TEST_CASE(
     "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
     "0.5, 0.9 and 0.99",
-          "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-          "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
-          "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+    "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
+    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+    "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
     for (double omega : {0.5, 0.9, 0.99}) {
@@ -622,10 +625,9 @@ TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a 
         const Scene scene = scene_from(text);
         const EffectSet simulated = simulated_effects(scene, kMediaChapterEffects);
         INFO(text << "\nsimulated: " << simulated.to_string());
-        const RenderResult r =
-            render_with_media(choose_renderer(simulated), scene, simulated, settings);
-        const RenderResult every = render_with_media(choose_renderer(EffectSet::all()), scene, EffectSet::all(),
-                                                     settings);
+        const RenderResult r = render_with_media(choose_renderer(simulated), scene, simulated, settings);
+        const RenderResult every =
+            render_with_media(choose_renderer(EffectSet::all()), scene, EffectSet::all(), settings);
         CHECK(r.rays[RayKind::kShadow] > 0);
         // The same image as with every effect simulated: here the same random numbers, so the same bits.
         CHECK(r.image.pixels() == every.image.pixels());
@@ -689,7 +691,7 @@ TEST_CASE(
     const EffectSet without_media = EffectSet::all().without({Effect::kMedia});
     const MaterialTable table(scene, without_media, media_materials());
     REQUIRE(table.interior(0));
-    CHECK_FALSE(table.interior(0)->phase());
+    CHECK_FALSE(dynamic_cast<const ScatteringMedium*>(table.interior(0)));
     CHECK(table.interior(0)->transmittance(1).b == Approx(std::exp(-3.1)).epsilon(1e-6));
     CHECK(table.exterior() == nullptr);
     REQUIRE(table.notes().size() == 2);
@@ -704,17 +706,16 @@ TEST_CASE(
     // With media: the homogeneous medium inside and between the shapes, no notes.
     const MaterialTable with(scene, EffectSet::all(), media_materials());
     REQUIRE(with.interior(0));
-    CHECK(with.interior(0)->phase());
+    CHECK(dynamic_cast<const ScatteringMedium*>(with.interior(0)));
     CHECK(with.exterior());
     CHECK(with.notes().empty());
     // Chapter 07's table (no media hook) is the same as without media.
     const MaterialTable ch07(scene, EffectSet::all(), refraction_materials());
-    CHECK_FALSE(ch07.interior(0)->phase());
+    CHECK_FALSE(dynamic_cast<const ScatteringMedium*>(ch07.interior(0)));
     CHECK(ch07.exterior() == nullptr);
 }
 
-TEST_CASE(
-    "The default scene renders finite and calls for media",
+TEST_CASE("The default scene renders finite and calls for media",
           "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
@@ -747,9 +748,9 @@ TEST_CASE("Without media the volumetric loop is chapter 06's to the bit, and the
             const RenderResult ch06 = render_with(Renderer::kPaths, scene, simulated, settings, options);
             // This chapter's loop itself (render_with_media hands such a run to chapter 07's, below).
             const Prepared volumetric(scene, options);
-            const RenderResult ch09 = render_paths(
-                volumetric.tracer,
-                make_pinhole_camera(scene.camera, settings.width, settings.height), settings);
+            const RenderResult ch09 =
+                render_paths(volumetric.tracer,
+                             make_pinhole_camera(scene.camera, settings.width, settings.height), settings);
             CHECK(ch06.image.pixels() == ch09.image.pixels());
             CHECK(ch06.rays.total() == ch09.rays.total());
             const RenderResult handed_over =
@@ -769,22 +770,24 @@ TEST_CASE("Without media the volumetric loop is chapter 06's to the bit, and the
           "renderer: paths (chapter 09's volumetric loop, chapter 07's BSDFs)");
 }
 
-TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirrors or glass cast caustics, "
-          "paths elsewhere, and the summary says why",
-          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
-          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
-          "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+TEST_CASE(
+    "The most complete renderer: chapter 08's combined tracer where mirrors or glass cast caustics, "
+    "paths elsewhere, and the summary says why",
+    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
+    "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+    "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch08.connect]"
+    "[ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
     const RenderSettings settings = small_render(16, 4, 9);
     // Why a scene gets the tracer it gets (the summary's first line ends with it).
     const auto because = [&](const Scene& scene) {
-        const TracerChoice choice =
-            choose_tracer(TracerRule::kAuto, {scene, settings, simulated_effects(scene, kMediaChapterEffects)});
+        const TracerChoice choice = choose_tracer(
+            TracerRule::kAuto, {scene, settings, simulated_effects(scene, kMediaChapterEffects)});
         return std::string(choice.combined ? "combined: " : "paths: ") + choice.because;
     };
-    const std::string caustics = "mirrors or smooth glass lit by area or point lights: light paths find the "
-                                 "caustics the camera sees (chapter 08)";
+    const std::string caustics =
+        "mirrors or smooth glass lit by area or point lights: light paths find the "
+        "caustics the camera sees (chapter 08)";
     CHECK(because(load_scene(scene_path("ch08_mirror.json"))) == "combined: " + caustics);
     CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
           "paths: no mirror or smooth glass: no caustic for light paths to find");
@@ -792,16 +795,18 @@ TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirror
     CHECK(because(load_scene(scene_path("ch09_default.json"))) ==
           "paths: light paths cross no medium (chapter 08)");
     const Scene fog = load_scene(scene_path("ch09_thin_fog.json"));
-    CHECK(because(fog) == "paths: light paths cross no medium (chapter 08); in the fog, equiangular points "
-                          "by MIS and quad lights by solid angle, as Cycles samples volumes");
+    CHECK(because(fog) ==
+          "paths: light paths cross no medium (chapter 08); in the fog, equiangular points "
+          "by MIS and quad lights by solid angle, as Cycles samples volumes");
     const RunContext fog_run{fog, settings, simulated_effects(fog, kMediaChapterEffects)};
     const TracerChoice chosen_for_fog = choose_tracer(TracerRule::kAuto, fog_run);
     CHECK(chosen_for_fog.distance == DistanceSampling::kMis);
     CHECK(chosen_for_fog.quad_lights == QuadLightSampling::kSolidAngle);
     const TracerChoice kept = choose_tracer(TracerRule::kAuto, fog_run, {.distance_sampling = true});
     CHECK_FALSE(kept.distance);
-    CHECK(kept.because == "light paths cross no medium (chapter 08); in the fog, quad lights by solid angle, as "
-                          "Cycles samples volumes");
+    CHECK(kept.because ==
+          "light paths cross no medium (chapter 08); in the fog, quad lights by solid angle, as "
+          "Cycles samples volumes");
     const TracerChoice as_given = choose_tracer(TracerRule::kPaths, fog_run);
     CHECK_FALSE(as_given.distance);
     CHECK_FALSE(as_given.quad_lights);
@@ -827,9 +832,10 @@ TEST_CASE("The most complete renderer: chapter 08's combined tracer where mirror
     // A piece of a split render is refused before it renders: it would not merge into the whole's bits.
     RenderSettings piece = settings;
     piece.samples = SampleRange{0, 2};
-    CHECK_THROWS_WITH(render_by_choice(TracerRule::kAuto, {glass, piece, simulated}, {}, {}),
-                      Catch::Contains("--samples (or MPI ranks): this scene's caustics are rendered by the "
-                                      "combined tracer, which renders whole; --tracer paths renders in pieces"));
+    CHECK_THROWS_WITH(
+        render_by_choice(TracerRule::kAuto, {glass, piece, simulated}, {}, {}),
+        Catch::Contains("--samples (or MPI ranks): this scene's caustics are rendered by the "
+                        "combined tracer, which renders whole; --tracer paths renders in pieces"));
     CHECK(render_by_choice(TracerRule::kPaths, {glass, piece, simulated}, {}, {}).result.image.all_finite());
     // A lens: light paths reach a pinhole, which would change the picture.
     glass.camera.aperture = 5;
@@ -930,8 +936,10 @@ TEST_CASE("The equiangular pdf integrates to 1 over the segment and is the close
     }
 }
 
-TEST_CASE("Equiangular sampling with the light on or very near the ray's line: the naive form is NaN, the "
-          "robust one holds", "[equiangular]") {
+TEST_CASE(
+    "Equiangular sampling with the light on or very near the ray's line: the naive form is NaN, the "
+    "robust one holds",
+    "[equiangular]") {
     const Ray ray{{0, 0, 0}, {0, 0, 1}};
     // A light 10⁻³ off the line, 500 units ahead of a segment 100 long: |x_l − o|² − Δ² cancels to 0 in
     // float, and θ_a = θ_b = −π/2: the naive density is 0 / 0.
@@ -945,7 +953,8 @@ TEST_CASE("Equiangular sampling with the light on or very near the ray's line: t
         for (Real u : {0.0f, 0.25f, 0.5f, 0.999f}) {
             const Real t = robust->sample(u);
             CHECK((t >= 0 && t < 100));
-            // u = F(t): the CDF of 1 / (t − Δ)² on [0, 100), Δ = 500: F(t) = (1 / (Δ − t) − 1 / Δ) / (1 / 400 − 1 / 500).
+            // u = F(t): the CDF of 1 / (t − Δ)² on [0, 100), Δ = 500: F(t) = (1 / (Δ − t) − 1 / Δ) / (1 / 400
+            // − 1 / 500).
             CHECK((1 / (500.0 - t) - 1 / 500.0) / (1 / 400.0 - 1 / 500.0) == Approx(u).margin(1e-4));
             CHECK(double(robust->pdf(t)) == Approx(equiangular_pdf_exact(500, 1e-3, 100, t)).epsilon(1e-3));
         }
@@ -1013,7 +1022,8 @@ double single_scattering_square_exact(double sigma_s, double sigma_t, double rad
                             const double lz = -1 + 2 * (pb + x[k]) / a_panels;
                             const double dz = (delta - t) - lz;  // along the ray's line
                             const double r2 = lx * lx + 1 + dz * dz, r = std::sqrt(r2);
-                            lamp += w[j] * w[k] * (4.0 / (a_panels * a_panels)) * std::exp(-sigma_t * r) / (r2 * r);
+                            lamp += w[j] * w[k] * (4.0 / (a_panels * a_panels)) * std::exp(-sigma_t * r) /
+                                    (r2 * r);
                         }
             sum += wt * std::exp(-sigma_t * t) * lamp;
         }
@@ -1057,12 +1067,13 @@ TEST_CASE("Single scattering of a point light in fog, each --distance-sampling a
     }
 }
 
-TEST_CASE("Single scattering of a square lamp in fog, with quad lights by area and by solid angle, each "
-          "--distance-sampling against the exact integral",
-          "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
-          "[ex:ch09.volume_vertex]") {
+TEST_CASE(
+    "Single scattering of a square lamp in fog, with quad lights by area and by solid angle, each "
+    "--distance-sampling against the exact integral",
+    "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+    "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch09.volume_vertex]") {
     // The point-light scene above with a 2×2 lamp 1 unit over the camera's axis, centred above t = 5: close
     // and wide, so a point on it by area and the direction by solid angle are far apart. The equiangular
     // target is a point by area under either; its density must be the one its sampler drew t with.
@@ -1095,13 +1106,16 @@ TEST_CASE("Single scattering of a square lamp in fog, with quad lights by area a
         }
 }
 
-TEST_CASE("The thin fog with --distance-sampling mis agrees with free flight, in mean and per region, with "
-          "quad lights by area and by solid angle (whose equiangular target is still a point by area)",
-          "[equiangular]"
-          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
-          "[ex:ch09.volume_vertex]") {
+TEST_CASE(
+    "The thin fog with --distance-sampling mis agrees with free flight, in mean and per region, with "
+    "quad lights by area and by solid angle (whose equiangular target is still a point by area)",
+    "[equiangular]"
+    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_"
+    "ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06."
+    "mis_weight]"
+    "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch09.volume_vertex]") {
     // ch09_thin_fog.json at 40×40: the difference of two images, pixel by pixel (independent pixels), in each
     // of its four quadrants and in all, within 4 standard errors of 0.
     const Scene scene = load_scene(scene_path("ch09_thin_fog.json"));
@@ -1131,8 +1145,8 @@ TEST_CASE("The thin fog with --distance-sampling mis agrees with free flight, in
                     ++n;
                 }
             const double mean = sum / n, error = std::sqrt((sum2 / n - mean * mean) / (n - 1));
-            INFO(to_string(quads) << ", region " << region << ": mis − free flight = " << mean << " ± " << error
-                                  << ", image mean " << a.image.mean());
+            INFO(to_string(quads) << ", region " << region << ": mis − free flight = " << mean << " ± "
+                                  << error << ", image mean " << a.image.mean());
             CHECK(std::abs(mean) < 4 * error);
         }
     }
@@ -1140,7 +1154,8 @@ TEST_CASE("The thin fog with --distance-sampling mis agrees with free flight, in
 
 TEST_CASE("A chromatic medium keeps free flight under --distance-sampling mis: the same image to the bit",
           "[equiangular]"
-          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03."
+          "shadow_ray]"
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight]"
           "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
           "[ex:ch09.volume_vertex]") {

@@ -21,12 +21,10 @@ namespace rt {
 
 struct BsdfFlags {
     bool delta = false;  // every value a Dirac delta (mirror, smooth glass): light samples never meet it
-    bool transmission = false;   // light passes through too: sample() reads u_lobe to choose reflection or
-                                 // transmission, and may return a wi on the far side of n
-    bool diffuse = false;        // scatters diffusely (Lambert): its bounces are counted as indirect rays
-    bool black = false;          // scatters nothing: no shadow ray, no bounce
-    bool index_matched = false;  // passes every ray straight on, unchanged (smooth glass of η = 1): a
-                                 // boundary between media that a shadow ray may cross (chapter 09)
+    bool transmission = false;  // light passes through too: sample() reads u_lobe to choose reflection or
+                                // transmission, and may return a wi on the far side of n
+    bool diffuse = false;       // scatters diffusely (Lambert): its bounces are counted as indirect rays
+    bool black = false;         // scatters nothing: no shadow ray, no bounce
 };
 
 struct BsdfSample {
@@ -36,10 +34,10 @@ struct BsdfSample {
     Real pdf = 0;  // solid-angle density; for a delta lobe, 1 by convention
     bool delta = false;
     bool transmitted = false;  // wi is on the far side of the surface: the path crosses it
-    // For radiance crossing into a medium of relative index η = η_t / η_i (chapter 07's refraction), the
-    // factor 1/η² that f holds for it (radiance is squeezed into a narrower cone); 1 otherwise. Russian
-    // roulette divides it out (chapter 06's path loop), so a path inside glass is not ended for it.
-    Real radiance_scale = 1;
+    // A factor of f that Russian roulette leaves out when it judges the path (chapter 06's loop hands chapter
+    // 05's judged_scale the product of the samples' 1 / roulette_scale): 1 for every BSDF of this chapter; a
+    // later chapter's BSDF sets it for a factor that the path gives back further on (chapter 07's glass).
+    Real roulette_scale = 1;
 };
 
 // The kind of ray a sampled direction makes, for the run's counts: refraction through the surface, indirect

@@ -32,8 +32,7 @@ const Bsdf& recolour(const Bsdf& own, const Color& colour, BsdfAtHit& at) {
 
 }  // namespace
 
-MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks,
-                             Transport transport) {
+MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks) {
     const std::vector<bool> used = scene.used_materials();
     const bool refraction = simulated.contains(Effect::kRefraction) && hooks.dielectric;
     const bool media = simulated.contains(Effect::kMedia) && hooks.medium;
@@ -86,8 +85,8 @@ MaterialTable::MaterialTable(const Scene& scene, const EffectSet& simulated, con
                 break;
             case MaterialType::kDielectric:
                 if (refraction) {
-                    outside = hooks.dielectric(m, true, transport);
-                    inside = hooks.dielectric(m, false, transport);
+                    outside = hooks.dielectric(m, true);
+                    inside = hooks.dielectric(m, false);
                     if (m.medium && media) {
                         interior = hooks.medium(*m.medium);
                     } else if (hooks.dielectric_interior) {

@@ -36,16 +36,11 @@
 
 namespace rt {
 
-// What a path carries: radiance (from the camera, chapters 04–07) or importance (from the lights, chapter
-// 08). A BSDF that refracts treats them differently: radiance crossing an interface scales by 1 / η², power
-// does not (the BTDF is not symmetric).
-enum class Transport { kRadiance, kImportance };
-
 // The makers a later chapter hands the table for the materials it simulates.
 struct MaterialHooks {
     // With refraction simulated: the BSDF of a dielectric seen from outside (true) or inside, and what fills
     // it (null for clear glass).
-    std::function<std::unique_ptr<Bsdf>(const Material&, bool outside, Transport)> dielectric;
+    std::function<std::unique_ptr<Bsdf>(const Material&, bool outside)> dielectric;
     std::function<std::unique_ptr<Medium>(const Material&)> dielectric_interior;
     // With reflection simulated (chapter 07): the BSDF of a conductor (the same from both sides).
     std::function<std::unique_ptr<Bsdf>(const Material&)> conductor;
@@ -60,8 +55,7 @@ using BsdfAtHit = std::variant<std::monostate, LambertBrdf, MirrorBrdf, GlossyBr
 
 class MaterialTable {
   public:
-    MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks = {},
-                  Transport transport = Transport::kRadiance);
+    MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks = {});
 
     // The BSDF at a hit on material m, from the side the ray came from (Hit::front_face).
     const Bsdf& bsdf(int material, bool front_face = true) const {
@@ -96,7 +90,7 @@ class MaterialTable {
 
     std::vector<std::unique_ptr<Bsdf>> owned_;
     std::vector<std::unique_ptr<const TexturedColour>> textured_;  // per material; null: a constant colour
-    std::vector<const Bsdf*> sides_;  // 2 per material: outside, inside
+    std::vector<const Bsdf*> sides_;                               // 2 per material: outside, inside
     std::vector<Color> emission_;
     std::vector<std::unique_ptr<Medium>> interiors_;
     std::unique_ptr<Medium> exterior_;

@@ -12,11 +12,10 @@
 namespace rt {
 
 struct RenderScene {
-    RenderScene(const Scene& scene_, const EffectSet& simulated, const MaterialHooks& hooks = {},
-                Transport transport = Transport::kRadiance)
+    RenderScene(const Scene& scene_, const EffectSet& simulated, const MaterialHooks& hooks = {})
         : scene(scene_),
           world(scene_, world_options_for(simulated)),
-          materials(scene_, simulated, hooks, transport),
+          materials(scene_, simulated, hooks),
           lights(collect_lights(scene_)) {}
 
     const Scene& scene;

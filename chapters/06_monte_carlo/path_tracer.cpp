@@ -61,7 +61,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
     PathVertex from;     // the vertex the ray left: the camera first
     int bounces = 0;     // non-delta bounces so far
     int depth = 0;       // bounces so far, delta ones too (what roulette counts)
-    Real eta_scale = 1;  // Π of the samples' 1 / radiance_scale
+    Real eta_scale = 1;  // Π of the samples' 1 / roulette_scale
     BsdfAtHit at;        // a textured material's BSDF at the vertex
     for (;;) {
         const auto hit = world_.intersect(ray);
@@ -98,7 +98,7 @@ Color PathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& r
         const BsdfSample& s = next->sample;
         if (observer) observer->sampled(beta, s, next->cos_i);
         beta *= s.f * (next->cos_i / s.pdf);
-        eta_scale /= s.radiance_scale;
+        eta_scale /= s.roulette_scale;
         from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
         if (!flags.delta) ++bounces;
         if (!roulette(++depth, beta, eta_scale, rng)) break;

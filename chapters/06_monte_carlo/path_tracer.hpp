@@ -105,7 +105,7 @@ class PathTracer {
     std::optional<Continuation> continuation(const Hit& hit, const Vec3& wo, const Bsdf& bsdf,
                                              SampleStream rng) const;
     // Russian roulette after `depth` bounces, judged on β × eta_scale (the product of the samples'
-    // 1 / radiance_scale: a path through a refracting surface is judged on what it carries back out):
+    // 1 / roulette_scale: a path through a refracting surface is judged on what it carries back out):
     // survive with q, then β /= q.
     bool roulette(int depth, Color& beta, Real eta_scale, SampleStream rng) const;
 

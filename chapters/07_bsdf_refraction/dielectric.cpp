@@ -23,9 +23,7 @@ DielectricSample sample_dielectric(const Vec3& wo, const Vec3& n, Real eta, Real
 }
 
 SmoothDielectric::SmoothDielectric(Real eta_, Transport transport_)
-    : Bsdf({.delta = true, .transmission = true, .index_matched = eta_ == 1}),
-      eta(eta_),
-      transport(transport_) {}
+    : Bsdf({.delta = true, .transmission = true}), eta(eta_), transport(transport_) {}
 
 BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_lobe) const {
     const DielectricSample d = sample_dielectric(wo, n, eta, u_lobe);
@@ -38,7 +36,8 @@ BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_
     // f |cos θ_i| / pdf = weight, the convention of every delta lobe (chapter 04's mirror).
     const Real cos_i = std::abs(glm::dot(d.wi, n));
     s.f = cos_i > 0 ? weight / cos_i : Color(0);
-    if (s.transmitted && transport == Transport::kRadiance) s.radiance_scale = 1 / (eta * eta);
+    // Radiance's 1 / η² comes back when the path leaves the glass: roulette leaves it out (bsdf.hpp).
+    if (s.transmitted && transport == Transport::kRadiance) s.roulette_scale = 1 / (eta * eta);
     return s;
 }
 

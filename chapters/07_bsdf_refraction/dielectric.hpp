@@ -9,10 +9,16 @@
 #pragma once
 
 #include "04_direct_lighting/bsdf.hpp"
-#include "04_direct_lighting/material_table.hpp"
+#include "04_direct_lighting/medium.hpp"
 #include "rt/core/math.hpp"
 
 namespace rt {
+
+// What a path carries: radiance (from the camera, chapters 04–07) or importance (from the lights, chapter
+// 08, which builds its material table with refraction_materials(Transport::kImportance)). A BSDF that
+// refracts treats them differently: radiance crossing an interface scales by 1 / η², importance does not
+// (the BTDF is not symmetric).
+enum class Transport { kRadiance, kImportance };
 
 enum class DielectricLobe { kReflection, kTransmission };
 

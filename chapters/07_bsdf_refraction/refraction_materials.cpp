@@ -6,9 +6,9 @@
 
 namespace rt {
 
-MaterialHooks refraction_materials() {
+MaterialHooks refraction_materials(Transport transport) {
     MaterialHooks hooks;
-    hooks.dielectric = [](const Material& m, bool outside, Transport transport) -> std::unique_ptr<Bsdf> {
+    hooks.dielectric = [transport](const Material& m, bool outside) -> std::unique_ptr<Bsdf> {
         const Real eta = outside ? m.ior : 1 / m.ior;
         // Index-matched (η = 1) glass is invisible however rough: every facet passes light straight on.
         if (m.roughness > 0 && m.ior != 1)

@@ -6,9 +6,11 @@
 #pragma once
 
 #include "04_direct_lighting/material_table.hpp"
+#include "dielectric.hpp"
 
 namespace rt {
 
-MaterialHooks refraction_materials();
+// The hooks; `transport` is what the paths that read the table carry (its dielectrics' BTDF).
+MaterialHooks refraction_materials(Transport transport = Transport::kRadiance);
 
 }  // namespace rt

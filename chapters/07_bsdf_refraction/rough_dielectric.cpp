@@ -121,7 +121,7 @@ BsdfSample RoughDielectric::sample(const Vec3& wo_world, const Vec3& n, Vec2 u, 
     s.f = Color(e.f);
     s.pdf = e.pdf;
     s.transmitted = transmitted;
-    if (transmitted && transport == Transport::kRadiance) s.radiance_scale = 1 / (eta * eta);
+    if (transmitted && transport == Transport::kRadiance) s.roulette_scale = 1 / (eta * eta);
     return s;
 }
 

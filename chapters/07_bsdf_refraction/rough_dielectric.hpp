@@ -34,7 +34,7 @@
 #pragma once
 
 #include "04_direct_lighting/bsdf.hpp"
-#include "04_direct_lighting/material_table.hpp"
+#include "dielectric.hpp"
 #include "rt/core/math.hpp"
 
 namespace rt {

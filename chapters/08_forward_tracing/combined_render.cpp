@@ -13,8 +13,8 @@ namespace rt {
 CombinedResult render_combined(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
                                const CombinedOptions& options) {
     // One World and one set of lights; a material table for each direction light is carried in.
-    const RenderScene prepared(scene, simulated, refraction_materials(), Transport::kRadiance);
-    const MaterialTable importance(scene, simulated, refraction_materials(), Transport::kImportance);
+    const RenderScene prepared(scene, simulated, refraction_materials(Transport::kRadiance));
+    const MaterialTable importance(scene, simulated, refraction_materials(Transport::kImportance));
     // Both halves of the partition see through one camera: the light paths' pinhole.
     const PinholeCamera camera = light_tracing_camera(scene, settings.width, settings.height);
 

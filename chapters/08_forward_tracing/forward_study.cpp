@@ -231,7 +231,7 @@ void run_forward_study(const StudyOptions& options) {
 StudyScene::StudyScene(Scene s, int width, int height)
     : scene(std::move(s)),
       prepared(scene, EffectSet::all(), refraction_materials()),
-      importance(scene, EffectSet::all(), refraction_materials(), Transport::kImportance),
+      importance(scene, EffectSet::all(), refraction_materials(Transport::kImportance)),
       camera(make_pinhole_camera(scene.camera, width, height)) {}
 
 }  // namespace rt

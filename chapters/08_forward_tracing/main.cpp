@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
         }
         // Light paths carry importance: the material table is built for it (chapter 07's glass scales
         // differently).
-        const RenderScene prepared(scene, context.simulated, refraction_materials(), Transport::kImportance);
+        const RenderScene prepared(scene, context.simulated, refraction_materials(Transport::kImportance));
         const PinholeCamera camera = light_tracing_camera(scene, settings.width, settings.height);
         const LightTracerOptions options = forward.light_tracer(context.simulated);
         const LightTracer tracer(prepared.world, prepared.materials, prepared.lights, camera, options);

@@ -6,7 +6,7 @@
 // Its cumulative distribution inverts in closed form, so sampling is exact: p / pdf = 1.
 #pragma once
 
-#include "04_direct_lighting/medium.hpp"
+#include "phase_function.hpp"
 #include "rt/core/math.hpp"
 
 namespace rt {

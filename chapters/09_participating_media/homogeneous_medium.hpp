@@ -17,10 +17,10 @@
 // e^((σ_c − σ_k) t), and its variance is infinite.
 #pragma once
 
-#include "04_direct_lighting/medium.hpp"
 #include "henyey_greenstein.hpp"
 #include "rt/core/math.hpp"
 #include "rt/core/scene.hpp"
+#include "scattering_medium.hpp"
 
 namespace rt {
 
@@ -28,11 +28,11 @@ namespace rt {
 // channel c's density from u.
 FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, int channel, Real u);
 
-class HomogeneousMedium final : public Medium {
+class HomogeneousMedium final : public ScatteringMedium {
   public:
     explicit HomogeneousMedium(const MediumDesc& desc);
     Color transmittance(Real distance) const override;
-    const PhaseFunction* phase() const override { return &phase_; }
+    const PhaseFunction& phase() const override { return phase_; }
     FreeFlight sample_free_flight(Real t_max, int channel, Real u) const override;
 
     Color sigma_a, sigma_s, sigma_t;

@@ -16,4 +16,9 @@ MaterialHooks media_materials() {
     return hooks;
 }
 
+bool index_matched(const Bsdf& bsdf) {
+    const auto* glass = dynamic_cast<const SmoothDielectric*>(&bsdf);
+    return glass && glass->eta == 1;
+}
+
 }  // namespace rt

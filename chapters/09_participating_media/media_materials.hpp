@@ -13,4 +13,8 @@ inline constexpr EffectSet kMediaChapterEffects = EffectSet::all();
 
 MaterialHooks media_materials();
 
+// Whether `bsdf` is a boundary between media that a path and its shadow rays cross straight on: chapter 07's
+// smooth glass of η = 1 (ior 1), which neither bends nor reflects light (an index-matched boundary).
+bool index_matched(const Bsdf& bsdf);
+
 }  // namespace rt

@@ -24,18 +24,20 @@ VolumePathTracer::VolumePathTracer(const World& world, const MaterialTable& mate
       targets_(lights, QuadLightSampling::kArea),
       world_(world),
       materials_(materials),
-      exterior_(materials.exterior()),
-      media_(exterior_ != nullptr),
+      exterior_{materials.exterior(), dynamic_cast<const ScatteringMedium*>(materials.exterior())},
+      media_(exterior_.medium != nullptr),
       walk_(walk) {
     for (std::size_t m = 0; m < materials.size(); ++m) {
         const Medium* inside = materials.interior(int(m));
-        media_ = media_ || (inside && inside->phase());
+        interiors_.push_back({inside, dynamic_cast<const ScatteringMedium*>(inside)});
+        index_matched_.push_back(index_matched(materials.bsdf(int(m))));
+        media_ = media_ || interiors_.back().scattering;
     }
 }
 
-const Medium* VolumePathTracer::medium_along(const std::optional<Hit>& end) const {
+VolumePathTracer::Filling VolumePathTracer::medium_along(const std::optional<Hit>& end) const {
     if (end && !end->front_face && materials_.bsdf(end->material, false).flags().transmission)
-        return materials_.interior(end->material);
+        return interiors_[std::size_t(end->material)];
     return exterior_;
 }
 
@@ -46,10 +48,9 @@ Color VolumePathTracer::transmittance(Ray ray, Real t_max, RayCounts& rays) cons
     for (;;) {
         rays.add(RayKind::kShadow);
         const auto hit = world_.intersect(ray, t_max);
-        if (const Medium* medium = medium_along(hit)) T *= medium->transmittance(hit ? hit->t : t_max);
+        if (const Medium* medium = medium_along(hit).medium) T *= medium->transmittance(hit ? hit->t : t_max);
         if (!hit) return T;
-        if (!materials_.bsdf(hit->material, hit->front_face).flags().index_matched || is_black(T))
-            return Color(0);
+        if (!index_matched_[std::size_t(hit->material)] || is_black(T)) return Color(0);
         t_max -= hit->t;
         ray = spawn_ray(*hit, ray.direction, steps_.options().offset);
     }
@@ -140,17 +141,20 @@ Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleSt
     const Real p_eq = sampler->pdf(t);
     if (!(p_eq > 0)) return Color(0);
     const Real w = equiangular_weight(walk_.distance, free_flight_pdf(lit.sigma_t(), t), p_eq);
-    const Color L = light_estimate_in_medium(lit.ray.at(t), -lit.ray.direction, *lit.medium->phase(), u_pick,
+    const Color L = light_estimate_in_medium(lit.ray.at(t), -lit.ray.direction, lit.medium->phase(), u_pick,
                                              u, w / p_eq, rays);
     return lit.medium->transmittance(t) * lit.medium->sigma_s * L;
 }
 
-FreeFlight VolumePathTracer::fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const {
+FreeFlight VolumePathTracer::fly(const Filling& filling, Real t_max, VolumePath& path,
+                                 SampleStream rng) const {
     // The distance is a draw of the sample's stream, so Sobol points stratify the choice between the medium
     // and the surface beyond. A medium that only absorbs draws no number: its flight always reaches t_max.
-    const bool scatters = medium.phase() != nullptr;
-    if (scatters && path.channel < 0) path.channel = pick_channel(rng.next_real());
-    const FreeFlight flight = medium.sample_free_flight(t_max, path.channel, scatters ? rng.next_real() : 0);
+    const ScatteringMedium* scattering = filling.scattering;
+    if (scattering && path.channel < 0) path.channel = pick_channel(rng.next_real());
+    const FreeFlight flight = scattering
+                                  ? scattering->sample_free_flight(t_max, path.channel, rng.next_real())
+                                  : FreeFlight{false, t_max, filling.medium->transmittance(t_max), Color(1)};
     path.beta *= flight.weight;
     if (flight.pdf_ratio != Color(1)) {
         path.spectral_pdf *= flight.pdf_ratio;
@@ -196,11 +200,11 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         const auto hit = world_.intersect(ray);
         // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it
         // early, at a vertex in the volume.
-        if (const Medium* medium = medium_along(hit)) {
+        if (const Filling filling = medium_along(hit); filling.medium) {
             const Color beta = path.beta;  // before the flight
-            const FreeFlight flight = fly(*medium, hit ? hit->t : kInfinity, path, rng);
+            const FreeFlight flight = fly(filling, hit ? hit->t : kInfinity, path, rng);
             // The segment's equiangular point, a vertex as deep as the free-flight event would be.
-            std::optional<LitSegment> lit = lit_segment(*medium, ray, hit ? hit->t : kInfinity);
+            std::optional<LitSegment> lit = lit_segment(*filling.medium, ray, hit ? hit->t : kInfinity);
             if (lit && (steps.indirect() || path.bounces == 0) && path.events < walk_.max_events) {
                 path.L += beta * in_scattered_equiangular(*lit, rng, rays);
                 if (observer) observer->light_estimated(path.L);
@@ -208,7 +212,8 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
             if (flight.scattered) {
                 if ((!steps.indirect() && path.bounces >= 1) || ++path.events > walk_.max_events) break;
                 if (lit) lit->t_event = flight.t;
-                if (!scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, observer, lit))
+                if (!scatter_in_medium(filling.scattering->phase(), ray, flight.t, path, rng, rays, observer,
+                                       lit))
                     break;
                 continue;
             }
@@ -237,7 +242,7 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         if (observer && !observer->reached(*hit, flags, path.bounces)) break;
         // Shadow rays cross an index-matched boundary (transmittance()), so light sampling sees what lies
         // beyond it: a path crossing one makes no vertex there and goes straight on.
-        if (media_ && flags.index_matched) {
+        if (media_ && index_matched_[std::size_t(hit->material)]) {
             ray = spawn_ray(*hit, ray.direction, steps.options().offset);
             rays.add(RayKind::kRefraction);
             continue;
@@ -256,13 +261,12 @@ Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCou
         const BsdfSample& s = next->sample;
         if (observer) observer->sampled(path.beta, s, next->cos_i);
         path.beta *= s.f * (next->cos_i / s.pdf);
-        path.eta_scale /= s.radiance_scale;
+        path.eta_scale /= s.roulette_scale;
         path.from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
         if (!flags.delta) ++path.bounces;
         // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
         // refractions belong to the walk, which ends by the walk's rules, not by chapter 06's roulette.
-        const Medium* inside = hit->front_face ? nullptr : materials_.interior(hit->material);
-        if (inside && inside->phase()) {
+        if (!hit->front_face && interiors_[std::size_t(hit->material)].scattering) {
             if (++path.events > walk_.max_events) break;
         } else if (!steps.roulette(++path.depth, path.beta, path.eta_scale, rng)) {
             break;

@@ -13,11 +13,13 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "06_monte_carlo/path_tracer.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "distance_sampling.hpp"
 #include "media_materials.hpp"
+#include "scattering_medium.hpp"
 
 namespace rt {
 
@@ -37,7 +39,7 @@ struct VolumePath {
     PathVertex from;     // the vertex the ray left (normal 0: a vertex in a medium)
     int bounces = 0;     // non-delta bounces so far, scattering events too
     int depth = 0;       // what chapter 06's roulette counts: surface bounces outside walks
-    Real eta_scale = 1;  // Π of the samples' 1 / radiance_scale
+    Real eta_scale = 1;  // Π of the samples' 1 / roulette_scale
     int events = 0;      // the walks' events so far: scattering, and reflections at a walk's boundary
     int channel = -1;    // the colour channel whose density draws the free flights (-1: none chosen yet)
     // The path's densities under each channel's sampling, relative to the chosen one's, kept at mean 1.
@@ -56,12 +58,19 @@ class VolumePathTracer {
     const PathOptions& options() const { return steps_.options(); }
 
   private:
-    // The medium a segment runs through, judged at its end: the inside of a shape when it ends on the back of
-    // a surface that lets light through, the medium between the shapes otherwise.
-    const Medium* medium_along(const std::optional<Hit>& end) const;
-    // The free flight through `medium` over [0, t_max): β takes its weight, divided by the mean of the
-    // path's relative densities (spectral MIS).
-    FreeFlight fly(const Medium& medium, Real t_max, VolumePath& path, SampleStream rng) const;
+    // What fills a segment: its medium (null: nothing), and the same medium when it scatters (null: it only
+    // absorbs).
+    struct Filling {
+        const Medium* medium = nullptr;
+        const ScatteringMedium* scattering = nullptr;
+    };
+    // What fills a segment, judged at its end: the inside of a shape when it ends on the back of a surface
+    // that lets light through, the medium between the shapes otherwise.
+    Filling medium_along(const std::optional<Hit>& end) const;
+    // The free flight through `filling` over [0, t_max): β takes its weight, divided by the mean of the
+    // path's relative densities (spectral MIS). A medium that only absorbs draws no number: its flight
+    // reaches t_max, weighted by T(t_max).
+    FreeFlight fly(const Filling& filling, Real t_max, VolumePath& path, SampleStream rng) const;
     // The vertex at a scattering event at distance t along `ray`: next-event estimation, then the direction
     // drawn from `phase` continues the path (`ray` becomes it). false: the path ends there.
     // `lit`: the segment when equiangular sampling serves it, which weighs this event's estimate.
@@ -95,12 +104,14 @@ class VolumePathTracer {
     // What a shadow ray sees: chapter 06's visibility in a scene without media, the transmittance with them.
     Color shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const;
 
-    PathTracer steps_;  // chapter 06's loop, whose steps this one calls
+    PathTracer steps_;     // chapter 06's loop, whose steps this one calls
     LightPicker targets_;  // the lights, quads by area: where equiangular_target draws x_l
     const World& world_;
     const MaterialTable& materials_;
-    const Medium* exterior_;  // the medium between the shapes (null: empty space)
-    bool media_;              // a medium between the shapes, or one that scatters inside a shape
+    Filling exterior_;                 // the medium between the shapes (null: empty space)
+    std::vector<Filling> interiors_;   // per material: what fills its shapes
+    std::vector<char> index_matched_;  // per material: an index-matched boundary (index_matched())
+    bool media_;                       // a medium between the shapes, or one that scatters inside a shape
     MediumWalk walk_;
 };
 

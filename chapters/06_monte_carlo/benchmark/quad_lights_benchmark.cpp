@@ -1,4 +1,4 @@
-// Quad lights by area or by solid angle, measured (not a test). `ch04_quad_lights` prints:
+// Quad lights by area or by solid angle, measured (not a test). `ch06_quad_lights` prints:
 //  1. what one sample costs: sample_quad_light from points around a lamp, each strategy in turn (alternating,
 //     the median of --repeats), nanoseconds per sample on one thread;
 //  2. for each --scene, chapter 06's path tracer (MIS) with --quad-lights area and solid-angle rendered in
@@ -50,8 +50,8 @@ double nanoseconds_per_sample(QuadLightSampling strategy, int count) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app("ch04_quad_lights: quad lights by area or by solid angle, cost per sample and time to error",
-                 "ch04_quad_lights");
+    CLI::App app("ch06_quad_lights: quad lights by area or by solid angle, cost per sample and time to error",
+                 "ch06_quad_lights");
     app.option_defaults()->always_capture_default();
     std::vector<std::string> scenes{scene_path("cornell.json").string(),
                                     scene_path("ch04_close_lamp.json").string()};
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
                     threads, reference_spp);
         return 0;
     } catch (const InputError& e) {
-        std::fprintf(stderr, "ch04_quad_lights: %s\n", e.what());
+        std::fprintf(stderr, "ch06_quad_lights: %s\n", e.what());
         return kExitBadInput;
     }
 }
