@@ -77,7 +77,7 @@ const std::vector<Chapter>& chapters() {
          }},
         {"ch08", kForwardChapterEffects,
          [](const Scene& scene, const EffectSet& simulated, const RenderSettings& settings) {
-             const RenderScene prepared(scene, simulated, refraction_materials(), Transport::kImportance);
+             const RenderScene prepared(scene, simulated, refraction_materials(Transport::kImportance));
              const LightTracer tracer(prepared.world, prepared.materials, prepared.lights,
                                       light_tracing_camera(scene, settings.width, settings.height),
                                       ForwardFlags{}.light_tracer(simulated));
