@@ -843,7 +843,7 @@ TEST_CASE("A C1 control character in a name is escaped, as a control byte is", "
     CHECK(message.find("\xc2\x9b") == std::string::npos);
 }
 
-TEST_CASE("A byte that is not UTF-8 in a folder's name is escaped as \\xNN", "[bad_input][message]") {
+TEST_CASE("A byte that is not UTF-8 in a folder's name is escaped as a hexadecimal escape", "[bad_input][message]") {
     CHECK(shown("caf\xe9/scene.json") == "\"caf\\xe9/scene.json\"");
     CHECK(error_of([] { load_scene("caf\xe9/scene.json"); }) ==
           "\"caf\\xe9/scene.json\": must be a scene file (JSON), got no such file");

@@ -320,7 +320,7 @@ TEST_CASE("Every shipped scene renders the same, within noise, with needed ∩ s
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
           "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]"
           "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]"
-          "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]") {
+          "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]") {
     int scenes = 0;
     for (const auto& entry : std::filesystem::directory_iterator(assets_dir() / "scenes")) {
         if (entry.path().extension() != ".json") continue;
@@ -345,7 +345,7 @@ TEST_CASE("A point light of 1e9 at 1e-4 above a white floor renders 1e9 / (π 1e
           "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
           "[ex:ch09.transmittance][ex:ch09.volume_vertex][ex:ch08.connect][ex:ch08.pinhole_importance]"
-          "[ex:ch08.project_direction][ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]") {
+          "[ex:ch08.project_direction][ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]") {
     const Scene scene = parse_scene(kBrightFloor, "bright_floor.json");
     check_scene(scene, "bright_floor.json");
     const double exact = 1e9 / (std::numbers::pi * 1e-8);
@@ -379,7 +379,7 @@ constexpr const char* kEveryExercise =
     "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
     "[ex:ch09.volume_vertex]"
     "[ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]"
-    "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg]";
+    "[ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]";
 
 TEST_CASE("The scenes of tests/data/effects_scenes render the same with needed ∩ supported as with all",
           kEveryExercise) {
