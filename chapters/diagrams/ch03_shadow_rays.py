@@ -1,13 +1,16 @@
 """Chapter 03: shadow acne. The computed hit point lies within its error box, on either side of the surface;
 a shadow ray started there may meet its own surface. The robust offset moves it by δ = Σ |n_i| e_i along n
-(ray_offset.hpp), just out of the box."""
+(ray_offset.hpp), just out of the box. And why no fixed ε does that at every scale: against the scene's scale,
+ε must stay above the error bound of p and below the scene's smallest gap."""
+
+import math
 
 from matplotlib.patches import Rectangle
 
 from figure_style import ACCENT, LIGHT, QUIET, RAY, SURFACE, arrow, label, new_figure
 
 
-def figures():
+def offset_figure():
     fig, (ax,) = new_figure(7.0, 3.8)
     # A surface y = 0.35 x tilted, normal n; the error box e (exaggerated) around the computed point.
     slope = 0.35
@@ -51,4 +54,52 @@ def figures():
     ax.set_xlim(-2.8, 3.6)
     ax.set_ylim(-1.4, 2.6)
     ax.set_title("shadow acne, and the offset that avoids it")
-    return {"03_shadow_rays/images/diagram_offset.svg": fig}
+    return fig
+
+
+GAMMA_5 = 5 * 2.0 ** -24 / (1 - 5 * 2.0 ** -24)   # gamma_bound(5), float's unit roundoff 2⁻²⁴
+EPSILON = 1e-4                                    # the fixed offset (epsilon_offset's default)
+TOP = 1.2                                         # the blue sphere's top, y = c_y + r = 0.6 + 0.6 (ch03_default)
+GAP = 0.01                                        # the slab floats 0.01 above the floor
+STUDY_SCALES = (1e-3, 1.0, 1e3, 1e5)
+
+
+def epsilon_scale_figure():
+    """At the top of the blue sphere scaled by s: its error bound δ = γ₅ (|c_y| + r) s (n = y, so the robust
+    offset is δ), half a float ulp of its y, and the slab's gap 0.01 s, against the fixed ε."""
+    fig, (ax,) = new_figure(7.0, 3.6)
+    ax.set_aspect("auto")
+    ax.axis("on")
+    scales = [10 ** (k / 4) for k in range(-20, 33)]
+    delta = [GAMMA_5 * TOP * s for s in scales]
+    gap = [GAP * s for s in scales]
+    # Half an ulp of y = TOP s is 2^(k − 24) for y in [2^k, 2^(k+1)): a staircase, one step per power of two.
+    steps = range(math.floor(math.log2(TOP * scales[0])), math.ceil(math.log2(TOP * scales[-1])))
+    ax.step([2.0 ** k / TOP for k in steps], [2.0 ** (k - 24) for k in steps], where="post", color=QUIET,
+            lw=1, label="half an ulp of p_y: p + ε n rounds back to p below it")
+    ax.fill_between(scales, [1e-12] * len(scales), delta, color=ACCENT, alpha=0.12)
+    ax.fill_between(scales, gap, [1e8] * len(scales), color=LIGHT, alpha=0.12)
+    ax.plot(scales, delta, color=ACCENT, lw=2, label="error bound δ = γ₅ (|c_y| + r) s: the robust offset")
+    ax.plot(scales, gap, color=LIGHT, lw=2, label="the slab's gap 0.01 s: an offset above it leaks")
+    ax.axhline(EPSILON, color=RAY, lw=2, ls="--", label=f"fixed ε = {EPSILON:g}")
+    for s in STUDY_SCALES:
+        ax.axvline(s, color=SURFACE, lw=0.6, ls=":")
+    low, high = GAP ** -1 * EPSILON, EPSILON / (GAMMA_5 * TOP)
+    ax.text(math.sqrt(low * high), 3e-4, f"ε works for\n{low:g} < s < {high:.0f}", color=RAY, fontsize=8,
+            ha="center", va="bottom")
+    ax.text(3e-2, 1e-11, "below δ: acne", color=ACCENT, fontsize=8)
+    ax.text(3e-5, 1e1, "above the gap:\nlight leaks", color=LIGHT, fontsize=8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlim(scales[0], scales[-1])
+    ax.set_ylim(1e-12, 1e5)
+    ax.set_xlabel("scene scale s (dotted: the study's 1e-3, 1, 1e3, 1e5)")
+    ax.set_ylabel("distance along n (scene units)")
+    ax.legend(fontsize=7, frameon=False, loc="lower right")
+    ax.set_title("no fixed ε fits every scale; δ follows the scale")
+    return fig
+
+
+def figures():
+    return {"03_shadow_rays/images/diagram_offset.svg": offset_figure(),
+            "03_shadow_rays/images/diagram_epsilon_scale.svg": epsilon_scale_figure()}

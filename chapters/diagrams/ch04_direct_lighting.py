@@ -1,6 +1,8 @@
 """Chapter 04: the solid angle of a small patch, dω = A cos θ / r², and the four BRDFs' lobes, f(ωᵢ) cos θᵢ
 for light leaving towards ωₒ at 45° (brdf.cpp: Lambert ρ/π, the normalised lobe ρ (e + 2)/(2π) cosᵉ α around
-the mirror direction or around ωₒ itself, and the mirror's single direction)."""
+the mirror direction or around ωₒ itself, and the mirror's single direction). Then a light's area density
+turned into a solid-angle one: uniform points on a ceiling quad seen from p, and pdf_ω = d² / (cos θ_l A)
+along it against the spherical rectangle's 1/Ω (area_to_solid_angle_pdf, spherical_rectangle.hpp)."""
 
 import math
 
@@ -66,8 +68,68 @@ def lobes_panel(ax):
     ax.set_title("f(ωᵢ) cos θᵢ for each BRDF")
 
 
+HEIGHT = 1.0                  # the quad light: a ceiling at y = HEIGHT above p, facing down,
+LIGHT_X = (-0.5, 2.5)         # x from -0.5 to 2.5 (the cross-section drawn),
+LIGHT_Z = (-0.5, 0.5)         # z from -0.5 to 0.5: area A = 3
+AREA = (LIGHT_X[1] - LIGHT_X[0]) * (LIGHT_Z[1] - LIGHT_Z[0])
+SAMPLES = 12
+
+
+def area_pdf_to_solid_angle(x):
+    """pdf_ω = d² / (cos θ_l A) of the light point (x, HEIGHT, 0) seen from p at the origin."""
+    d = math.hypot(x, HEIGHT)
+    return d * d / (HEIGHT / d * AREA)
+
+
+def quad_solid_angle():
+    """Ω of the axis-aligned quad from the origin: corner terms atan(x z / (h √(x² + z² + h²)))."""
+    def corner(x, z):
+        return math.atan(x * z / (HEIGHT * math.sqrt(x * x + z * z + HEIGHT * HEIGHT)))
+    (x0, x1), (z0, z1) = LIGHT_X, LIGHT_Z
+    return corner(x1, z1) - corner(x0, z1) - corner(x1, z0) + corner(x0, z0)
+
+
+def uniform_points_panel(ax):
+    xs = [LIGHT_X[0] + (i + 0.5) / SAMPLES * (LIGHT_X[1] - LIGHT_X[0]) for i in range(SAMPLES)]
+    ax.plot(LIGHT_X, [HEIGHT, HEIGHT], color=LIGHT, lw=2)
+    ax.plot([-0.7, 2.7], [0, 0], color=SURFACE, lw=2)
+    ax.add_patch(Arc((0, 0), 1.0, 1.0, theta1=0, theta2=180, color=QUIET, ls="--"))
+    ax.plot(0, 0, "o", color="black")
+    label(ax, (0, -0.09), "p")
+    for x in xs:
+        ax.plot([0, x], [0, HEIGHT], color=QUIET, lw=0.6)
+        ax.plot(x, HEIGHT, "o", color=LIGHT, ms=4)
+        d = math.hypot(x, HEIGHT)
+        ax.plot(0.5 * x / d, 0.5 * HEIGHT / d, "o", color=ACCENT, ms=4)
+    label(ax, (1.0, HEIGHT + 0.12), "uniform points on the light: pdf_A = 1/A", color=LIGHT, fontsize=9)
+    label(ax, (1.0, 0.3), "their directions from p\ncrowd where the light is\nfar and slanted",
+          color=ACCENT, fontsize=9, ha="left")
+    ax.set_xlim(-0.7, 2.7)
+    ax.set_ylim(-0.2, 1.25)
+    ax.set_title("the same points, seen from p")
+
+
+def density_panel(ax):
+    ax.set_aspect("auto")
+    ax.axis("on")
+    xs = [LIGHT_X[0] + i / 200 * (LIGHT_X[1] - LIGHT_X[0]) for i in range(201)]
+    ax.plot(xs, [area_pdf_to_solid_angle(x) for x in xs], color=LIGHT, lw=2,
+            label="area sampling: pdf_ω = d² / (cos θ_l A)")
+    omega = quad_solid_angle()
+    ax.axhline(1 / omega, color=RAY, lw=2, ls="--", label=f"solid-angle sampling: 1/Ω, Ω = {omega:.2f} sr")
+    ax.set_ylim(0, None)
+    ax.set_xlabel("x of the light point (p is below x = 0)")
+    ax.set_ylabel("density per steradian")
+    ax.legend(fontsize=8, frameon=False, loc="upper left")
+    ax.set_title(f"along the quad's centre line (A = {AREA:g})")
+
+
 def figures():
     fig, (solid, lobes) = new_figure(10.0, 4.0, panels=2)
     solid_angle_panel(solid)
     lobes_panel(lobes)
-    return {"04_direct_lighting/images/diagram_radiometry.svg": fig}
+    pdf_fig, (points, density) = new_figure(10.0, 3.4, panels=2)
+    uniform_points_panel(points)
+    density_panel(density)
+    return {"04_direct_lighting/images/diagram_radiometry.svg": fig,
+            "04_direct_lighting/images/diagram_light_pdf.svg": pdf_fig}

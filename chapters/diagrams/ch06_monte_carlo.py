@@ -1,6 +1,8 @@
 """Chapter 06: a warp and its density. Stratified points of the unit square, the same points warped to the
 cosine-weighted hemisphere (sin θ = √u₁, φ = 2π u₂: seen from above they fill the disk uniformly), and the
-density of the warped directions against pdf(ω) = cos θ / π and the uniform 1/(2π)."""
+density of the warped directions against pdf(ω) = cos θ / π and the uniform 1/(2π). Then MIS's weights
+w_l = 1 / (1 + (p_b / p_l)^β) (mis.hpp, one sample each): balance β = 1, power β = 2, and the maximum
+heuristic they tend to as β grows."""
 
 import math
 import random
@@ -15,7 +17,7 @@ def stratified_points(seed=6):
     return [((i + rng.random()) / SIDE, (j + rng.random()) / SIDE) for j in range(SIDE) for i in range(SIDE)]
 
 
-def figures():
+def warp_figure():
     fig = new_figure(11.0, 3.6, panels=3)[0]
     square, disk, density = fig.axes
     points = stratified_points()
@@ -59,4 +61,36 @@ def figures():
     density.set_ylabel("density per steradian")
     density.legend(fontsize=8, frameon=False)
     density.set_title("the pdf the estimator divides by")
-    return {"06_monte_carlo/images/diagram_warp.svg": fig}
+    return fig
+
+
+def mis_weight(ratio, exponent):
+    """w_l for p_l / p_b = ratio: 1 / (1 + (p_b / p_l)^β)."""
+    return 1 / (1 + (1 / ratio) ** exponent)
+
+
+def mis_figure():
+    fig, (ax,) = new_figure(7.0, 3.4)
+    ax.set_aspect("auto")
+    ax.axis("on")
+    ratios = [10 ** (k / 40) for k in range(-120, 121)]
+    for exponent, style, name in ((1, "-", "balance, β = 1"), (2, "--", "power, β = 2")):
+        ax.plot(ratios, [mis_weight(r, exponent) for r in ratios], color=LIGHT, lw=2, ls=style,
+                label=f"w_l, {name}")
+        ax.plot(ratios, [1 - mis_weight(r, exponent) for r in ratios], color=RAY, lw=2, ls=style,
+                label=f"w_b, {name}")
+    ax.step([ratios[0], 1, ratios[-1]], [0, 1, 1], where="post", color=QUIET, lw=1, ls=":",
+            label="w_l, β → ∞: the larger density takes all")
+    ax.axvline(1, color=SURFACE, lw=0.6)
+    ax.text(0.6, 0.5, "p_l = p_b: ½ each", fontsize=8, color=SURFACE, ha="right")
+    ax.set_xscale("log")
+    ax.set_xlabel("p_l / p_b  (light sampling's density over the BRDF's, at one direction)")
+    ax.set_ylabel("weight")
+    ax.legend(fontsize=8, frameon=False, loc="center left", bbox_to_anchor=(1.0, 0.5))
+    ax.set_title("MIS weights: w_l + w_b = 1 at every direction")
+    return fig
+
+
+def figures():
+    return {"06_monte_carlo/images/diagram_warp.svg": warp_figure(),
+            "06_monte_carlo/images/diagram_mis_weights.svg": mis_figure()}

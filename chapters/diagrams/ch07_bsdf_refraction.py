@@ -1,8 +1,11 @@
 """Chapter 07: Snell's law with Fresnel's split (arrow widths are the exact R and T at η = 1.5), the exact
 Fresnel reflectance against Schlick's approximation entering and leaving glass (total internal reflection
-past the critical angle), and a rough surface's microfacet half-vector h = (ωᵢ + ωₒ)/|ωᵢ + ωₒ|."""
+past the critical angle), and a rough surface's microfacet half-vector h = (ωᵢ + ωₒ)/|ωᵢ + ωₒ|. Then
+Beer–Lambert in the coloured-glass scene: T = exp(−σ_a d) per colour, and the colour white light keeps."""
 
 import math
+
+from matplotlib.patches import Rectangle
 
 from figure_style import ACCENT, LIGHT, QUIET, RAY, SURFACE, arrow, label, new_figure
 
@@ -99,9 +102,43 @@ def microfacet_panel(ax):
     ax.set_title("rough glass: the half-vector")
 
 
+ABSORPTION = (0.0005, 0.004, 0.01)   # σ_a of ch07_coloured_glass.json, per unit length
+DIAMETER = 180                       # the sphere's: a path through its centre
+GREEN = "#2e8b57"                    # the green channel's curve (the palette has no green)
+
+
+def beer_lambert_figure():
+    fig, (ax,) = new_figure(7.0, 3.6)
+    ax.set_aspect("auto")
+    ax.axis("on")
+    distances = [i * 2 for i in range(181)]
+    for sigma, colour, name in zip(ABSORPTION, (ACCENT, GREEN, RAY), ("red", "green", "blue")):
+        ax.plot(distances, [math.exp(-sigma * d) for d in distances], color=colour, lw=2,
+                label=f"{name}, σ_a = {sigma:g}")
+        kept = math.exp(-sigma * DIAMETER)
+        ax.plot(DIAMETER, kept, "o", color=colour)
+        ax.text(DIAMETER + 5, kept + 0.02, f"{kept:.0%}", color=colour, fontsize=9)
+    ax.axvline(DIAMETER, color=QUIET, ls=":")
+    ax.text(DIAMETER - 5, 0.76, "through the sphere's\ncentre, d = 180", color=QUIET, fontsize=8, ha="right")
+    # The colour white light keeps after d: the three transmittances as an RGB swatch.
+    step = distances[1] - distances[0]
+    for d in distances[:-1]:
+        ax.add_patch(Rectangle((d, -0.16), step, 0.1, lw=0,
+                               color=tuple(math.exp(-sigma * (d + step / 2)) for sigma in ABSORPTION)))
+    label(ax, (distances[-1] / 2, -0.21), "the colour white light keeps", color=SURFACE, fontsize=8)
+    ax.set_xlim(0, distances[-1])
+    ax.set_ylim(-0.25, 1.05)
+    ax.set_xlabel("distance d travelled inside the glass")
+    ax.set_ylabel("transmittance T = exp(−σ_a d)")
+    ax.legend(fontsize=8, frameon=False, loc="center right", bbox_to_anchor=(1.0, 0.68))
+    ax.set_title("Beer–Lambert: coloured glass turns amber")
+    return fig
+
+
 def figures():
     fig = new_figure(12.0, 3.8, panels=3)[0]
     snell_panel(fig.axes[0])
     fresnel_panel(fig.axes[1])
     microfacet_panel(fig.axes[2])
-    return {"07_bsdf_refraction/images/diagram_snell_fresnel.svg": fig}
+    return {"07_bsdf_refraction/images/diagram_snell_fresnel.svg": fig,
+            "07_bsdf_refraction/images/diagram_beer_lambert.svg": beer_lambert_figure()}
