@@ -234,7 +234,7 @@ TEST_CASE("Lights are picked by power, and the light paths' starting throughput 
 }
 
 TEST_CASE("Spot and distant lights start light paths whose throughput averages to their power",
-          "[ch08][statistical][lights]") {
+          "[ch08][statistical][lights][ex:ch04.uniform_cone]") {
     // A spot of I = 3 with a 40-degree cone and a 10-degree band: Φ = 2π I (1 − (cos 30° + cos 40°) / 2); a
     // distant light of E = 2: Φ = π r² E, r = √3 the radius of the sphere around the unit sphere's box (β₀
     // exactly that in every path).
