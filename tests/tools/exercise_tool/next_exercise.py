@@ -1,0 +1,147 @@
+"""`exercises.py next` and `exercises.py test NAME`: a student's loop. The student edition is generated where
+missing, configured with the course's own flags (its unchanged files are then ccache hits of the course's
+build), and only the test program of the exercise's chapter is built; only the exercise's tests that need no
+other exercise left are run, so every failure shown is this exercise's."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+import subprocess
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from .edition import EDITION_MARKER, generate
+from .marks import TAG_PREFIX, Exercise, ToolError, find_exercises
+
+TEST_CASE_RE = re.compile(r'TEST_CASE\(\s*"((?:[^"\\]|\\.)*)"\s*,\s*"([^"]*)"')
+TAG_RE = re.compile(r"\[" + re.escape(TAG_PREFIX) + r"([^\]]+)\]")
+PASSED_FILE = "exercises-passed.json"  # in the build folder: exercises whose tests passed, by source digest
+SHOWN_LINES = 20  # distinct lines of a failing run's output
+
+
+@dataclass
+class TaggedTest:
+    program: str  # "ch01_test"
+    name: str
+    tags: list[str]
+
+
+def tagged_tests(root: Path) -> list[TaggedTest]:
+    """The chapter test programs' tests and their [ex:...] tags, read from tests/NN_name_test.cpp (no build)."""
+    tests = []
+    for source in sorted((root / "tests").glob("[0-9][0-9]_*_test.cpp")):
+        program = f"ch{source.name[:2]}_test"
+        for m in TEST_CASE_RE.finditer(source.read_text(encoding="utf-8")):
+            tests.append(TaggedTest(program, m.group(1), TAG_RE.findall(m.group(2))))
+    return tests
+
+
+def own_tests(exercise: Exercise, tests: list[TaggedTest]) -> list[TaggedTest]:
+    return [t for t in tests if exercise.name in t.tags and t.program == f"{exercise.chapter}_test"]
+
+
+def test_filter(exercise: Exercise, tests: list[TaggedTest], left: set[str]) -> tuple[str, list[TaggedTest]]:
+    """The Catch2 filter that runs the exercise's tests needing no other exercise left, and the tests it leaves
+    out (they wait for another)."""
+    others = sorted({tag for t in own_tests(exercise, tests) for tag in t.tags} & left - {exercise.name})
+    waiting = [t for t in own_tests(exercise, tests) if set(t.tags) & set(others)]
+    return f"[{TAG_PREFIX}{exercise.name}]" + "".join(f"~[{TAG_PREFIX}{o}]" for o in others), waiting
+
+
+def course_order(exercises: list[Exercise], tests: list[TaggedTest]) -> list[Exercise]:
+    """Chapter by chapter; in a chapter, the exercises with a test that needs no other of the chapter first."""
+    def needs(e: Exercise) -> int:
+        counts = [len(set(t.tags) - {e.name}) for t in own_tests(e, tests)]
+        return min(counts) if counts else 0
+    return sorted(exercises, key=lambda e: (e.chapter, needs(e), e.name))
+
+
+def digest(edition: Path, exercise: Exercise) -> str:
+    return hashlib.sha256((edition / exercise.file).read_bytes()).hexdigest()[:16]
+
+
+def find_edition(root: Path, edition: Path | None) -> Path:
+    """This repository when it is a student edition; else EDITION (default ../rt-student), generated if missing."""
+    if (root / EDITION_MARKER).is_file():
+        return root
+    edition = (edition or root.parent / "rt-student").resolve()
+    if not (edition / EDITION_MARKER).is_file():
+        started = time.monotonic()
+        generate(root, edition, [], force=False)
+        print(f"wrote the student edition in {edition} ({time.monotonic() - started:.0f} s); you work there")
+    return edition
+
+
+def build_program(edition: Path, program: str, jobs: int) -> Path:
+    """Configures the edition (once, as the course's release preset does) and builds one test program."""
+    build = edition / "build" / "release"
+    if not (build / "CMakeCache.txt").is_file():
+        print("configuring (cmake --preset release) ...", flush=True)
+        configured = subprocess.run(["cmake", "--preset", "release"], cwd=edition, capture_output=True, text=True)
+        if configured.returncode != 0:
+            raise ToolError("cmake --preset release failed:\n" + configured.stdout[-2000:] + configured.stderr[-2000:])
+    print(f"building {program} (cmake --build build/release --target {program}) ...", flush=True)
+    built = subprocess.run(["cmake", "--build", str(build), "-j", str(jobs), "--target", program],
+                           capture_output=True, text=True)
+    if built.returncode != 0:
+        errors = [line for line in (built.stdout + built.stderr).splitlines() if "error" in line or "|" in line]
+        raise ToolError(f"{program} does not build:\n" + "\n".join(errors[:SHOWN_LINES]))
+    return next(build.glob(f"chapters/*/{program}"))
+
+
+def run_exercise(edition: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str], jobs: int,
+                 again: str) -> bool:
+    """Builds and runs the exercise's tests that need no other exercise left; shows the failures."""
+    program = build_program(edition, f"{exercise.chapter}_test", jobs)
+    spec, waiting = test_filter(exercise, tests, left)
+    print(f"running {program.name} \"{spec}\" ...", flush=True)
+    done = subprocess.run([str(program), spec, "--reporter", "compact", "-w", "NoTests"], cwd=program.parent,
+                          capture_output=True, text=True)
+    count = len(own_tests(exercise, tests)) - len(waiting)
+    if waiting:
+        needed = sorted({tag for t in waiting for tag in t.tags} & left - {exercise.name})
+        print(f"({len(waiting)} more of its tests also need {', '.join(needed)}: they run once that is written)")
+    if done.returncode == 0:
+        print(f"{exercise.name}: its {count} tests pass")
+        return True
+    # One line per failing check (a check in a loop or a section fails alike each time), its file as written.
+    lines = list(dict.fromkeys(re.sub(r"^(\.\./)+", "", line) for line in (done.stdout + done.stderr).splitlines()
+                               if line.strip()))
+    print("\n".join(lines[:SHOWN_LINES]) + (f"\n... ({len(lines) - SHOWN_LINES} lines more)"
+                                            if len(lines) > SHOWN_LINES else ""))
+    print(f"\nnext exercise: {exercise.name}: write {exercise.function}() in {edition / exercise.file}:"
+          f"{exercise.begin + 1}\n  the lesson: {edition / exercise.lesson} § {exercise.section}\n"
+          f"  then run this again: python3 tests/tools/exercises.py {again}")
+    return False
+
+
+def command_next(root: Path, edition_arg: Path | None, only: str | None, jobs: int) -> int:
+    """Runs the exercises in course order: a written one whose tests passed since its file last changed is
+    skipped; the first whose tests fail is shown with its file and lesson section. With `only`, that exercise."""
+    started = time.monotonic()
+    edition = find_edition(root, edition_arg)
+    exercises = find_exercises(edition)
+    tests = tagged_tests(edition)
+    record = edition / "build" / "release" / PASSED_FILE
+    passed = json.loads(record.read_text()) if record.is_file() else {}
+    ordered = course_order(exercises, tests)
+    if only:
+        ordered = [e for e in ordered if e.name == only]
+        if not ordered:
+            raise ToolError(f"test: {only}: no such exercise (see `exercises.py list`)")
+    for exercise in ordered:
+        if not only and passed.get(exercise.name) == digest(edition, exercise):
+            continue
+        left = {e.name for e in exercises if e.stubbed or passed.get(e.name) != digest(edition, e)}
+        ok = run_exercise(edition, exercise, tests, left, jobs, f"test {only}" if only else "next")
+        if ok:
+            passed[exercise.name] = digest(edition, exercise)
+            record.write_text(json.dumps(passed, indent=1) + "\n")
+        print(f"({time.monotonic() - started:.0f} s)")
+        if not ok or only:
+            return 0 if ok else 1
+    print(f"every exercise's tests pass ({len(exercises)} exercises)")
+    return 0
