@@ -106,8 +106,8 @@ def command_generate(args: argparse.Namespace) -> int:
     chapters = sorted({e.chapter for e in chosen})
     print(f"student edition in {Path(args.out).resolve()}: {len(chosen)} exercises stubbed "
           f"({', '.join(chapters) if chapters else 'none'})")
-    print(f"build it:  cd {args.out} && cmake --preset release && cmake --build --preset release")
-    print("then:      python3 tests/tools/exercises.py status      (there: the exercises done and left)")
+    print(f"then:  cd {args.out} && python3 tests/tools/exercises.py next      (builds and runs the next "
+          "exercise's tests only)")
     return 0
 
 

@@ -155,13 +155,12 @@ def add_include(text: str, header: str) -> str:
 def edition_note(chosen: list[Exercise]) -> str:
     chapters = ", ".join(sorted({e.chapter for e in chosen}))
     return (f"> **Student edition.** {len(chosen)} functions of this copy ({chapters}) throw \"not implemented\" "
-            "until you write them: build once with `cmake --preset release && cmake --build --preset release`, "
-            "then after each change only the chapter you work on, `cmake --build build/release --target "
-            "ch02_test` (seconds, where the whole course takes minutes), and run "
-            "`build/release/chapters/02_intersection/ch02_test`. `python3 tests/tools/exercises.py status` "
-            "lists the exercises done and left and which to write next, and each lesson's \"Exercises\" section "
-            "says what to write. Compiler warnings are warnings, not errors, in the files with exercises (the course's "
-            "own build, and CI's check of this edition, make them errors).\n\n")
+            "until you write them. `python3 tests/tools/exercises.py next` builds only what the next exercise's "
+            "tests need, runs them and shows the failures with the file to edit and the lesson section; run it "
+            "again after each change (`test ch02.quad`: one exercise; `status`: the exercises done and left). "
+            "Each lesson's \"Exercises\" section says what to write. Compiler warnings are warnings, not errors, "
+            "in the files with exercises (the course's own build, and CI's check of this edition, make them "
+            "errors).\n\n")
 
 
 # The student edition compiles with the course's own flags, warnings as errors included, so that ccache reuses

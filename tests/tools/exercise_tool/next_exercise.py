@@ -13,7 +13,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .edition import EDITION_MARKER, generate
+from .edition import EDITION_MARKER, generate, write_if_changed
 from .marks import TAG_PREFIX, Exercise, ToolError, find_exercises
 
 TEST_CASE_RE = re.compile(r'TEST_CASE\(\s*"((?:[^"\\]|\\.)*)"\s*,\s*"([^"]*)"')
@@ -52,11 +52,12 @@ def test_filter(exercise: Exercise, tests: list[TaggedTest], left: set[str]) -> 
 
 
 def course_order(exercises: list[Exercise], tests: list[TaggedTest]) -> list[Exercise]:
-    """Chapter by chapter; in a chapter, the exercises with a test that needs no other of the chapter first."""
+    """Chapter by chapter; in a chapter, the exercises with a test that needs no other of the chapter first, then
+    in the order of their files and marks."""
     def needs(e: Exercise) -> int:
         counts = [len(set(t.tags) - {e.name}) for t in own_tests(e, tests)]
         return min(counts) if counts else 0
-    return sorted(exercises, key=lambda e: (e.chapter, needs(e), e.name))
+    return sorted(exercises, key=lambda e: (e.chapter, needs(e), str(e.file), e.begin))
 
 
 def digest(edition: Path, exercise: Exercise) -> str:
@@ -75,14 +76,22 @@ def find_edition(root: Path, edition: Path | None) -> Path:
     return edition
 
 
-def build_program(edition: Path, program: str, jobs: int) -> Path:
-    """Configures the edition (once, as the course's release preset does) and builds one test program."""
+def configure(edition: Path, *options: str) -> Path:
+    """Configures the edition as the course's release preset does (once), or with `options` changed."""
     build = edition / "build" / "release"
     if not (build / "CMakeCache.txt").is_file():
         print("configuring (cmake --preset release) ...", flush=True)
         configured = subprocess.run(["cmake", "--preset", "release"], cwd=edition, capture_output=True, text=True)
         if configured.returncode != 0:
             raise ToolError("cmake --preset release failed:\n" + configured.stdout[-2000:] + configured.stderr[-2000:])
+    if options:
+        subprocess.run(["cmake", "-S", str(edition), "-B", str(build), *options], check=True, capture_output=True)
+    return build
+
+
+def build_program(edition: Path, program: str, jobs: int) -> Path:
+    """Builds one test program of the edition (configured first where it is not)."""
+    build = configure(edition)
     print(f"building {program} (cmake --build build/release --target {program}) ...", flush=True)
     built = subprocess.run(["cmake", "--build", str(build), "-j", str(jobs), "--target", program],
                            capture_output=True, text=True)
@@ -92,10 +101,45 @@ def build_program(edition: Path, program: str, jobs: int) -> Path:
     return next(build.glob(f"chapters/*/{program}"))
 
 
+def course_shaders(edition: Path, exercise: Exercise, exercises: list[Exercise]) -> tuple[Path | None, list[str]]:
+    """A shader is compiled whole, so one #error stops every test of its chapter. For a shader exercise: a copy of
+    its folder (in the build) in which the other shader exercises still left are the course's bodies, read from
+    the course the edition was made from; and their names. (None, []) where none is left or the course is gone."""
+    others = [e for e in exercises if e.glsl and e.chapter == exercise.chapter and e.name != exercise.name
+              and e.stubbed]
+    course = Path(json.loads((edition / EDITION_MARKER).read_text(encoding="utf-8")).get("source", ""))
+    solutions = {e.name: e for e in find_exercises(course)} if others and course.is_dir() else {}
+    if not others or any(o.name not in solutions for o in others):
+        return None, []
+    copy = edition / "build" / "release" / "exercise-shaders"
+    for source in sorted(p for p in (edition / exercise.file.parent).iterdir() if p.is_file()):
+        lines = source.read_text(encoding="utf-8").split("\n")
+        for other in sorted((o for o in others if o.file == exercise.file.parent / source.name),
+                            key=lambda o: o.begin, reverse=True):
+            solution = solutions[other.name]
+            lines[other.begin + 1 : other.end] = \
+                (course / solution.file).read_text(encoding="utf-8").split("\n")[solution.begin + 1 : solution.end]
+        write_if_changed(copy / source.name, "\n".join(lines).encode("utf-8"))
+    return copy, sorted(o.name for o in others)
+
+
 def run_exercise(edition: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str], jobs: int,
                  again: str) -> bool:
     """Builds and runs the exercise's tests that need no other exercise left; shows the failures."""
-    program = build_program(edition, f"{exercise.chapter}_test", jobs)
+    shaders, supplied = course_shaders(edition, exercise, find_exercises(edition)) if exercise.glsl else (None, [])
+    if supplied:
+        print(f"{', '.join(supplied)}: the course's, for this run only (a shader compiles whole)")
+        configure(edition, f"-DRT_SHADER_SOURCE_DIR={shaders}")
+    try:
+        program = build_program(edition, f"{exercise.chapter}_test", jobs)
+        return run_program(edition, program, exercise, tests, left - set(supplied), again)
+    finally:
+        if supplied:
+            configure(edition, "-DRT_SHADER_SOURCE_DIR=")  # the edition's own shaders again, at the next build
+
+
+def run_program(edition: Path, program: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str],
+                again: str) -> bool:
     spec, waiting = test_filter(exercise, tests, left)
     print(f"running {program.name} \"{spec}\" ...", flush=True)
     done = subprocess.run([str(program), spec, "--reporter", "compact", "-w", "NoTests"], cwd=program.parent,
