@@ -167,10 +167,25 @@ def edition_note(chosen: list[Exercise]) -> str:
 # the course's objects for every file that is the same in both. Only in the files a student writes in (those
 # with exercises) do warnings stay warnings: a first attempt with a narrowing conversion still builds and runs
 # its tests. RT_EXERCISE_WARNINGS_AS_ERRORS=ON (CI's check of the edition) makes them errors there too.
-def with_exercise_warnings(cmake: str, files: list[Path]) -> str:
-    names = " ".join(sorted(f.name for f in files))
-    return (cmake.rstrip("\n") + "\n# Student edition: warnings in the files with exercises stay warnings (ccache reuses the "
-            "course's objects\n# of the others, compiled with the same flags).\n"
+def files_keeping_warnings(exercise_files: list[Path], files: list[Path]) -> dict[Path, list[Path]]:
+    """Folder → the files compiled with -Wno-error there: its .cpp files with exercises; where a header of the
+    folder has one, every .cpp file of the folder and the chapter's test source, which include it."""
+    kept: dict[Path, set[Path]] = {}
+    for file in exercise_files:
+        if file.suffix == ".cpp":
+            kept.setdefault(file.parent, set()).add(file)
+        elif file.suffix == ".hpp":
+            kept.setdefault(file.parent, set()).update(f for f in files if f.parent == file.parent and f.suffix == ".cpp"
+                                                       and f.name != "main.cpp")
+            kept[file.parent].update(f for f in files if f.parent == Path("tests") and
+                                     f.name == f"{file.parent.name}_test.cpp")
+    return {folder: sorted(names) for folder, names in kept.items()}
+
+
+def with_exercise_warnings(cmake: str, folder: Path, files: list[Path]) -> str:
+    names = " ".join(f.name if f.parent == folder else "${PROJECT_SOURCE_DIR}/" + f.as_posix() for f in files)
+    return (cmake.rstrip("\n") + "\n# Student edition: warnings in the files with exercises (and those including a header with one) "
+            "stay warnings;\n# ccache reuses the course's objects of the others, compiled with the same flags.\n"
             f"if(NOT RT_EXERCISE_WARNINGS_AS_ERRORS)\n  set_source_files_properties({names} PROPERTIES "
             "COMPILE_OPTIONS -Wno-error)\nendif()\n")
 
@@ -230,11 +245,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
     for e in chosen:
         by_file.setdefault(e.file, []).append(e)
     files = repository_files(root)
-    exercise_folders: dict[Path, list[Path]] = {}  # a folder's CMakeLists.txt → its C++ files with exercises
-    if not switchable:
-        for file in by_file:
-            if not by_file[file][0].glsl:
-                exercise_folders.setdefault(file.parent, []).append(file)
+    exercise_folders = {} if switchable else files_keeping_warnings(list(by_file), files)
     switch_header = Path("common/rt") / SWITCH_HEADER.name
     wanted = {out / f for f in files} | {out / EDITION_MARKER} | ({out / switch_header} if switchable else set())
     if out.exists():
@@ -252,7 +263,8 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
         elif relative == Path("README.md") and chosen and not switchable:
             data = edition_note(chosen).encode("utf-8") + data
         elif relative.name == "CMakeLists.txt" and relative.parent in exercise_folders:
-            data = with_exercise_warnings(data.decode("utf-8"), exercise_folders[relative.parent]).encode("utf-8")
+            data = with_exercise_warnings(data.decode("utf-8"), relative.parent,
+                                          exercise_folders[relative.parent]).encode("utf-8")
         write_if_changed(out / relative, data)
         shutil.copymode(source, out / relative)
     if switchable:

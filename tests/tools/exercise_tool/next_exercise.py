@@ -15,9 +15,8 @@ from pathlib import Path
 
 from .edition import EDITION_MARKER, generate, write_if_changed
 from .marks import TAG_PREFIX, Exercise, ToolError, find_exercises
+from .test_runs import exercise_tags
 
-TEST_CASE_RE = re.compile(r'TEST_CASE\(\s*"((?:[^"\\]|\\.)*)"\s*,\s*"([^"]*)"')
-TAG_RE = re.compile(r"\[" + re.escape(TAG_PREFIX) + r"([^\]]+)\]")
 PASSED_FILE = "exercises-passed.json"  # in the build folder: exercises whose tests passed, by source digest
 SHOWN_LINES = 20  # distinct lines of a failing run's output
 
@@ -29,14 +28,11 @@ class TaggedTest:
     tags: list[str]
 
 
-def tagged_tests(root: Path) -> list[TaggedTest]:
-    """The chapter test programs' tests and their [ex:...] tags, read from tests/NN_name_test.cpp (no build)."""
-    tests = []
-    for source in sorted((root / "tests").glob("[0-9][0-9]_*_test.cpp")):
-        program = f"ch{source.name[:2]}_test"
-        for m in TEST_CASE_RE.finditer(source.read_text(encoding="utf-8")):
-            tests.append(TaggedTest(program, m.group(1), TAG_RE.findall(m.group(2))))
-    return tests
+def program_tests(program: Path) -> list[TaggedTest]:
+    """The test program's tests that carry [ex:...] tags, asked of the program (its tags are string literals
+    and macros the compiler joins, so they are read from what it built)."""
+    return [TaggedTest(name_program, name, tags)
+            for (name_program, name), tags in exercise_tags({str(program)}).items()]
 
 
 def own_tests(exercise: Exercise, tests: list[TaggedTest]) -> list[TaggedTest]:
@@ -123,19 +119,20 @@ def course_shaders(edition: Path, exercise: Exercise, exercises: list[Exercise])
     return copy, sorted(o.name for o in others)
 
 
-def run_exercise(edition: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str], jobs: int,
-                 again: str) -> bool:
-    """Builds and runs the exercise's tests that need no other exercise left; shows the failures."""
+def run_exercise(edition: Path, program: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str],
+                 jobs: int, again: str) -> bool:
+    """Runs the exercise's tests that need no other exercise left (a shader exercise's program rebuilt with the
+    other shader exercises left the course's, for this run); shows the failures."""
     shaders, supplied = course_shaders(edition, exercise, find_exercises(edition)) if exercise.glsl else (None, [])
-    if supplied:
-        print(f"{', '.join(supplied)}: the course's, for this run only (a shader compiles whole)")
-        configure(edition, f"-DRT_SHADER_SOURCE_DIR={shaders}")
+    if not supplied:
+        return run_program(edition, program, exercise, tests, left, again)
+    print(f"{', '.join(supplied)}: the course's, for this run only (a shader compiles whole)")
+    configure(edition, f"-DRT_SHADER_SOURCE_DIR={shaders}")
     try:
-        program = build_program(edition, f"{exercise.chapter}_test", jobs)
-        return run_program(edition, program, exercise, tests, left - set(supplied), again)
+        return run_program(edition, build_program(edition, program.name, jobs), exercise, tests, left - set(supplied),
+                           again)
     finally:
-        if supplied:
-            configure(edition, "-DRT_SHADER_SOURCE_DIR=")  # the edition's own shaders again, at the next build
+        configure(edition, "-DRT_SHADER_SOURCE_DIR=")  # the edition's own shaders again, at the next build
 
 
 def run_program(edition: Path, program: Path, exercise: Exercise, tests: list[TaggedTest], left: set[str],
@@ -168,24 +165,25 @@ def command_next(root: Path, edition_arg: Path | None, only: str | None, jobs: i
     started = time.monotonic()
     edition = find_edition(root, edition_arg)
     exercises = find_exercises(edition)
-    tests = tagged_tests(edition)
+    if only and only not in {e.name for e in exercises}:
+        raise ToolError(f"test: {only}: no such exercise (see `exercises.py list`)")
     record = edition / "build" / "release" / PASSED_FILE
     passed = json.loads(record.read_text()) if record.is_file() else {}
-    ordered = course_order(exercises, tests)
-    if only:
-        ordered = [e for e in ordered if e.name == only]
-        if not ordered:
-            raise ToolError(f"test: {only}: no such exercise (see `exercises.py list`)")
-    for exercise in ordered:
-        if not only and passed.get(exercise.name) == digest(edition, exercise):
+    for chapter in sorted({e.chapter for e in exercises}):
+        waiting = [e for e in exercises if e.chapter == chapter and (e.name == only if only else
+                                                                      passed.get(e.name) != digest(edition, e))]
+        if not waiting:
             continue
-        left = {e.name for e in exercises if e.stubbed or passed.get(e.name) != digest(edition, e)}
-        ok = run_exercise(edition, exercise, tests, left, jobs, f"test {only}" if only else "next")
-        if ok:
-            passed[exercise.name] = digest(edition, exercise)
-            record.write_text(json.dumps(passed, indent=1) + "\n")
-        print(f"({time.monotonic() - started:.0f} s)")
-        if not ok or only:
-            return 0 if ok else 1
+        program = build_program(edition, f"{chapter}_test", jobs)
+        tests = program_tests(program)
+        for exercise in course_order(waiting, tests):
+            left = {e.name for e in exercises if e.stubbed or passed.get(e.name) != digest(edition, e)}
+            ok = run_exercise(edition, program, exercise, tests, left, jobs, f"test {only}" if only else "next")
+            if ok:
+                passed[exercise.name] = digest(edition, exercise)
+                record.write_text(json.dumps(passed, indent=1) + "\n")
+            print(f"({time.monotonic() - started:.0f} s)")
+            if not ok or only:
+                return 0 if ok else 1
     print(f"every exercise's tests pass ({len(exercises)} exercises)")
     return 0
