@@ -140,17 +140,25 @@ class Marks(unittest.TestCase):
         with self.assertRaisesRegex(marks.ToolError, "no such exercise"):
             edition.generate(self.root, out, ["ch07.nothing"], force=True)
 
-    def test_the_student_edition_keeps_warnings_as_warnings(self):
-        option = 'option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" ON)\n'
-        (self.root / "CMakeLists.txt").write_text("project(x)\n" + option, encoding="utf-8")
+    def test_the_student_edition_keeps_warnings_as_warnings_only_in_the_files_with_exercises(self):
+        # The course's flags everywhere else (so ccache reuses the course's objects); the shader is not compiled.
+        top = 'project(x)\noption(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" ON)\n'
+        (self.root / "CMakeLists.txt").write_text(top, encoding="utf-8")
+        (self.root / "chapters/07_fixture/CMakeLists.txt").write_text("rt_chapter(NAME fixture NUMBER 07)\n",
+                                                                      encoding="utf-8")
         out = self.folder / "edition"
         edition.generate(self.root, out, [], force=False)
-        written = (out / "CMakeLists.txt").read_text(encoding="utf-8")
-        self.assertIn('option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" OFF)', written)
-        self.assertEqual((self.root / "CMakeLists.txt").read_text(encoding="utf-8"), "project(x)\n" + option)
-        (self.root / "CMakeLists.txt").write_text("project(x)\n", encoding="utf-8")
-        with self.assertRaisesRegex(marks.ToolError, "RT_WARNINGS_AS_ERRORS"):
-            edition.generate(self.root, out, [], force=True)
+        self.assertEqual((out / "CMakeLists.txt").read_text(encoding="utf-8"), top)
+        chapter = (out / "chapters/07_fixture/CMakeLists.txt").read_text(encoding="utf-8")
+        self.assertTrue(chapter.startswith("rt_chapter(NAME fixture NUMBER 07)\n"))
+        # fixture.hpp has an exercise too: every .cpp of the folder, and the chapter's test source, include it.
+        (self.root / "tests/07_fixture_test.cpp").write_text("// the tests\n", encoding="utf-8")
+        edition.generate(self.root, out, [], force=True)
+        chapter = (out / "chapters/07_fixture/CMakeLists.txt").read_text(encoding="utf-8")
+        self.assertIn("if(NOT RT_EXERCISE_WARNINGS_AS_ERRORS)\n  set_source_files_properties(fixture.cpp "
+                      "${PROJECT_SOURCE_DIR}/tests/07_fixture_test.cpp PROPERTIES COMPILE_OPTIONS -Wno-error)\nendif()\n",
+                      chapter)
+        self.assertNotIn("fixture.glsl", chapter)
 
     def test_refuses_to_write_over_a_folder_that_is_not_an_edition(self):
         other = self.folder / "other"

@@ -13,11 +13,11 @@ command -v python3 > /dev/null || { echo "check_student_edition.sh: python3 not 
 
 start=$(date +%s)
 python3 "$root/tests/tools/exercises.py" generate "$out" --force
-# The edition turns warnings-as-errors off for students; the check turns it back on.
+# The edition keeps warnings as warnings in the files with exercises, for students; the check makes them errors.
 # Built in build/release, as deep below the edition as the course's own build is below the repository: every
 # unchanged file then compiles with the same relative paths, so ccache (where installed) reuses its object.
 build="$out/build/release"
-cmake -S "$out" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRT_WARNINGS_AS_ERRORS=ON > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
+cmake -S "$out" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRT_EXERCISE_WARNINGS_AS_ERRORS=ON > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
 mapfile -t targets < <(cmake --build "$build" --target help | sed -n 's/^\.\.\. \([A-Za-z0-9_]*_test\)$/\1/p')
 [ ${#targets[@]} -gt 0 ] || { echo "check_student_edition.sh: no test programs in $build" >&2; exit 1; }
 echo "building the student edition's test programs: ${targets[*]}"

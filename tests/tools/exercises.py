@@ -23,6 +23,11 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
                                         tags (the chapters whose exercises they need, less those needed
                                         through another), and the exercises per chapter; --check fails where
                                         README.md's map or a stated exercise count disagrees
+  exercises.py next [--edition DIR]    a student's loop: generates the student edition (default ../rt-student)
+                                        where missing, builds only the test program of the next exercise left,
+                                        runs its tests that need no other exercise left, and shows the failures
+                                        with the file to edit and the lesson section
+  exercises.py test NAME               the same for one exercise: ch01.camera_ray
   exercises.py generate OUT             the student edition in OUT: each marked body becomes a line that
                                         throws "not implemented: chNN.name — see <lesson> § <section>"
   exercises.py status [--build DIR]     runs a build's unit tests, lists per chapter exercises done and left
@@ -54,6 +59,7 @@ sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
 from exercise_tool.course_map import (chapters_needed, map_problems, needs_first,  # noqa: E402
                                      needs_first_cell)
 from exercise_tool.edition import generate, set_shader_switch  # noqa: E402
+from exercise_tool.next_exercise import command_next as run_next  # noqa: E402
 from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
 from exercise_tool.test_runs import (UnitTest, exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
                                      source_of_build, summarise, unit_tests)
@@ -100,9 +106,13 @@ def command_generate(args: argparse.Namespace) -> int:
     chapters = sorted({e.chapter for e in chosen})
     print(f"student edition in {Path(args.out).resolve()}: {len(chosen)} exercises stubbed "
           f"({', '.join(chapters) if chapters else 'none'})")
-    print(f"build it:  cd {args.out} && cmake --preset release && cmake --build --preset release")
-    print("then:      python3 tests/tools/exercises.py status      (there: the exercises done and left)")
+    print(f"then:  cd {args.out} && python3 tests/tools/exercises.py next      (builds and runs the next "
+          "exercise's tests only)")
     return 0
+
+
+def command_next(args: argparse.Namespace) -> int:
+    return run_next(args.root, Path(args.edition) if args.edition else None, getattr(args, "name", None), args.jobs)
 
 
 def default_build() -> Path:
@@ -432,6 +442,14 @@ def main(argv: list[str]) -> int:
     m = commands.add_parser("map", help="the course map's \"needs first\" column, from the tests' exercise tags")
     m.add_argument("--check", action="store_true", help="fail where README.md's map or an exercise count "
                    "disagrees")
+    for name, text in (("next", "build and run the next exercise left, show its failures"),
+                       ("test", "build and run one exercise's tests that need no other exercise left")):
+        n = commands.add_parser(name, help=text)
+        if name == "test":
+            n.add_argument("name", help="the exercise, e.g. ch01.camera_ray")
+        n.add_argument("--edition", help="the student edition (default: this repository if it is one, else "
+                       "../rt-student, generated if missing)")
+        n.add_argument("-j", "--jobs", type=int, default=2, help="build jobs (default 2)")
     g = commands.add_parser("generate", help="write the student edition")
     g.add_argument("out", help="an empty folder outside the repository (or under its ignored build/)")
     g.add_argument("--only", help="stub only these chapters or exercises: ch02 or ch01.camera_ray,ch02.quad")
@@ -463,7 +481,7 @@ def main(argv: list[str]) -> int:
     try:
         return {"list": command_list, "map": command_map, "generate": command_generate, "status": command_status,
                 "check": command_check, "lint": command_lint, "deps": command_deps,
-                "wrong": command_wrong}[args.command](args)
+                "wrong": command_wrong, "next": command_next, "test": command_next}[args.command](args)
     except ToolError as error:
         print(f"exercises.py: {error}", file=sys.stderr)
         return 2

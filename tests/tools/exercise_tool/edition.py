@@ -155,22 +155,39 @@ def add_include(text: str, header: str) -> str:
 def edition_note(chosen: list[Exercise]) -> str:
     chapters = ", ".join(sorted({e.chapter for e in chosen}))
     return (f"> **Student edition.** {len(chosen)} functions of this copy ({chapters}) throw \"not implemented\" "
-            "until you write them: build once with `cmake --preset release && cmake --build --preset release`, "
-            "then after each change only the chapter you work on, `cmake --build build/release --target "
-            "ch02_test` (seconds, where the whole course takes minutes), and run "
-            "`build/release/chapters/02_intersection/ch02_test`. `python3 tests/tools/exercises.py status` "
-            "lists the exercises done and left and which to write next, and each lesson's \"Exercises\" section "
-            "says what to write. Compiler warnings are warnings here, not errors (the course's own build, and "
-            "CI's check of this edition, make them errors).\n\n")
+            "until you write them. `python3 tests/tools/exercises.py next` builds only what the next exercise's "
+            "tests need, runs them and shows the failures with the file to edit and the lesson section; run it "
+            "again after each change (`test ch02.quad`: one exercise; `status`: the exercises done and left). "
+            "Each lesson's \"Exercises\" section says what to write. Compiler warnings are warnings, not errors, "
+            "in the files with exercises (the course's own build, and CI's check of this edition, make them "
+            "errors).\n\n")
 
 
-# The student edition's CMakeLists.txt: warnings stay warnings (a student's first attempt with a narrowing
-# conversion still builds and runs its tests).
-def without_warnings_as_errors(cmake: str) -> str:
-    on = 'option(RT_WARNINGS_AS_ERRORS "Treat compiler warnings as errors" ON)'
-    if on not in cmake:
-        raise ToolError("generate: CMakeLists.txt has no RT_WARNINGS_AS_ERRORS option to turn off")
-    return cmake.replace(on, on[:-3] + "OFF)")
+# The student edition compiles with the course's own flags, warnings as errors included, so that ccache reuses
+# the course's objects for every file that is the same in both. Only in the files a student writes in (those
+# with exercises) do warnings stay warnings: a first attempt with a narrowing conversion still builds and runs
+# its tests. RT_EXERCISE_WARNINGS_AS_ERRORS=ON (CI's check of the edition) makes them errors there too.
+def files_keeping_warnings(exercise_files: list[Path], files: list[Path]) -> dict[Path, list[Path]]:
+    """Folder → the files compiled with -Wno-error there: its .cpp files with exercises; where a header of the
+    folder has one, every .cpp file of the folder and the chapter's test source, which include it."""
+    kept: dict[Path, set[Path]] = {}
+    for file in exercise_files:
+        if file.suffix == ".cpp":
+            kept.setdefault(file.parent, set()).add(file)
+        elif file.suffix == ".hpp":
+            kept.setdefault(file.parent, set()).update(f for f in files if f.parent == file.parent and f.suffix == ".cpp"
+                                                       and f.name != "main.cpp")
+            kept[file.parent].update(f for f in files if f.parent == Path("tests") and
+                                     f.name == f"{file.parent.name}_test.cpp")
+    return {folder: sorted(names) for folder, names in kept.items()}
+
+
+def with_exercise_warnings(cmake: str, folder: Path, files: list[Path]) -> str:
+    names = " ".join(f.name if f.parent == folder else "${PROJECT_SOURCE_DIR}/" + f.as_posix() for f in files)
+    return (cmake.rstrip("\n") + "\n# Student edition: warnings in the files with exercises (and those including a header with one) "
+            "stay warnings;\n# ccache reuses the course's objects of the others, compiled with the same flags.\n"
+            f"if(NOT RT_EXERCISE_WARNINGS_AS_ERRORS)\n  set_source_files_properties({names} PROPERTIES "
+            "COMPILE_OPTIONS -Wno-error)\nendif()\n")
 
 
 def repository_files(root: Path) -> list[Path]:
@@ -228,6 +245,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
     for e in chosen:
         by_file.setdefault(e.file, []).append(e)
     files = repository_files(root)
+    exercise_folders = {} if switchable else files_keeping_warnings(list(by_file), files)
     switch_header = Path("common/rt") / SWITCH_HEADER.name
     wanted = {out / f for f in files} | {out / EDITION_MARKER} | ({out / switch_header} if switchable else set())
     if out.exists():
@@ -244,8 +262,9 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
             data = rewritten.encode("utf-8")
         elif relative == Path("README.md") and chosen and not switchable:
             data = edition_note(chosen).encode("utf-8") + data
-        elif relative == Path("CMakeLists.txt") and not switchable:
-            data = without_warnings_as_errors(data.decode("utf-8")).encode("utf-8")
+        elif relative.name == "CMakeLists.txt" and relative.parent in exercise_folders:
+            data = with_exercise_warnings(data.decode("utf-8"), relative.parent,
+                                          exercise_folders[relative.parent]).encode("utf-8")
         write_if_changed(out / relative, data)
         shutil.copymode(source, out / relative)
     if switchable:
