@@ -16,8 +16,8 @@ constexpr int kMaxDepth =
     36;  // below it, splits are median splits: the traversal stack of 64 never overflows
 // SAH costs, in units of one leaf test (a primitive, or a packet of them): a node visit costs about one.
 constexpr double kTraversalCost = 1;
-// A node of at least this many primitives builds its second child on a second thread: above it, the thread's
-// start (tens of microseconds) is a small part of the subtree's build.
+// The root builds its second child on a second thread when that child holds at least this many primitives:
+// the thread's start (tens of microseconds) is then a small part of the subtree's build.
 constexpr std::uint32_t kParallelMinimum = 1 << 14;
 
 // Half the surface area of a box, in double: float's product of two extents underflows to zero below about
