@@ -319,6 +319,27 @@ TEST_CASE("The BVH holds every primitive once, in boxes that contain their child
     CHECK(bvh.bytes() <= boxes.size() * 64);  // the lesson's memory target: 64 bytes per primitive at most
 }
 
+// Above 2^14 primitives in the root's second child, the build makes that subtree on a second thread and
+// appends its nodes after the first child's: each of its interior nodes' second-child index is moved.
+TEST_CASE("A BVH whose second subtree is built on another thread holds every primitive once, in boxes that "
+          "contain their children",
+          "[bvh]") {
+    Pcg32 rng(7, 3);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 60000; ++i) {
+        Aabb b;
+        const Vec3 c{rng.next_real() * 100, rng.next_real() * 100, rng.next_real() * 100};
+        b.extend(c);
+        b.extend(c + Vec3{rng.next_real(), rng.next_real(), rng.next_real()});
+        boxes.push_back(b);
+    }
+    std::vector<std::uint32_t> order;
+    const Bvh bvh(boxes, order);
+    REQUIRE(bvh.nodes().size() > 2);
+    CHECK(bvh.nodes().size() - bvh.nodes()[0].offset > (1u << 14) / 8);  // the second subtree is large
+    check_hierarchy(bvh, boxes, order);
+}
+
 TEST_CASE("The wide BVH holds every leaf of the binary one once, in the binary nodes' boxes", "[bvh]") {
     Pcg32 rng(7, 2);
     for (const int count : {1, 3, 5, 40, 3000}) {

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
+#include <thread>
 
 namespace rt {
 namespace {
@@ -16,6 +16,9 @@ constexpr int kMaxDepth =
     36;  // below it, splits are median splits: the traversal stack of 64 never overflows
 // SAH costs, in units of one leaf test (a primitive, or a packet of them): a node visit costs about one.
 constexpr double kTraversalCost = 1;
+// The root builds its second child on a second thread when that child holds at least this many primitives:
+// the thread's start (tens of microseconds) is then a small part of the subtree's build.
+constexpr std::uint32_t kParallelMinimum = 1 << 14;
 
 // Half the surface area of a box, in double: float's product of two extents underflows to zero below about
 // 1e-23 and overflows above about 1e19, and the SAH divides by it.
@@ -35,49 +38,130 @@ Vec3 centroid_of(const Aabb& b) {
     return out;
 }
 
+// One primitive as the build sees it. A node's primitives are a range of these, reordered in place as the
+// nodes are split: the build reads them one after another, not through an index into the caller's arrays.
+struct Reference {
+    Aabb box;
+    Vec3 centroid;
+    std::uint32_t primitive;
+};
+
+// What the build knows of a set of primitives: the box around them and the box around their centroids.
+struct Bounds {
+    Aabb box, centroids;
+
+    void extend(const Reference& r) {
+        box.extend(r.box);
+        centroids.extend(r.centroid);
+    }
+};
+
+// The centroids binned into kBins slabs along each axis, in one pass over the node's primitives: each bin's
+// primitives counted and boxed.
+struct Bins {
+    std::array<std::array<Aabb, kBins>, 3> box;
+    std::array<std::array<std::uint32_t, kBins>, 3> count{};
+};
+
+// A split of a node: the bins [0, bin) along `axis` go to the first child.
+struct Split {
+    int axis = 0;
+    int bin = -1;
+    double cost = std::numeric_limits<double>::infinity();
+};
+
 struct Builder {
-    std::span<const Aabb> bounds;
     std::uint32_t leaf_packet;
-    std::vector<Vec3> centroids;
-    std::vector<std::uint32_t>& indices;
-    std::vector<BvhNode>& nodes;
+    std::span<Reference> references;
+    std::vector<BvhNode> nodes;
 
     // The tests a leaf of n primitives costs a ray: ⌈n / leaf_packet⌉.
     double tests(std::uint32_t n) const { return double((n + leaf_packet - 1) / leaf_packet); }
 
-    void make_leaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
-        nodes[node].offset = begin;
-        nodes[node].count = end - begin;
+    Bounds bounds_of(std::uint32_t begin, std::uint32_t end) const {
+        Bounds b;
+        for (const Reference& r : references.subspan(begin, end - begin)) b.extend(r);
+        return b;
+    }
+
+    // The slab of centroid c along `axis`, in double: a float extent may be subnormal (its inverse infinite)
+    // or overflow to infinity (centroids at -3e38 and 3e38). (c − lo) / extent is in [0, 1] for every
+    // centroid of the node: the bin is in [0, kBins).
+    static int bin_of(const Vec3& c, int axis, const Aabb& centroids) {
+        const double extent = double(centroids.max[axis]) - double(centroids.min[axis]);
+        const double t = (double(c[axis]) - double(centroids.min[axis])) / extent * kBins;
+        return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
+    }
+
+    Bins bin(std::uint32_t begin, std::uint32_t end, const Aabb& centroids) const {
+        Bins bins;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Reference& r = references[i];
+            for (int axis = 0; axis < 3; ++axis) {
+                const int b = bin_of(r.centroid, axis, centroids);
+                ++bins.count[axis][b];
+                bins.box[axis][b].extend(r.box);
+            }
+        }
+        return bins;
+    }
+
+    // The SAH at each bin boundary of each axis whose centroids are spread: cost(split) = C_trav + (A_left
+    // T(N_left) + A_right T(N_right)) / A, where T(N) = ⌈N / leaf_packet⌉ is the tests N primitives cost.
+    // `cost` is the sum in parentheses; the cheapest boundary of the three axes is taken.
+    Split cheapest_split(const Bins& bins, const Aabb& centroids) const {
+        Split best;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!(double(centroids.max[axis]) - double(centroids.min[axis]) > 0)) continue;
+            std::array<double, kBins - 1> left_cost{};
+            Aabb left;
+            std::uint32_t left_count = 0;
+            for (int b = 0; b < kBins - 1; ++b) {
+                left.extend(bins.box[axis][b]);
+                left_count += bins.count[axis][b];
+                left_cost[b] = left_count > 0 ? half_area(left) * tests(left_count) : 0;
+            }
+            Aabb right;
+            std::uint32_t right_count = 0;
+            for (int b = kBins - 1; b > 0; --b) {
+                right.extend(bins.box[axis][b]);
+                right_count += bins.count[axis][b];
+                const double cost =
+                    left_cost[b - 1] + (right_count > 0 ? half_area(right) * tests(right_count) : 0);
+                if (cost < best.cost) best = {axis, b, cost};
+            }
+        }
+        return best;
     }
 
     // Splits [begin, end) at its middle along `axis` (the fallback when the SAH finds no useful split).
     std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, int axis) {
         const std::uint32_t middle = begin + (end - begin) / 2;
         std::nth_element(
-            indices.begin() + begin, indices.begin() + middle, indices.begin() + end,
-            [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
+            references.begin() + begin, references.begin() + middle, references.begin() + end,
+            [&](const Reference& a, const Reference& b) { return a.centroid[axis] < b.centroid[axis]; });
         return middle;
     }
 
-    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
-        Aabb box, centroid_box;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            box.extend(bounds[indices[i]]);
-            centroid_box.extend(centroids[indices[i]]);
-        }
+    void make_leaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
+        nodes[node].offset = begin;
+        nodes[node].count = end - begin;
+    }
+
+    // Builds the subtree of `node` over [begin, end), whose bounds are `bounds`.
+    void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds) {
+        const auto& [box, centroids] = bounds;
         nodes[node].min = box.min;
         nodes[node].max = box.max;
         const std::uint32_t count = end - begin;
         // Up to four primitives stay together: splitting them saves a few triangle tests but adds two nodes
         // (64 bytes) and a level to descend; at 10^6 triangles the memory traffic costs more than the tests.
         if (count <= kMinSplitCount) return make_leaf(node, begin, end);
-        const int longest = centroid_box.longest_axis();
+        const int longest = centroids.longest_axis();
         const double node_area = half_area(box);
+        const bool spread = double(centroids.max[longest]) - double(centroids.min[longest]) > 0;
         std::uint32_t middle = 0;
-        // In double: a float extent may be subnormal (its inverse infinite) or overflow to infinity (centroids
-        // at -3e38 and 3e38), and a float area may underflow to zero or overflow; in double neither can.
-        auto extent_of = [&](int axis) { return double(centroid_box.max[axis]) - double(centroid_box.min[axis]); };
-        if (!(extent_of(longest) > 0) || !(node_area > 0)) {
+        if (!spread || !(node_area > 0)) {
             // Every centroid in one point (no plane separates them), or every primitive on one line (the node
             // has no area for the SAH to compare): a leaf, or halves.
             if (count <= kMaxLeafSize) return make_leaf(node, begin, end);
@@ -85,79 +169,77 @@ struct Builder {
         } else if (depth >= kMaxDepth) {
             middle = median_split(begin, end, longest);
         } else {
-            // Along each axis, bin the centroids into kBins slabs and evaluate the SAH at each bin boundary:
-            // cost(split) = C_trav + (A_left T(N_left) + A_right T(N_right)) / A, against cost(leaf) = T(N),
-            // where T(N) = ⌈N / leaf_packet⌉ is the tests N primitives cost. The cheapest split of the three
-            // axes is taken.
-            // (c − lo) / extent is in [0, 1] for every centroid c of the node: the bin is in [0, kBins).
-            auto bin_of = [&](std::uint32_t p, int axis) {
-                const double t = (double(centroids[p][axis]) - double(centroid_box.min[axis])) / extent_of(axis) * kBins;
-                return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
-            };
-            int best_axis = longest, best = -1;
-            double best_cost = std::numeric_limits<double>::infinity();
-            for (int axis = 0; axis < 3; ++axis) {
-                if (!(extent_of(axis) > 0)) continue;
-                std::array<Aabb, kBins> bin_box;
-                std::array<std::uint32_t, kBins> bin_count{};
-                for (std::uint32_t i = begin; i < end; ++i) {
-                    const int b = bin_of(indices[i], axis);
-                    ++bin_count[b];
-                    bin_box[b].extend(bounds[indices[i]]);
-                }
-                std::array<double, kBins - 1> left_cost{};
-                Aabb left;
-                std::uint32_t left_count = 0;
-                for (int b = 0; b < kBins - 1; ++b) {
-                    left.extend(bin_box[b]);
-                    left_count += bin_count[b];
-                    left_cost[b] = left_count > 0 ? half_area(left) * tests(left_count) : 0;
-                }
-                Aabb right;
-                std::uint32_t right_count = 0;
-                for (int b = kBins - 1; b > 0; --b) {
-                    right.extend(bin_box[b]);
-                    right_count += bin_count[b];
-                    const double cost =
-                        left_cost[b - 1] + (right_count > 0 ? half_area(right) * tests(right_count) : 0);
-                    if (cost < best_cost) {
-                        best_cost = cost;
-                        best = b;  // bins [0, b) go left
-                        best_axis = axis;
-                    }
-                }
-            }
-            const double split_cost = kTraversalCost + best_cost / node_area;
+            const Bins bins = bin(begin, end, centroids);
+            const Split split = cheapest_split(bins, centroids);
+            const double split_cost = kTraversalCost + split.cost / node_area;
             if (count <= kMaxLeafSize && !(split_cost < tests(count))) return make_leaf(node, begin, end);
-            middle = std::uint32_t(std::partition(indices.begin() + begin, indices.begin() + end,
-                                                  [&](std::uint32_t p) { return bin_of(p, best_axis) < best; }) -
-                                   indices.begin());
-            if (middle == begin || middle == end) middle = median_split(begin, end, best_axis);
+            middle =
+                std::uint32_t(std::partition(references.begin() + begin, references.begin() + end,
+                                             [&](const Reference& r) {
+                                                 return bin_of(r.centroid, split.axis, centroids) < split.bin;
+                                             }) -
+                              references.begin());
+            if (middle == begin || middle == end) middle = median_split(begin, end, split.axis);
         }
-        const std::uint32_t first = std::uint32_t(nodes.size());
-        nodes.push_back({});
+        split_node(node, begin, middle, end, depth, bounds_of(begin, middle), bounds_of(middle, end));
+    }
+
+    // Makes `node` interior, its children over [begin, middle) and [middle, end), depth first: the first
+    // child right after it, the second after the first's subtree. A large second child is built on a thread
+    // of its own, into nodes of its own appended after the first's subtree: the same nodes in the same order.
+    void split_node(std::uint32_t node, std::uint32_t begin, std::uint32_t middle, std::uint32_t end,
+                    int depth, const Bounds& first, const Bounds& second) {
         nodes[node].count = 0;
-        build(first, begin, middle, depth + 1);
-        const std::uint32_t second = std::uint32_t(nodes.size());
+        std::vector<BvhNode> apart;
+        std::jthread second_builder;
+        if (depth == 0 && end - middle >= kParallelMinimum) {
+            second_builder = std::jthread(
+                [&] { apart = build_tree(leaf_packet, references, middle, end, depth + 1, second); });
+        }
+        const std::uint32_t first_child = std::uint32_t(nodes.size());
         nodes.push_back({});
-        nodes[node].offset = second;
-        build(second, middle, end, depth + 1);
+        build(first_child, begin, middle, depth + 1, first);
+        const std::uint32_t second_child = std::uint32_t(nodes.size());
+        nodes[node].offset = second_child;
+        if (second_builder.joinable()) {
+            second_builder.join();
+            for (BvhNode n : apart) {
+                if (!n.leaf()) n.offset += second_child;
+                nodes.push_back(n);
+            }
+        } else {
+            nodes.push_back({});
+            build(second_child, middle, end, depth + 1, second);
+        }
+    }
+
+    // The subtree over references[begin, end), its root first.
+    static std::vector<BvhNode> build_tree(std::uint32_t leaf_packet, std::span<Reference> references,
+                                           std::uint32_t begin, std::uint32_t end, int depth,
+                                           const Bounds& bounds) {
+        Builder builder{leaf_packet, references, {}};
+        builder.nodes.reserve(2 * std::size_t(end - begin) / kMinSplitCount);
+        builder.nodes.push_back({});
+        builder.build(0, begin, end, depth, bounds);
+        return builder.nodes;
     }
 };
 
 }  // namespace
 
 Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::uint32_t leaf_packet) {
-    order.resize(bounds.size());
-    std::iota(order.begin(), order.end(), 0u);
+    order.clear();
     if (bounds.empty()) return;
-    Builder builder{bounds, std::max(leaf_packet, 1u), {}, order, nodes_};
-    builder.centroids.reserve(bounds.size());
-    for (const Aabb& b : bounds) builder.centroids.push_back(centroid_of(b));
-    nodes_.reserve(bounds.size());
-    nodes_.push_back({});
-    builder.build(0, 0, std::uint32_t(bounds.size()), 0);
+    std::vector<Reference> references;
+    references.reserve(bounds.size());
+    for (std::uint32_t i = 0; i < bounds.size(); ++i)
+        references.push_back({bounds[i], centroid_of(bounds[i]), i});
+    const std::uint32_t n = std::uint32_t(bounds.size());
+    const Builder root{std::max(leaf_packet, 1u), references, {}};
+    nodes_ = Builder::build_tree(root.leaf_packet, references, 0, n, 0, root.bounds_of(0, n));
     nodes_.shrink_to_fit();
+    order.reserve(bounds.size());
+    for (const Reference& r : references) order.push_back(r.primitive);
 }
 
 }  // namespace rt

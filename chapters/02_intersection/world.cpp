@@ -36,10 +36,12 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
 // A leaf of triangles only points at its packets directly: a ray reaching it loads them, and no list first.
 void World::collapse_to_wide() {
     const bool pack = options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
+    std::vector<Triangle> triangles;  // a leaf's, reused from leaf to leaf: no allocation per leaf
+    std::vector<std::uint32_t> slots;
     wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
         const std::uint32_t first_packet = std::uint32_t(triangle_packets_.size());
-        std::vector<Triangle> triangles;
-        std::vector<std::uint32_t> slots;
+        triangles.clear();
+        slots.clear();
         for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
             if (pack && primitives_[slot].kind == Kind::kTriangle) {
                 triangles.push_back(triangles_[primitives_[slot].index]);

@@ -570,7 +570,7 @@ int main(int argc, char** argv) {
     std::printf("  (random rays, for comparison: %.2f; they miss the caches at every level of the tree)\n",
                 random_growth);
     if (build_measured) {
-        std::printf("  build time per million triangles (10^5 and more), one core: %.2f s (target < 1 s): %s\n",
+        std::printf("  build time per million triangles (10^5 and more), up to two threads: %.2f s (target < 1 s): %s\n",
                     worst_build_per_million, verdict(true, build_ok));
     } else {
         std::printf("  build time per million triangles (target < 1 s): not measured (builds are timed from 10^5 "
