@@ -36,6 +36,7 @@
 #include "rt/io/exr_file.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/input_file.hpp"
+#include "rt/io/output_files.hpp"
 #include "rt/io/picture_compare.hpp"
 #include "rt/io/ply_parser.hpp"
 #include "rt/io/scene_loader.hpp"
@@ -154,6 +155,32 @@ TEST_CASE("An EXR's NaN, infinite or negative pixel is refused as a PFM's is", "
     CHECK(read_exr(negative).at(2, 1) == Color(-0.25f, 0, 0));
     CHECK_THROWS_WITH(read_exr(negative, PfmPixels::kRadiance),
                       negative + ": pixel (2, 1) must be finite radiance, >= 0, got -0.25 0 0");
+}
+
+TEST_CASE("--out x.exr writes x.exr, x.png and x.SUFFIX.exr together, and names them with their partial twins",
+          "[image]") {
+    const fs::path folder = temporary_folder() / "exr_outputs";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const ImageOutput out = image_output(folder / "x.exr", false);
+    CHECK(out.format == RadianceFormat::kExrHalf);
+    CHECK(image_output(folder / "x.exr", true).format == RadianceFormat::kExrFloat);
+    std::vector<std::string> names;
+    for (const RunFile& f : image_outputs(out, false, {".noisy"})) names.push_back(f.path.filename().string());
+    CHECK(names == std::vector<std::string>{"x.exr", "x.png", "x.noisy.exr", "x.partial.exr", "x.partial.png",
+                                            "x.partial.film", "x.partial.noisy.exr"});
+    Image image(4, 2), noisy(4, 2);
+    image.at(1, 1) = Color(1e5f, 0.5f, 2);
+    noisy.at(3, 0) = Color(0.25f);
+    const std::string written = write_outputs(image, out, nullptr, {ExtraImage{".noisy", noisy}});
+    const std::string x = (folder / "x").string();
+    CHECK(written == x + ".exr (1 channel value(s) beyond a half float's range held as +-65504; --exr-float keeps "
+                         "them), " + x + ".png and " + x + ".noisy.exr");
+    CHECK(read_exr(folder / "x.exr").at(1, 1) == Color(65504, 0.5f, 2));
+    CHECK(read_exr(folder / "x.noisy.exr").at(3, 0) == Color(0.25f));
+    std::set<std::string> files;
+    for (const auto& entry : fs::directory_iterator(folder)) files.insert(entry.path().filename().string());
+    CHECK(files == std::set<std::string>{"x.exr", "x.png", "x.noisy.exr"});
 }
 
 TEST_CASE("An EXR without R, G and B, truncated, or not OpenEXR is refused, naming the file", "[image]") {
