@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -18,6 +19,8 @@
 
 #ifdef RT_TEST_OPENEXR
 #include <ImfArray.h>
+#include <ImfChannelList.h>
+#include <ImfOutputFile.h>
 #include <ImfRgbaFile.h>
 #endif
 
@@ -30,7 +33,10 @@
 #include "rt/flags/study_flags.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/environment_image.hpp"
+#include "rt/io/exr_file.hpp"
 #include "rt/io/image_io.hpp"
+#include "rt/io/input_file.hpp"
+#include "rt/io/output_files.hpp"
 #include "rt/io/picture_compare.hpp"
 #include "rt/io/ply_parser.hpp"
 #include "rt/io/scene_loader.hpp"
@@ -94,6 +100,110 @@ TEST_CASE("An OpenEXR environment image reads as its PFM does, wherever its data
             CHECK(from_exr.pixels()[i] == from_pfm.pixels()[i]);
         }
     }
+}
+#endif
+
+#ifdef RT_TEST_OPENEXR
+TEST_CASE("An EXR written and read back: floats bit for bit, half floats within half precision", "[image]") {
+    Image image(9, 4);
+    Pcg32 rng(3, 4);
+    for (Color& c : image.pixels())
+        c = Color(rng.next_real() * 100, rng.next_real() * 1e-3f, -rng.next_real() * 1e-6f);
+    image.at(0, 0) = Color(0.25f, 1024, 65504);  // half floats hold these exactly
+    image.at(1, 0) = Color(65505, -1e6f, 3e38f);  // beyond a half float's range: held as +-65504
+    const fs::path folder = temporary_folder();
+    write_exr(image, folder / "round_trip_float.exr", ExrChannels::kFloat);
+    write_exr(image, folder / "round_trip_half.exr", ExrChannels::kHalf);
+    const Image floats = read_exr(folder / "round_trip_float.exr");
+    const Image halves = read_exr(folder / "round_trip_half.exr");
+    REQUIRE(floats.width() == 9);
+    REQUIRE(floats.height() == 4);
+    REQUIRE(halves.width() == 9);
+    REQUIRE(halves.height() == 4);
+    for (std::size_t i = 0; i < image.pixel_count(); ++i) {
+        CHECK(std::memcmp(&floats.pixels()[i], &image.pixels()[i], sizeof(Color)) == 0);
+        for (int c = 0; c < 3; ++c) {
+            // Half floats: 11 significant bits (a relative error up to 2^-11); below 2^-14, a step of 2^-24.
+            const float v = std::clamp(float(image.pixels()[i][c]), -kHalfMax, kHalfMax);
+            const float back = float(halves.pixels()[i][c]);
+            INFO("pixel " << i << ", channel " << c << ": " << v << " read back as " << back);
+            CHECK(std::abs(back - v) <= std::max(std::abs(v) * std::ldexp(1.f, -11), std::ldexp(1.f, -25)));
+        }
+    }
+    CHECK(halves.at(0, 0) == Color(0.25f, 1024, 65504));
+    CHECK(halves.at(1, 0) == Color(65504, -65504, 65504));
+    CHECK(beyond_half_range(image) == 3);
+}
+
+TEST_CASE("An EXR's NaN, infinite or negative pixel is refused as a PFM's is", "[image]") {
+    const fs::path folder = temporary_folder();
+    Image image(3, 2);
+    image.at(1, 0) = Color(0.5f, std::numeric_limits<float>::quiet_NaN(), 1);
+    write_exr(image, folder / "nan.exr", ExrChannels::kHalf);
+    write_pfm(image, folder / "nan.pfm");
+    const std::string nan_exr = (folder / "nan.exr").string(), nan_pfm = (folder / "nan.pfm").string();
+    CHECK_THROWS_WITH(read_exr(nan_exr), nan_exr + ": pixel (1, 0) must be finite, got 0.5 nan 1");
+    CHECK_THROWS_WITH(read_pfm(nan_pfm), nan_pfm + ": pixel (1, 0) must be finite, got 0.5 nan 1");
+    image.at(1, 0) = Color(0.5f);
+    image.at(2, 1) = Color(std::numeric_limits<float>::infinity(), 0, 0);
+    write_exr(image, folder / "infinite.exr", ExrChannels::kFloat);
+    const std::string infinite = (folder / "infinite.exr").string();
+    CHECK_THROWS_WITH(read_exr(infinite), infinite + ": pixel (2, 1) must be finite, got inf 0 0");
+    image.at(2, 1) = Color(-0.25f, 0, 0);
+    write_exr(image, folder / "negative.exr", ExrChannels::kHalf);
+    const std::string negative = (folder / "negative.exr").string();
+    CHECK(read_exr(negative).at(2, 1) == Color(-0.25f, 0, 0));
+    CHECK_THROWS_WITH(read_exr(negative, PfmPixels::kRadiance),
+                      negative + ": pixel (2, 1) must be finite radiance, >= 0, got -0.25 0 0");
+}
+
+TEST_CASE("--out x.exr writes x.exr, x.png and x.SUFFIX.exr together, and names them with their partial twins",
+          "[image]") {
+    const fs::path folder = temporary_folder() / "exr_outputs";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const ImageOutput out = image_output(folder / "x.exr", false);
+    CHECK(out.format == RadianceFormat::kExrHalf);
+    CHECK(image_output(folder / "x.exr", true).format == RadianceFormat::kExrFloat);
+    std::vector<std::string> names;
+    for (const RunFile& f : image_outputs(out, false, {".noisy"})) names.push_back(f.path.filename().string());
+    CHECK(names == std::vector<std::string>{"x.exr", "x.png", "x.noisy.exr", "x.partial.exr", "x.partial.png",
+                                            "x.partial.film", "x.partial.noisy.exr"});
+    Image image(4, 2), noisy(4, 2);
+    image.at(1, 1) = Color(1e5f, 0.5f, 2);
+    noisy.at(3, 0) = Color(0.25f);
+    const std::string written = write_outputs(image, out, nullptr, {ExtraImage{".noisy", noisy}});
+    const std::string x = (folder / "x").string();
+    CHECK(written == x + ".exr (1 channel value(s) beyond a half float's range held as +-65504; --exr-float keeps "
+                         "them), " + x + ".png and " + x + ".noisy.exr");
+    CHECK(read_exr(folder / "x.exr").at(1, 1) == Color(65504, 0.5f, 2));
+    CHECK(read_exr(folder / "x.noisy.exr").at(3, 0) == Color(0.25f));
+    std::set<std::string> files;
+    for (const auto& entry : fs::directory_iterator(folder)) files.insert(entry.path().filename().string());
+    CHECK(files == std::set<std::string>{"x.exr", "x.png", "x.noisy.exr"});
+}
+
+TEST_CASE("An EXR without R, G and B, truncated, or not OpenEXR is refused, naming the file", "[image]") {
+    const fs::path folder = temporary_folder();
+    const std::string grey = (folder / "grey.exr").string();
+    {
+        Imf::Header header(2, 2);
+        header.channels().insert("Y", Imf::Channel(Imf::HALF));
+        Imf::OutputFile file(grey.c_str(), header);  // no pixels written: the file is incomplete too
+    }
+    CHECK_THROWS_WITH(read_exr(grey), grey + ": must hold the channels R, G and B, got Y");
+    Image image(64, 64);
+    for (Color& c : image.pixels()) c = Color(0.5f);
+    write_exr(image, folder / "whole.exr", ExrChannels::kFloat);
+    const std::string bytes = read_whole_file(folder / "whole.exr");
+    const std::string truncated = (folder / "truncated.exr").string();
+    std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() - 40);
+    CHECK_THROWS_WITH(read_exr(truncated), Catch::StartsWith(truncated + ": "));
+    const std::string text = (folder / "text.exr").string();
+    std::ofstream(text) << "not an EXR file";
+    CHECK_THROWS_WITH(read_exr(text), Catch::StartsWith(text + ": must be an OpenEXR file it can read ("));
+    CHECK_THROWS_WITH(read_exr(folder / "absent.exr"),
+                      (folder / "absent.exr").string() + ": must be an OpenEXR file, got no such file");
 }
 #endif
 

@@ -1,9 +1,10 @@
-// rt_compare A B [--out d.png] [--tolerance L] [--max-differing F]: two renders (PFM or PNG) side by side.
-// Prints the error metrics of error_metrics.hpp when both are PFM, and always how the two pictures (as a PNG
-// shows them: tone-mapped, sRGB, 8 bits) differ and where (picture_compare.hpp). With --out, writes
-// A | B | the error in false colour | its colour bar, one PNG. Exit status 0 when at most a fraction F of
-// the pixels differ by more than L levels (default 0: none), 1 when more do (like cmp), 2 on bad input (an
-// --out that is A or B among it). Signals as the chapters take them (interrupt.hpp).
+// rt_compare A B [--out d.png] [--tolerance L] [--max-differing F]: two renders (PFM, EXR or PNG) side by
+// side. Prints the error metrics of error_metrics.hpp when both are radiance (PFM or EXR), and always how the
+// two pictures (as a PNG shows them: tone-mapped, sRGB, 8 bits) differ and where (picture_compare.hpp). With
+// --out, writes A | B | the error in false colour | its colour bar, one PNG (or a half-float EXR of it).
+// Exit status 0 when at most a fraction F of the pixels differ by more than L levels (default 0: none), 1
+// when more do (like cmp), 2 on bad input (an --out that is A or B among it; a broken PFM, EXR or PNG).
+// Signals as the chapters take them (interrupt.hpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -16,6 +17,7 @@
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
+#include "rt/io/exr_file.hpp"
 #include "rt/io/false_colour.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/picture_compare.hpp"
@@ -26,7 +28,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A file read as linear radiance when it is a PFM, or as the picture a PNG holds.
+// A file read as linear radiance when it is a PFM or an EXR, or as the picture a PNG holds.
 struct Input {
     std::optional<rt::Image> radiance;
     rt::Picture picture;
@@ -34,13 +36,13 @@ struct Input {
 
 Input read_input(const std::string& name) {
     const fs::path path = name;
-    if (path.extension() == ".pfm") {
-        rt::Image image = rt::read_pfm(path);
+    if (path.extension() == ".pfm" || path.extension() == ".exr") {
+        rt::Image image = rt::read_radiance(path);
         rt::Picture picture = rt::to_picture(image);
         return {std::move(image), std::move(picture)};
     }
     if (path.extension() == ".png") return {std::nullopt, rt::read_png(path)};
-    throw rt::InputError(rt::shown(path) + ": must end in .pfm or .png");
+    throw rt::InputError(rt::shown(path) + ": must end in .pfm, .exr or .png");
 }
 
 // A | B | the per-pixel error (the largest channel's, in radiance for two PFMs, else in levels of 255) scaled
@@ -75,20 +77,25 @@ void write_side_by_side(const Input& a, const Input& b, const fs::path& out, dou
         }
     }
     rt::paint_colour_bar(canvas, 3 * (w + gap), bar);
-    rt::write_png(canvas, out);
+    if (out.extension() == ".exr")
+        rt::write_exr(canvas, out, rt::ExrChannels::kHalf);
+    else
+        rt::write_png(canvas, out);
 }
 
 int compare(int argc, char** argv) {
     rt::install_interrupt_handler();
     rt::set_interrupt_phase(rt::InterruptPhase::kReading);
-    CLI::App app("Compares two renders (PFM or PNG): metrics, where their pictures differ, and A | B | error",
-                 "rt_compare");
+    CLI::App app(
+        "Compares two renders (PFM, EXR or PNG): metrics, where their pictures differ, and A | B | error",
+        "rt_compare");
     std::string a_name, b_name, out;
     int tolerance = 0;
     double max_differing = 0;
-    app.add_option("a", a_name, "The image (PFM or PNG)")->required();
-    app.add_option("b", b_name, "The reference (PFM or PNG)")->required();
-    app.add_option("--out", out, "Writes A | B | false-colour error | colour bar here (PNG)");
+    app.add_option("a", a_name, "The image (PFM, EXR or PNG)")->required();
+    app.add_option("b", b_name, "The reference (PFM, EXR or PNG)")->required();
+    app.add_option("--out", out,
+                   "Writes A | B | false-colour error | colour bar here (PNG, or a half-float EXR)");
     app.add_option("--tolerance", tolerance, "Levels (of 255) a channel may differ by")
         ->check(CLI::Range(0, 255))->capture_default_str();
     app.add_option("--max-differing", max_differing, "Fraction of the pixels that may differ (exit 1 beyond)")
@@ -101,8 +108,12 @@ int compare(int argc, char** argv) {
         throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
     if (!out.empty()) {
-        if (fs::path(out).extension() != ".png")
-            throw rt::InputError("--out: must end in .png, got " + rt::shown(out));
+        const std::string extension = fs::path(out).extension().string();
+        if (extension != ".png" && extension != ".exr")
+            throw rt::InputError("--out: must end in .png or .exr, got " + rt::shown(out));
+        if (extension == ".exr" && !rt::has_openexr())
+            throw rt::InputError("--out: " + rt::shown(out) +
+                                 ": OpenEXR files are not written by this build; name a .png");
         rt::check_outputs({{"--out", "the comparison picture", out}},
                           {{"", "image A", a_name}, {"", "image B", b_name}});
     }

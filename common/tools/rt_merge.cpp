@@ -1,7 +1,8 @@
 // rt_merge --out x.png PIECES.film...: adds the films of a render's pieces (chNN_name --samples A:B --out
 // p.png writes p.film) into the image of the whole render, bit for bit the image of one run of --spp N. The
 // pieces must be of one render and together take samples 0:N exactly once; anything else exits with 2 and
-// one line naming the offending piece. Writes x.png, x.pfm and x.film (a film of 0:N), none of them a piece.
+// one line naming the offending piece. Writes x.png, x.pfm and x.film (a film of 0:N), none of them a piece;
+// --out x.exr writes x.exr (half floats, or floats with --exr-float), x.png and x.film.
 // Signals as the chapters take them (interrupt.hpp); the texts a film holds are printed escaped.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -26,8 +27,14 @@ int merge(int argc, char** argv) {
     CLI::App app("Adds the films of a render's pieces (--samples A:B) into the image of the whole",
                  "rt_merge");
     std::string out;
+    bool exr_float = false;
     std::vector<std::string> pieces;
-    app.add_option("--out", out, "Output PNG; the PFM and the film of the whole go beside it")->required();
+    app.add_option("--out", out,
+                   "Output image: x.png (the PFM beside it) or x.exr (the PNG beside it); the film of the "
+                   "whole goes beside them")
+        ->required();
+    app.add_flag("--exr-float", exr_float,
+                 "With --out x.exr: floats (32 bits) instead of half floats (16 bits)");
     app.add_option("pieces", pieces, "The pieces' films")->required();
     try {
         app.parse(argc, argv);
@@ -36,13 +43,12 @@ int merge(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         throw rt::InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
-    const fs::path png = out;
-    if (png.extension() != ".png") throw rt::InputError("--out: must end in .png, got " + rt::shown(png));
+    const rt::ImageOutput image_out = rt::image_output(out, exr_float);
     std::vector<rt::RunFile> inputs;
     for (const std::string& piece : pieces) inputs.push_back({"", "the piece", piece});
-    rt::check_outputs({{"--out", "the merged image", png},
-                       {"--out", "the merged radiance", rt::with_suffix(png, "", ".pfm")},
-                       {"--out", "the merged film", rt::with_suffix(png, "", ".film")}},
+    rt::check_outputs({{"--out", "the merged image", image_out.picture()},
+                       {"--out", "the merged radiance", image_out.radiance()},
+                       {"--out", "the merged film", rt::with_suffix(image_out.path, "", ".film")}},
                       inputs);
     std::vector<rt::FilmPiece> films;
     for (const std::string& piece : pieces) {
@@ -55,7 +61,7 @@ int merge(int argc, char** argv) {
     const rt::Image image = whole.sums.mean_image();
     rt::check_finite(image);
     if (rt::stop_before_writing("rt_merge")) return rt::interrupted_exit_status();
-    const std::string written = rt::write_outputs(image, png, &whole);
+    const std::string written = rt::write_outputs(image, image_out, &whole);
     const rt::FilmIdentity& id = whole.identity;
     std::printf("rt_merge: %zu pieces of %s on %s, %dx%d, samples 0:%d, seed %llu: wrote %s\n", pieces.size(),
                 rt::printable(id.chapter).c_str(), rt::printable(id.scene).c_str(), id.width, id.height,

@@ -53,7 +53,7 @@ check "--reference: $scratch/ref/six.pfm: must be the size of the image, 8x4, go
 # the PNG or of the PFM beside it, a name that is not .png.
 check "--out: missing/x.png: cannot be written: folder missing does not exist" "${small[@]}" --out missing/x.png
 check "--out: out.png/x.png: cannot be written: out.png is a file, not a folder" "${small[@]}" --out out.png/x.png
-check "--out: must name a file ending in .png, with a name before the .png, got out.jpg" "${small[@]}" --out out.jpg
+check "--out: must name a file ending in .png or .exr, with a name before the extension, got out.jpg" "${small[@]}" --out out.jpg
 mkdir -p "$scratch/folders/picture.png" "$scratch/folders/other.pfm"
 check "--out: $scratch/folders/picture.png: cannot be written: it is a folder" "${small[@]}" --out "$scratch/folders/picture.png"
 check "--out: $scratch/folders/other.pfm: cannot be written: it is a folder" "${small[@]}" --out "$scratch/folders/other.png"
@@ -71,8 +71,8 @@ check "usage: --threads: $W_NUMBER, got \"2 \" (see --help)" "${small[@]}" --thr
 # A value holding a newline or an escape byte stays on one line, escaped.
 check "usage: --width: $W_NUMBER, got \"8\\n9\" (see --help)" --width $'8\n9' --quiet
 check "--out: \"x\\x1b[31m/y.png\": cannot be written: folder \"x\\x1b[31m\" does not exist" "${small[@]}" --out $'x\e[31m/y.png'
-check "--out: must name a file ending in .png, with a name before the .png, got .png" "${small[@]}" --out .png
-check "--out: must name a file ending in .png, with a name before the .png, got out/" "${small[@]}" --out out/
+check "--out: must name a file ending in .png or .exr, with a name before the extension, got .png" "${small[@]}" --out .png
+check "--out: must name a file ending in .png or .exr, with a name before the extension, got out/" "${small[@]}" --out out/
 # A symbolic link loop is named as one, not as a missing file.
 ln -s loop_b "$scratch/loop_a"
 ln -s loop_a "$scratch/loop_b"

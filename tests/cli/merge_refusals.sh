@@ -147,7 +147,7 @@ refused "a sum past what its samples reach" "$P/huge.film: pixel (0, 0) has a su
     "$P/a.film" "$P/huge.film" "$P/c.film"
 refused "a NaN flag" "$P/nan.film: pixel (0, 0) holds a NaN or infinite sample: the render that wrote it failed" \
     "$P/a.film" "$P/nan.film" "$P/c.film"
-expect_bad_input "rt_merge: --out not .png" "rt_merge: --out: must end in .png, got out.pfm" 0 -- \
+expect_bad_input "rt_merge: --out not .png" "rt_merge: --out: must name a file ending in .png or .exr, with a name before the extension, got out.pfm" 0 -- \
     "$merge" --out out.pfm "$P/a.film" "$P/b.film" "$P/c.film"
 
 

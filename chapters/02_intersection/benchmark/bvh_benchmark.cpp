@@ -290,9 +290,27 @@ std::size_t trace_engine(const Engines& en, int e, const std::vector<Ray>& rays,
     }
 }
 
-int compare_with_embree(int repeats, int ray_count, int max_exponent) {
-    const std::vector<Ray> camera_rays = make_camera_rays(512);
-    const InsideRays inside = make_inside_rays(std::size_t(ray_count), 11);
+// One mesh's rows of the build and escape tables: per engine, its build time and bytes per triangle, and how
+// many rays escaped the closed mesh (from inside, shadow rays, the leak probe).
+struct EmbreeRow {
+    double triangles, build_ms[kEngines], bytes[kEngines];
+    std::size_t escaped[3][kEngines], probe_rays;
+};
+
+// The worst ratio of the course's Mrays/s to Embree's over the table, and of their CPU times on one thread.
+struct WorstRatios {
+    double rate = kInfinity, cpu = kInfinity;
+};
+
+// A set of rays the engines trace: nearest hits, or any hit before t_max when given.
+struct RaySet {
+    const char* name;
+    const std::vector<Ray>* rays;
+    const std::vector<Real>* t_max;
+};
+
+// What the comparison measures, and the head of its first table.
+void print_embree_header(std::size_t camera_rays, int ray_count, int repeats) {
     std::printf(
         "Identical rays through the course's BVH and Embree %s, one ray at a time, on closed uv spheres of "
         "n triangles (radii jittered by 5%%): %zu camera rays (nearest hit), %d rays from inside (nearest hit), "
@@ -302,113 +320,109 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
         "run after run), each run tracing the set as many times as Embree takes %.1f s for on one thread. "
         "The course compiled for %s. Every figure of a row measured on the same cores: one thread on core %d, "
         "two threads on it and the next.\n\n",
-        embree_version(), camera_rays.size(), ray_count, ray_count, repeats, kShortestRunSeconds, kCompiledFor,
+        embree_version(), camera_rays, ray_count, ray_count, repeats, kShortestRunSeconds, kCompiledFor,
         core_of_worker(0));
     std::printf("| triangles | rays | threads |");
     for (const char* name : kEngineNames) std::printf(" %s |", name);
     std::printf(" %s | course / Embree | course / Embree, thread CPU time |\n"
                 "|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
                 kWithHitRecordName);
-    struct Row {
-        double triangles, build_ms[kEngines], bytes[kEngines];
-        std::size_t escaped[3][kEngines], probe_rays;
-    };
-    std::vector<Row> rows;
-    double worst_ratio = kInfinity, worst_cpu_ratio = kInfinity;
-    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
-        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
-        MeshShape mesh = make_uv_sphere(segments, segments / 2 + 1);
-        jitter_radii(mesh, Real(0.05), 5);
-        const Scene scene = mesh_scene(mesh);
-        const Engines engines(scene, mesh);
-        Row row{};
-        row.triangles = double(mesh.triangles.size());
-        // Build times, engine after engine, run after run.
-        std::vector<double> build[kEngines];
+}
+
+// Each engine's build time (the median of `repeats`, engine after engine, run after run) and bytes per
+// triangle.
+void measure_builds(EmbreeRow& row, const Scene& scene, const MeshShape& mesh, const Engines& engines,
+                    int repeats) {
+    std::vector<double> build[kEngines];
+    for (int r = 0; r < repeats; ++r) {
+        for (int e = 0; e < kCourseEngines; ++e)
+            build[e].push_back(median_seconds(1, [&] { const World w(scene, kOptions[e]); }));
+        build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
+        build[5].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
+    }
+    const World* worlds[kCourseEngines] = {&engines.binary, &engines.wide_single, &engines.wide_triangle_sah,
+                                           &engines.wide};
+    for (int e = 0; e < kEngines; ++e) {
+        row.build_ms[e] = median(build[e]) * 1e3;
+        const EmbreeMesh& embree = e == 4 ? engines.embree : engines.embree_robust;
+        row.bytes[e] =
+            double(e < kCourseEngines ? worlds[e]->acceleration_bytes() : embree.bytes()) / row.triangles;
+    }
+}
+
+// How many rays from inside, shadow rays and leak-probe rays each engine lets escape the closed mesh.
+void count_escapes(EmbreeRow& row, const Engines& engines, const InsideRays& inside, const MeshShape& mesh) {
+    const std::vector<Ray> probe = leak_probe_rays(mesh);
+    row.probe_rays = probe.size();
+    for (int e = 0; e < kEngines; ++e) {
+        row.escaped[0][e] = inside.nearest.size() - trace_engine(engines, e, inside.nearest, nullptr, 1);
+        row.escaped[1][e] =
+            inside.shadow.size() - trace_engine(engines, e, inside.shadow, &inside.shadow_t_max, 1);
+        row.escaped[2][e] = probe.size() - trace_engine(engines, e, probe, nullptr, 1);
+    }
+}
+
+// The rows of one ray set on one mesh, on 1 and 2 threads: every engine's Mrays/s, the course's over
+// Embree's, and on one thread the ratio of their CPU times; the worst ratios kept in `worst`.
+void time_ray_set(const Engines& engines, double triangles, const RaySet& set, int repeats,
+                  WorstRatios& worst) {
+    // Each timed run traces the set `passes` times, as many as Embree takes a fifth of a second for on
+    // one thread: a set of a few milliseconds (small meshes) is as long as the slices a busy machine
+    // gives a thread, and one wait for a core would change its time by a tenth or more.
+    const double one_pass = median_seconds(3, [&] { trace_engine(engines, 4, *set.rays, set.t_max, 1); });
+    const int passes = std::max(1, int(std::ceil(kShortestRunSeconds / one_pass)));
+    for (int threads : {1, 2}) {
+        // An any-hit query makes no hit record: its last column would time the default again.
+        const int timed = set.t_max ? kEngines : kTimed;
+        std::vector<double> seconds[kTimed], cpu_seconds[kTimed];
         for (int r = 0; r < repeats; ++r) {
-            for (int e = 0; e < kCourseEngines; ++e)
-                build[e].push_back(median_seconds(1, [&] { const World w(scene, kOptions[e]); }));
-            build[4].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, false); }));
-            build[5].push_back(median_seconds(1, [&] { const EmbreeMesh m(mesh, true); }));
-        }
-        const World* worlds[kCourseEngines] = {&engines.binary, &engines.wide_single,
-                                               &engines.wide_triangle_sah, &engines.wide};
-        for (int e = 0; e < kEngines; ++e) {
-            row.build_ms[e] = median(build[e]) * 1e3;
-            row.bytes[e] =
-                double(e < kCourseEngines ? worlds[e]->acceleration_bytes()
-                                          : (e == 4 ? engines.embree : engines.embree_robust).bytes()) /
-                row.triangles;
-        }
-        const std::vector<Ray> probe = leak_probe_rays(mesh);
-        row.probe_rays = probe.size();
-        for (int e = 0; e < kEngines; ++e) {
-            row.escaped[0][e] = inside.nearest.size() - trace_engine(engines, e, inside.nearest, nullptr, 1);
-            row.escaped[1][e] =
-                inside.shadow.size() - trace_engine(engines, e, inside.shadow, &inside.shadow_t_max, 1);
-            row.escaped[2][e] = probe.size() - trace_engine(engines, e, probe, nullptr, 1);
-        }
-        struct RaySet {
-            const char* name;
-            const std::vector<Ray>* rays;
-            const std::vector<Real>* t_max;
-        };
-        const RaySet sets[3] = {{"camera", &camera_rays, nullptr},
-                                {"from inside", &inside.nearest, nullptr},
-                                {"shadow (any hit)", &inside.shadow, &inside.shadow_t_max}};
-        for (const RaySet& set : sets) {
-            // Each timed run traces the set `passes` times, as many as Embree takes a fifth of a second for on
-            // one thread: a set of a few milliseconds (small meshes) is as long as the slices a busy machine
-            // gives a thread, and one wait for a core would change its time by a tenth or more.
-            const double one_pass = median_seconds(3, [&] { trace_engine(engines, 4, *set.rays, set.t_max, 1); });
-            const int passes = std::max(1, int(std::ceil(kShortestRunSeconds / one_pass)));
-            for (int threads : {1, 2}) {
-                // An any-hit query makes no hit record: its last column would time the default again.
-                const int timed = set.t_max ? kEngines : kTimed;
-                std::vector<double> seconds[kTimed], cpu_seconds[kTimed];
-                for (int r = 0; r < repeats; ++r) {
-                    for (int e = 0; e < timed; ++e) {
-                        const double cpu_start = thread_cpu_seconds();
-                        seconds[e].push_back(median_seconds(1, [&] {
-                            for (int pass = 0; pass < passes; ++pass)
-                                trace_engine(engines, e, *set.rays, set.t_max, threads);
-                        }));
-                        cpu_seconds[e].push_back(thread_cpu_seconds() - cpu_start);
-                    }
-                }
-                std::printf("| %.0f | %s | %d |", row.triangles, set.name, threads);
-                double rate[kTimed];
-                for (int e = 0; e < timed; ++e) {
-                    rate[e] = double(set.rays->size()) * passes / median(seconds[e]) * 1e-6;
-                    std::printf(" %.2f |", rate[e]);
-                }
-                if (timed == kEngines) std::printf(" |");
-                std::printf(" %.2f |", rate[3] / rate[4]);
-                // With one thread, this thread did all the work: the ratio of its CPU times, which waiting
-                // for a core does not change. (With two, the other thread's time is not in it.)
-                if (threads == 1) {
-                    const double cpu_ratio = median(cpu_seconds[4]) / median(cpu_seconds[3]);
-                    std::printf(" %.2f |\n", cpu_ratio);
-                    worst_cpu_ratio = std::min(worst_cpu_ratio, cpu_ratio);
-                } else {
-                    std::printf(" |\n");
-                }
-                std::fflush(stdout);
-                worst_ratio = std::min(worst_ratio, rate[3] / rate[4]);
+            for (int e = 0; e < timed; ++e) {
+                const double cpu_start = thread_cpu_seconds();
+                seconds[e].push_back(median_seconds(1, [&] {
+                    for (int pass = 0; pass < passes; ++pass)
+                        trace_engine(engines, e, *set.rays, set.t_max, threads);
+                }));
+                cpu_seconds[e].push_back(thread_cpu_seconds() - cpu_start);
             }
         }
-        rows.push_back(row);
+        std::printf("| %.0f | %s | %d |", triangles, set.name, threads);
+        double rate[kTimed];
+        for (int e = 0; e < timed; ++e) {
+            rate[e] = double(set.rays->size()) * passes / median(seconds[e]) * 1e-6;
+            std::printf(" %.2f |", rate[e]);
+        }
+        if (timed == kEngines) std::printf(" |");
+        std::printf(" %.2f |", rate[3] / rate[4]);
+        // With one thread, this thread did all the work: the ratio of its CPU times, which waiting
+        // for a core does not change. (With two, the other thread's time is not in it.)
+        if (threads == 1) {
+            const double cpu_ratio = median(cpu_seconds[4]) / median(cpu_seconds[3]);
+            std::printf(" %.2f |\n", cpu_ratio);
+            worst.cpu = std::min(worst.cpu, cpu_ratio);
+        } else {
+            std::printf(" |\n");
+        }
+        std::fflush(stdout);
+        worst.rate = std::min(worst.rate, rate[3] / rate[4]);
     }
+}
+
+// The table of build times and bytes per triangle.
+void print_build_table(const std::vector<EmbreeRow>& rows, int repeats) {
     std::printf("\nBuild (ms, median of %d, in turn) and bytes per triangle (the course: its nodes, packets and leaf "
                 "lists, beside its triangles and their records; Embree: all it allocated)\n\n| triangles |",
                 repeats);
     for (const char* name : kEngineNames) std::printf(" %s: build ms, bytes/tri |", name);
     std::printf("\n|---:|---|---|---|---|---|---|\n");
-    for (const Row& row : rows) {
+    for (const EmbreeRow& row : rows) {
         std::printf("| %.0f |", row.triangles);
         for (int e = 0; e < kEngines; ++e) std::printf(" %.1f ms, %.1f B |", row.build_ms[e], row.bytes[e]);
         std::printf("\n");
     }
+}
+
+// The table of rays that escaped; true when none escaped the course's BVH.
+bool print_escape_table(const std::vector<EmbreeRow>& rows, int ray_count) {
     std::printf("\nRays that escaped the closed mesh (from inside: %d nearest-hit and %d shadow rays; the leak "
                 "probe's rays aimed from the centroid at every vertex and at 3 points of every edge)\n\n"
                 "| triangles | rays |",
@@ -416,7 +430,7 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
     for (const char* name : kEngineNames) std::printf(" %s |", name);
     std::printf("\n|---:|---|---:|---:|---:|---:|---:|---:|\n");
     bool watertight = true;
-    for (const Row& row : rows) {
+    for (const EmbreeRow& row : rows) {
         const char* names[3] = {"from inside", "shadow (any hit)", "leak probe"};
         for (int s = 0; s < 3; ++s) {
             std::printf("| %.0f | %s%s |", row.triangles, names[s],
@@ -426,13 +440,151 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent) {
             for (int e = 0; e < kCourseEngines; ++e) watertight = watertight && row.escaped[s][e] == 0;
         }
     }
+    return watertight;
+}
+
+int compare_with_embree(int repeats, int ray_count, int max_exponent) {
+    const std::vector<Ray> camera_rays = make_camera_rays(512);
+    const InsideRays inside = make_inside_rays(std::size_t(ray_count), 11);
+    print_embree_header(camera_rays.size(), ray_count, repeats);
+    std::vector<EmbreeRow> rows;
+    WorstRatios worst;
+    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
+        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
+        MeshShape mesh = make_uv_sphere(segments, segments / 2 + 1);
+        jitter_radii(mesh, Real(0.05), 5);
+        const Scene scene = mesh_scene(mesh);
+        const Engines engines(scene, mesh);
+        EmbreeRow row{};
+        row.triangles = double(mesh.triangles.size());
+        measure_builds(row, scene, mesh, engines, repeats);
+        count_escapes(row, engines, inside, mesh);
+        const RaySet sets[3] = {{"camera", &camera_rays, nullptr},
+                                {"from inside", &inside.nearest, nullptr},
+                                {"shadow (any hit)", &inside.shadow, &inside.shadow_t_max}};
+        for (const RaySet& set : sets) time_ray_set(engines, row.triangles, set, repeats, worst);
+        rows.push_back(row);
+    }
+    print_build_table(rows, repeats);
+    const bool watertight = print_escape_table(rows, ray_count);
     std::printf("\nTargets:\n  the course's Mrays/s / Embree's, worst over the table: %.2f (target >= 0.5): %s\n",
-                worst_ratio, worst_ratio >= 0.5 ? "met" : "NOT MET");
-    std::printf("  (the same on one thread's CPU time, worst over the one-thread rows: %.2f)\n", worst_cpu_ratio);
+                worst.rate, worst.rate >= 0.5 ? "met" : "NOT MET");
+    std::printf("  (the same on one thread's CPU time, worst over the one-thread rows: %.2f)\n", worst.cpu);
     std::printf("  rays escaping the course's BVH: %s\n", watertight ? "none (met)" : "SOME (NOT MET)");
-    return worst_ratio >= 0.5 && watertight ? 0 : 1;
+    return worst.rate >= 0.5 && watertight ? 0 : 1;
 }
 #endif
+
+// The figures of one mesh size that the targets are judged on.
+struct SizeFigures {
+    double triangles, build, bytes, all_bytes, camera_1, random_1;
+};
+
+// One row of the table, a uv sphere of about 10^exponent triangles: its build, bytes, and rays per second of
+// each kind on 1 thread and on every core, brute force beside the BVH; printed, and written to `csv` if open.
+SizeFigures measure_size(int exponent, const std::vector<Ray>& camera_rays,
+                         const std::vector<Ray>& random_rays, int cores, int repeats, std::ofstream& csv) {
+    // A uv sphere with s segments and s/2 + 1 rings has s² triangles.
+    const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
+    const Scene scene = mesh_scene(make_uv_sphere(segments, segments / 2 + 1));
+    const double triangles = double(segments) * double(segments);
+    const double build = median_seconds(repeats, [&] { const World world(scene); });
+    const World world(scene);
+    const double bytes = double(world.bvh().bytes()) / triangles;
+    const double all_bytes = double(world.acceleration_bytes()) / triangles;
+    const double camera_1 = mrays_per_second(world, camera_rays, false, 1, repeats);
+    const double camera_n = mrays_per_second(world, camera_rays, false, cores, repeats);
+    const double random_1 = mrays_per_second(world, random_rays, false, 1, repeats);
+    const double random_n = mrays_per_second(world, random_rays, false, cores, repeats);
+    const double any_1 = mrays_per_second(world, random_rays, true, 1, repeats);
+    const double any_n = mrays_per_second(world, random_rays, true, cores, repeats);
+    // Brute force tests every triangle: about 2·10^7 triangle tests per measurement.
+    const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
+    const std::size_t brute_rays = std::max<std::size_t>(16, std::size_t(2e7 / triangles));
+    const std::vector<Ray> few(
+        random_rays.begin(), random_rays.begin() + std::ptrdiff_t(std::min(brute_rays, random_rays.size())));
+    const double brute_1 = mrays_per_second(brute, few, false, 1, repeats);
+    const double brute_n = mrays_per_second(brute, few, false, cores, repeats);
+    const double brute_any_1 = mrays_per_second(brute, few, true, 1, repeats);
+    const MeanTests tests = mean_tests(world, random_rays);
+    std::printf(
+        "| %.0f | %.1f | %.2f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | "
+        "%.0f× | "
+        "%.1f + %.1f |\n",
+        triangles, build * 1e3, build / triangles * 1e6, bytes, all_bytes, camera_1, camera_n, random_1, random_n,
+        any_1, any_n, brute_1, brute_n, brute_any_1, random_1 / brute_1, tests.boxes, tests.primitives);
+    std::fflush(stdout);
+    if (csv) {
+        csv << triangles << ',' << build * 1e3 << ',' << bytes << ',' << camera_1 << ',' << camera_n << ','
+            << random_1 << ',' << random_n << ',' << any_1 << ',' << brute_1 << ',' << tests.boxes << ','
+            << tests.primitives << ',' << any_n << ',' << brute_n << ',' << brute_any_1 << '\n';
+    }
+    return {triangles, build, bytes, all_bytes, camera_1, random_1};
+}
+
+// What the targets are judged on, over every size: the time per ray at the smallest and the largest, the
+// slowest build per million triangles (from 10^5 on), the most bytes per triangle.
+struct TargetFigures {
+    double camera_smallest = 0, camera_largest = 0, random_smallest = 0, random_largest = 0;
+    double worst_build_per_million = 0, worst_bytes = 0, worst_all_bytes = 0;
+
+    void add(int exponent, const SizeFigures& f) {
+        if (exponent == 3) {
+            camera_smallest = 1 / f.camera_1;
+            random_smallest = 1 / f.random_1;
+        }
+        camera_largest = 1 / f.camera_1;
+        random_largest = 1 / f.random_1;
+        // Builds of less than 10^5 triangles take a few milliseconds: too short to time on a busy machine.
+        if (f.triangles >= 1e5)
+            worst_build_per_million = std::max(worst_build_per_million, f.build / f.triangles * 1e6);
+        worst_bytes = std::max(worst_bytes, f.bytes);
+        worst_all_bytes = std::max(worst_all_bytes, f.all_bytes);
+    }
+};
+
+// The cost of watertightness: the same BVH, the same rays, the two triangle tests.
+void print_triangle_test_cost(const std::vector<Ray>& random_rays, int repeats) {
+    const Scene scene = mesh_scene(make_uv_sphere(316, 159));
+    const World watertight(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
+    const World moller(scene, {TriangleTest::kMollerTrumbore, Acceleration::kBvh});
+    const double watertight_rate = mrays_per_second(watertight, random_rays, false, 1, repeats);
+    const double moller_rate = mrays_per_second(moller, random_rays, false, 1, repeats);
+    std::printf(
+        "\nTriangle test on 99856 triangles, random rays, nearest hit, 1 thread: watertight %.2f Mrays/s, "
+        "Möller–Trumbore %.2f Mrays/s: watertight takes %.2f× the time\n",
+        watertight_rate, moller_rate, moller_rate / watertight_rate);
+}
+
+// Prints the lesson's three targets and whether each was met; the exit status: 0 when all were.
+int print_targets(const TargetFigures& t, int max_exponent) {
+    const double camera_growth = t.camera_largest / t.camera_smallest;
+    const double random_growth = t.random_largest / t.random_smallest;
+    // A target is judged only where it was measured: the growth target is set for 10^6 triangles, and build
+    // times are timed from 10^5 triangles on. A smaller run says so rather than "met".
+    const bool growth_measured = max_exponent >= 6, build_measured = max_exponent >= 5;
+    const bool growth_ok = !growth_measured || camera_growth <= 3;
+    const bool build_ok = !build_measured || t.worst_build_per_million < 1, bytes_ok = t.worst_bytes <= 64;
+    auto verdict = [](bool measured, bool ok) { return !measured ? "not judged" : ok ? "met" : "NOT MET"; };
+    std::printf("\nTargets:\n");
+    std::printf("  time per camera ray at 10^%d triangles / at 10^3: %.2f (target <= 3 at 10^6): %s%s\n",
+                max_exponent, camera_growth, verdict(growth_measured, growth_ok),
+                growth_measured ? "" : " (run with --max-exponent 6 or more)");
+    std::printf("  (random rays, for comparison: %.2f; they miss the caches at every level of the tree)\n",
+                random_growth);
+    if (build_measured) {
+        std::printf("  build time per million triangles (10^5 and more), up to two threads: %.2f s (target < 1 s): %s\n",
+                    t.worst_build_per_million, verdict(true, build_ok));
+    } else {
+        std::printf("  build time per million triangles (target < 1 s): not measured (builds are timed from 10^5 "
+                    "triangles on: run with --max-exponent 5 or more)\n");
+    }
+    std::printf("  BVH bytes per triangle, the binary tree as built: %.1f (target <= 64): %s\n", t.worst_bytes,
+                verdict(true, bytes_ok));
+    std::printf("  (with the wide tree, the triangle packets and the leaf lists it is traced through: %.1f)\n",
+                t.worst_all_bytes);
+    return growth_ok && build_ok && bytes_ok ? 0 : 1;
+}
 
 }  // namespace
 
@@ -492,93 +644,9 @@ int main(int argc, char** argv) {
         "BVH speed-up | boxes + primitives per random ray |\n",
         cores, cores, cores, cores);
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    double camera_smallest = 0, camera_largest = 0, random_smallest = 0, random_largest = 0;
-    double worst_build_per_million = 0, worst_bytes = 0, worst_all_bytes = 0;
-    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
-        // A uv sphere with s segments and s/2 + 1 rings has s² triangles.
-        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
-        const Scene scene = mesh_scene(make_uv_sphere(segments, segments / 2 + 1));
-        const double triangles = double(segments) * double(segments);
-        const double build = median_seconds(repeats, [&] { const World world(scene); });
-        const World world(scene);
-        const double bytes = double(world.bvh().bytes()) / triangles;
-        const double all_bytes = double(world.acceleration_bytes()) / triangles;
-        const double camera_1 = mrays_per_second(world, camera_rays, false, 1, repeats);
-        const double camera_n = mrays_per_second(world, camera_rays, false, cores, repeats);
-        const double random_1 = mrays_per_second(world, random_rays, false, 1, repeats);
-        const double random_n = mrays_per_second(world, random_rays, false, cores, repeats);
-        const double any_1 = mrays_per_second(world, random_rays, true, 1, repeats);
-        const double any_n = mrays_per_second(world, random_rays, true, cores, repeats);
-        // Brute force tests every triangle: about 2·10^7 triangle tests per measurement.
-        const World brute(scene, {TriangleTest::kWatertight, Acceleration::kNone});
-        const std::size_t brute_rays = std::max<std::size_t>(16, std::size_t(2e7 / triangles));
-        const std::vector<Ray> few(
-            random_rays.begin(),
-            random_rays.begin() + std::ptrdiff_t(std::min(brute_rays, random_rays.size())));
-        const double brute_1 = mrays_per_second(brute, few, false, 1, repeats);
-        const double brute_n = mrays_per_second(brute, few, false, cores, repeats);
-        const double brute_any_1 = mrays_per_second(brute, few, true, 1, repeats);
-        const MeanTests tests = mean_tests(world, random_rays);
-        std::printf(
-            "| %.0f | %.1f | %.2f | %.1f | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | "
-            "%.0f× | "
-            "%.1f + %.1f |\n",
-            triangles, build * 1e3, build / triangles * 1e6, bytes, all_bytes, camera_1, camera_n, random_1, random_n,
-            any_1, any_n, brute_1, brute_n, brute_any_1, random_1 / brute_1, tests.boxes, tests.primitives);
-        std::fflush(stdout);
-        if (csv) {
-            csv << triangles << ',' << build * 1e3 << ',' << bytes << ',' << camera_1 << ',' << camera_n
-                << ',' << random_1 << ',' << random_n << ',' << any_1 << ',' << brute_1 << ',' << tests.boxes
-                << ',' << tests.primitives << ',' << any_n << ',' << brute_n << ',' << brute_any_1 << '\n';
-        }
-        if (exponent == 3) {
-            camera_smallest = 1 / camera_1;
-            random_smallest = 1 / random_1;
-        }
-        camera_largest = 1 / camera_1;
-        random_largest = 1 / random_1;
-        // Builds of less than 10^5 triangles take a few milliseconds: too short to time on a busy machine.
-        if (triangles >= 1e5)
-            worst_build_per_million = std::max(worst_build_per_million, build / triangles * 1e6);
-        worst_bytes = std::max(worst_bytes, bytes);
-        worst_all_bytes = std::max(worst_all_bytes, all_bytes);
-    }
-
-    // The cost of watertightness: the same BVH, the same rays, the two triangle tests.
-    const Scene scene = mesh_scene(make_uv_sphere(316, 159));
-    const World watertight(scene, {TriangleTest::kWatertight, Acceleration::kBvh});
-    const World moller(scene, {TriangleTest::kMollerTrumbore, Acceleration::kBvh});
-    const double watertight_rate = mrays_per_second(watertight, random_rays, false, 1, repeats);
-    const double moller_rate = mrays_per_second(moller, random_rays, false, 1, repeats);
-    std::printf(
-        "\nTriangle test on 99856 triangles, random rays, nearest hit, 1 thread: watertight %.2f Mrays/s, "
-        "Möller–Trumbore %.2f Mrays/s: watertight takes %.2f× the time\n",
-        watertight_rate, moller_rate, moller_rate / watertight_rate);
-
-    const double camera_growth = camera_largest / camera_smallest;
-    const double random_growth = random_largest / random_smallest;
-    // A target is judged only where it was measured: the growth target is set for 10^6 triangles, and build
-    // times are timed from 10^5 triangles on. A smaller run says so rather than "met".
-    const bool growth_measured = max_exponent >= 6, build_measured = max_exponent >= 5;
-    const bool growth_ok = !growth_measured || camera_growth <= 3;
-    const bool build_ok = !build_measured || worst_build_per_million < 1, bytes_ok = worst_bytes <= 64;
-    auto verdict = [](bool measured, bool ok) { return !measured ? "not judged" : ok ? "met" : "NOT MET"; };
-    std::printf("\nTargets:\n");
-    std::printf("  time per camera ray at 10^%d triangles / at 10^3: %.2f (target <= 3 at 10^6): %s%s\n",
-                max_exponent, camera_growth, verdict(growth_measured, growth_ok),
-                growth_measured ? "" : " (run with --max-exponent 6 or more)");
-    std::printf("  (random rays, for comparison: %.2f; they miss the caches at every level of the tree)\n",
-                random_growth);
-    if (build_measured) {
-        std::printf("  build time per million triangles (10^5 and more), up to two threads: %.2f s (target < 1 s): %s\n",
-                    worst_build_per_million, verdict(true, build_ok));
-    } else {
-        std::printf("  build time per million triangles (target < 1 s): not measured (builds are timed from 10^5 "
-                    "triangles on: run with --max-exponent 5 or more)\n");
-    }
-    std::printf("  BVH bytes per triangle, the binary tree as built: %.1f (target <= 64): %s\n", worst_bytes,
-                verdict(true, bytes_ok));
-    std::printf("  (with the wide tree, the triangle packets and the leaf lists it is traced through: %.1f)\n",
-                worst_all_bytes);
-    return growth_ok && build_ok && bytes_ok ? 0 : 1;
+    TargetFigures targets;
+    for (int exponent = 3; exponent <= max_exponent; ++exponent)
+        targets.add(exponent, measure_size(exponent, camera_rays, random_rays, cores, repeats, csv));
+    print_triangle_test_cost(random_rays, repeats);
+    return print_targets(targets, max_exponent);
 }

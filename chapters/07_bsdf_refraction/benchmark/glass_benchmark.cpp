@@ -93,19 +93,8 @@ int main(int argc, char** argv) {
 
 namespace {
 
-void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
-         double target, const std::string& cache, bool speed_only, const std::string& conv_scene) {
-    const Scene cornell = load_scene(scene_path("cornell.json"));
-    RenderSettings settings;
-    settings.width = settings.height = size;
-    settings.samples_per_pixel = spp;
-    settings.seed = 1;
-    settings.threads = threads;
-    settings.progress = ProgressStyle::kNone;
-    std::printf("ch07_benchmark: %dx%d, %d spp, %d threads, median of %d\n", size, size, spp, threads,
-                repeats);
-
-    // 1. Samples per second on the glass Cornell box.
+// 1. Samples per second on the glass Cornell box.
+void measure_speed(const Scene& cornell, const RenderSettings& settings, int repeats) {
     // Processor time (every thread of this process) as well as wall-clock time: on a shared machine the
     // samples per processor-second times the thread count is what the threads would give with the cores to
     // themselves.
@@ -121,11 +110,13 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
         "glass Cornell box (cornell.json): %.3g samples/s (median; min %.3g, max %.3g); %.3g samples "
         "per processor-second, x %d threads = %.3g\n",
         median(rates), *std::min_element(rates.begin(), rates.end()),
-        *std::max_element(rates.begin(), rates.end()), median(cpu_rates), threads,
-        median(cpu_rates) * threads);
-    if (speed_only) return;
+        *std::max_element(rates.begin(), rates.end()), median(cpu_rates), settings.threads,
+        median(cpu_rates) * settings.threads);
+}
 
-    // 2. Only the effects a scene calls for.
+// 2. Only the effects a scene calls for: chapter 07 against chapter 04, and against chapter 06.
+void measure_effects_cost(const Scene& cornell, const RenderSettings& settings, int repeats) {
+    const int size = settings.width;
     Scene direct_only = cornell;
     direct_only.effects = EffectSet{Effect::kShadows, Effect::kDirect};
     const Scene no_glass = load_scene(scene_path("ch06_default.json"));
@@ -158,8 +149,11 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
                     median(ours) / median(theirs),
                     std::string(to_string(choose_renderer(simulated))).c_str());
     }
+}
 
-    // 3. Time to the target relative MSE.
+// 3. Time to the target relative MSE, for each sampling strategy.
+void measure_time_to_target(const RenderSettings& settings, int conv_size, int reference_spp, int max_spp,
+                            double target, const std::string& cache, const std::string& conv_scene) {
     const Scene converging = load_scene(scene_path(conv_scene.c_str()));
     RenderSettings conv = settings;
     conv.width = conv.height = conv_size;
@@ -191,6 +185,23 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
             if (rel < 4 * target) break;
         }
     }
+}
+
+void run(int size, int spp, int repeats, int threads, int conv_size, int reference_spp, int max_spp,
+         double target, const std::string& cache, bool speed_only, const std::string& conv_scene) {
+    const Scene cornell = load_scene(scene_path("cornell.json"));
+    RenderSettings settings;
+    settings.width = settings.height = size;
+    settings.samples_per_pixel = spp;
+    settings.seed = 1;
+    settings.threads = threads;
+    settings.progress = ProgressStyle::kNone;
+    std::printf("ch07_benchmark: %dx%d, %d spp, %d threads, median of %d\n", size, size, spp, threads,
+                repeats);
+    measure_speed(cornell, settings, repeats);
+    if (speed_only) return;
+    measure_effects_cost(cornell, settings, repeats);
+    measure_time_to_target(settings, conv_size, reference_spp, max_spp, target, cache, conv_scene);
 }
 
 }  // namespace

@@ -68,6 +68,88 @@ std::string load_average() {
     return s.substr(0, s.find(' '));
 }
 
+// Chapter 07's paths with each sampler, then the combined tracer with each sampler, K and R.
+std::vector<Strategy> make_strategies(const Scene& scene, EffectSet simulated,
+                                      const std::vector<std::string>& samplers,
+                                      const std::vector<int>& caustic_bounces,
+                                      const std::vector<double>& light_paths) {
+    std::vector<Strategy> strategies;
+    for (const std::string& sampler : samplers) {
+        PathOptions options;
+        options.sampler = from_string<PointSet>(sampler);
+        strategies.push_back({"paths, " + sampler, [&scene, simulated, options](const RenderSettings& s) {
+                                  return render_with(Renderer::kPaths, scene, simulated, s, options);
+                              }});
+    }
+    for (const std::string& sampler : samplers) {
+        for (int bounces : caustic_bounces) {
+            for (double ratio : light_paths) {
+                CombinedOptions options;
+                options.paths.sampler = from_string<PointSet>(sampler);
+                options.caustic_bounces = bounces;
+                options.light_paths_per_sample = Real(ratio);
+                char name[96];
+                std::snprintf(name, sizeof name, "combined, %s, K %d, R %g", sampler.c_str(), bounces, ratio);
+                strategies.push_back({name, [&scene, simulated, options](const RenderSettings& s) {
+                                          return render_combined(scene, simulated, s, options).render;
+                                      }});
+            }
+        }
+    }
+    return strategies;
+}
+
+// What a measurement of the strategies needs: the reference, its noise, the spp and the stopping rules.
+struct Measurement {
+    const Image& reference;
+    double noise;
+    int first_spp, repeats;
+    double target, max_seconds;
+};
+
+// Every strategy at doubling spp, in turn, --repeats renders each: the median seconds and mean relative MSE
+// (less the reference's noise) of each, printed as measured, until the target or --max-seconds stops it.
+void measure(std::vector<Strategy>& strategies, RenderSettings& settings, const Measurement& m) {
+    std::printf("\n%-40s %6s %10s %12s\n", "strategy", "spp", "seconds", "rel. MSE");
+    for (int spp = m.first_spp; spp <= (1 << 16); spp *= 2) {
+        bool any = false;
+        for (Strategy& strategy : strategies) {
+            if (strategy.done) continue;
+            any = true;
+            std::vector<double> seconds, errors;
+            for (int rep = 0; rep < m.repeats; ++rep) {
+                settings.samples_per_pixel = spp;
+                settings.seed = std::uint64_t(7 + rep);
+                const RenderResult result = strategy.render(settings);
+                seconds.push_back(result.seconds);
+                errors.push_back(std::max(0.0, compare(result.image, m.reference).relative_mse - m.noise));
+            }
+            const double t = median(seconds);
+            const double e = std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
+            strategy.seconds.push_back(t);
+            strategy.relative_mse.push_back(e);
+            std::printf("%-40s %6d %10.2f %12.4e\n", strategy.name.c_str(), spp, t, e);
+            std::fflush(stdout);
+            strategy.done = e <= m.target || t > m.max_seconds;
+        }
+        if (!any) break;
+    }
+}
+
+// Each strategy's time to the target relative MSE and its convergence rate.
+void print_times_to_target(const std::vector<Strategy>& strategies, double target, int first_spp) {
+    std::printf("\n%-40s %22s %22s\n", "strategy", "time to target", "rate: rel. MSE ~ spp^k");
+    for (const Strategy& strategy : strategies) {
+        // time_to_rmse works on RMSE-like values: the square root of the relative MSE.
+        std::vector<double> root(strategy.relative_mse.size());
+        for (std::size_t i = 0; i < root.size(); ++i) root[i] = std::sqrt(strategy.relative_mse[i]);
+        const double t = time_to_rmse(strategy.seconds, root, std::sqrt(target));
+        const bool bracketed = strategy.relative_mse.front() >= target && strategy.relative_mse.back() <= target;
+        std::printf("%-40s %10.1f s%-15s k = %.2f\n", strategy.name.c_str(), t, bracketed ? "" : " (extrapolated)",
+                    convergence_rate(strategy.relative_mse, first_spp));
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -102,75 +184,17 @@ int main(int argc, char** argv) {
 
     try {
         SceneBenchmark box(size, threads, reference_spp, cache);
-        const Scene& scene = box.scene;
-        const EffectSet simulated = box.simulated;
-        RenderSettings& settings = box.settings;
-        const Image& r = box.reference.image;
         const double noise = box.reference.noise;
         std::printf(
             "ch08_time_to_error: cornell.json %dx%d, %d threads, %d repeats; reference %d spp of chapter 07 "
             "(its relative MSE %.2e, subtracted); target relative MSE %.1e; load %s\n",
             size, size, threads, repeats, reference_spp, noise, target, load_average().c_str());
 
-        std::vector<Strategy> strategies;
-        for (const std::string& sampler : samplers) {
-            PathOptions options;
-            options.sampler = from_string<PointSet>(sampler);
-            strategies.push_back({"paths, " + sampler, [&scene, simulated, options](const RenderSettings& s) {
-                                      return render_with(Renderer::kPaths, scene, simulated, s, options);
-                                  }});
-        }
-        for (const std::string& sampler : samplers) {
-            for (int bounces : caustic_bounces) {
-                for (double ratio : light_paths) {
-                    CombinedOptions options;
-                    options.paths.sampler = from_string<PointSet>(sampler);
-                    options.caustic_bounces = bounces;
-                    options.light_paths_per_sample = Real(ratio);
-                    char name[96];
-                    std::snprintf(name, sizeof name, "combined, %s, K %d, R %g", sampler.c_str(), bounces, ratio);
-                    strategies.push_back({name, [&scene, simulated, options](const RenderSettings& s) {
-                                              return render_combined(scene, simulated, s, options).render;
-                                          }});
-                }
-            }
-        }
-
-        std::printf("\n%-40s %6s %10s %12s\n", "strategy", "spp", "seconds", "rel. MSE");
-        for (int spp = first_spp; spp <= (1 << 16); spp *= 2) {
-            bool any = false;
-            for (Strategy& strategy : strategies) {
-                if (strategy.done) continue;
-                any = true;
-                std::vector<double> seconds, errors;
-                for (int rep = 0; rep < repeats; ++rep) {
-                    settings.samples_per_pixel = spp;
-                    settings.seed = std::uint64_t(7 + rep);
-                    const RenderResult result = strategy.render(settings);
-                    seconds.push_back(result.seconds);
-                    errors.push_back(std::max(0.0, compare(result.image, r).relative_mse - noise));
-                }
-                const double t = median(seconds);
-                const double e = std::accumulate(errors.begin(), errors.end(), 0.0) / double(errors.size());
-                strategy.seconds.push_back(t);
-                strategy.relative_mse.push_back(e);
-                std::printf("%-40s %6d %10.2f %12.4e\n", strategy.name.c_str(), spp, t, e);
-                std::fflush(stdout);
-                strategy.done = e <= target || t > max_seconds;
-            }
-            if (!any) break;
-        }
-
-        std::printf("\n%-40s %22s %22s\n", "strategy", "time to target", "rate: rel. MSE ~ spp^k");
-        for (const Strategy& strategy : strategies) {
-            // time_to_rmse works on RMSE-like values: the square root of the relative MSE.
-            std::vector<double> root(strategy.relative_mse.size());
-            for (std::size_t i = 0; i < root.size(); ++i) root[i] = std::sqrt(strategy.relative_mse[i]);
-            const double t = time_to_rmse(strategy.seconds, root, std::sqrt(target));
-            const bool bracketed = strategy.relative_mse.front() >= target && strategy.relative_mse.back() <= target;
-            std::printf("%-40s %10.1f s%-15s k = %.2f\n", strategy.name.c_str(), t, bracketed ? "" : " (extrapolated)",
-                        convergence_rate(strategy.relative_mse, first_spp));
-        }
+        std::vector<Strategy> strategies =
+            make_strategies(box.scene, box.simulated, samplers, caustic_bounces, light_paths);
+        measure(strategies, box.settings,
+                Measurement{box.reference.image, noise, first_spp, repeats, target, max_seconds});
+        print_times_to_target(strategies, target, first_spp);
         std::printf("load %s\n", load_average().c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ch08_time_to_error: %s\n", e.what());

@@ -7,13 +7,9 @@
 #include <memory>
 #include <string>
 
-#ifdef RT_HAVE_OPENEXR
-#include <ImfArray.h>
-#include <ImfRgbaFile.h>
-#endif
-
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
+#include "rt/io/exr_file.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/input_file.hpp"
 
@@ -104,43 +100,7 @@ Image read_hdr(const std::filesystem::path& path, const std::string& name) {
     return image;
 }
 
-#ifdef RT_HAVE_OPENEXR
-Image read_exr(const std::filesystem::path& path, const std::string& name) {
-    try {
-        Imf::RgbaInputFile file(path.c_str());
-        const Imath::Box2i window = file.dataWindow();
-        const long long width = (long long)(window.max.x) - window.min.x + 1;
-        const long long height = (long long)(window.max.y) - window.min.y + 1;
-        check_image_size(width, height);
-        Imf::Array2D<Imf::Rgba> pixels(height, width);
-        file.setFrameBuffer(&pixels[0][0] - window.min.x - window.min.y * width, 1, std::size_t(width));
-        file.readPixels(window.min.y, window.max.y);
-        Image image{int(width), int(height)};
-        for (int y = 0; y < image.height(); ++y) {
-            for (int x = 0; x < image.width(); ++x) {
-                const Imf::Rgba& p = pixels[y][x];
-                image.at(x, y) = Color(float(p.r), float(p.g), float(p.b));
-                check_pixel(name, image, x, y);
-            }
-        }
-        return image;
-    } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
-    } catch (const std::exception& e) {
-        throw InputError(name + ": must be an OpenEXR file it can read (" + printable(e.what()) + ")");
-    }
-}
-#endif
-
 }  // namespace
-
-bool reads_openexr() {
-#ifdef RT_HAVE_OPENEXR
-    return true;
-#else
-    return false;
-#endif
-}
 
 Image read_environment_image(const std::filesystem::path& path) {
     const std::string name = shown(path);
@@ -152,12 +112,11 @@ Image read_environment_image(const std::filesystem::path& path) {
     check_regular_file(path, "an environment image");
     if (extension == ".pfm") return read_pfm(path, PfmPixels::kRadiance);
     if (extension == ".hdr") return read_hdr(path, name);
-#ifdef RT_HAVE_OPENEXR
-    return read_exr(path, name);
-#else
-    throw InputError(name + ": OpenEXR images are not read by this build (install libopenexr-dev and "
-                            "configure again), or convert it to .hdr or .pfm");
-#endif
+    if (!has_openexr()) {
+        throw InputError(name + ": OpenEXR images are not read by this build (install libopenexr-dev and "
+                                "configure again), or convert it to .hdr or .pfm");
+    }
+    return read_exr(path, PfmPixels::kRadiance);
 }
 
 }  // namespace rt

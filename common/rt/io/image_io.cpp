@@ -131,37 +131,36 @@ std::string show_number(double x) {
     return text;
 }
 
-}  // namespace
-
-Image read_pfm(const fs::path& path, PfmPixels pixels) {
-    const std::string name = shown(path);
-    std::error_code ec;
-    check_regular_file(path, "a PFM file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(name + ": cannot be opened for reading");
-    std::string magic;
+// A PFM's header: "PF", the width and height, the scale (its sign the byte order), one whitespace byte.
+struct PfmHeader {
     long long width = 0, height = 0;
     double scale = 0;
+};
+
+PfmHeader read_pfm_header(std::istream& in, const std::string& name) {
+    std::string magic;
+    PfmHeader h;
     in.width(3);  // the magic is "PF"; read no more than that of whatever else the file holds
-    in >> magic >> width >> height >> scale;
+    in >> magic >> h.width >> h.height >> h.scale;
     if (magic != "PF") {
         std::string shown;
         for (char c : magic) shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
         throw InputError(name + ": must be a colour PFM file starting with \"PF\", got \"" + shown + "\"");
     }
-    if (!in || width <= 0 || height <= 0 || width > kMaxImageSide || height > kMaxImageSide || scale == 0 ||
-        !std::isfinite(scale)) {
+    if (!in || h.width <= 0 || h.height <= 0 || h.width > kMaxImageSide || h.height > kMaxImageSide ||
+        h.scale == 0 || !std::isfinite(h.scale)) {
         throw InputError(name + ": PFM header must give a width and height in [1, " +
                          std::to_string(kMaxImageSide) + "] and a non-zero scale, got " +
-                         std::to_string(width) + " " + std::to_string(height) + " " + show_number(scale));
+                         std::to_string(h.width) + " " + std::to_string(h.height) + " " +
+                         show_number(h.scale));
     }
     // The scale's sign gives the byte order; its magnitude, a unit for the pixels, is not read: one other
     // than 1 is refused, not ignored.
-    if (std::abs(scale) != 1) {
+    if (std::abs(h.scale) != 1) {
         throw InputError(name +
                          ": PFM header's scale must be 1 or -1 (its sign gives the byte order; no other "
                          "magnitude is read), got " +
-                         show_number(scale));
+                         show_number(h.scale));
     }
     // One whitespace byte ends the header; a CRLF line end would shift every pixel by a byte.
     const int after_scale = in.get();
@@ -173,25 +172,35 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
     if (!std::isspace(after_scale)) {
         throw InputError(name + ": PFM header must end in one whitespace byte before the pixels");
     }
-    // The data must all be there before the image is allocated: a short file with a huge header is refused.
-    const auto data_start = in.tellg();
+    return h;
+}
+
+// The data must all be there before the image is allocated: a short file with a huge header is refused, and
+// so is a size beyond this machine's memory or this process's limit.
+void check_pfm_data_size(const fs::path& path, const std::string& name, const PfmHeader& h,
+                         std::streamoff data_start) {
+    std::error_code ec;
     const auto file_size = fs::file_size(path, ec);
-    const unsigned long long needed = (unsigned long long)(width) * (unsigned long long)(height)*12ull;
+    const unsigned long long needed = (unsigned long long)(h.width) * (unsigned long long)(h.height) * 12ull;
     if (ec || data_start < 0 || file_size < (unsigned long long)(data_start) + needed) {
         throw InputError(
-            name + ": PFM data must be " + std::to_string(needed) + " bytes for " + std::to_string(width) +
-            "x" + std::to_string(height) + ", got " +
+            name + ": PFM data must be " + std::to_string(needed) + " bytes for " + std::to_string(h.width) +
+            "x" + std::to_string(h.height) + ", got " +
             std::to_string(ec || data_start < 0 ? 0 : file_size - (unsigned long long)(data_start)) +
             " (truncated)");
     }
     try {
-        check_image_size(width, height);  // within this machine's memory and this process's limit
+        check_image_size(h.width, h.height);
     } catch (const InputError& e) {
         throw InputError(name + ": " + e.what());
     }
-    const bool file_little_endian = scale < 0;
+}
+
+// The float RGB rows, from the bottom up, each pixel checked as it is read.
+Image read_pfm_pixels(std::istream& in, const std::string& name, const PfmHeader& h, PfmPixels pixels) {
+    const bool file_little_endian = h.scale < 0;
     const bool swap = file_little_endian != (std::endian::native == std::endian::little);
-    Image image{int(width), int(height)};
+    Image image{int(h.width), int(h.height)};
     for (int y = image.height() - 1; y >= 0; --y) {
         for (int x = 0; x < image.width(); ++x) {
             float rgb[3];
@@ -206,16 +215,32 @@ Image read_pfm(const fs::path& path, PfmPixels pixels) {
                 }
             }
             const Color c(rgb[0], rgb[1], rgb[2]);
-            const bool radiance = pixels == PfmPixels::kRadiance;
-            if (!is_finite(c) || (radiance && (c.r < 0 || c.g < 0 || c.b < 0))) {
-                throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                 ") must be " + (radiance ? "finite radiance, >= 0" : "finite") + ", got " +
-                                 show_number(c.r) + " " + show_number(c.g) + " " + show_number(c.b));
-            }
+            check_read_pixel(name, c, x, y, pixels);
             image.at(x, y) = c;
         }
     }
     return image;
+}
+
+}  // namespace
+
+void check_read_pixel(const std::string& name, const Color& c, int x, int y, PfmPixels pixels) {
+    const bool radiance = pixels == PfmPixels::kRadiance;
+    if (!is_finite(c) || (radiance && (c.r < 0 || c.g < 0 || c.b < 0))) {
+        throw InputError(name + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") must be " +
+                         (radiance ? "finite radiance, >= 0" : "finite") + ", got " + show_number(c.r) + " " +
+                         show_number(c.g) + " " + show_number(c.b));
+    }
+}
+
+Image read_pfm(const fs::path& path, PfmPixels pixels) {
+    const std::string name = shown(path);
+    check_regular_file(path, "a PFM file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(name + ": cannot be opened for reading");
+    const PfmHeader header = read_pfm_header(in, name);
+    check_pfm_data_size(path, name, header, in.tellg());
+    return read_pfm_pixels(in, name, header, pixels);
 }
 
 }  // namespace rt

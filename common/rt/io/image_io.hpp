@@ -35,6 +35,9 @@ enum class PfmPixels { kFinite, kRadiance };
 // Reads a colour PFM ("PF"), either byte order, scale 1 (its magnitude, a unit for the pixels, is taken by no
 // reader of the course: another is refused). Throws InputError naming the file and what is wrong.
 Image read_pfm(const std::filesystem::path& path, PfmPixels pixels = PfmPixels::kFinite);
+// Throws InputError "NAME: pixel (X, Y) must be finite, got R G B" (or "finite radiance, >= 0") when `c`
+// is not what `pixels` accepts: the rule of every reader of radiance images (PFM, OpenEXR).
+void check_read_pixel(const std::string& name, const Color& c, int x, int y, PfmPixels pixels);
 
 // Checks before rendering that `path` can be written: it is not a folder, and its folder exists, is a folder
 // and takes the staging file a write would use (created there and removed). Throws InputError naming why.

@@ -12,6 +12,7 @@
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/exr_file.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/output_files.hpp"
 #include "rt/io/picture_compare.hpp"
@@ -33,8 +34,12 @@ void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
     const std::string executable = chapter.executable;
     app.add_option("--scene", o.scene,
                    "Scene file (JSON), or the name of one in assets/scenes/; default: " + std::string(chapter.default_scene));
-    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm; default: " +
-                   executable + ".png in the current folder");
+    app.add_option("--out", o.out,
+                   "Output image: x.png, with the linear radiance beside it as x.pfm; or x.exr (OpenEXR, "
+                   "half floats), with the picture beside it as x.png; default: " +
+                       executable + ".png in the current folder");
+    app.add_flag("--exr-float", o.exr_float,
+                 "With --out x.exr: floats (32 bits) instead of half floats (16 bits)");
     app.add_option("--width", o.width, "Image width in pixels; default: the scene's image.width")
         ->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", o.height, "Image height in pixels; default: the scene's image.height")
@@ -44,8 +49,9 @@ void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
     app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
     app.add_option("--reference", o.reference,
-                   "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
-                   "picture (the image's picture is compared with it, and where they differ is shown)");
+                   "Reference image to measure the error against: a PFM or EXR (radiance), or a PNG such as "
+                   "a lesson's picture (the image's picture is compared with it, and where they differ is "
+                   "shown)");
     app.add_option("--heat", o.heat,
                    "Also write what each pixel cost (PNG): rays per sample | bounces per sample (path length) | "
                    "samples, in false colour with their bars");
@@ -130,7 +136,7 @@ struct RunFlags {
     std::set<std::string> core_flags;  // what a film records apart, or what does not shape the image
 };
 
-// What --reference gave: a PFM's radiance, or a PNG's picture.
+// What --reference gave: a PFM's or an EXR's radiance, or a PNG's picture.
 struct Reference {
     std::optional<Image> image;
     std::optional<Picture> picture;
@@ -216,29 +222,24 @@ RenderSettings render_settings(const CoreOptions& options, const Scene& scene, c
     return settings;
 }
 
-// The image the run writes: --out, or <executable>.png in the current folder; a name ending in .png.
-fs::path output_png(const CoreOptions& options, const ChapterInfo& chapter) {
-    const fs::path png =
+// The image the run writes: --out (a .png or a .exr), or <executable>.png in the current folder.
+ImageOutput output_image(const CoreOptions& options, const ChapterInfo& chapter) {
+    const fs::path out =
         options.out.empty() ? fs::path(std::string(chapter.executable) + ".png") : fs::path(options.out);
-    const std::string png_name = png.filename().string();
-    if (!png_name.ends_with(".png") || png_name.size() == 4) {
-        throw InputError("--out: must name a file ending in .png, with a name before the .png, got " +
-                         shown(png));
-    }
-    return png;
+    return image_output(out, options.exr_float);
 }
 
 // Every file this run may write, finished or partial, is one of its own and no input (a file the scene read,
 // --reference, the --resume film), and is probed before the render starts: its staging file is created and
 // removed (staged_file.hpp). (x.film only when the run writes one: a piece of a render, or a resumed one.)
-void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter, const fs::path& png,
+void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter, const ImageOutput& out,
                    const Scene& scene) {
     const CoreOptions& options = flags.core;
     const SplitOptions& split = flags.split;
     if (!options.heat.empty() && fs::path(options.heat).extension() != ".png")
         throw InputError("--heat: must end in .png, got " + shown(options.heat));
     std::vector<RunFile> outputs =
-        image_outputs(png, !split.samples.empty() || !split.resume.empty(), chapter.extra_images);
+        image_outputs(out, !split.samples.empty() || !split.resume.empty(), chapter.extra_images);
     if (!options.heat.empty()) outputs.push_back({"--heat", "the heat maps", options.heat});
     if (const CLI::Option* csv = app.get_option_no_throw("--csv"); csv && csv->count() > 0)
         outputs.push_back({"--csv", "the table", csv->as<std::string>()});
@@ -254,7 +255,7 @@ void probe_outputs(CLI::App& app, const RunFlags& flags, const ChapterInfo& chap
     check_outputs(outputs, inputs);
 }
 
-// --reference: a PFM (radiance) or a PNG (a picture), of the image's size.
+// --reference: a PFM or an EXR (radiance) or a PNG (a picture), of the image's size.
 Reference read_reference(const fs::path& file, const RenderSettings& settings) {
     Reference reference;
     if (file.empty()) return reference;
@@ -265,7 +266,7 @@ Reference read_reference(const fs::path& file, const RenderSettings& settings) {
             width = reference.picture->width;
             height = reference.picture->height;
         } else {
-            reference.image = read_pfm(file, PfmPixels::kRadiance);
+            reference.image = read_radiance(file, PfmPixels::kRadiance);
             width = reference.image->width();
             height = reference.image->height();
         }
@@ -293,7 +294,7 @@ FilmIdentity film_identity(const CLI::App& app, const RunFlags& flags, const Cha
 // heat maps), staged and renamed together, then the summary. Returns the exit status.
 int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, const RunContext& context,
                             const SplitPlan& plan, const MpiSession& mpi, const Reference& reference,
-                            const HeatMaps* heat_maps, const fs::path& png, ChapterRun& run) {
+                            const HeatMaps* heat_maps, const ImageOutput& out, ChapterRun& run) {
     if (plan.writes_film) {
         run.notes.push_back("samples " + to_string(plan.whole) + " of the " +
                             std::to_string(context.settings.samples_per_pixel) + "-sample render" +
@@ -310,7 +311,7 @@ int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, c
         return interrupted_exit_status();
     }
     check_finite(r.image);
-    const fs::path png_out = r.interrupted ? with_suffix(png, ".partial", ".png") : png;
+    const ImageOutput written_out = r.interrupted ? out.partial() : out;
     const std::optional<Film> film = film_of(plan, r, mpi);
     if (run.extra_images.size() != 0 && run.extra_images.size() != chapter.extra_images.size())
         throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
@@ -318,7 +319,8 @@ int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, c
         if (run.extra_images[i].suffix != chapter.extra_images[i])
             throw std::logic_error("the chapter gave back images other than its ChapterInfo::extra_images");
     }
-    const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr, run.extra_images);
+    const std::string written =
+        write_outputs(r.image, written_out, film ? &*film : nullptr, run.extra_images);
     if (heat_maps)
         run.notes.push_back(heat_maps->write(flags.core.heat) + (mpi.size() > 1 ? " (this rank's samples)" : ""));
     // The summary speaks of every rank's samples, not rank 0's share.
@@ -345,8 +347,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
         flags.core.scene.empty() ? scene_path(chapter.default_scene) : resolve_scene(flags.core.scene);
     const Scene scene = load_scene(scene_file);
     RenderSettings settings = render_settings(flags.core, scene, mpi);
-    const fs::path png = output_png(flags.core, chapter);
-    if (!flags.live.live) probe_outputs(app, flags, chapter, png, scene);
+    const ImageOutput out = output_image(flags.core, chapter);
+    if (!flags.live.live) probe_outputs(app, flags, chapter, out, scene);
     const Reference reference = read_reference(flags.core.reference, settings);
     const SplitPlan plan =
         plan_split(flags.split, film_identity(app, flags, chapter, scene, scene_file, settings), mpi, settings);
@@ -364,7 +366,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     mpi.gather(result->result);
     if (!mpi.is_root()) return result->result.interrupted ? interrupted_exit_status() : kExitOk;
     return write_files_and_summary(chapter, flags, context, plan, mpi, reference,
-                                   heat_maps ? &*heat_maps : nullptr, png, *result);
+                                   heat_maps ? &*heat_maps : nullptr, out, *result);
 }
 
 }  // namespace

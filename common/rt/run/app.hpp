@@ -21,6 +21,7 @@ namespace rt {
 struct CoreOptions {
     std::string scene;  // empty: the chapter's default scene
     std::string out;    // empty: <executable>.png in the current folder
+    bool exr_float = false;  // --exr-float: a .exr --out of floats, not half floats
     std::optional<int> width, height, spp;
     std::uint64_t seed = 1;
     int threads = 0;
