@@ -48,8 +48,14 @@ class Reader {
   public:
     explicit Reader(const fs::path& main) : main_(main), folder_(main.parent_path()) {}
 
-    PbrtTranslation run() {
-        read_file(main_, shown(main_), {});
+    // `text`: the main file's contents, or nothing to read it from the file.
+    PbrtTranslation run(const std::optional<std::string_view> text) {
+        if (text) {
+            std::error_code error;
+            read_text(*text, shown(main_), {fs::weakly_canonical(main_, error)});
+        } else {
+            read_file(main_, shown(main_), {});
+        }
         if (!world_) throw InputError(shown(main_) + ": no WorldBegin: a pbrt scene needs a world block");
         if (!stack_.empty()) throw InputError(stack_.back().second + "AttributeBegin not closed by AttributeEnd");
         return {finish(), notes_, included_};
@@ -59,6 +65,7 @@ class Reader {
     using Tokens = std::vector<PbrtToken>;
 
     void read_file(const fs::path& path, const std::string& place, std::vector<fs::path> chain);
+    void read_text(std::string_view text, const std::string& place, const std::vector<fs::path>& chain);
     void directive(const Tokens& tokens, std::size_t& at, const std::string& place,
                    const std::vector<fs::path>& chain);
     void include(const std::string& name, const std::string& where, const std::string& place,
@@ -161,6 +168,10 @@ void Reader::read_file(const fs::path& path, const std::string& place, std::vect
     }
     std::error_code error;
     chain.push_back(fs::weakly_canonical(path, error));
+    read_text(text, place, chain);
+}
+
+void Reader::read_text(std::string_view text, const std::string& place, const std::vector<fs::path>& chain) {
     const Tokens tokens = tokenize_pbrt(text, place);
     std::size_t at = 0;
     while (at < tokens.size()) directive(tokens, at, place, chain);
@@ -446,7 +457,11 @@ bool is_pbrt_file(const fs::path& file) {
 }
 
 PbrtTranslation translate_pbrt(const fs::path& file) {
-    return Reader(file).run();
+    return Reader(file).run(std::nullopt);
+}
+
+PbrtTranslation translate_pbrt_text(std::string_view text, const fs::path& file) {
+    return Reader(file).run(text);
 }
 
 }  // namespace rt

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rt {
@@ -20,6 +21,8 @@ struct PbrtTranslation {
 
 // Reads `file` and the files it includes. Throws InputError with one located line.
 PbrtTranslation translate_pbrt(const std::filesystem::path& file);
+// The same for the text of `file` (the fuzzer's entry): its Include names are still read from its folder.
+PbrtTranslation translate_pbrt_text(std::string_view text, const std::filesystem::path& file);
 
 // Whether a scene file is a pbrt file: its name ends in .pbrt (any case).
 bool is_pbrt_file(const std::filesystem::path& file);
