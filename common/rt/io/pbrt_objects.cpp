@@ -22,7 +22,7 @@ Vec3d color_in(PbrtParameters& params, std::string_view name, Vec3d fallback, do
     for (int i = 0; i < 3; ++i) {
         if (!(c[i] >= 0 && c[i] <= high)) {
             params.fail(name, std::string("each channel must be in [0, ") + (high == 1 ? "1" : "1e9") + "], got " +
-                                  std::to_string(c[i]));
+                                  show_pbrt_number(c[i]));
         }
     }
     return c;
@@ -42,9 +42,9 @@ double roughness(PbrtParameters& params) {
         }
         value = u.value_or(0);
     }
-    if (!(value >= 0)) params.fail(u ? "uroughness" : "roughness", "must be >= 0, got " + std::to_string(value));
+    if (!(value >= 0)) params.fail(u ? "uroughness" : "roughness", "must be >= 0, got " + show_pbrt_number(value));
     const double alpha = remap ? std::sqrt(value) : value;
-    if (alpha > 1) params.fail(u ? "uroughness" : "roughness", "gives alpha " + std::to_string(alpha) + " above 1, beyond the course's range");
+    if (alpha > 1) params.fail(u ? "uroughness" : "roughness", "gives alpha " + show_pbrt_number(alpha) + " above 1, beyond the course's range");
     return alpha < 1e-3 ? 0.0 : std::sqrt(alpha);
 }
 
@@ -71,8 +71,8 @@ Json conductor(PbrtParameters& params) {
 Json dielectric(PbrtParameters& params) {
     const double eta = params.real("eta").value_or(1.5);
     if (!(eta >= 1 && eta <= 10)) {
-        params.fail("eta", "must be in [1, 10] (the course's glass is denser than the space around it), got " +
-                               std::to_string(eta));
+        params.fail("eta", "must be in [1, 10] (the course's dielectrics are at least as dense as the space around them), got " +
+                               show_pbrt_number(eta));
     }
     Json m = {{"type", "dielectric"}, {"ior", eta}};
     if (const double r = roughness(params); r > 0) m["roughness"] = r;
@@ -103,7 +103,7 @@ Json material(const std::string& type, PbrtParameters& params, const std::string
 Json area_emission(PbrtParameters& params) {
     const Vec3d L = color_in(params, "L", Vec3d(1), kLargestSceneNumber);
     const double scale = params.real("scale").value_or(1);
-    if (!(scale >= 0)) params.fail("scale", "must be >= 0, got " + std::to_string(scale));
+    if (!(scale >= 0)) params.fail("scale", "must be >= 0, got " + show_pbrt_number(scale));
     if (params.boolean("twosided").value_or(false)) {
         params.fail("twosided", "the course's area lights emit on one side only (the front, pbrt's default)");
     }
@@ -132,7 +132,7 @@ Vec3d checked_point(PbrtParameters& params, std::string_view name, const Vec3d& 
 
 Json sphere(PbrtParameters& params, const glm::dmat4& ctm, bool reverse, bool emissive) {
     const double radius = params.real("radius").value_or(1);
-    if (!(radius > 0)) params.fail("radius", "must be > 0, got " + std::to_string(radius));
+    if (!(radius > 0)) params.fail("radius", "must be > 0, got " + show_pbrt_number(radius));
     params.refuse_unused("radius");
     const glm::dmat3 linear(ctm);
     const double s = glm::length(linear[0]);
@@ -243,7 +243,7 @@ Json shape(const std::string& type, PbrtParameters& params, const glm::dmat4& ct
 
 Json light(const std::string& type, PbrtParameters& params, const glm::dmat4& ctm, const std::string& type_place) {
     const double scale = params.real("scale").value_or(1);
-    if (!(scale >= 0)) params.fail("scale", "must be >= 0, got " + std::to_string(scale));
+    if (!(scale >= 0)) params.fail("scale", "must be >= 0, got " + show_pbrt_number(scale));
     const Vec3d from = params.point3("from").value_or(Vec3d(0)), to = params.point3("to").value_or(Vec3d(0, 0, 1));
     Json light;
     if (type == "point" || type == "spot") {

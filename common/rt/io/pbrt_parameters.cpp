@@ -23,13 +23,17 @@ bool one_of(std::string_view s, std::span<const std::string_view> list) {
     return false;
 }
 
-std::string show_number(double x) {
+}  // namespace
+
+std::string show_pbrt_number(double x) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.9g", x);
+    if (x == std::floor(x) && std::abs(x) < 1e15) {
+        std::snprintf(text, sizeof text, "%.0f", x);
+    } else {
+        std::snprintf(text, sizeof text, "%.9g", x);
+    }
     return text;
 }
-
-}  // namespace
 
 std::vector<PbrtParameter> read_pbrt_parameters(const std::vector<PbrtToken>& tokens, std::size_t& at,
                                                 const std::string& place) {
@@ -155,7 +159,7 @@ std::vector<int> PbrtParameters::integers(std::string_view name) {
     std::vector<int> out;
     for (const double x : reals(name, "integer", 1)) {
         if (!(x == std::floor(x) && x >= -2147483648.0 && x <= 2147483647.0)) {
-            fail(name, "must hold whole numbers in [-2147483648, 2147483647], got " + show_number(x));
+            fail(name, "must hold whole numbers in [-2147483648, 2147483647], got " + show_pbrt_number(x));
         }
         out.push_back(int(x));
     }

@@ -58,6 +58,9 @@ class PbrtParameters {
     std::string owner_;  // "Shape \"sphere\"", for messages
 };
 
+// A number in a message: whole ones in full (2147483648), others to 9 digits.
+std::string show_pbrt_number(double x);
+
 // Reads the parameter list that starts at tokens[at] (strings "type name" each followed by a value or a
 // bracketed list), up to the next directive; `at` moves past it.
 std::vector<PbrtParameter> read_pbrt_parameters(const std::vector<PbrtToken>& tokens, std::size_t& at,

@@ -186,7 +186,7 @@ void Reader::include(const std::string& name, const std::string& where, const st
     std::error_code error;
     const fs::path canonical = fs::weakly_canonical(path, error);
     for (const fs::path& p : chain) {
-        if (p == canonical) throw InputError(where + "Include \"" + printable(name, 64) + "\": includes itself (a cycle)");
+        if (p == canonical) throw InputError(where + "Include \"" + printable(name, 64) + "\": that file is already being read (an Include cycle)");
     }
     if (chain.size() >= kMostNestedIncludes) {
         throw InputError(where + "Include: more than " + std::to_string(kMostNestedIncludes) + " files nested");
@@ -383,7 +383,7 @@ void Reader::camera(PbrtParameters& params, const std::string& where) {
     c.camera_from_world = state_.ctm;
     c.place = where;
     c.fov = params.real("fov").value_or(90);
-    if (!(c.fov > 0 && c.fov < 180)) params.fail("fov", "must be in (0, 180), got " + std::to_string(c.fov));
+    if (!(c.fov > 0 && c.fov < 180)) params.fail("fov", "must be in (0, 180), got " + show_pbrt_number(c.fov));
     c.lens_radius = params.real("lensradius").value_or(0);
     if (!(c.lens_radius >= 0 && c.lens_radius <= 1e9)) params.fail("lensradius", "must be in [0, 1e9]");
     c.focal_distance = params.real("focaldistance").value_or(1e6);
