@@ -154,14 +154,14 @@ TEST_CASE("A pbrt camera shows pbrt's picture, not its mirror, in both aspect ra
 TEST_CASE("A pbrt scene renders as its equivalent JSON scene, and not as its mirror image",
           "[pbrt][camera][ex:ch01.camera_ray][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // An asymmetric picture: a lamp sphere up and to world +x, a grey sphere down and to -x, seen by pbrt's
-    // LookAt (left-handed).
+    // LookAt (left-handed). The lamp is of pbrt's default material, diffuse grey 0.5, and emits.
     const std::string world = "WorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
                               "Translate 1.5 1 0\nShape \"sphere\" \"float radius\" 0.6\nAttributeEnd\n"
                               "Translate -1 -0.8 0\nShape \"sphere\"\n";
     auto json = [](bool mirrored, const std::string& size) {
         return std::string(R"({"camera": {"from": [0, 0, 6], "at": [0, 0, 0], "vfov": 50, "mirrored": )") +
                (mirrored ? "true" : "false") + "}, " + size +
-               R"(, "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [4, 4, 4]},
+               R"(, "materials": {"lamp": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5], "emission": [4, 4, 4]},
                "grey": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
                "shapes": [{"type": "sphere", "center": [1.5, 1, 0], "radius": 0.6, "material": "lamp"},
                           {"type": "sphere", "center": [-1, -0.8, 0], "radius": 1, "material": "grey"}]})";
