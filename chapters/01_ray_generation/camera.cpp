@@ -28,8 +28,9 @@ PinholeCamera make_pinhole_camera(const CameraDesc& desc, int width, int height)
         throw InputError("camera.focus_distance: must be > 0, got " + std::to_string(*desc.focus_distance));
     }
     const Vec3d w = glm::normalize(view);
-    const Vec3d u = glm::normalize(glm::cross(w, Vec3d(desc.up)));
-    const Vec3d v = glm::cross(u, w);
+    const Vec3d u_right_handed = glm::normalize(glm::cross(w, Vec3d(desc.up)));
+    const Vec3d v = glm::cross(u_right_handed, w);
+    const Vec3d u = desc.mirrored ? -u_right_handed : u_right_handed;
     const double half_height = std::tan(double(desc.vfov) * std::numbers::pi / 360.0);
     return PinholeCamera{desc.from,
                          Vec3(w),

@@ -16,7 +16,7 @@ namespace rt {
 struct PinholeCamera {
     Vec3 eye;
     Vec3 forward;  // w = (at − from) / |at − from|
-    Vec3 right;    // u = (w × up) / |w × up|
+    Vec3 right;    // u = (w × up) / |w × up|, negated for a mirrored (left-handed) camera
     Vec3 up;       // v = u × w
     Real half_width;   // tan(vfov / 2) · width / height
     Real half_height;  // tan(vfov / 2)

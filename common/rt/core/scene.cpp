@@ -1,15 +1,24 @@
 #include "rt/core/scene.hpp"
 
 #include <cmath>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 namespace rt {
 
 Vec3 Transform::apply_to_point(const Vec3& p) const {
+    if (matrix) return Vec3(*matrix * glm::dvec4(Vec3d(p), 1.0));
     return rotate(p * scale) + translate;
 }
 
 Vec3 Transform::apply_to_normal(const Vec3& n) const {
+    if (matrix) return Vec3(glm::transpose(glm::inverse(glm::dmat3(*matrix))) * Vec3d(n));
     return rotate(n / scale);
+}
+
+bool Transform::mirrors() const {
+    if (matrix) return glm::determinant(glm::dmat3(*matrix)) < 0;
+    return (scale.x < 0) != ((scale.y < 0) != (scale.z < 0));
 }
 
 Vec3 Transform::rotate(Vec3 q) const {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +29,9 @@ struct CameraDesc {
     // direction of the plane in focus (unset: |at − from|).
     Real aperture = 0;
     std::optional<Real> focus_distance{};
+    // A left-handed camera (pbrt's): the picture's right is up × view instead of view × up, so the image
+    // comes out mirrored left to right against the course's own camera.
+    bool mirrored = false;
 };
 
 struct ImageDesc {
@@ -127,17 +131,20 @@ struct Material {
     static constexpr Real kDielectricStandIn = Real(0.73);
 };
 
-// Scale, then rotations about x, y and z (degrees), then translation.
+// Scale, then rotations about x, y and z (degrees), then translation; or, for a mesh, any affine matrix
+// instead (a pbrt scene's transform).
 struct Transform {
     Vec3 scale{1};
     Vec3 rotate_degrees{0};
     Vec3 translate{0};
+    std::optional<glm::dmat4> matrix;  // when set, the three above are unused
 
     Vec3 apply_to_point(const Vec3& p) const;
     // A surface normal follows the inverse transpose: n / scale, then the rotations (not normalised).
     Vec3 apply_to_normal(const Vec3& n) const;
-    // Whether it turns the space inside out, as a mirror does: an odd number of negative scale factors.
-    bool mirrors() const { return (scale.x < 0) != ((scale.y < 0) != (scale.z < 0)); }
+    // Whether it turns the space inside out, as a mirror does: an odd number of negative scale factors (a
+    // matrix of negative determinant).
+    bool mirrors() const;
 
   private:
     Vec3 rotate(Vec3 v) const;  // about x, then y, then z
@@ -240,6 +247,9 @@ struct Scene {
     std::optional<EnvironmentLight> environment;
     std::optional<MediumDesc> medium;  // what fills the space outside every shape, where the camera is (fog)
     std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
+    // What the scene file said that changes nothing in the course's image (a pbrt scene's sampler type, its
+    // pixel filter), for the run's summary.
+    std::vector<std::string> notes;
 
     const Material& material_of(const Shape& shape) const { return materials[std::size_t(shape.material)]; }
     bool has_area_lights() const;

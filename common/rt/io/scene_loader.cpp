@@ -6,6 +6,7 @@
 
 #include "rt/io/input_file.hpp"
 #include "rt/io/json_reader.hpp"
+#include "rt/io/pbrt_reader.hpp"
 #include "rt/io/scene_lights.hpp"
 #include "rt/io/scene_materials.hpp"
 #include "rt/io/scene_node.hpp"
@@ -19,7 +20,8 @@ using namespace scene_reading;
 
 constexpr std::string_view kTopKeys[] = {"description", "camera", "image",   "materials",
                                          "shapes",      "lights", "medium", "effects"};
-constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov", "aperture", "focus_distance"};
+constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov", "aperture", "focus_distance",
+                                            "mirrored"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
 
 CameraDesc read_camera(const Node& node) {
@@ -31,6 +33,7 @@ CameraDesc read_camera(const Node& node) {
     if (node.has("vfov")) camera.vfov = node["vfov"].real_in(0, 180, true, true);
     if (node.has("aperture")) camera.aperture = node["aperture"].real_in(0, kLargestNumber, false, false);
     if (node.has("focus_distance")) camera.focus_distance = node["focus_distance"].positive();
+    if (node.has("mirrored")) camera.mirrored = node["mirrored"].boolean();
     if (!normalisable(camera.at - camera.from)) {
         node["at"].fail("must differ from camera.from, so that at - from is a direction, got at - from = " +
                         show(camera.at - camera.from));
@@ -75,7 +78,7 @@ std::vector<SceneInput> files_read(const Scene& scene, const fs::path& file) {
         if (image) inputs.push_back({"the texture of materials." + shown_name(m.name), folder / image->file});
     }
     for (const Shape& shape : scene.shapes) {
-        if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry))
+        if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry); mesh && !mesh->file.empty())
             inputs.push_back({"the mesh of " + shape.place, folder / mesh->file});
     }
     if (scene.environment && scene.environment->image)
@@ -86,13 +89,17 @@ std::vector<SceneInput> files_read(const Scene& scene, const fs::path& file) {
 }  // namespace
 
 Scene parse_scene(const std::string& text, const fs::path& file) {
-    const std::string name = shown(file);
     Json root;
     try {
         root = parse_json_strictly(text);
     } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
+        throw InputError(shown(file) + ": " + e.what());
     }
+    return read_scene(root, file);
+}
+
+Scene read_scene(const nlohmann::json& root, const fs::path& file) {
+    const std::string name = shown(file);
     const Node top(root, "", name);
     top.expect_object(kTopKeys);
     if (top.has("description")) top["description"].string();
@@ -140,7 +147,16 @@ Scene parse_scene(const std::string& text, const fs::path& file) {
 
 Scene load_scene(const fs::path& file) {
     if (const std::string problem = not_a_regular_file(file); !problem.empty()) {
-        throw InputError(shown(file) + ": must be a scene file (JSON), got " + problem);
+        throw InputError(shown(file) + ": must be a scene file (JSON or pbrt-v4), got " + problem);
+    }
+    if (is_pbrt_file(file)) {
+        PbrtTranslation translation = translate_pbrt(file);
+        Scene scene = read_scene(translation.scene, file);
+        scene.notes = std::move(translation.notes);
+        for (const fs::path& part : translation.included) {
+            scene.inputs.insert(scene.inputs.begin() + 1, SceneInput{"a file the scene includes", part});
+        }
+        return scene;
     }
     std::string text;
     try {

@@ -74,6 +74,10 @@ class Node {
         if (!value_.is_string()) fail("must be a string, got " + std::string(value_.type_name()));
         return value_.get<std::string>();
     }
+    bool boolean() const {
+        if (!value_.is_boolean()) fail("must be true or false, got " + std::string(value_.type_name()));
+        return value_.get<bool>();
+    }
     double number() const {
         if (!value_.is_number()) fail("must be a number, got " + std::string(value_.type_name()));
         const double x = value_.get<double>();

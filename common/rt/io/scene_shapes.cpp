@@ -1,6 +1,8 @@
 #include "rt/io/scene_shapes.hpp"
 
 #include <cstdint>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 #include <utility>
 
 #include "rt/io/input_file.hpp"
@@ -15,10 +17,34 @@ namespace {
 
 constexpr std::string_view kShapeTypes[] = {"sphere", "quad", "triangle", "plane", "box", "mesh"};
 constexpr std::string_view kTransformKeys[] = {"scale", "rotate_x", "rotate_y", "rotate_z", "translate"};
+constexpr std::string_view kMeshTransformKeys[] = {"scale",     "rotate_x", "rotate_y",
+                                                   "rotate_z",  "translate", "matrix"};
 
-Transform read_transform(const Node& node) {
-    node.expect_object(kTransformKeys);
+// A mesh's "matrix": three rows [a, b, c, d] of the affine map x' = a x + b y + c z + d, invertible.
+glm::dmat4 read_matrix(const Node& node) {
+    if (node.array_size() != 3) node.fail("must be 3 rows of 4 numbers, got " + std::to_string(node.array_size()));
+    glm::dmat4 m(1.0);
+    for (std::size_t row = 0; row < 3; ++row) {
+        const Node r = node.element(row);
+        if (r.array_size() != 4) r.fail("must be a row of 4 numbers, got " + std::to_string(r.array_size()));
+        for (std::size_t col = 0; col < 4; ++col) m[int(col)][int(row)] = r.element(col).number();
+    }
+    if (!(std::abs(glm::determinant(glm::dmat3(m))) > 1e-30)) node.fail("must be invertible, got determinant 0");
+    return m;
+}
+
+Transform read_transform(const Node& node, bool mesh = false) {
+    if (mesh) {
+        node.expect_object(kMeshTransformKeys);
+    } else {
+        node.expect_object(kTransformKeys);
+    }
     Transform t;
+    if (node.has("matrix")) {
+        if (node.json().size() != 1) node["matrix"].fail("must be the transform's only key");
+        t.matrix = read_matrix(node["matrix"]);
+        return t;
+    }
     if (node.has("scale")) {
         const Node scale = node["scale"];
         t.scale = scale.json().is_array() ? scale.vec3() : Vec3(scale.real());
@@ -97,17 +123,46 @@ bool is_ply(const fs::path& path) {
     return extension == ".ply";
 }
 
-// A mesh file's triangles, read strictly: OBJ, or PLY by its extension (.ply, any case). Polygons are split
-// into fans (0, k, k + 1). A mesh whose every face has no area after its transform (repeated or collinear
-// vertices, or coordinates so small that float's cross product underflows) is refused, as a lone triangle of
-// no area is. Normals follow the transform's inverse transpose and are normalised; a mirroring transform
-// keeps the mesh's outside (keep_outside_after_mirroring).
-MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
-    MeshShape mesh;
-    const Node file = node["file"];
-    mesh.file = file.string();
-    if (node.has("transform")) mesh.transform = read_transform(node["transform"]);
-    const fs::path path = scene_folder / mesh.file;
+// A mesh given in the scene itself: "positions", "triangles" of indices into them (from 0), and per vertex
+// "normals" and "uv" when given (a pbrt scene's trianglemesh).
+void read_inline_mesh(MeshShape& mesh, const Node& node) {
+    const Node positions = node["positions"];
+    for (std::size_t i = 0; i < positions.array_size(); ++i) mesh.positions.push_back(positions.element(i).vec3());
+    const Node triangles = node["triangles"];
+    const long long last = static_cast<long long>(mesh.positions.size()) - 1;
+    for (std::size_t i = 0; i < triangles.array_size(); ++i) {
+        const Node t = triangles.element(i);
+        if (t.array_size() != 3) t.fail("must be 3 vertex indices, got " + std::to_string(t.array_size()));
+        std::array<std::uint32_t, 3> corners{};
+        for (std::size_t k = 0; k < 3; ++k) corners[k] = std::uint32_t(t.element(k).integer(0, last));
+        mesh.triangles.push_back(corners);
+    }
+    auto per_vertex = [&](const char* key) {
+        const Node values = node[key];
+        if (values.array_size() != mesh.positions.size()) {
+            values.fail("must have one entry per position (" + std::to_string(mesh.positions.size()) + "), got " +
+                        std::to_string(values.array_size()));
+        }
+        return values;
+    };
+    if (node.has("normals")) {
+        const Node normals = per_vertex("normals");
+        for (std::size_t i = 0; i < normals.array_size(); ++i) mesh.normals.push_back(normals.element(i).direction());
+        mesh.normal_corners = mesh.triangles;
+    }
+    if (node.has("uv")) {
+        const Node uv = per_vertex("uv");
+        for (std::size_t i = 0; i < uv.array_size(); ++i) {
+            const Node pair = uv.element(i);
+            if (pair.array_size() != 2) pair.fail("must be 2 numbers, got " + std::to_string(pair.array_size()));
+            mesh.texture_coordinates.push_back({pair.element(0).real(), pair.element(1).real()});
+        }
+        mesh.texture_corners = mesh.triangles;
+    }
+}
+
+// The triangles of a mesh file, read into `mesh`; a failure names the file.
+void read_mesh_file(MeshShape& mesh, const Node& file, const fs::path& path) {
     const std::string shown_file = shown(path);
     const bool ply = is_ply(path);
     if (const std::string problem = not_a_regular_file(path); !problem.empty()) {
@@ -128,6 +183,26 @@ MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
         }
     } catch (const InputError& e) {
         file.fail(shown_file + ": " + e.what());
+    }
+}
+
+// A mesh's triangles, given inline or read strictly from a file: OBJ, or PLY by its extension (.ply, any case). Polygons are split
+// into fans (0, k, k + 1). A mesh whose every face has no area after its transform (repeated or collinear
+// vertices, or coordinates so small that float's cross product underflows) is refused, as a lone triangle of
+// no area is. Normals follow the transform's inverse transpose and are normalised; a mirroring transform
+// keeps the mesh's outside (keep_outside_after_mirroring).
+MeshShape read_mesh(const Node& node, const fs::path& scene_folder) {
+    MeshShape mesh;
+    if (node.has("transform")) mesh.transform = read_transform(node["transform"], true);
+    const bool inline_data = !node.has("file");
+    const Node file = inline_data ? node["positions"] : node["file"];
+    std::string shown_file = "the mesh";
+    if (inline_data) {
+        read_inline_mesh(mesh, node);
+    } else {
+        mesh.file = file.string();
+        shown_file = shown(scene_folder / mesh.file);
+        read_mesh_file(mesh, file, scene_folder / mesh.file);
     }
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         mesh.positions[i] = mesh.transform.apply_to_point(mesh.positions[i]);
@@ -217,7 +292,13 @@ Shape read_shape(const Node& node, const std::map<std::string, int>& material_in
         }
         shape.geometry = b;
     } else if (type == "mesh") {
-        node.expect_object(keys({"file", "transform"}), "a mesh");
+        node.expect_object(keys({"file", "transform", "positions", "triangles", "normals", "uv"}), "a mesh");
+        if (node.has("file") == node.has("positions")) {
+            node.fail("a mesh needs either \"file\" or \"positions\" and \"triangles\", not both");
+        }
+        if (node.has("file") && (node.has("normals") || node.has("uv") || node.has("triangles"))) {
+            node["file"].fail("a mesh file gives its own triangles, normals and uv");
+        }
         shape.geometry = read_mesh(node, scene_folder);
     } else {
         node["type"].fail("unknown shape type " + quote(type) + suggestion(type, kShapeTypes) +

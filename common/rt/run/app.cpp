@@ -295,6 +295,7 @@ FilmIdentity film_identity(const CLI::App& app, const RunFlags& flags, const Cha
 int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, const RunContext& context,
                             const SplitPlan& plan, const MpiSession& mpi, const Reference& reference,
                             const HeatMaps* heat_maps, const ImageOutput& out, ChapterRun& run) {
+    for (const std::string& ignored : context.scene.notes) run.notes.push_back("ignored: " + ignored);
     if (plan.writes_film) {
         run.notes.push_back("samples " + to_string(plan.whole) + " of the " +
                             std::to_string(context.settings.samples_per_pixel) + "-sample render" +

@@ -1,0 +1,29 @@
+// The things a pbrt-v4 scene names (materials, shapes, lights) translated into the course's scene JSON, one
+// function each; pbrt_reader.cpp calls them with the parameters and the graphics state of each directive.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rt/io/pbrt_parameters.hpp"
+
+namespace rt::pbrt {
+
+using Json = nlohmann::json;
+
+// A material: diffuse, conductor or dielectric; `type_place` refuses another type.
+Json material(const std::string& type, PbrtParameters& params, const std::string& type_place);
+
+// An area light's emitted radiance, L × scale (one-sided only).
+Json area_emission(PbrtParameters& params);
+
+// A shape under the transform `ctm` (object to world), its orientation reversed or not, as a course shape
+// without its "material". `emissive`: it is an area light, whose emitting side must be expressible.
+Json shape(const std::string& type, PbrtParameters& params, const glm::dmat4& ctm, bool reverse_orientation,
+           bool emissive, const std::string& type_place);
+
+// A light source (point, spot, distant, or infinite with a constant L): {"type": ...} of the course's lights.
+Json light(const std::string& type, PbrtParameters& params, const glm::dmat4& ctm, const std::string& type_place);
+
+}  // namespace rt::pbrt
