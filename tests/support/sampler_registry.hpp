@@ -1,0 +1,157 @@
+// Every direction sampler the chi-square tests fit, by name, with the parameters a student may turn: the warps
+// of chapter 04 (direction_warps.hpp, shared with chapters 04 and 06's tests), the BRDFs chapter 06 samples,
+// chapter 07's rough glass and metal, chapter 09's Henyey–Greenstein phase function. The sampler view
+// (chapters/09_participating_media/sampler_view) draws whichever a student picks; tests/sampler_view_test.cpp
+// fits them. Each comes from the chapters' code, so in the student edition it is the student's own.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "04_direct_lighting/brdf.hpp"
+#include "06_monte_carlo/warp_pdfs.hpp"
+#include "07_bsdf_refraction/conductor.hpp"
+#include "07_bsdf_refraction/rough_dielectric.hpp"
+#include "09_participating_media/henyey_greenstein.hpp"
+#include "direction_warps.hpp"
+#include "rt/core/conductor_presets.hpp"
+
+namespace rt::test {
+
+// A number a student may set, within [min, max]: the range the harness's 48 × 96 cells resolve (a lobe or a
+// cone much narrower than a cell is beyond them).
+struct SamplerParameter {
+    std::string name;
+    std::string meaning;
+    double min, max, value;  // value: the default
+};
+
+struct RegisteredSampler {
+    std::string name;     // "power_cosine"
+    std::string chapter;  // "04"
+    std::string title;    // what it samples, and the function that does
+    std::vector<SamplerParameter> parameters;
+    // The warp for these parameter values (in the order of `parameters`); `seed` seeds a BSDF's choice of lobe.
+    std::function<Warp(const std::vector<double>& values, std::uint64_t seed)> make;
+    bool may_lose = false;  // a BSDF whose samples may leave on the wrong side (require_fit_with_losses)
+};
+
+inline Real radians(double degrees) {
+    return Real(degrees * std::numbers::pi / 180);
+}
+
+// A BSDF's sample() as a warp at wo about n: u from the harness, u_lobe from its own generator; a sample with
+// pdf 0 is lost.
+inline Warp bsdf_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, Vec3 wo, Vec3 n, std::uint64_t seed) {
+    auto lobe = std::make_shared<Pcg32>(seed, 23);
+    return {std::move(name),
+            [=](Vec2 u) {
+                const BsdfSample s = bsdf->sample(wo, n, u, lobe->next_real());
+                return Drawn{s.wi, double(s.pdf), !(s.pdf > 0)};
+            },
+            [=](const Vec3& wi) { return double(bsdf->pdf(wo, wi, n)); }};
+}
+
+// wo at `degrees` from n = +z, turned 0.4 about it (chapter 06's BRDF tests).
+inline Warp brdf_warp(std::string name, std::shared_ptr<const Bsdf> brdf, double degrees, std::uint64_t seed) {
+    const Real theta = radians(degrees);
+    const Vec3 wo(std::sin(theta) * std::cos(0.4f), std::sin(theta) * std::sin(0.4f), std::cos(theta));
+    return bsdf_warp(std::move(name), std::move(brdf), wo, Vec3(0, 0, 1), seed);
+}
+
+// wo at `degrees` from n = +x, in the x–y plane (chapter 07's tests: both lobes on the grid's equator).
+inline Warp side_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, double degrees, std::uint64_t seed) {
+    const Real theta = radians(degrees);
+    return bsdf_warp(std::move(name), std::move(bsdf), Vec3(std::cos(theta), std::sin(theta), 0), Vec3(1, 0, 0),
+                     seed);
+}
+
+// A sampler without parameters.
+inline RegisteredSampler fixed(std::string name, std::string chapter, std::string title, Warp (*warp)()) {
+    return {std::move(name), std::move(chapter), std::move(title), {},
+            [warp](const std::vector<double>&, std::uint64_t) { return warp(); }};
+}
+
+inline std::vector<RegisteredSampler> sampler_registry() {
+    const SamplerParameter incident{"incident_angle", "degrees between wo and the normal", 0, 89, 30};
+    const SamplerParameter roughness{"roughness", "0.1 (sharp) to 1 (broad)", 0.1, 1, 0.3};
+    const Color albedo(0.7f);
+    std::vector<RegisteredSampler> r = {
+        fixed("uniform_hemisphere", "04", "uniform hemisphere (sample_uniform_hemisphere)", uniform_hemisphere_warp),
+        fixed("cosine_hemisphere", "04", "cosine-weighted hemisphere (sample_cosine_hemisphere)",
+              cosine_hemisphere_warp),
+        {"uniform_cone", "04", "uniform cone about +z (sample_uniform_cone)",
+         {{"half_angle", "degrees", 5, 180, 60}},
+         [](const std::vector<double>& v, std::uint64_t) {
+             const Real one_minus_cos = Real(1 - std::cos(double(radians(v[0]))));
+             return bare("uniform cone", [=](Vec2 u) { return sample_uniform_cone(u, one_minus_cos); },
+                         [=](const Vec3& d) { return double(uniform_cone_pdf(d, one_minus_cos)); });
+         }},
+        {"power_cosine", "04", "power-cosine lobe cos^e about +z (sample_power_cosine)",
+         {{"exponent", "e: 0 is uniform, 1 the cosine, larger narrower", 0, 200, 6}},
+         [](const std::vector<double>& v, std::uint64_t) {
+             const Real e = Real(v[0]);
+             return bare("power cosine", [=](Vec2 u) { return sample_power_cosine(u, e); },
+                         [=](const Vec3& d) { return double(power_cosine_pdf(d.z, e)); });
+         }},
+        fixed("quad_light", "04", "directions to a quad light by area (sample_quad_light)",
+              [] { return quad_light_warp("quad light", near_quad_light(), QuadLightSampling::kArea); }),
+        fixed("quad_light_solid_angle", "04", "directions to a quad light by solid angle (spherical rectangle)",
+              [] { return quad_light_warp("quad light", near_quad_light(), QuadLightSampling::kSolidAngle); }),
+        fixed("triangle_light", "04", "directions to a triangle light (sample_triangle_light)", triangle_light_warp),
+        fixed("sphere_light", "04", "directions to a sphere light by its cone (sample_sphere_light)",
+              sphere_light_warp),
+        fixed("uniform_sphere", "06", "uniform sphere (sample_uniform_sphere)",
+              [] {
+                  return bare("uniform sphere", sample_uniform_sphere,
+                              [](const Vec3&) { return double(kUniformSpherePdf); });
+              }),
+        {"lambert_brdf", "06", "Lambert BRDF's sample() (cosine-weighted)", {incident},
+         [=](const std::vector<double>& v, std::uint64_t seed) {
+             return brdf_warp("lambert", std::make_shared<LambertBrdf>(albedo), v[0], seed);
+         }},
+        {"glossy_brdf", "06", "glossy (modified Phong) BRDF's sample()", {roughness, incident},
+         [=](const std::vector<double>& v, std::uint64_t seed) {
+             return brdf_warp("glossy", std::make_shared<GlossyBrdf>(albedo, phong_exponent(Real(v[0]))), v[1], seed);
+         }},
+        {"retroreflective_brdf", "06", "retroreflective BRDF's sample()", {roughness, incident},
+         [=](const std::vector<double>& v, std::uint64_t seed) {
+             return brdf_warp("retro", std::make_shared<RetroreflectiveBrdf>(albedo, phong_exponent(Real(v[0]))),
+                              v[1], seed);
+         }},
+        {"rough_dielectric", "07", "rough glass: GGX visible normals, reflection or refraction (normal +x)",
+         {roughness, {"eta", "ratio of indices, 1.5 entering glass", 0.25, 4, 1.5}, incident},
+         [](const std::vector<double>& v, std::uint64_t seed) {
+             return side_warp("rough glass",
+                              std::make_shared<RoughDielectric>(Real(v[0]), Real(v[1]), Transport::kRadiance),
+                              v[2], seed);
+         },
+         true},
+        {"rough_conductor", "07", "rough gold: GGX visible normals, reflection (normal +x)", {roughness, incident},
+         [](const std::vector<double>& v, std::uint64_t seed) {
+             const ConductorPreset& gold = kConductorPresets[0];
+             return side_warp("rough metal", std::make_shared<Conductor>(gold.eta, gold.k, Real(v[0])), v[1], seed);
+         },
+         true},
+        {"henyey_greenstein", "09", "Henyey-Greenstein phase function, travelling along +x (sample)",
+         {{"g", "mean cosine: < 0 backward, > 0 forward", -0.95, 0.95, 0.3}},
+         [](const std::vector<double>& v, std::uint64_t) {
+             const auto phase = std::make_shared<HenyeyGreenstein>(Real(v[0]));
+             const Vec3 wo(-1, 0, 0);
+             return Warp{"henyey-greenstein",
+                         [=](Vec2 u) {
+                             const PhaseSample s = phase->sample(wo, u);
+                             return Drawn{s.wi, double(s.pdf)};
+                         },
+                         [=](const Vec3& w) { return double(phase->eval(wo, w)); }};
+         }},
+    };
+    return r;
+}
+
+}  // namespace rt::test
