@@ -1,6 +1,6 @@
 // The sampler view's answers (chapters/09_participating_media/sampler_view/sampler_report.hpp), without the
-// server: a right sampler gets the harness's own statistic and passes; a sampler whose pdf lacks its Jacobian
-// fails, with the cells where it does; bad queries are refused with 400 and one line; a sampler that throws
+// server: a right sampler gets the harness's own statistic and passes; the registry's mistake, a sampler whose
+// pdf lacks its Jacobian, fails, with the cells where it does; bad queries are refused with 400 and one line; a sampler that throws
 // (the student edition's unwritten exercise) is answered 500 with its message. The page itself is tested in
 // a browser by tests/cli/sampler_view_browser.py.
 #include <algorithm>
@@ -21,27 +21,11 @@ using nlohmann::json;
 
 namespace {
 
-// θ and φ uniform over the upper hemisphere, with the density of (θ, φ), 1 / π², given as the density per
-// steradian: the Jacobian sin θ of dω = sin θ dθ dφ is missing (the right pdf is 1 / (π² sin θ)).
-RegisteredSampler missing_jacobian() {
-    return {"theta_uniform", "01", "θ uniform, pdf without sin θ", {},
-            [](const std::vector<double>&, std::uint64_t) {
-                return bare("theta uniform",
-                            [](Vec2 u) {
-                                const double theta = double(u.x) * std::numbers::pi / 2,
-                                             phi = 2 * std::numbers::pi * double(u.y);
-                                return Vec3(Real(std::sin(theta) * std::cos(phi)),
-                                            Real(std::sin(theta) * std::sin(phi)), Real(std::cos(theta)));
-                            },
-                            [](const Vec3& d) { return d.z >= 0 ? 1 / (std::numbers::pi * std::numbers::pi) : 0.0; });
-            }};
-}
-
-// The rough metal of chapter 07's chi-square test (no exercise of the course in it).
-const RegisteredSampler& rough_conductor(const std::vector<RegisteredSampler>& registry) {
+// The registered sampler named `name`.
+const RegisteredSampler& registered(const std::vector<RegisteredSampler>& registry, const std::string& name) {
     for (const RegisteredSampler& s : registry)
-        if (s.name == "rough_conductor") return s;
-    FAIL("rough_conductor is not in the registry");
+        if (s.name == name) return s;
+    FAIL(name << " is not in the registry");
     throw std::logic_error("unreachable");
 }
 
@@ -60,7 +44,7 @@ TEST_CASE("The sampler view's verdict on a right sampler is the harness's: the s
     const json a = answer_json(sample_answer(
         registry, {{"name", "rough_conductor"}, {"roughness", "0.3"}, {"incident_angle", "70"}, {"seed", "3104"}}));
     // The harness on the same warp (roughness 0.3, wo at 70 degrees, seed 3104: chapter 07's test).
-    const Warp warp = rough_conductor(registry).make({0.3, 70}, 3104);
+    const Warp warp = registered(registry, "rough_conductor").make({0.3, 70}, 3104);
     const ChiSquare r = test_directions(warp.sample, warp.pdf, 3104);
     require_fit_with_losses(r, kSamplerViewLevel);
     CHECK(a["samples"] == kDirectionSamples);
@@ -77,9 +61,9 @@ TEST_CASE("The sampler view's verdict on a right sampler is the harness's: the s
 
 TEST_CASE("The sampler view fails a sampler whose pdf lacks its Jacobian, as the harness does, and shows where",
           "[sampler_view][statistical]") {
-    const RegisteredSampler wrong = missing_jacobian();
-    const json a = answer_json(sample_answer({wrong}, {{"name", "theta_uniform"}, {"seed", "5"}}));
-    const Warp warp = wrong.make({}, 5);
+    const std::vector<RegisteredSampler> registry = sampler_registry();
+    const json a = answer_json(sample_answer(registry, {{"name", "mistake_missing_jacobian"}, {"seed", "5"}}));
+    const Warp warp = registered(registry, "mistake_missing_jacobian").make({}, 5);
     const ChiSquare r = test_directions(warp.sample, warp.pdf, 5);
     CHECK(a["statistic"].get<double>() == r.statistic);
     CHECK(r.p_value < 1e-12);
@@ -130,7 +114,9 @@ TEST_CASE("The sampler view answers a sampler that throws (an unwritten exercise
     CHECK(a.body == "stub: the sampler failed: not implemented: ch04.power_cosine — see the lesson\n");
 }
 
-TEST_CASE("The sampler view lists every sampler of chapters 04, 06, 07 and 09 with its parameters", "[sampler_view]") {
+TEST_CASE("The sampler view lists every sampler of chapters 04, 06, 07 and 09, and chapter 01's mistake, with its "
+          "parameters",
+          "[sampler_view]") {
     const json list = answer_json(samplers_answer(sampler_registry()))["samplers"];
     std::set<std::string> chapters, names;
     for (const json& s : list) {
@@ -141,7 +127,7 @@ TEST_CASE("The sampler view lists every sampler of chapters 04, 06, 07 and 09 wi
             CHECK(p["value"].get<double>() <= p["max"].get<double>());
         }
     }
-    CHECK(chapters == std::set<std::string>{"04", "06", "07", "09"});
+    CHECK(chapters == std::set<std::string>{"01", "04", "06", "07", "09"});
     CHECK(names.size() == list.size());
     CHECK(names.count("henyey_greenstein") == 1);
     CHECK(names.count("rough_dielectric") == 1);

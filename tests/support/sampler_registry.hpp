@@ -1,5 +1,5 @@
-// Every direction sampler the chi-square tests fit, by name, with the parameters a student may turn: the warps
-// of chapter 04 (direction_warps.hpp, shared with chapters 04 and 06's tests), the BRDFs chapter 06 samples,
+// Every direction sampler the chi-square tests fit, by name, with the parameters a student may turn (and one
+// mistake, for class: a pdf without its Jacobian): the warps of chapter 04 (direction_warps.hpp, shared with chapters 04 and 06's tests), the BRDFs chapter 06 samples,
 // chapter 07's rough glass and metal, chapter 09's Henyey–Greenstein phase function. The sampler view
 // (chapters/09_participating_media/sampler_view) draws whichever a student picks; tests/sampler_view_test.cpp
 // fits them. Each comes from the chapters' code, so in the student edition it is the student's own.
@@ -77,6 +77,20 @@ inline RegisteredSampler fixed(std::string name, std::string chapter, std::strin
             [warp](const std::vector<double>&, std::uint64_t) { return warp(); }};
 }
 
+// A mistake to find, for class (chapter 01's lesson): θ and φ drawn uniformly over the upper hemisphere, and
+// as the pdf per steradian the density of (θ, φ), 1 / π², without the Jacobian sin θ of dω = sin θ dθ dφ (the
+// right pdf is 1 / (π² sin θ)). The samples crowd the pole, and the pdf integrates to 2 / π.
+inline Warp missing_jacobian_warp() {
+    return bare(
+        "theta uniform",
+        [](Vec2 u) {
+            const double theta = double(u.x) * std::numbers::pi / 2, phi = 2 * std::numbers::pi * double(u.y);
+            return Vec3(Real(std::sin(theta) * std::cos(phi)), Real(std::sin(theta) * std::sin(phi)),
+                        Real(std::cos(theta)));
+        },
+        [](const Vec3& d) { return d.z >= 0 ? 1 / (std::numbers::pi * std::numbers::pi) : 0.0; });
+}
+
 inline std::vector<RegisteredSampler> sampler_registry() {
     const SamplerParameter incident{"incident_angle", "degrees between wo and the normal", 0, 89, 30};
     const SamplerParameter roughness{"roughness", "0.1 (sharp) to 1 (broad)", 0.1, 1, 0.3};
@@ -150,6 +164,8 @@ inline std::vector<RegisteredSampler> sampler_registry() {
                          },
                          [=](const Vec3& w) { return double(phase->eval(wo, w)); }};
          }},
+        fixed("mistake_missing_jacobian", "01", "a mistake to find: theta uniform, its pdf without sin(theta)",
+              missing_jacobian_warp),
     };
     return r;
 }
