@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <numbers>
 #include <string>
@@ -244,22 +245,27 @@ inline ChiSquare test_directions(const DirectionSampler& sampler, const Directio
 // the integration), and to what was not lost: |lost / N − (1 − ∫ pdf)| within the same 1e-3 plus 5 binomial
 // standard deviations.
 inline std::vector<std::string> fit_problems(const ChiSquare& r, double level, bool may_lose) {
+    const auto shown = [](auto x) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4g", double(x));
+        return std::string(text);
+    };
     std::vector<std::string> problems;
     const double n = r.samples, integral = r.expected_total / n, lost = double(r.lost) / n;
     if (r.bad_samples != 0)
         problems.push_back(std::to_string(r.bad_samples) +
                            " bad samples (not finite unit directions, or where the pdf is 0)");
     if (!(r.p_value > level))
-        problems.push_back("p = " + std::to_string(r.p_value) + " is not above the level " + std::to_string(level) +
+        problems.push_back("p = " + shown(r.p_value) + " is not above the level " + shown(level) +
                            ": the histogram does not follow the pdf");
     if (!may_lose && !(std::abs(integral - 1) <= 1e-3))
-        problems.push_back("the pdf integrates to " + std::to_string(integral) + ", not 1");
+        problems.push_back("the pdf integrates to " + shown(integral) + ", not 1");
     if (may_lose) {
         const double sigma = std::sqrt(std::max(lost * (1 - lost), 1 / n) / n);
-        if (!(integral <= 1 + 1e-3)) problems.push_back("the pdf integrates to " + std::to_string(integral) + " > 1");
+        if (!(integral <= 1 + 1e-3)) problems.push_back("the pdf integrates to " + shown(integral) + " > 1");
         if (!(std::abs(lost - (1 - integral)) <= 1e-3 + 5 * sigma))
-            problems.push_back("lost " + std::to_string(lost) + " of the samples, but the pdf leaves out " +
-                               std::to_string(1 - integral));
+            problems.push_back("lost " + shown(lost) + " of the samples, but the pdf leaves out " +
+                               shown(1 - integral));
     }
     return problems;
 }
