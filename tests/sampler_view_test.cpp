@@ -132,3 +132,22 @@ TEST_CASE("The sampler view lists every sampler of chapters 04, 06, 07 and 09, a
     CHECK(names.count("henyey_greenstein") == 1);
     CHECK(names.count("rough_dielectric") == 1);
 }
+
+TEST_CASE("The sampler view fits equiangular distances in 200 cells of the segment: the light over it, past its "
+          "end, behind",
+          "[sampler_view][statistical][equiangular]") {
+    // Chapter 09's chi-square cases: (Δ, D) = (3, 0.5), (15, 2), (−4, 1), on a segment of length 10, with its
+    // seed, 7 (the same draws).
+    const std::vector<RegisteredSampler> registry = sampler_registry();
+    for (const auto& [delta, distance] : std::vector<std::pair<std::string, std::string>>{
+             {"3", "0.5"}, {"15", "2"}, {"-4", "1"}}) {
+        const json a =
+            answer_json(sample_answer(registry, {{"name", "equiangular"}, {"delta", delta}, {"distance", distance}, {"seed", "7"}}));
+        INFO("delta " << delta << ", D " << distance << ": p = " << a["p_value"] << ", " << a["problems"]);
+        CHECK(a["domain"] == "segment");
+        CHECK(a["t_max"] == 10.0);
+        CHECK(a["observed"].size() == 200);
+        CHECK(a["problems"].empty());
+        CHECK(std::abs(a["integral"].get<double>() - 1) < 1e-3);
+    }
+}

@@ -6,8 +6,8 @@ passing verdict; bad queries (an unknown sampler, a value out of range, an unkno
 line, and the server still answers after them; another Host is refused (403); a bad --port and a port in use
 exit 2 with one line; SIGINT ends it, exit 130, nothing written.
 browser: in a headless Chromium (web_driver.py; exit 77, skipped, without chromium and chromedriver), the page
-draws the first sampler and says it passes, then a sampler picked from the list with its parameter set, then
-refuses a value out of range in words, and its heat maps hold more than one colour.
+draws the first sampler and says it passes, then a sampler picked from the list with its parameter set (its
+heat maps hold more than one colour), refuses a value out of range in words, and draws a sampler of distances.
 """
 import base64
 import json
@@ -122,6 +122,12 @@ def check_browser():
         web.command("POST", "/element/%s/click" % web.element("#draw"))
         if verdict("power_cosine ")[0] != "pass":
             fail("power_cosine with exponent 48 does not pass")
+        web.command("POST", "/element/%s/click" % web.element("#sampler option[value=equiangular]"))
+        if verdict("equiangular ")[0] != "pass":
+            fail("equiangular distances do not pass")
+        if screenshot:
+            with open(screenshot.replace(".png", "-segment.png"), "wb") as out:
+                out.write(base64.b64decode(web.command("GET", "/screenshot")))
     finally:
         if web:
             web.quit()

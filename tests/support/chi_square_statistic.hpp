@@ -239,6 +239,43 @@ inline ChiSquare test_directions(const DirectionSampler& sampler, const Directio
     return test_histogram(histogram_directions(sampler, pdf, seed, samples), samples);
 }
 
+// A sampler of distances along a segment [0, t_max) (chapter 09's equiangular sampling): t from u, and the
+// density it reports for t.
+struct SegmentWarp {
+    std::string name;
+    double t_max;
+    std::function<double(double)> sample, pdf;
+};
+
+// What such a sampler drew in `cells` equal cells of [0, t_max), beside N ∫_cell pdf dt (the midpoint rule,
+// 64 points a cell: none at an end, where the pdf of [0, t_max) stops). A t outside [0, t_max), or where the pdf is 0, is bad. Seeded: Pcg32(seed, 17).
+struct SegmentHistogram {
+    std::vector<double> observed, expected;
+    long long bad = 0;
+};
+inline SegmentHistogram histogram_segment(const SegmentWarp& warp, std::uint64_t seed, int samples,
+                                          int cells = 200) {
+    SegmentHistogram h;
+    h.observed.assign(std::size_t(cells), 0);
+    Pcg32 rng(seed, 17);
+    for (int s = 0; s < samples; ++s) {
+        const double t = warp.sample(double(rng.next_real()));
+        if (!(t >= 0 && t < warp.t_max) || !(warp.pdf(t) > 0)) {
+            ++h.bad;
+            continue;
+        }
+        h.observed[std::size_t(std::min(cells - 1, int(t / warp.t_max * cells)))] += 1;
+    }
+    constexpr int kSteps = 64;
+    const double width = warp.t_max / cells, step = width / kSteps;
+    for (int c = 0; c < cells; ++c) {
+        double sum = 0;
+        for (int k = 0; k < kSteps; ++k) sum += warp.pdf(c * width + (k + 0.5) * step);
+        h.expected.push_back(samples * sum * step);
+    }
+    return h;
+}
+
 // What keeps a fitted sample from passing at `level`, one line each (none: it passes). Every sampler: no
 // bad sample, p > level. One that loses no sample: its pdf integrates to 1 within 1e-3. One that may lose
 // samples (a BSDF whose sample leaves on the wrong side): its pdf integrates to at most 1 (within the 1e-3 of

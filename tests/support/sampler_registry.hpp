@@ -1,6 +1,7 @@
-// Every direction sampler the chi-square tests fit, by name, with the parameters a student may turn (and one
-// mistake, for class: a pdf without its Jacobian): the warps of chapter 04 (direction_warps.hpp, shared with chapters 04 and 06's tests), the BRDFs chapter 06 samples,
-// chapter 07's rough glass and metal, chapter 09's Henyey–Greenstein phase function. The sampler view
+// Every sampler the chi-square tests fit, by name, with the parameters a student may turn (and one mistake,
+// for class: a pdf without its Jacobian): the warps of chapter 04 (direction_warps.hpp, shared with chapters
+// 04 and 06's tests), the BRDFs chapter 06 samples, chapter 07's rough glass and metal, chapter 09's
+// Henyey–Greenstein phase function and equiangular distances. The sampler view
 // (chapters/09_participating_media/sampler_view) draws whichever a student picks; tests/sampler_view_test.cpp
 // fits them. Each comes from the chapters' code, so in the student edition it is the student's own.
 #pragma once
@@ -17,6 +18,7 @@
 #include "06_monte_carlo/warp_pdfs.hpp"
 #include "07_bsdf_refraction/conductor.hpp"
 #include "07_bsdf_refraction/rough_dielectric.hpp"
+#include "09_participating_media/equiangular.hpp"
 #include "09_participating_media/henyey_greenstein.hpp"
 #include "direction_warps.hpp"
 #include "rt/core/conductor_presets.hpp"
@@ -39,6 +41,8 @@ struct RegisteredSampler {
     // The warp for these parameter values (in the order of `parameters`); `seed` seeds a BSDF's choice of lobe.
     std::function<Warp(const std::vector<double>& values, std::uint64_t seed)> make;
     bool may_lose = false;  // a BSDF whose samples may leave on the wrong side (require_fit_with_losses)
+    // Instead of `make`, for a sampler of distances along a segment: its warp for these parameter values.
+    std::function<SegmentWarp(const std::vector<double>& values)> make_segment = nullptr;
 };
 
 inline Real radians(double degrees) {
@@ -163,6 +167,19 @@ inline std::vector<RegisteredSampler> sampler_registry() {
                              return Drawn{s.wi, double(s.pdf)};
                          },
                          [=](const Vec3& w) { return double(phase->eval(wo, w)); }};
+         }},
+        {"equiangular", "09", "equiangular distances on a ray of length 10 toward a point light (EquiangularSampler)",
+         {{"delta", "where the light's foot lies on the ray", -10, 20, 3},
+          {"distance", "the light's distance from the ray", 0.05, 5, 0.5}},
+         nullptr,
+         false,
+         [](const std::vector<double>& v) {
+             constexpr Real kLength = 10;
+             // D >= 0.05: the light is off the ray's line, so there is a sampler.
+             const auto sampler = *EquiangularSampler::toward(Ray{{0, 0, 0}, {0, 0, 1}},
+                                                              Vec3(Real(v[1]), 0, Real(v[0])), kLength);
+             return SegmentWarp{"equiangular", kLength, [=](double u) { return double(sampler.sample(Real(u))); },
+                                [=](double t) { return double(sampler.pdf(Real(t))); }};
          }},
         fixed("mistake_missing_jacobian", "01", "a mistake to find: theta uniform, its pdf without sin(theta)",
               missing_jacobian_warp),

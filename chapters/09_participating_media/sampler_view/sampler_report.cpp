@@ -88,40 +88,54 @@ std::vector<double> parameter_values(const RegisteredSampler& sampler, const Liv
     return values;
 }
 
-json fitted(const RegisteredSampler& sampler, const std::vector<double>& values, int samples,
-            std::uint64_t seed) {
-    const Warp warp = sampler.make(values, seed);
-    const DirectionHistogram h = histogram_directions(warp.sample, warp.pdf, seed, samples);
-    const ChiSquare r = test_histogram(h, samples);
-    json expected = json::array();
-    for (double e : h.expected) expected.push_back(std::round(e * 1000) / 1000);
+// The answer's histogram, density and verdict, whatever the domain.
+json verdict(const RegisteredSampler& sampler, const std::vector<double>& observed,
+             const std::vector<double>& expected, ChiSquare r) {
+    json rounded = json::array();
+    for (double e : expected) rounded.push_back(std::round(e * 1000) / 1000);
     return {{"name", sampler.name},
-            {"samples", samples},
-            {"seed", seed},
-            {"nz", h.grid.nz},
-            {"nphi", h.grid.nphi},
-            {"observed", h.observed},
-            {"expected", expected},
+            {"observed", observed},
+            {"expected", rounded},
             {"statistic", r.statistic},
             {"dof", r.dof},
             {"p_value", r.p_value},
             {"level", kSamplerViewLevel},
-            {"integral", r.expected_total / samples},
+            {"integral", r.expected_total / r.samples},
             {"bad_samples", r.bad_samples},
             {"lost", r.lost},
             {"problems", fit_problems(r, kSamplerViewLevel, sampler.may_lose)},
-            {"failing_cells", failing_cells(h, kSamplerViewLevel)}};
+            {"failing_cells", failing_cells(observed, expected, kSamplerViewLevel)}};
+}
+
+json fitted(const RegisteredSampler& sampler, const std::vector<double>& values, int samples,
+            std::uint64_t seed) {
+    if (sampler.make_segment) {
+        const SegmentWarp warp = sampler.make_segment(values);
+        const SegmentHistogram h = histogram_segment(warp, seed, samples);
+        ChiSquare r = chi_square(h.observed, h.expected);
+        r.bad_samples = h.bad;
+        r.samples = samples;
+        json a = verdict(sampler, h.observed, h.expected, r);
+        a.update({{"domain", "segment"}, {"t_max", warp.t_max}, {"nz", 1}, {"nphi", h.observed.size()}});
+        return a;
+    }
+    const Warp warp = sampler.make(values, seed);
+    const DirectionHistogram h = histogram_directions(warp.sample, warp.pdf, seed, samples);
+    json a = verdict(sampler, h.observed, h.expected, test_histogram(h, samples));
+    a.update({{"domain", "sphere"}, {"nz", h.grid.nz}, {"nphi", h.grid.nphi}});
+    return a;
 }
 
 }  // namespace
 
-std::vector<int> failing_cells(const DirectionHistogram& histogram, double level) {
+std::vector<int> failing_cells(const std::vector<double>& observed, const std::vector<double>& expected,
+                               double level) {
     int considered = 0;
-    for (double e : histogram.expected) considered += e >= 5 ? 1 : 0;
+    for (double e : expected) considered += e >= 5 ? 1 : 0;
     const double cell_level = sidak_level(std::max(1, considered), level);
     std::vector<int> failing;
-    for (std::size_t i = 0; i < histogram.expected.size(); ++i) {
-        const double o = histogram.observed[i], e = histogram.expected[i];
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const double o = observed[i], e = expected[i];
         if (e >= 5 && chi_square_p_value((o - e) * (o - e) / e, 1) < cell_level) failing.push_back(int(i));
     }
     return failing;
@@ -148,7 +162,9 @@ LiveAnswer sample_answer(const std::vector<RegisteredSampler>& registry, const L
         const int samples = int(whole_in(query, "samples", kSamplerViewMinSamples, kDirectionSamples, kDirectionSamples));
         const auto seed = std::uint64_t(whole_in(query, "seed", 0, 1LL << 32, 1));
         try {
-            return {200, fitted(sampler, values, samples, seed).dump()};
+            json answer = fitted(sampler, values, samples, seed);
+            answer.update({{"samples", samples}, {"seed", seed}});
+            return {200, answer.dump()};
         } catch (const std::exception& e) {  // the student edition's "not implemented: ...", or a failure
             return refused(500, sampler.name + ": the sampler failed: " + e.what());
         }
