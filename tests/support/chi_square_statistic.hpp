@@ -1,7 +1,8 @@
 // The chi-square goodness-of-fit test of a sampler, without a test framework: the statistic and its p-value,
 // the cells of the sphere, the counts a pdf expects in them and the counts a sampler draws. The tests use it
 // through chi_square.hpp (which adds the Catch2 checks); the sampler view (chapters/09_participating_media/
-// sampler_view) shows the same histogram and verdict in a browser. Header-only: each program includes it once.
+// sampler_view) shows the same histogram and verdict in a browser. Header-only: each program includes it
+// once.
 #pragma once
 
 #include <algorithm>
@@ -229,7 +230,8 @@ inline ChiSquare test_histogram(const DirectionHistogram& h, int samples) {
     r.lost = h.lost;
     r.samples = samples;
     for (int i = h.grid.nz / 2; i < h.grid.nz; ++i)
-        for (int j = 0; j < h.grid.nphi; ++j) r.expected_upper += h.expected[std::size_t(i * h.grid.nphi + j)];
+        for (int j = 0; j < h.grid.nphi; ++j)
+            r.expected_upper += h.expected[std::size_t(i * h.grid.nphi + j)];
     return r;
 }
 
@@ -248,7 +250,8 @@ struct SegmentWarp {
 };
 
 // What such a sampler drew in `cells` equal cells of [0, t_max), beside N ∫_cell pdf dt (the midpoint rule,
-// 64 points a cell: none at an end, where the pdf of [0, t_max) stops). A t outside [0, t_max), or where the pdf is 0, is bad. Seeded: Pcg32(seed, 17).
+// 64 points a cell: none at an end, where the pdf of [0, t_max) stops). A t outside [0, t_max), or where the
+// pdf is 0, is bad. Seeded: Pcg32(seed, 17).
 struct SegmentHistogram {
     std::vector<double> observed, expected;
     long long bad = 0;

@@ -38,7 +38,8 @@ struct RegisteredSampler {
     std::string chapter;  // "04"
     std::string title;    // what it samples, and the function that does
     std::vector<SamplerParameter> parameters;
-    // The warp for these parameter values (in the order of `parameters`); `seed` seeds a BSDF's choice of lobe.
+    // The warp for these parameter values (in the order of `parameters`); `seed` seeds a BSDF's choice of
+    // lobe.
     std::function<Warp(const std::vector<double>& values, std::uint64_t seed)> make;
     bool may_lose = false;  // a BSDF whose samples may leave on the wrong side (require_fit_with_losses)
     // Instead of `make`, for a sampler of distances along a segment: its warp for these parameter values.
@@ -51,7 +52,8 @@ inline Real radians(double degrees) {
 
 // A BSDF's sample() as a warp at wo about n: u from the harness, u_lobe from its own generator; a sample with
 // pdf 0 is lost.
-inline Warp bsdf_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, Vec3 wo, Vec3 n, std::uint64_t seed) {
+inline Warp bsdf_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, Vec3 wo, Vec3 n,
+                      std::uint64_t seed) {
     auto lobe = std::make_shared<Pcg32>(seed, 23);
     return {std::move(name),
             [=](Vec2 u) {
@@ -62,22 +64,27 @@ inline Warp bsdf_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, Vec3 w
 }
 
 // wo at `degrees` from n = +z, turned 0.4 about it (chapter 06's BRDF tests).
-inline Warp brdf_warp(std::string name, std::shared_ptr<const Bsdf> brdf, double degrees, std::uint64_t seed) {
+inline Warp brdf_warp(std::string name, std::shared_ptr<const Bsdf> brdf, double degrees,
+                      std::uint64_t seed) {
     const Real theta = radians(degrees);
     const Vec3 wo(std::sin(theta) * std::cos(0.4f), std::sin(theta) * std::sin(0.4f), std::cos(theta));
     return bsdf_warp(std::move(name), std::move(brdf), wo, Vec3(0, 0, 1), seed);
 }
 
 // wo at `degrees` from n = +x, in the x–y plane (chapter 07's tests: both lobes on the grid's equator).
-inline Warp side_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, double degrees, std::uint64_t seed) {
+inline Warp side_warp(std::string name, std::shared_ptr<const Bsdf> bsdf, double degrees,
+                      std::uint64_t seed) {
     const Real theta = radians(degrees);
-    return bsdf_warp(std::move(name), std::move(bsdf), Vec3(std::cos(theta), std::sin(theta), 0), Vec3(1, 0, 0),
-                     seed);
+    return bsdf_warp(std::move(name), std::move(bsdf), Vec3(std::cos(theta), std::sin(theta), 0),
+                     Vec3(1, 0, 0), seed);
 }
 
 // A sampler without parameters.
 inline RegisteredSampler fixed(std::string name, std::string chapter, std::string title, Warp (*warp)()) {
-    return {std::move(name), std::move(chapter), std::move(title), {},
+    return {std::move(name),
+            std::move(chapter),
+            std::move(title),
+            {},
             [warp](const std::vector<double>&, std::uint64_t) { return warp(); }};
 }
 
@@ -100,28 +107,37 @@ inline std::vector<RegisteredSampler> sampler_registry() {
     const SamplerParameter roughness{"roughness", "0.1 (sharp) to 1 (broad)", 0.1, 1, 0.3};
     const Color albedo(0.7f);
     std::vector<RegisteredSampler> r = {
-        fixed("uniform_hemisphere", "04", "uniform hemisphere (sample_uniform_hemisphere)", uniform_hemisphere_warp),
+        fixed("uniform_hemisphere", "04", "uniform hemisphere (sample_uniform_hemisphere)",
+              uniform_hemisphere_warp),
         fixed("cosine_hemisphere", "04", "cosine-weighted hemisphere (sample_cosine_hemisphere)",
               cosine_hemisphere_warp),
-        {"uniform_cone", "04", "uniform cone about +z (sample_uniform_cone)",
+        {"uniform_cone",
+         "04",
+         "uniform cone about +z (sample_uniform_cone)",
          {{"half_angle", "degrees", 5, 180, 60}},
          [](const std::vector<double>& v, std::uint64_t) {
              const Real one_minus_cos = Real(1 - std::cos(double(radians(v[0]))));
-             return bare("uniform cone", [=](Vec2 u) { return sample_uniform_cone(u, one_minus_cos); },
-                         [=](const Vec3& d) { return double(uniform_cone_pdf(d, one_minus_cos)); });
+             return bare(
+                 "uniform cone", [=](Vec2 u) { return sample_uniform_cone(u, one_minus_cos); },
+                 [=](const Vec3& d) { return double(uniform_cone_pdf(d, one_minus_cos)); });
          }},
-        {"power_cosine", "04", "power-cosine lobe cos^e about +z (sample_power_cosine)",
+        {"power_cosine",
+         "04",
+         "power-cosine lobe cos^e about +z (sample_power_cosine)",
          {{"exponent", "e: 0 is uniform, 1 the cosine, larger narrower", 0, 200, 6}},
          [](const std::vector<double>& v, std::uint64_t) {
              const Real e = Real(v[0]);
-             return bare("power cosine", [=](Vec2 u) { return sample_power_cosine(u, e); },
-                         [=](const Vec3& d) { return double(power_cosine_pdf(d.z, e)); });
+             return bare(
+                 "power cosine", [=](Vec2 u) { return sample_power_cosine(u, e); },
+                 [=](const Vec3& d) { return double(power_cosine_pdf(d.z, e)); });
          }},
         fixed("quad_light", "04", "directions to a quad light by area (sample_quad_light)",
               [] { return quad_light_warp("quad light", near_quad_light(), QuadLightSampling::kArea); }),
-        fixed("quad_light_solid_angle", "04", "directions to a quad light by solid angle (spherical rectangle)",
-              [] { return quad_light_warp("quad light", near_quad_light(), QuadLightSampling::kSolidAngle); }),
-        fixed("triangle_light", "04", "directions to a triangle light (sample_triangle_light)", triangle_light_warp),
+        fixed(
+            "quad_light_solid_angle", "04", "directions to a quad light by solid angle (spherical rectangle)",
+            [] { return quad_light_warp("quad light", near_quad_light(), QuadLightSampling::kSolidAngle); }),
+        fixed("triangle_light", "04", "directions to a triangle light (sample_triangle_light)",
+              triangle_light_warp),
         fixed("sphere_light", "04", "directions to a sphere light by its cone (sample_sphere_light)",
               sphere_light_warp),
         fixed("uniform_sphere", "06", "uniform sphere (sample_uniform_sphere)",
@@ -129,20 +145,33 @@ inline std::vector<RegisteredSampler> sampler_registry() {
                   return bare("uniform sphere", sample_uniform_sphere,
                               [](const Vec3&) { return double(kUniformSpherePdf); });
               }),
-        {"lambert_brdf", "06", "Lambert BRDF's sample() (cosine-weighted)", {incident},
+        {"lambert_brdf",
+         "06",
+         "Lambert BRDF's sample() (cosine-weighted)",
+         {incident},
          [=](const std::vector<double>& v, std::uint64_t seed) {
              return brdf_warp("lambert", std::make_shared<LambertBrdf>(albedo), v[0], seed);
          }},
-        {"glossy_brdf", "06", "glossy (modified Phong) BRDF's sample()", {roughness, incident},
+        {"glossy_brdf",
+         "06",
+         "glossy (modified Phong) BRDF's sample()",
+         {roughness, incident},
          [=](const std::vector<double>& v, std::uint64_t seed) {
-             return brdf_warp("glossy", std::make_shared<GlossyBrdf>(albedo, phong_exponent(Real(v[0]))), v[1], seed);
-         }},
-        {"retroreflective_brdf", "06", "retroreflective BRDF's sample()", {roughness, incident},
-         [=](const std::vector<double>& v, std::uint64_t seed) {
-             return brdf_warp("retro", std::make_shared<RetroreflectiveBrdf>(albedo, phong_exponent(Real(v[0]))),
+             return brdf_warp("glossy", std::make_shared<GlossyBrdf>(albedo, phong_exponent(Real(v[0]))),
                               v[1], seed);
          }},
-        {"rough_dielectric", "07", "rough glass: GGX visible normals, reflection or refraction (normal +x)",
+        {"retroreflective_brdf",
+         "06",
+         "retroreflective BRDF's sample()",
+         {roughness, incident},
+         [=](const std::vector<double>& v, std::uint64_t seed) {
+             return brdf_warp("retro",
+                              std::make_shared<RetroreflectiveBrdf>(albedo, phong_exponent(Real(v[0]))), v[1],
+                              seed);
+         }},
+        {"rough_dielectric",
+         "07",
+         "rough glass: GGX visible normals, reflection or refraction (normal +x)",
          {roughness, {"eta", "ratio of indices, 1.5 entering glass", 0.25, 4, 1.5}, incident},
          [](const std::vector<double>& v, std::uint64_t seed) {
              return side_warp("rough glass",
@@ -150,13 +179,19 @@ inline std::vector<RegisteredSampler> sampler_registry() {
                               v[2], seed);
          },
          true},
-        {"rough_conductor", "07", "rough gold: GGX visible normals, reflection (normal +x)", {roughness, incident},
+        {"rough_conductor",
+         "07",
+         "rough gold: GGX visible normals, reflection (normal +x)",
+         {roughness, incident},
          [](const std::vector<double>& v, std::uint64_t seed) {
              const ConductorPreset& gold = kConductorPresets[0];
-             return side_warp("rough metal", std::make_shared<Conductor>(gold.eta, gold.k, Real(v[0])), v[1], seed);
+             return side_warp("rough metal", std::make_shared<Conductor>(gold.eta, gold.k, Real(v[0])), v[1],
+                              seed);
          },
          true},
-        {"henyey_greenstein", "09", "Henyey-Greenstein phase function, travelling along +x (sample)",
+        {"henyey_greenstein",
+         "09",
+         "Henyey-Greenstein phase function, travelling along +x (sample)",
          {{"g", "mean cosine: < 0 backward, > 0 forward", -0.95, 0.95, 0.3}},
          [](const std::vector<double>& v, std::uint64_t) {
              const auto phase = std::make_shared<HenyeyGreenstein>(Real(v[0]));
@@ -168,7 +203,9 @@ inline std::vector<RegisteredSampler> sampler_registry() {
                          },
                          [=](const Vec3& w) { return double(phase->eval(wo, w)); }};
          }},
-        {"equiangular", "09", "equiangular distances on a ray of length 10 toward a point light (EquiangularSampler)",
+        {"equiangular",
+         "09",
+         "equiangular distances on a ray of length 10 toward a point light (EquiangularSampler)",
          {{"delta", "where the light's foot lies on the ray", -10, 20, 3},
           {"distance", "the light's distance from the ray", 0.05, 5, 0.5}},
          nullptr,
@@ -178,11 +215,12 @@ inline std::vector<RegisteredSampler> sampler_registry() {
              // D >= 0.05: the light is off the ray's line, so there is a sampler.
              const auto sampler = *EquiangularSampler::toward(Ray{{0, 0, 0}, {0, 0, 1}},
                                                               Vec3(Real(v[1]), 0, Real(v[0])), kLength);
-             return SegmentWarp{"equiangular", kLength, [=](double u) { return double(sampler.sample(Real(u))); },
+             return SegmentWarp{"equiangular", kLength,
+                                [=](double u) { return double(sampler.sample(Real(u))); },
                                 [=](double t) { return double(sampler.pdf(Real(t))); }};
          }},
-        fixed("mistake_missing_jacobian", "01", "a mistake to find: theta uniform, its pdf without sin(theta)",
-              missing_jacobian_warp),
+        fixed("mistake_missing_jacobian", "01",
+              "a mistake to find: theta uniform, its pdf without sin(theta)", missing_jacobian_warp),
     };
     return r;
 }

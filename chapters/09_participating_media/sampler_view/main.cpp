@@ -23,8 +23,9 @@ constexpr const char* kPage =
 
 int serve(int argc, char** argv) {
     int port = rt::kDefaultLivePort + 1;
-    CLI::App app{"sampler_view: the course's samplers, their histograms, densities and chi-square verdicts, "
-                 "in a browser"};
+    CLI::App app{
+        "sampler_view: the course's samplers, their histograms, densities and chi-square verdicts, "
+        "in a browser"};
     app.add_option("--port", port, "The port on 127.0.0.1 (0: any free one, printed)")
         ->check(CLI::Range(0, 65535))
         ->capture_default_str();

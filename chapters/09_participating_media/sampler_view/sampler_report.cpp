@@ -26,7 +26,8 @@ LiveAnswer refused(int status, const std::string& message) {
     return {status, message + "\n", "text/plain; charset=utf-8"};
 }
 
-const RegisteredSampler& find_sampler(const std::vector<RegisteredSampler>& registry, const LiveQuery& query) {
+const RegisteredSampler& find_sampler(const std::vector<RegisteredSampler>& registry,
+                                      const LiveQuery& query) {
     const auto given = query.find("name");
     std::vector<std::string_view> names;
     std::string listed;
@@ -43,7 +44,8 @@ const RegisteredSampler& find_sampler(const std::vector<RegisteredSampler>& regi
 
 // A bound as a reader writes it: 200, 0.95.
 std::string shown_number(double x) {
-    return x == std::floor(x) && std::abs(x) < 1e15 ? std::to_string(static_cast<long long>(x)) : json(x).dump();
+    return x == std::floor(x) && std::abs(x) < 1e15 ? std::to_string(static_cast<long long>(x))
+                                                    : json(x).dump();
 }
 
 // A decimal number within [min, max], all of `text`.
@@ -53,7 +55,8 @@ double number_in(const std::string& where, const std::string& text, double min, 
     if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
         throw BadQuery{where + ": must be a number, got " + shown_value(text)};
     if (!(value >= min && value <= max))
-        throw BadQuery{where + ": must be in [" + shown_number(min) + ", " + shown_number(max) + "], got " + text};
+        throw BadQuery{where + ": must be in [" + shown_number(min) + ", " + shown_number(max) + "], got " +
+                       text};
     return value;
 }
 
@@ -68,13 +71,15 @@ long long whole_in(const LiveQuery& query, const std::string& name, long long mi
     return static_cast<long long>(value);
 }
 
-// The values of the sampler's parameters (its defaults where the query gives none); any other name is refused.
+// The values of the sampler's parameters (its defaults where the query gives none); any other name is
+// refused.
 std::vector<double> parameter_values(const RegisteredSampler& sampler, const LiveQuery& query) {
     std::vector<double> values;
     for (const SamplerParameter& p : sampler.parameters) {
         const auto given = query.find(p.name);
-        values.push_back(given == query.end() ? p.value
-                                              : number_in(sampler.name + ": " + p.name, given->second, p.min, p.max));
+        values.push_back(given == query.end()
+                             ? p.value
+                             : number_in(sampler.name + ": " + p.name, given->second, p.min, p.max));
     }
     for (const auto& [name, value] : query) {
         bool known = name == "name" || name == "samples" || name == "seed";
@@ -82,8 +87,8 @@ std::vector<double> parameter_values(const RegisteredSampler& sampler, const Liv
         if (known) continue;
         std::string parameters;
         for (const SamplerParameter& p : sampler.parameters) parameters += " " + p.name;
-        throw BadQuery{sampler.name + ": no parameter " + shown_value(name) + " (it takes:" +
-                       (parameters.empty() ? " none" : parameters) + "; and samples, seed)"};
+        throw BadQuery{sampler.name + ": no parameter " + shown_value(name) +
+                       " (it takes:" + (parameters.empty() ? " none" : parameters) + "; and samples, seed)"};
     }
     return values;
 }
@@ -146,12 +151,18 @@ LiveAnswer samplers_answer(const std::vector<RegisteredSampler>& registry) {
     for (const RegisteredSampler& s : registry) {
         json parameters = json::array();
         for (const SamplerParameter& p : s.parameters)
-            parameters.push_back(
-                {{"name", p.name}, {"meaning", p.meaning}, {"min", p.min}, {"max", p.max}, {"value", p.value}});
-        list.push_back({{"name", s.name}, {"chapter", s.chapter}, {"title", s.title}, {"parameters", parameters}});
+            parameters.push_back({{"name", p.name},
+                                  {"meaning", p.meaning},
+                                  {"min", p.min},
+                                  {"max", p.max},
+                                  {"value", p.value}});
+        list.push_back(
+            {{"name", s.name}, {"chapter", s.chapter}, {"title", s.title}, {"parameters", parameters}});
     }
-    return {200, json{{"samplers", list}, {"max_samples", kDirectionSamples},
-                      {"min_samples", kSamplerViewMinSamples}, {"level", kSamplerViewLevel}}
+    return {200, json{{"samplers", list},
+                      {"max_samples", kDirectionSamples},
+                      {"min_samples", kSamplerViewMinSamples},
+                      {"level", kSamplerViewLevel}}
                      .dump()};
 }
 
@@ -159,7 +170,8 @@ LiveAnswer sample_answer(const std::vector<RegisteredSampler>& registry, const L
     try {
         const RegisteredSampler& sampler = find_sampler(registry, query);
         const std::vector<double> values = parameter_values(sampler, query);
-        const int samples = int(whole_in(query, "samples", kSamplerViewMinSamples, kDirectionSamples, kDirectionSamples));
+        const int samples =
+            int(whole_in(query, "samples", kSamplerViewMinSamples, kDirectionSamples, kDirectionSamples));
         const auto seed = std::uint64_t(whole_in(query, "seed", 0, 1LL << 32, 1));
         try {
             json answer = fitted(sampler, values, samples, seed);

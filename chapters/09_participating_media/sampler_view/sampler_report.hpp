@@ -1,9 +1,11 @@
-// The sampler view's two answers. /samplers: every sampler of the registry (tests/support/sampler_registry.hpp)
-// with its parameters. /sample?name=power_cosine&exponent=6[&samples=N][&seed=S]: that sampler drawn N times
-// (10^6, as the tests) and counted in the 48 × 96 cells of the sphere's (cos θ, φ), or in 200 cells of its
-// segment for a sampler of distances, beside the counts its pdf expects, the chi-square verdict of the tests' harness (chi_square_statistic.hpp: the same statistic and the
-// same checks) at the course's level of 1 %, and the cells that fail on their own. Bad input (an unknown
-// sampler or parameter, a value out of range) is answered 400 with one line saying what is wrong.
+// The sampler view's two answers. /samplers: every sampler of the registry
+// (tests/support/sampler_registry.hpp) with its parameters.
+// /sample?name=power_cosine&exponent=6[&samples=N][&seed=S]: that sampler drawn N times (10^6, as the tests)
+// and counted in the 48 × 96 cells of the sphere's (cos θ, φ), or in 200 cells of its segment for a sampler
+// of distances, beside the counts its pdf expects, the chi-square verdict of the tests' harness
+// (chi_square_statistic.hpp: the same statistic and the same checks) at the course's level of 1 %, and the
+// cells that fail on their own. Bad input (an unknown sampler or parameter, a value out of range) is answered
+// 400 with one line saying what is wrong.
 #pragma once
 
 #include <vector>
