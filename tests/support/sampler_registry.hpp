@@ -117,7 +117,7 @@ inline std::vector<RegisteredSampler> chapter04_samplers() {
         {"uniform_cone",
          "04",
          "uniform cone about +z (sample_uniform_cone)",
-         {{"half_angle", "degrees", 5, 180, 60}},
+         {{"half_angle", "degrees", 10, 180, 60}},
          [](const std::vector<double>& v, std::uint64_t) {
              const Real one_minus_cos = Real(1 - std::cos(double(radians(v[0]))));
              return bare(

@@ -48,11 +48,12 @@ std::string shown_number(double x) {
                                                     : json(x).dump();
 }
 
-// A decimal number within [min, max], all of `text`.
+// A decimal number within [min, max], all of `text` (no space, no hexadecimal, no "inf").
 double number_in(const std::string& where, const std::string& text, double min, double max) {
+    const bool decimal = !text.empty() && text.find_first_not_of("0123456789.+-eE") == std::string::npos;
     char* end = nullptr;
-    const double value = text.empty() ? 0 : std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value))
+    const double value = decimal ? std::strtod(text.c_str(), &end) : 0;
+    if (!decimal || end != text.c_str() + text.size() || !std::isfinite(value))
         throw BadQuery{where + ": must be a number, got " + shown_value(text)};
     if (!(value >= min && value <= max))
         throw BadQuery{where + ": must be in [" + shown_number(min) + ", " + shown_number(max) + "], got " +
