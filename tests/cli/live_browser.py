@@ -1,79 +1,26 @@
 #!/usr/bin/env python3
 """live_browser.py EXECUTABLE [SCREENSHOT.png]: the live view (--live) in a real headless Chromium.
 
-Drives Debian's chromium through chromedriver (W3C WebDriver over plain HTTP, spoken here with urllib):
+Drives Debian's chromium through chromedriver (web_driver.py):
 loads the page of chapter 06's executable, sees the image change from one pass to the next and the counters
 go up, switches indirect light off with its checkbox and the depth with its field, sees the render start again
 with them (the image and the counters change), and takes a screenshot, a PNG with more than one colour
 (written to SCREENSHOT.png when given). Exit 77 (skipped) when chromium or chromedriver is not installed.
 """
 import base64
-import json
 import os
-import shutil
-import socket
 import struct
-import subprocess
 import sys
 import time
-import urllib.error
-import urllib.request
 import zlib
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from live_run import LiveRun, fail  # noqa: E402
+from web_driver import WebDriver, browser_or_skip, start_chromedriver, wait_until  # noqa: E402
 
-browser = next(filter(None, map(shutil.which, ("chromium", "chromium-browser"))), None)
-driver = shutil.which("chromedriver")
-if not browser or not driver:
-    print("SKIP: needs chromium and chromedriver (Debian: chromium chromium-driver)")
-    sys.exit(77)
+browser, driver = browser_or_skip()
 exe = sys.argv[1]
 screenshot_file = sys.argv[2] if len(sys.argv) > 2 else None
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class WebDriver:
-    """The few W3C WebDriver commands this test needs."""
-
-    def __init__(self, port):
-        self.base = "http://127.0.0.1:%d" % port
-        capabilities = {"browserName": "chrome", "goog:chromeOptions": {
-            "binary": browser, "args": ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=900,600",
-                                        "--disable-dev-shm-usage"]}}
-        self.session = self.call("POST", "/session", {"capabilities": {"alwaysMatch": capabilities}})["sessionId"]
-
-    def call(self, method, path, body=None):
-        data = json.dumps(body if body is not None else {}).encode() if method == "POST" else None
-        request = urllib.request.Request(self.base + path, data=data, method=method,
-                                         headers={"Content-Type": "application/json"})
-        try:
-            with urllib.request.urlopen(request, timeout=120) as response:
-                return json.loads(response.read())["value"]
-        except urllib.error.HTTPError as e:
-            fail("webdriver %s %s: %s" % (method, path, e.read()[:500]))
-
-    def command(self, method, path, body=None):
-        return self.call(method, "/session/%s%s" % (self.session, path), body)
-
-    def script(self, source):
-        return self.command("POST", "/execute/sync", {"script": source, "args": []})
-
-    def element(self, css):
-        found = self.command("POST", "/element", {"using": "css selector", "value": css})
-        return next(iter(found.values()))
-
-    def quit(self):
-        try:
-            request = urllib.request.Request(self.base + "/session/" + self.session, method="DELETE")
-            urllib.request.urlopen(request, timeout=60).read()
-        except OSError as e:
-            print("webdriver: the session did not end: %s" % e)
 
 
 # What the page's image holds now: its URL (the frame) and a hash of its pixels, drawn into a canvas.
@@ -89,16 +36,6 @@ return [img.src, h, c.width, c.height];
 """
 COUNTER = "const r = document.getElementById('counter-%s'); return r ? r.cells[1].textContent : null;"
 STATUS = "return document.getElementById('status').textContent;"
-
-
-def wait_until(what, probe, seconds=60):
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = probe()
-        if value:
-            return value
-        time.sleep(0.05)
-    fail("waited %g s for %s" % (seconds, what))
 
 
 def png_has_content(png):
@@ -145,14 +82,11 @@ def png_has_content(png):
 
 
 run = LiveRun(exe, "--width", "96", "--height", "64", "--spp", "4096", "--threads", "2", "--quiet")
-chromedriver_port = free_port()
-chromedriver = subprocess.Popen([driver, "--port=%d" % chromedriver_port], stdout=subprocess.DEVNULL,
-                                stderr=subprocess.DEVNULL)
+chromedriver, chromedriver_port = start_chromedriver(driver)
 web = None
 try:
-    wait_until("chromedriver", lambda: socket.socket().connect_ex(("127.0.0.1", chromedriver_port)) == 0, 30)
     started = time.time()
-    web = WebDriver(chromedriver_port)
+    web = WebDriver(chromedriver_port, browser)
     web.command("POST", "/url", {"url": "http://127.0.0.1:%d/" % run.port})
     first = wait_until("the image of a pass", lambda: web.script(IMAGE))
     spp_first = wait_until("the counters", lambda: web.script(COUNTER % "samples-per-pixel"))

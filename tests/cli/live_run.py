@@ -1,4 +1,5 @@
-"""A chapter executable run with --live, for the live view's tests (live_http.py, live_browser.py)."""
+"""A chapter executable run with --live, for the live view's tests (live_http.py, live_browser.py), or the
+sampler view (sampler_view_browser.py), which serves without it."""
 import atexit
 import http.client
 import json
@@ -18,16 +19,17 @@ def fail(message):
 
 
 class LiveRun:
-    """Starts `executable --live --port 0 ARGS` in an empty folder and reads the port it prints."""
+    """Starts `executable --live --port 0 ARGS` (`serve` instead of --live) in an empty folder and reads the port
+    it prints."""
 
-    def __init__(self, executable, *args):
+    def __init__(self, executable, *args, serve=("--live",)):
         self.folder = tempfile.mkdtemp(prefix="rt-live-")
         self.stderr = tempfile.TemporaryFile("w+")
-        self.process = subprocess.Popen([os.path.abspath(executable), "--live", "--port", "0", *args], cwd=self.folder,
+        self.process = subprocess.Popen([os.path.abspath(executable), *serve, "--port", "0", *args], cwd=self.folder,
                                         stdout=subprocess.PIPE, stderr=self.stderr, text=True)
         atexit.register(self.end)  # a test that fails leaves no server behind
         line = self.process.stdout.readline()
-        found = re.search(r"live view on http://127\.0\.0\.1:(\d+)/", line)
+        found = re.search(r"(?:live|sampler) view on http://127\.0\.0\.1:(\d+)/", line)
         if not found:
             self.process.kill()
             fail("no live view line on stdout, got %r; stderr: %s" % (line, self.errors()))

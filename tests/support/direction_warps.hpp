@@ -93,44 +93,53 @@ inline std::vector<Warp> power_cosine_warps() {
     return w;
 }
 
-// Points on a quad and a triangle light, seen as directions from a point close under them (so they fill a
-// large solid angle), and a sphere light by its cone.
-inline std::vector<Warp> light_warps() {
-    std::vector<Warp> w;
-    const QuadLight quad = make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1));
-    w.push_back({"quad light directions", [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u)); },
-                 [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d)); }});
+// The quad light of the tests, 0.5 above p = 0 (so that it fills a large solid angle), and its directions
+// from p by area (sample_quad_light) or by solid angle (spherical rectangles).
+inline QuadLight near_quad_light() {
+    return make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1));
+}
+
+inline Warp quad_light_warp(std::string name, const QuadLight& quad, QuadLightSampling by) {
+    return {std::move(name), [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u, by)); },
+            [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d, by)); }};
+}
+
+// Points on a triangle light close above p = 0, seen as directions.
+inline Warp triangle_light_warp() {
     const TriangleLight triangle =
         make_triangle_light({-1, -1, 0.7f}, {0.5f, 1.5f, 0.3f}, {1.5f, -1, 0.4f}, Color(1));
-    w.push_back({"triangle light directions",
-                 [=](Vec2 u) { return drawn(sample_triangle_light(triangle, Vec3(0), u)); },
-                 [=](const Vec3& d) { return triangle_light_pdf(triangle, Vec3(0), d); }});
+    return {"triangle light directions", [=](Vec2 u) { return drawn(sample_triangle_light(triangle, Vec3(0), u)); },
+            [=](const Vec3& d) { return triangle_light_pdf(triangle, Vec3(0), d); }};
+}
+
+// A sphere light seen from p = 0, sampled by its cone.
+inline Warp sphere_light_warp() {
     const SphereLight sphere{{0.3f, 0.4f, 1.2f}, 0.6f, Color(1)};
-    w.push_back({"sphere light directions",
-                 [=](Vec2 u) { return drawn(sample_sphere_light(sphere, Vec3(0), u)); },
-                 [=](const Vec3& d) {
-                     // Uniform in the cone: sphere_light_pdf inside it, 0 outside.
-                     const Vec3 axis = glm::normalize(sphere.center);
-                     const Real ratio = sphere.radius / glm::length(sphere.center);
-                     const Real cone = one_minus_cos_stable(ratio * ratio);
-                     return uniform_cone_pdf(make_frame(axis).to_local(d), cone) > 0
-                                ? double(sphere_light_pdf(sphere, Vec3(0)))
-                                : 0.0;
-                 }});
-    return w;
+    return {"sphere light directions", [=](Vec2 u) { return drawn(sample_sphere_light(sphere, Vec3(0), u)); },
+            [=](const Vec3& d) {
+                // Uniform in the cone: sphere_light_pdf inside it, 0 outside.
+                const Vec3 axis = glm::normalize(sphere.center);
+                const Real ratio = sphere.radius / glm::length(sphere.center);
+                const Real cone = one_minus_cos_stable(ratio * ratio);
+                return uniform_cone_pdf(make_frame(axis).to_local(d), cone) > 0
+                           ? double(sphere_light_pdf(sphere, Vec3(0)))
+                           : 0.0;
+            }};
+}
+
+// Points on a quad, a triangle and a sphere light, seen as directions.
+inline std::vector<Warp> light_warps() {
+    return {quad_light_warp("quad light directions", near_quad_light(), QuadLightSampling::kArea),
+            triangle_light_warp(), sphere_light_warp()};
 }
 
 // Quads sampled by solid angle (spherical rectangles): the quad of light_warps, and a 4 x 4 lamp 0.3 above p
 // (Ω = 5.45 sr), where directions reach 82 degrees from the lamp's normal.
 inline std::vector<Warp> solid_angle_quad_warps() {
     std::vector<Warp> w;
-    for (const QuadLight& quad : {make_quad_light({-1, -0.5f, 0.5f}, {0, 1.5f, 0}, {2, 0, 0}, Color(1)),
-                                  make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(1))}) {
-        const QuadLightSampling by = QuadLightSampling::kSolidAngle;
-        w.push_back({"quad light directions by solid angle, area " + std::to_string(quad.area),
-                     [=](Vec2 u) { return drawn(sample_quad_light(quad, Vec3(0), u, by)); },
-                     [=](const Vec3& d) { return double(quad_light_pdf(quad, Vec3(0), d, by)); }});
-    }
+    for (const QuadLight& quad : {near_quad_light(), make_quad_light({-2, -2, 0.3f}, {0, 4, 0}, {4, 0, 0}, Color(1))})
+        w.push_back(quad_light_warp("quad light directions by solid angle, area " + std::to_string(quad.area), quad,
+                                    QuadLightSampling::kSolidAngle));
     return w;
 }
 

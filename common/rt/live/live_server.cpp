@@ -127,7 +127,7 @@ struct LiveServer::Impl {
         return host == "127.0.0.1" + p || host == "localhost" + p;
     }
 
-    void serve() {
+    void serve(const std::vector<LiveRoute>& routes) {
         // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, with which a second server could share
         // a port already in use instead of being refused.
         server.set_socket_options([](socket_t socket) {
@@ -162,6 +162,16 @@ struct LiveServer::Impl {
         server.Get("/", [this](const httplib::Request&, httplib::Response& response) {
             response.set_content(page, "text/html; charset=utf-8");
         });
+        for (const LiveRoute& route : routes) {
+            server.Get(route.path, [answer = route.answer](const httplib::Request& request,
+                                                           httplib::Response& response) {
+                LiveQuery query;
+                for (const auto& [name, value] : request.params) query.emplace(name, value);
+                const LiveAnswer a = answer(query);
+                response.status = a.status;
+                response.set_content(a.body, a.content_type);
+            });
+        }
         server.Get("/state", [this](const httplib::Request&, httplib::Response& response) {
             const std::lock_guard<std::mutex> lock(mutex);
             response.set_content(state, "application/json");
@@ -208,9 +218,10 @@ struct LiveServer::Impl {
     static constexpr const char* kStopping = "the live view is stopping";
 };
 
-LiveServer::LiveServer(int port, std::string page) : impl_(std::make_unique<Impl>()) {
+LiveServer::LiveServer(int port, std::string page, std::vector<LiveRoute> routes)
+    : impl_(std::make_unique<Impl>()) {
     impl_->page = std::move(page);
-    impl_->serve();
+    impl_->serve(routes);
     // 127.0.0.1 only: no other machine can reach it.
     if (port == 0) {
         impl_->port = impl_->server.bind_to_any_port("127.0.0.1");
@@ -290,7 +301,7 @@ bool live_view_built() {
 
 struct LiveServer::Impl {};
 
-LiveServer::LiveServer(int, std::string) {
+LiveServer::LiveServer(int, std::string, std::vector<LiveRoute>) {
     throw InputError(
         "--live: this build has no live view: cpp-httplib was not found when it was configured (install "
         "libcpp-httplib-dev, then configure again)");

@@ -7,9 +7,11 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rt {
 
@@ -28,11 +30,25 @@ struct LiveChange {
 // Applies a change, or refuses it: returns the message saying why (the page shows it; HTTP 400).
 using LiveChangeHandler = std::function<std::optional<std::string>(const LiveChange&)>;
 
+// A GET path the server answers besides its own (the sampler view's /samplers and /sample): the answer is
+// computed from the request's query parameters (the first value of each name) on the serving thread.
+struct LiveAnswer {
+    int status = 200;
+    std::string body;
+    std::string content_type = "application/json";
+};
+using LiveQuery = std::map<std::string, std::string>;
+struct LiveRoute {
+    std::string path;
+    std::function<LiveAnswer(const LiveQuery&)> answer;
+};
+
 class LiveServer {
 public:
-    // Binds 127.0.0.1:port (0: a free port, port() says which) and serves `page`. Throws InputError naming
-    // --port when the port cannot be had (in use, or reserved), or --live when this build has no live view.
-    LiveServer(int port, std::string page);
+    // Binds 127.0.0.1:port (0: a free port, port() says which) and serves `page` and `routes`. Throws
+    // InputError naming --port when the port cannot be had (in use, or reserved), or --live when this build
+    // has no live view.
+    LiveServer(int port, std::string page, std::vector<LiveRoute> routes = {});
     ~LiveServer();  // stop()
     LiveServer(const LiveServer&) = delete;
     LiveServer& operator=(const LiveServer&) = delete;
