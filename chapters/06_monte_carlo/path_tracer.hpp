@@ -6,9 +6,10 @@
 // path costs no memory, and the state the compiler keeps in registers is small.
 // It reads every material through the Bsdf interface and the material table: a BSDF with transmission sends
 // the path through the surface, a delta BSDF is followed like a mirror (what it meets next counts in full),
-// and what fills the inside of a shape attenuates the segment that crosses it. Its steps are public, so
-// that other loops are built from them: the next-event estimate, the MIS weight of light a path meets, the
-// BSDF-sampled continuation and Russian roulette.
+// and what fills the inside of a shape attenuates the segment that crosses it. A later chapter extends the
+// loop without copying it: an extension (SurfacePaths is this chapter's) says what happens between two
+// vertices and at one, and its vertex (bsdf_vertex.hpp) how the continuation is drawn and with what density.
+// The steps are public: the next-event estimate, the MIS weight of light a path meets, Russian roulette.
 #pragma once
 
 #include <cmath>
