@@ -1,8 +1,9 @@
-// A vertex of a path as the loop's steps see it: where it is, what it scatters toward a direction, the density
-// with which it draws the direction that continues the path (the density MIS weighs light samples against),
-// and that draw. This is chapter 06's surface vertex, which draws from the BSDF (or the strategy's hemisphere).
-// The next-event estimate is a template over the vertex: chapter 09's vertex in a medium (a phase function)
-// and a guided vertex offer the same members, and PathExtension::vertex chooses the one at a surface.
+// A vertex of a path as the loop's steps see it: where it is, what it scatters toward a direction, the
+// density with which it draws the direction that continues the path (the density MIS weighs light samples
+// against), and that draw. This is chapter 06's surface vertex, which draws from the BSDF (or the strategy's
+// hemisphere). The next-event estimate is a template over the vertex: chapter 09's vertex in a medium (a
+// phase function) and a guided vertex offer the same members, and PathExtension::vertex chooses the one at a
+// surface.
 #pragma once
 
 #include <cmath>
@@ -36,8 +37,9 @@ struct Continuation {
 
 class BsdfVertex {
   public:
-    // At `hit`, reached from −wo, scattering by `bsdf` (all three must outlive it). `bsdf_draws`: the BSDF's own
-    // sampling draws the continuation whatever `strategy` says (as it must with next-event estimation on).
+    // At `hit`, reached from −wo, scattering by `bsdf` (all three must outlive it). `bsdf_draws`: the BSDF's
+    // own sampling draws the continuation whatever `strategy` says (as it must with next-event estimation
+    // on).
     BsdfVertex(const Hit& hit, const Vec3& wo, const Bsdf& bsdf, SamplingStrategy strategy, bool bsdf_draws,
                const RayOffset& offset)
         : hit_(hit), wo_(wo), bsdf_(bsdf), strategy_(strategy), bsdf_draws_(bsdf_draws), offset_(offset) {}
@@ -67,7 +69,8 @@ class BsdfVertex {
         BsdfSample& s = c.sample;
         const Vec2 u = rng.next_vec2();
         if (flags.delta || strategy_ == SamplingStrategy::kBrdf || bsdf_draws_) {
-            // A BSDF with two lobes (reflection and transmission) takes one more number to choose between them.
+            // A BSDF with two lobes (reflection and transmission) takes one more number to choose between
+            // them.
             s = bsdf_.sample(wo_, n, u, flags.transmission ? rng.next_real() : Real(0));
         } else {
             const bool uniform = strategy_ == SamplingStrategy::kUniform;

@@ -110,8 +110,7 @@ class PathTracer {
     Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays, PathObserver* observer = nullptr) const;
     // The same, the path's state kept in `path`: a type derived from PathState (a study's that files the
     // terms of L, PathParts), fresh.
-    template <class Path>
-        requires std::derived_from<Path, PathState>
+    template <std::derived_from<PathState> Path>
     Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays, Path* path) const;
 
     // The loop: the path from `ray` on, its state in `path`, its steps between and at vertices as `ext` says.
@@ -121,8 +120,8 @@ class PathTracer {
 
     // The steps of the loop.
     // The next-event estimate at `vertex` (bsdf_vertex.hpp): one light picked by power (an area light
-    // weighted for MIS; a point light is a delta, weight 1) and the environment (one direction it draws), each
-    // with its shadow ray, whose transmittance ext.seen(ray, t_max, rays) says.
+    // weighted for MIS; a point light is a delta, weight 1) and the environment (one direction it draws),
+    // each with its shadow ray, whose transmittance ext.seen(ray, t_max, rays) says.
     template <class Vertex, class Extension>
     Color next_event(const Vertex& vertex, SampleStream rng, RayCounts& rays, const Extension& ext) const;
     // Its lights' part, from the light sample (u_pick, u); `weight` scales it (chapter 09's distance MIS).
@@ -192,7 +191,9 @@ class SurfacePaths {
         const PathOptions& options = tracer_.options();
         return {hit, wo, bsdf, options.strategy, tracer_.estimates(), options.offset};
     }
-    Color seen(const Ray& ray, Real t_max, RayCounts& rays) const { return tracer_.unoccluded(ray, t_max, rays); }
+    Color seen(const Ray& ray, Real t_max, RayCounts& rays) const {
+        return tracer_.unoccluded(ray, t_max, rays);
+    }
     bool survives(const Hit& /*hit*/, PathState& path, SampleStream rng) const {
         return tracer_.roulette(++path.depth, path.beta, path.eta_scale, rng);
     }
@@ -201,8 +202,7 @@ class SurfacePaths {
     const PathTracer& tracer_;
 };
 
-template <class Path>
-    requires std::derived_from<Path, PathState>
+template <std::derived_from<PathState> Path>
 Color PathTracer::radiance(const Ray& ray, SampleStream rng, RayCounts& rays, Path* path) const {
     trace(ray, *path, rng, rays, nullptr, SurfacePaths(*this));
     return path->L;
@@ -258,7 +258,8 @@ void PathTracer::trace(Ray ray, Path& path, SampleStream rng, RayCounts& rays, P
 }
 
 template <class Vertex, class Extension>
-Color PathTracer::next_event(const Vertex& vertex, SampleStream rng, RayCounts& rays, const Extension& ext) const {
+Color PathTracer::next_event(const Vertex& vertex, SampleStream rng, RayCounts& rays,
+                             const Extension& ext) const {
     Color sum(0);
     if (!picker_.empty()) {
         // With one light there is nothing to choose, and no number to draw.
@@ -297,7 +298,8 @@ Color PathTracer::environment_estimate(const Vertex& vertex, SampleStream rng, R
     const EnvironmentSample s = environment_->sample(vertex.normal(), rng.next_vec2());
     const Scattering f = s.pdf > 0 ? vertex.toward(s.wi) : Scattering{};
     if (f.none()) return Color(0);
-    const Color T = options_.simulates(Effect::kShadows) ? ext.seen(vertex.ray(s.wi), kInfinity, rays) : Color(1);
+    const Color T =
+        options_.simulates(Effect::kShadows) ? ext.seen(vertex.ray(s.wi), kInfinity, rays) : Color(1);
     if (is_black(T)) return Color(0);
     const Real w = mis_ ? power_heuristic(s.pdf, vertex.pdf(s.wi)) : Real(1);
     return f.f * T * s.radiance * (f.cos * w / s.pdf);

@@ -19,7 +19,9 @@ class PhaseVertex {
     const Vec3& point() const { return p_; }
     Vec3 normal() const { return Vec3(0); }
     // The shadow ray stops short of the light's point, as chapter 03's does.
-    ShadowRay shadow_ray(const LightSample& s) const { return {{p_, s.wi}, (1 - kShadowEpsilon) * s.distance}; }
+    ShadowRay shadow_ray(const LightSample& s) const {
+        return {{p_, s.wi}, (1 - kShadowEpsilon) * s.distance};
+    }
     Ray ray(const Vec3& wi) const { return {p_, wi}; }
     Scattering toward(const Vec3& wi) const { return {Color(1), phase_.eval(wo_, wi)}; }
     Real pdf(const Vec3& wi) const { return phase_.pdf(wo_, wi); }

@@ -157,8 +157,8 @@ bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, R
 
 Segment VolumePathTracer::segment(Ray& ray, const std::optional<Hit>& hit, VolumePath& path, SampleStream rng,
                                   RayCounts& rays, PathObserver* /*observer*/) const {
-    // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it early, at
-    // a vertex in the volume.
+    // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it early,
+    // at a vertex in the volume.
     const Medium* medium = medium_along(hit);
     if (!medium) return Segment::kReached;
     const Color beta = path.beta;  // before the flight
@@ -172,7 +172,7 @@ Segment VolumePathTracer::segment(Ray& ray, const std::optional<Hit>& hit, Volum
     if ((!indirect && path.bounces >= 1) || ++path.events > walk_.max_events) return Segment::kEnded;
     if (lit) lit->t_event = flight.t;
     return scatter_in_medium(*medium->phase(), ray, flight.t, path, rng, rays, lit) ? Segment::kScattered
-                                                                                     : Segment::kEnded;
+                                                                                    : Segment::kEnded;
 }
 
 bool VolumePathTracer::crosses(const Hit& hit, const BsdfFlags& flags, Ray& ray, RayCounts& rays) const {
@@ -188,7 +188,8 @@ bool VolumePathTracer::survives(const Hit& hit, VolumePath& path, SampleStream r
     return steps_.roulette(++path.depth, path.beta, path.eta_scale, rng);
 }
 
-Color VolumePathTracer::radiance(const Ray& ray, SampleStream rng, RayCounts& rays, PathObserver* observer) const {
+Color VolumePathTracer::radiance(const Ray& ray, SampleStream rng, RayCounts& rays,
+                                 PathObserver* observer) const {
     VolumePath path;
     steps_.trace(ray, path, rng, rays, observer, *this);
     return path.L;

@@ -36,8 +36,8 @@ struct MediumWalk {
 // `bounces` counts scattering events too and `depth` (what chapter 06's roulette counts) the surface bounces
 // outside walks; and beside it:
 struct VolumePath : PathState {
-    int events = 0;      // the walks' events so far: scattering, and reflections at a walk's boundary
-    int channel = -1;    // the colour channel whose density draws the free flights (-1: none chosen yet)
+    int events = 0;    // the walks' events so far: scattering, and reflections at a walk's boundary
+    int channel = -1;  // the colour channel whose density draws the free flights (-1: none chosen yet)
     // The path's densities under each channel's sampling, relative to the chosen one's, kept at mean 1.
     Color spectral_pdf{1};
 };
@@ -55,8 +55,8 @@ class VolumePathTracer {
 
     // The hooks of chapter 06's loop (path_tracer.hpp, PathExtension).
     // Along a segment: the free flight through the medium that fills it, and a vertex where it scatters.
-    Segment segment(Ray& ray, const std::optional<Hit>& hit, VolumePath& path, SampleStream rng, RayCounts& rays,
-                    PathObserver* observer) const;
+    Segment segment(Ray& ray, const std::optional<Hit>& hit, VolumePath& path, SampleStream rng,
+                    RayCounts& rays, PathObserver* observer) const;
     // An index-matched boundary: shadow rays cross it (transmittance()), so light sampling sees what lies
     // beyond; a path crosses it too, with no vertex there.
     bool crosses(const Hit& hit, const BsdfFlags& flags, Ray& ray, RayCounts& rays) const;
@@ -104,7 +104,7 @@ class VolumePathTracer {
     // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
     Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;
 
-    PathTracer steps_;  // chapter 06's loop, which runs with this tracer as its extension
+    PathTracer steps_;     // chapter 06's loop, which runs with this tracer as its extension
     LightPicker targets_;  // the lights, quads by area: where equiangular_target draws x_l
     const World& world_;
     const MaterialTable& materials_;

@@ -41,7 +41,7 @@ class PathParts final : public PathState {
     // Light met from the vertex `from`, after `bounces` non-delta bounces.
     void add_met(const Color& term) {
         L += term;
-        file(!from.specular   ? PathPart::kBsdfHit
+        file(!from.specular ? PathPart::kBsdfHit
              : bounces == 0 ? PathPart::kSeen
                             : PathPart::kCaustic,
              bounces, term);
