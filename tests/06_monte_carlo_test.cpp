@@ -1162,15 +1162,7 @@ TEST_CASE(
     double sum = 0, sum2 = 0, n = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            // Pixels wholly on the sphere: its four corners hit it.
-            bool inside = true;
-            for (Real dx : {0.0f, 1.0f})
-                for (Real dy : {0.0f, 1.0f}) {
-                    const Ray r = camera_ray(camera, Real(x) + dx, Real(y) + dy);
-                    const Real c = glm::dot(r.origin, r.direction);
-                    inside = inside && (c * c - (glm::dot(r.origin, r.origin) - 1) > 0);
-                }
-            if (!inside) continue;
+            if (!wholly_on_unit_sphere(camera, x, y)) continue;
             CHECK(a.image.at(x, y).g == Approx(kAlbedo).epsilon(1e-5));
             const double v = b.image.at(x, y).g;
             sum += v, sum2 += v * v, ++n;
