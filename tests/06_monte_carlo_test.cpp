@@ -4,6 +4,7 @@
 // hard cases ([stability]), the irradiance integral estimated each way against its closed forms, and the path
 // tracer: the white furnace, every strategy converging to the same image, ray counts and determinism.
 #include <algorithm>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -120,6 +121,18 @@ Scene furnace_scene(Real albedo) {
     scene.shapes.push_back(Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"});
     scene.environment = EnvironmentLight{Color(1)};
     return scene;
+}
+
+// Whether pixel (x, y) lies wholly on the unit sphere at the origin: its four corners' rays hit it.
+bool wholly_on_unit_sphere(const PinholeCamera& camera, int x, int y) {
+    bool inside = true;
+    for (Real dx : {0.0f, 1.0f})
+        for (Real dy : {0.0f, 1.0f}) {
+            const Ray r = camera_ray(camera, Real(x) + dx, Real(y) + dy);
+            const Real b = glm::dot(r.origin, r.direction);
+            inside = inside && (b * b - (glm::dot(r.origin, r.origin) - 1) > 0);
+        }
+    return inside;
 }
 
 RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int size, int spp,
@@ -640,15 +653,7 @@ TEST_CASE(
         double worst = 0, sphere_pixels = 0, mis_sum = 0, cosine_sum = 0;
         for (int y = 0; y < 32; ++y) {
             for (int x = 0; x < 32; ++x) {
-                // Pixels wholly on the sphere: its four corners hit it.
-                bool inside = true;
-                for (Real dx : {0.0f, 1.0f})
-                    for (Real dy : {0.0f, 1.0f}) {
-                        const Ray r = camera_ray(camera, Real(x) + dx, Real(y) + dy);
-                        const Real b = glm::dot(r.origin, r.direction);
-                        inside = inside && (b * b - (glm::dot(r.origin, r.origin) - 1) > 0);
-                    }
-                if (!inside) continue;
+                if (!wholly_on_unit_sphere(camera, x, y)) continue;
                 ++sphere_pixels;
                 const Color c = cosine.image.at(x, y), m = mis.image.at(x, y);
                 worst = std::max({worst, std::abs(double(c.r) - albedo), std::abs(double(c.g) - albedo),
@@ -664,6 +669,94 @@ TEST_CASE(
         CHECK(mis_sum / sphere_pixels == Approx(albedo).epsilon(1e-5));
         CHECK(cosine.rays[RayKind::kShadow] == 0);
     }
+}
+
+namespace {
+
+// A vertex that draws its continuation from the uniform hemisphere whatever the BSDF, and gives MIS that
+// density (a stand-in for a guided vertex); it counts its draws.
+class UniformVertex : public BsdfVertex {
+  public:
+    UniformVertex(const BsdfVertex& vertex, std::atomic<long>& draws) : BsdfVertex(vertex), draws_(draws) {}
+    Real pdf(const Vec3& wi) const {
+        return glm::dot(wi, normal()) > 0 ? uniform_hemisphere_pdf(Vec3(0, 0, 1)) : Real(0);
+    }
+    std::optional<Continuation> sample(SampleStream rng) const {
+        ++draws_;
+        const Vec3 local = sample_uniform_hemisphere(rng.next_vec2());
+        Continuation c;
+        c.sample.wi = glm::normalize(make_frame(normal()).to_world(local));
+        c.sample.pdf = uniform_hemisphere_pdf(local);
+        const Scattering f = toward(c.sample.wi);
+        if (f.none()) return std::nullopt;
+        c.sample.f = f.f;
+        c.cos_i = f.cos;
+        return c;
+    }
+
+  private:
+    std::atomic<long>& draws_;
+};
+
+// Chapter 06's paths with that vertex at every surface: an extension that changes one member.
+class UniformPaths : public SurfacePaths {
+  public:
+    UniformPaths(const PathTracer& tracer, std::atomic<long>& draws) : SurfacePaths(tracer), draws_(draws) {}
+    UniformVertex vertex(const Hit& hit, const Vec3& wo, const Bsdf& bsdf) const {
+        return {SurfacePaths::vertex(hit, wo, bsdf), draws_};
+    }
+
+  private:
+    std::atomic<long>& draws_;
+};
+
+// A tracer render_paths can run: chapter 06's loop with UniformPaths.
+struct UniformTracer {
+    const PathTracer& tracer;
+    std::atomic<long>& draws;
+    Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays) const {
+        PathState path;
+        tracer.trace(ray, path, rng, rays, nullptr, UniformPaths(tracer, draws));
+        return path.L;
+    }
+    const PathOptions& options() const { return tracer.options(); }
+};
+
+}  // namespace
+
+TEST_CASE(
+    "An extension's vertex draws every continuation and gives MIS its density: a uniform-hemisphere vertex "
+    "keeps the white furnace's mean",
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf]"
+    "[ex:ch05.termination][ex:ch06.mis_weight]"
+    "[ex:ch06.path_tracer]") {
+    const Scene scene = furnace_scene(0.5f);
+    const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
+    const RenderScene prepared(scene, simulated);
+    PathOptions options;
+    options.simulated = simulated;
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    const int size = 32;
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
+    const RenderSettings settings{size, size, 16, 1, 1, ProgressStyle::kNone};
+    std::atomic<long> draws{0};
+    const RenderResult uniform = render_paths(UniformTracer{tracer, draws}, camera, settings);
+    const RenderResult bsdf = render_paths(tracer, camera, settings);
+    // Each vertex on the sphere drew once, and its ray escaped: one indirect ray per draw.
+    CHECK(draws > 0);
+    CHECK(draws == long(uniform.rays[RayKind::kIndirect]));
+    CHECK(uniform.image.pixels() != bsdf.image.pixels());  // the vertex's own sampling, not the BSDF's
+    // The same mean: MIS weighed the environment's samples against the density the vertex drew with.
+    double sum = 0, pixels = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            if (wholly_on_unit_sphere(camera, x, y)) {
+                sum += double(uniform.image.at(x, y).g);
+                ++pixels;
+            }
+    REQUIRE(pixels > 200);
+    CHECK(sum / pixels == Approx(0.5).epsilon(0.01));
 }
 
 TEST_CASE("Every strategy converges to the same image on the chapter's scene",
@@ -1069,15 +1162,7 @@ TEST_CASE(
     double sum = 0, sum2 = 0, n = 0;
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kSize; ++x) {
-            // Pixels wholly on the sphere: its four corners hit it.
-            bool inside = true;
-            for (Real dx : {0.0f, 1.0f})
-                for (Real dy : {0.0f, 1.0f}) {
-                    const Ray r = camera_ray(camera, Real(x) + dx, Real(y) + dy);
-                    const Real c = glm::dot(r.origin, r.direction);
-                    inside = inside && (c * c - (glm::dot(r.origin, r.origin) - 1) > 0);
-                }
-            if (!inside) continue;
+            if (!wholly_on_unit_sphere(camera, x, y)) continue;
             CHECK(a.image.at(x, y).g == Approx(kAlbedo).epsilon(1e-5));
             const double v = b.image.at(x, y).g;
             sum += v, sum2 += v * v, ++n;

@@ -376,7 +376,7 @@ TEST_CASE(
 TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera rays and shadow rays",
           "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch07.beer_lambert]") {
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
     // An emitter of radiance 1 at z = −5 facing the camera at the origin; fog of σ_a = 0.3 everywhere.
     const Scene seen = scene_from(R"({
       "camera": {"from": [0, 0, 0], "at": [0, 0, -1]},
@@ -409,7 +409,7 @@ TEST_CASE("Absorbing fog: an emitter at distance d reads exp(-sigma_a d), camera
 TEST_CASE("An absorbing slab (index-matched) passes exp(-sigma_a thickness), to camera rays and shadow rays",
           "[ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
-          "[ex:ch07.beer_lambert]") {
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert]") {
     // A slab 2 thick between the camera and a floor, and between a point light and the floor, in absorbing
     // fog (σ_a = 0.01): with a medium in the scene, shadow rays carry transmittance across index-matched
     // boundaries.
@@ -445,7 +445,8 @@ TEST_CASE(
     "Furnace: an index-matched sphere of albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 "
     "and 0.7",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_"
+    "sample]"
     "[ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     for (Real g : {Real(0), Real(0.7)}) {
         const FurnaceCheck f = furnace({Color(0), Color(2), g}, 1, 2000);
@@ -461,7 +462,8 @@ TEST_CASE(
     "Furnace: a sphere of ior 1.5 and albedo 1 under a sky of radiance 1 reads 1 at every pixel, g = 0 and "
     "0.7",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact]"
     "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
     "vertex]") {
     for (Real g : {Real(0), Real(0.7)}) {
@@ -477,7 +479,8 @@ TEST_CASE(
 TEST_CASE(
     "Furnace: a chromatic medium of albedo 1 (sigma_s = 0.5, 2, 8) reads 1 in every channel",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact]"
     "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
     "vertex]") {
     const std::vector<FurnaceCheck> channels =
@@ -495,7 +498,8 @@ TEST_CASE(
 TEST_CASE(
     "Energy: a medium of albedo 0.8 never returns more than the furnace gives in",
     "[statistical][ex:ch01.camera_ray][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch05.termination]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07."
+    "fresnel_exact]"
     "[ex:ch07.refract][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_"
     "vertex]") {
     const Prepared p(medium_sphere_scene({Color(0.4f), Color(1.6f), 0.5f}, 1.5f));
@@ -519,7 +523,7 @@ TEST_CASE(
     "Single scattering in a slab of optical thickness 1 (albedo 1, isotropic, index-matched): R1 = 0.14202 "
     "and T1 = 0.10617, by quadrature and by the walk cut after one event",
     "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
     "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // R1 = (ω/2) ∫₀¹ μ/(1+μ) (1 − e^(−τ(1+1/μ))) dμ, T1 = (ω/2) ∫₀¹ μ (e^(−τ) − e^(−τ/μ)) / (1 − μ) dμ.
     std::vector<double> mu, w;
@@ -548,7 +552,7 @@ TEST_CASE(
     "Semi-infinite medium, all orders: A(1) = 1 - H(1) sqrt(1 - omega) with Chandrasekhar's H, for omega = "
     "0.5, 0.9 and 0.99",
     "[statistical][ex:ch02.plane][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch06.mis_weight]"
-    "[ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
+    "[ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:ch07.beer_lambert][ex:ch09.free_flight]"
     "[ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const double expected[] = {0.11523, 0.41495, 0.75272};
     int k = 0;
@@ -574,7 +578,7 @@ TEST_CASE(
 
 TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
           "[stability][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_"
-          "offset][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.uniform_sphere][ex:"
+          "offset][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch06.uniform_sphere][ex:"
           "ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09."
           "free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     struct Case {
@@ -601,7 +605,8 @@ TEST_CASE("No NaN or infinity at g = +-0.999, sigma = 1e-6 and sigma = 1e6",
 TEST_CASE("A medium lit only by scattering is lit: fog under a point light or a lamp, milk under a lamp",
           "[effects][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:"
+          "ch07.refract]"
           "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // As a user's scene file is rendered: simulating simulated_effects(scene, supported). Before media called
     // for lighting these rendered black (fog under a point light: 0 shadow rays), or only what glass
@@ -719,7 +724,8 @@ TEST_CASE("The default scene renders finite and calls for media",
           "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
           "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]"
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:"
+          "ch07.refract]"
           "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     const Scene scene = load_scene(scene_path("ch09_default.json"));
     CHECK(needed(scene).contains(Effect::kMedia));
@@ -1032,10 +1038,11 @@ double single_scattering_square_exact(double sigma_s, double sigma_t, double rad
 
 }  // namespace
 
-TEST_CASE("Single scattering of a point light in fog, each --distance-sampling against the exact integral",
-          "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch07.beer_lambert]"
-          "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
+TEST_CASE(
+    "Single scattering of a point light in fog, each --distance-sampling against the exact integral",
+    "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.beer_lambert]"
+    "[ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance][ex:ch09.volume_vertex]") {
     // A scene file as a user writes it: fog, a point light 1 unit off the camera's axis, a black wall 10
     // units ahead; "effects" without indirect, so paths end at their second vertex: the image is single
     // scattering exactly.
@@ -1072,7 +1079,8 @@ TEST_CASE(
     "--distance-sampling against the exact integral",
     "[equiangular][ex:ch01.camera_ray][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
     "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-    "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09."
+    "transmittance]"
     "[ex:ch09.volume_vertex]") {
     // The point-light scene above with a 2×2 lamp 1 unit over the camera's axis, centred above t = 5: close
     // and wide, so a point on it by area and the direction by solid angle are far apart. The equiangular
@@ -1114,7 +1122,8 @@ TEST_CASE(
     "ray]"
     "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06."
     "mis_weight]"
-    "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+    "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09."
+    "transmittance]"
     "[ex:ch09.volume_vertex]") {
     // ch09_thin_fog.json at 40×40: the difference of two images, pixel by pixel (independent pixels), in each
     // of its four quadrants and in all, within 4 standard errors of 0.
@@ -1157,7 +1166,8 @@ TEST_CASE("A chromatic medium keeps free flight under --distance-sampling mis: t
           "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset][ex:ch03."
           "shadow_ray]"
           "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09.transmittance]"
+          "[ex:ch06.path_tracer][ex:ch07.beer_lambert][ex:ch09.free_flight][ex:ch09.hg_sample][ex:ch09."
+          "transmittance]"
           "[ex:ch09.volume_vertex]") {
     const Scene scene = scene_from(R"({
         "camera": {"from": [0, 0, 5], "at": [0, 0, 0]},

@@ -291,7 +291,7 @@ TEST_CASE("The normal feature is the shading normal: a smooth mesh's, not its fa
 TEST_CASE("The features of the back wall and of the glass sphere",
           "[features][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert]"
-          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     // cornell.json, 61x61: pixel (30, 20) sees the back wall (white, 0.73) over the tall box, at (278, 440,
     // 555), 1364.6 from the eye; a pixel on the glass sphere sees through it to what lies behind, farther

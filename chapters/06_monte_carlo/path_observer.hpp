@@ -1,7 +1,8 @@
 // What other code may watch along a path, without changing it: a PathObserver handed to the path loop is told
 // what happens at each step, and may end the path at a vertex. The loop draws the same random numbers with
 // or without one; without one (null, the default) each hook costs a pointer check. The code that needs a
-// hook owns its observer class: this file defines only the interface.
+// hook owns its observer class: this file defines only the interface. (A study of how L grows derives its own
+// PathState instead: path_tracer.hpp.)
 #pragma once
 
 #include "02_intersection/hit.hpp"
@@ -19,11 +20,6 @@ class PathObserver {
     // The vertex drew the direction that continues the path: `sample` with |cos θ_i| = cos_i, the throughput
     // before it `beta` (after it: β f cos_i / pdf).
     virtual void sampled(const Color& /*beta*/, const BsdfSample& /*sample*/, Real /*cos_i*/) {}
-    // L grew by light the path met (an emitter or the environment), reached from the camera or by delta
-    // bounces only when `specular`, after `bounces` non-delta bounces.
-    virtual void light_met(const Color& /*L*/, bool /*specular*/, int /*bounces*/) {}
-    // L grew by a next-event estimate.
-    virtual void light_estimated(const Color& /*L*/) {}
 };
 
 }  // namespace rt

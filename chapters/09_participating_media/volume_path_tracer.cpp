@@ -56,26 +56,11 @@ Color VolumePathTracer::transmittance(Ray ray, Real t_max, RayCounts& rays) cons
     }
 }
 
-Color VolumePathTracer::shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const {
+Color VolumePathTracer::seen(const Ray& ray, Real t_max, RayCounts& rays) const {
     return media_ ? transmittance(ray, t_max, rays) : steps_.unoccluded(ray, t_max, rays);
 }
 
-Color VolumePathTracer::light_estimate_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
-                                                 Real u_pick, Vec2 u, Real weight, RayCounts& rays) const {
-    const auto s = steps_.lights().sample(p, u_pick, u);
-    if (!s || !(s->pdf > 0)) return Color(0);
-    const Real f = phase.eval(wo, s->wi);
-    const Color T = f > 0 && steps_.options().simulates(Effect::kShadows)
-                        ? transmittance({p, s->wi}, (1 - kShadowEpsilon) * s->distance, rays)
-                        : Color(1);
-    if (!(f > 0) || is_black(T)) return Color(0);
-    const Real w =
-        steps_.weighs() && s->on_surface() ? power_heuristic(s->pdf, phase.pdf(wo, s->wi)) : Real(1);
-    return T * s->radiance * (f * (w * weight) / s->pdf);
-}
-
-Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase,
-                                             SampleStream rng, RayCounts& rays,
+Color VolumePathTracer::next_event_in_medium(const PhaseVertex& vertex, SampleStream rng, RayCounts& rays,
                                              const std::optional<LitSegment>& lit) const {
     Color sum(0);
     if (!steps_.lights().empty()) {
@@ -85,20 +70,9 @@ Color VolumePathTracer::next_event_in_medium(const Vec3& p, const Vec3& wo, cons
         const Real w = lit ? free_flight_weight(walk_.distance, free_flight_pdf(lit->sigma_t(), lit->t_event),
                                                 equiangular_pdf(*lit, lit->t_event, u_pick, u))
                            : Real(1);
-        if (w > 0) sum += light_estimate_in_medium(p, wo, phase, u_pick, u, w, rays);
+        if (w > 0) sum += steps_.light_estimate(vertex, u_pick, u, w, rays, *this);
     }
-    if (const auto& environment = steps_.environment()) {
-        // No normal in a medium: a constant environment is drawn uniformly over the sphere.
-        const EnvironmentSample s = environment->sample(Vec3(0), rng.next_vec2());
-        const Real f = s.pdf > 0 ? phase.eval(wo, s.wi) : Real(0);
-        const Color T = f > 0 && steps_.options().simulates(Effect::kShadows)
-                            ? transmittance({p, s.wi}, kInfinity, rays)
-                            : Color(1);
-        if (f > 0 && !is_black(T)) {
-            const Real w = steps_.weighs() ? power_heuristic(s.pdf, phase.pdf(wo, s.wi)) : Real(1);
-            sum += T * s.radiance * (f * w / s.pdf);
-        }
-    }
+    sum += steps_.environment_estimate(vertex, rng, rays, *this);
     return sum;
 }
 
@@ -141,8 +115,8 @@ Color VolumePathTracer::in_scattered_equiangular(const LitSegment& lit, SampleSt
     const Real p_eq = sampler->pdf(t);
     if (!(p_eq > 0)) return Color(0);
     const Real w = equiangular_weight(walk_.distance, free_flight_pdf(lit.sigma_t(), t), p_eq);
-    const Color L = light_estimate_in_medium(lit.ray.at(t), -lit.ray.direction, lit.medium->phase(), u_pick,
-                                             u, w / p_eq, rays);
+    const PhaseVertex vertex(lit.ray.at(t), -lit.ray.direction, lit.medium->phase());
+    const Color L = steps_.light_estimate(vertex, u_pick, u, w / p_eq, rays, *this);
     return lit.medium->transmittance(t) * lit.medium->sigma_s * L;
 }
 
@@ -166,16 +140,13 @@ FreeFlight VolumePathTracer::fly(const Filling& filling, Real t_max, VolumePath&
 }
 
 bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path,
-                                         SampleStream rng, RayCounts& rays, PathObserver* observer,
+                                         SampleStream rng, RayCounts& rays,
                                          const std::optional<LitSegment>& lit) const {
     // EXERCISE(ch09.volume_vertex) § 5. The volumetric path loop
     const Vec3 p = ray.at(t);
-    const Vec3 wo = -ray.direction;
-    if (steps_.estimates()) {
-        path.L += path.beta * next_event_in_medium(p, wo, phase, rng, rays, lit);
-        if (observer) observer->light_estimated(path.L);
-    }
-    const PhaseSample s = phase.sample(wo, rng.next_vec2());
+    const PhaseVertex vertex(p, -ray.direction, phase);
+    if (steps_.estimates()) path.add_estimate(path.beta * next_event_in_medium(vertex, rng, rays, lit));
+    const PhaseSample s = vertex.sample(rng);
     if (!(s.pdf > 0) || !(s.p > 0)) return false;
     path.beta *= s.p / s.pdf;
     ++path.bounces;
@@ -188,92 +159,44 @@ bool VolumePathTracer::scatter_in_medium(const PhaseFunction& phase, Ray& ray, R
     // END EXERCISE
 }
 
-Color VolumePathTracer::radiance(const Ray& camera_ray, SampleStream rng, RayCounts& rays,
+Segment VolumePathTracer::segment(Ray& ray, const std::optional<Hit>& hit, VolumePath& path, SampleStream rng,
+                                  RayCounts& rays) const {
+    // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it early,
+    // at a vertex in the volume.
+    const Filling filling = medium_along(hit);
+    if (!filling.medium) return Segment::kReached;
+    const Color beta = path.beta;  // before the flight
+    const FreeFlight flight = fly(filling, hit ? hit->t : kInfinity, path, rng);
+    // The segment's equiangular point, a vertex as deep as the free-flight event would be.
+    std::optional<LitSegment> lit = lit_segment(*filling.medium, ray, hit ? hit->t : kInfinity);
+    const bool indirect = steps_.indirect();
+    if (lit && (indirect || path.bounces == 0) && path.events < walk_.max_events)
+        path.add_estimate(beta * in_scattered_equiangular(*lit, rng, rays));
+    if (!flight.scattered) return Segment::kReached;
+    if ((!indirect && path.bounces >= 1) || ++path.events > walk_.max_events) return Segment::kEnded;
+    if (lit) lit->t_event = flight.t;
+    return scatter_in_medium(filling.scattering->phase(), ray, flight.t, path, rng, rays, lit)
+               ? Segment::kScattered
+               : Segment::kEnded;
+}
+
+bool VolumePathTracer::crosses(const Hit& hit, Ray& ray, RayCounts& rays) const {
+    if (!media_ || !index_matched_[std::size_t(hit.material)]) return false;
+    ray = spawn_ray(hit, ray.direction, steps_.options().offset);
+    rays.add(RayKind::kRefraction);
+    return true;
+}
+
+bool VolumePathTracer::survives(const Hit& hit, VolumePath& path, SampleStream rng) const {
+    if (!hit.front_face && interiors_[std::size_t(hit.material)].scattering)
+        return ++path.events <= walk_.max_events;
+    return steps_.roulette(++path.depth, path.beta, path.eta_scale, rng);
+}
+
+Color VolumePathTracer::radiance(const Ray& ray, SampleStream rng, RayCounts& rays,
                                  PathObserver* observer) const {
-    const PathTracer& steps = steps_;
-    const auto seen = [this](const Ray& shadow, Real t_max, RayCounts& n) {
-        return shadow_seen(shadow, t_max, n);
-    };
     VolumePath path;
-    Ray ray = camera_ray;
-    for (;;) {
-        const auto hit = world_.intersect(ray);
-        // What fills the segment: a medium that only absorbs attenuates it; one that scatters may end it
-        // early, at a vertex in the volume.
-        if (const Filling filling = medium_along(hit); filling.medium) {
-            const Color beta = path.beta;  // before the flight
-            const FreeFlight flight = fly(filling, hit ? hit->t : kInfinity, path, rng);
-            // The segment's equiangular point, a vertex as deep as the free-flight event would be.
-            std::optional<LitSegment> lit = lit_segment(*filling.medium, ray, hit ? hit->t : kInfinity);
-            if (lit && (steps.indirect() || path.bounces == 0) && path.events < walk_.max_events) {
-                path.L += beta * in_scattered_equiangular(*lit, rng, rays);
-                if (observer) observer->light_estimated(path.L);
-            }
-            if (flight.scattered) {
-                if ((!steps.indirect() && path.bounces >= 1) || ++path.events > walk_.max_events) break;
-                if (lit) lit->t_event = flight.t;
-                if (!scatter_in_medium(filling.scattering->phase(), ray, flight.t, path, rng, rays, observer,
-                                       lit))
-                    break;
-                continue;
-            }
-        }
-        const PathVertex& from = path.from;
-        if (!hit) {
-            if (steps.environment() && (from.specular || steps.direct())) {
-                // The density the next-event estimate at `from` drew this direction with (a medium's vertex
-                // has no normal).
-                const Real light_pdf = steps.environment()->pdf(from.normal, ray.direction);
-                path.L += path.beta * steps.environment()->radiance(ray.direction) *
-                          steps.met_weight(from, light_pdf);
-                if (observer) observer->light_met(path.L, from.specular, path.bounces);
-            }
-            break;
-        }
-        const Color emitted = materials_.emission(hit->material, hit->front_face);
-        if (!is_black(emitted) && (from.specular || steps.direct())) {
-            path.L += path.beta * emitted * steps.emitter_weight(from, ray, *hit);
-            if (observer) observer->light_met(path.L, from.specular, path.bounces);
-        }
-        if (!steps.indirect() && path.bounces >= 1) break;
-        BsdfAtHit at;
-        const Bsdf& bsdf = materials_.bsdf(*hit, at);
-        const BsdfFlags& flags = bsdf.flags();
-        if (observer && !observer->reached(*hit, flags, path.bounces)) break;
-        // Shadow rays cross an index-matched boundary (transmittance()), so light sampling sees what lies
-        // beyond it: a path crossing one makes no vertex there and goes straight on.
-        if (media_ && index_matched_[std::size_t(hit->material)]) {
-            ray = spawn_ray(*hit, ray.direction, steps.options().offset);
-            rays.add(RayKind::kRefraction);
-            continue;
-        }
-        if (flags.black) break;
-        const Vec3 wo = -ray.direction;
-        if (steps.estimates() && !flags.delta) {
-            path.L += path.beta * steps.next_event(*hit, wo, bsdf, rng, rays, seen);
-            if (observer) observer->light_estimated(path.L);
-        }
-        if (!steps.indirect() && !flags.delta && steps.estimates() && !steps.weighs() &&
-            !steps.has_unsampled_emitters())
-            break;
-        const std::optional<Continuation> next = steps.continuation(*hit, wo, bsdf, rng);
-        if (!next) break;
-        const BsdfSample& s = next->sample;
-        if (observer) observer->sampled(path.beta, s, next->cos_i);
-        path.beta *= s.f * (next->cos_i / s.pdf);
-        path.eta_scale /= s.roulette_scale;
-        path.from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
-        if (!flags.delta) ++path.bounces;
-        // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
-        // refractions belong to the walk, which ends by the walk's rules, not by chapter 06's roulette.
-        if (!hit->front_face && interiors_[std::size_t(hit->material)].scattering) {
-            if (++path.events > walk_.max_events) break;
-        } else if (!steps.roulette(++path.depth, path.beta, path.eta_scale, rng)) {
-            break;
-        }
-        ray = spawn_ray(*hit, s.wi, steps.options().offset);
-        rays.add(ray_kind(flags, s.transmitted));
-    }
+    steps_.trace(ray, path, rng, rays, observer, *this);
     return path.L;
 }
 

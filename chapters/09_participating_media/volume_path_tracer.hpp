@@ -1,6 +1,6 @@
-// Chapter 06's path loop made volumetric (pbrt-v4's VolPathIntegrator beside its PathIntegrator). Built from
-// chapter 06's steps (the next-event estimate at a surface, the MIS weight of the light a path meets, the
-// BSDF-sampled continuation, Russian roulette) and this chapter's own:
+// Chapter 06's path loop made volumetric (pbrt-v4's VolPathIntegrator beside its PathIntegrator): this tracer
+// is an extension of chapter 06's loop (path_tracer.hpp, PathTracer::trace), which runs every surface vertex
+// as chapter 06 does, and calls this chapter's steps where a path meets a medium:
 //   - free flight: along each segment, the medium that fills it samples the distance to a scattering event,
 //     drawn with one colour channel's density, spectral MIS over the whole path keeping the weight bounded;
 //   - the vertex in the volume: the phase function in the place of the BSDF, no surface, no cosine;
@@ -19,6 +19,7 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "distance_sampling.hpp"
 #include "media_materials.hpp"
+#include "phase_vertex.hpp"
 #include "scattering_medium.hpp"
 
 namespace rt {
@@ -33,15 +34,12 @@ struct MediumWalk {
     DistanceSampling distance = DistanceSampling::kFreeFlight;  // the points that look for light
 };
 
-// The state of one volumetric path.
-struct VolumePath {
-    Color L{0}, beta{1};
-    PathVertex from;     // the vertex the ray left (normal 0: a vertex in a medium)
-    int bounces = 0;     // non-delta bounces so far, scattering events too
-    int depth = 0;       // what chapter 06's roulette counts: surface bounces outside walks
-    Real eta_scale = 1;  // Π of the samples' 1 / roulette_scale
-    int events = 0;      // the walks' events so far: scattering, and reflections at a walk's boundary
-    int channel = -1;    // the colour channel whose density draws the free flights (-1: none chosen yet)
+// The state of one volumetric path: chapter 06's, where `from` may be a vertex in a medium (normal 0),
+// `bounces` counts scattering events too and `depth` (what chapter 06's roulette counts) the surface bounces
+// outside walks; and beside it:
+struct VolumePath : PathState {
+    int events = 0;    // the walks' events so far: scattering, and reflections at a walk's boundary
+    int channel = -1;  // the colour channel whose density draws the free flights (-1: none chosen yet)
     // The path's densities under each channel's sampling, relative to the chosen one's, kept at mean 1.
     Color spectral_pdf{1};
 };
@@ -56,6 +54,23 @@ class VolumePathTracer {
     Color radiance(const Ray& ray, SampleStream rng, RayCounts& rays, PathObserver* observer = nullptr) const;
 
     const PathOptions& options() const { return steps_.options(); }
+
+    // The hooks of chapter 06's loop (path_tracer.hpp, PathExtension).
+    // Along a segment: the free flight through the medium that fills it, and a vertex where it scatters.
+    Segment segment(Ray& ray, const std::optional<Hit>& hit, VolumePath& path, SampleStream rng,
+                    RayCounts& rays) const;
+    // An index-matched boundary: shadow rays cross it (transmittance()), so light sampling sees what lies
+    // beyond; a path crosses it too, with no vertex there.
+    bool crosses(const Hit& hit, Ray& ray, RayCounts& rays) const;
+    // A surface vertex is chapter 06's.
+    BsdfVertex vertex(const Hit& hit, const Vec3& wo, const Bsdf& bsdf) const {
+        return SurfacePaths(steps_).vertex(hit, wo, bsdf);
+    }
+    // What a shadow ray sees: chapter 06's visibility in a scene without media, the transmittance with them.
+    Color seen(const Ray& ray, Real t_max, RayCounts& rays) const;
+    // A walk's own boundary met from inside (a medium that scatters fills this side): its reflections and
+    // refractions belong to the walk, which ends by the walk's rules, not by chapter 06's roulette.
+    bool survives(const Hit& hit, VolumePath& path, SampleStream rng) const;
 
   private:
     // What fills a segment: its medium (null: nothing), and the same medium when it scatters (null: it only
@@ -75,16 +90,12 @@ class VolumePathTracer {
     // drawn from `phase` continues the path (`ray` becomes it). false: the path ends there.
     // `lit`: the segment when equiangular sampling serves it, which weighs this event's estimate.
     bool scatter_in_medium(const PhaseFunction& phase, Ray& ray, Real t, VolumePath& path, SampleStream rng,
-                           RayCounts& rays, PathObserver* observer,
-                           const std::optional<LitSegment>& lit) const;
-    // The next-event estimate at p in a medium: as chapter 06's, with the phase function for the BSDF, no
-    // cosine, and the environment sampled over the whole sphere. With `lit`, the lights' part is weighed by
-    // w_ff against the equiangular point of the same segment.
-    Color next_event_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, SampleStream rng,
-                               RayCounts& rays, const std::optional<LitSegment>& lit) const;
-    // The lights' part of it, from the light sample (u_pick, u); `weight` scales it (the distance MIS).
-    Color light_estimate_in_medium(const Vec3& p, const Vec3& wo, const PhaseFunction& phase, Real u_pick,
-                                   Vec2 u, Real weight, RayCounts& rays) const;
+                           RayCounts& rays, const std::optional<LitSegment>& lit) const;
+    // Chapter 06's next-event estimate at a vertex in a medium, which always draws u_pick (chapter 06's
+    // draws it only to choose between lights): with `lit`, the lights' part is weighed by w_ff against the
+    // equiangular point of the same segment, drawn from the same numbers.
+    Color next_event_in_medium(const PhaseVertex& vertex, SampleStream rng, RayCounts& rays,
+                               const std::optional<LitSegment>& lit) const;
     // The segment [0, t_max) of `ray` through `medium`, when the run's distance sampling serves it (a grey
     // medium that scatters, a finite segment, lights to sample, next-event estimation on).
     std::optional<LitSegment> lit_segment(const Medium& medium, const Ray& ray, Real t_max) const;
@@ -101,10 +112,8 @@ class VolumePathTracer {
     // The transmittance from ray.origin to ray.at(t_max) (a shadow ray): through media, across
     // index-matched boundaries, 0 at any other surface. Counts a shadow ray per segment.
     Color transmittance(Ray ray, Real t_max, RayCounts& rays) const;
-    // What a shadow ray sees: chapter 06's visibility in a scene without media, the transmittance with them.
-    Color shadow_seen(const Ray& ray, Real t_max, RayCounts& rays) const;
 
-    PathTracer steps_;     // chapter 06's loop, whose steps this one calls
+    PathTracer steps_;     // chapter 06's loop, which runs with this tracer as its extension
     LightPicker targets_;  // the lights, quads by area: where equiangular_target draws x_l
     const World& world_;
     const MaterialTable& materials_;

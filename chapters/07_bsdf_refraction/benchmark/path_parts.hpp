@@ -1,6 +1,7 @@
-// An analysis of chapter 06's path loop, as a PathObserver: the estimate L of one path split by the kind of
-// path each term of it came from, so that a study can measure which kind of path carries a render's error.
-// The loop is the same with or without it (the same random numbers, the same L); it files each term added:
+// An analysis of chapter 06's path loop, as the path's state (a PathState that files what L gains): the
+// estimate L of one path split by the kind of path each term of it came from, so that a study can measure
+// which kind of path carries a render's error. The loop is the same with it (the same random numbers, the
+// same L); it files each term added:
 //   seen:       light met by the camera ray, or by a chain of delta bounces from the camera (L-S*-E);
 //   next event: light sampling at a non-delta vertex (chapter 04's estimate, MIS-weighted with BSDF hits);
 //   BSDF hit:   light met by a ray a non-delta vertex drew from its BSDF, MIS-weighted against light
@@ -16,7 +17,7 @@
 #include <array>
 #include <cstddef>
 
-#include "06_monte_carlo/path_observer.hpp"
+#include "06_monte_carlo/path_tracer.hpp"
 #include "rt/core/enum_names.hpp"
 #include "rt/core/math.hpp"
 
@@ -33,34 +34,31 @@ constexpr auto names_of(PathPart) {
                                               {PathPart::kCaustic, "caustic"}});
 }
 
-class PathParts final : public PathObserver {
+// PathTracer::radiance(ray, rng, rays, &parts) traces a path with it: a fresh one per path.
+class PathParts final : public PathState {
   public:
     std::array<Color, kPathPartCount> parts{};      // their sum is the path's L
     std::array<Color, kPathLengthCount> lengths{};  // the same L by length: their sum is L too
 
-    bool reached(const Hit& /*hit*/, const BsdfFlags& /*flags*/, int bounces) override {
-        vertex_bounces_ = bounces;
-        return true;
-    }
-    void light_met(const Color& L, bool specular, int bounces) override {
-        file(!specular      ? PathPart::kBsdfHit
+    // Light met from the vertex `from`, after `bounces` non-delta bounces.
+    void add_met(const Color& term) {
+        L += term;
+        file(!from.specular ? PathPart::kBsdfHit
              : bounces == 0 ? PathPart::kSeen
                             : PathPart::kCaustic,
-             bounces, L);
+             bounces, term);
     }
-    // The light a vertex reached after k bounces estimates has bounced once more, there.
-    void light_estimated(const Color& L) override { file(PathPart::kNextEvent, vertex_bounces_ + 1, L); }
+    // The light that a vertex reached after k bounces estimates has bounced once more, there.
+    void add_estimate(const Color& term) {
+        L += term;
+        file(PathPart::kNextEvent, bounces + 1, term);
+    }
 
   private:
-    // Files what L gained since the last call as `part`, of `bounces` bounces.
-    void file(PathPart part, int bounces, const Color& L) {
-        parts[std::size_t(part)] += L - filed_;
-        lengths[std::min(std::size_t(bounces), kPathLengthCount - 1)] += L - filed_;
-        filed_ = L;
+    void file(PathPart part, int length, const Color& term) {
+        parts[std::size_t(part)] += term;
+        lengths[std::min(std::size_t(length), kPathLengthCount - 1)] += term;
     }
-
-    Color filed_{0};          // the part of L filed so far
-    int vertex_bounces_ = 0;  // the bounces before the vertex the path is at
 };
 
 }  // namespace rt
