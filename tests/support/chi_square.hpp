@@ -232,13 +232,14 @@ inline constexpr const char* kOutsideSupport =
     "root) or a density that forgets where it is 0?";
 inline constexpr const char* kHistogramDiffers =
     "the histogram differs from the density: a wrong inversion of the cumulative distribution, or a "
-    "Jacobian missing from the density (or, when the next check fails too, a density not normalised)?";
+    "Jacobian missing (from the sampler or the density)?";
 inline constexpr const char* kNotNormalised =
     "the density is not normalised: its integral over the sphere is not 1 (a constant forgotten, or the "
     "Jacobian of a change of variables)?";
 
-// The sample passes at the corrected `level` (sidak_level), no sample is bad, and the pdf integrates to 1
-// within 1e-3; each failure names the kind of mistake it points to.
+// No sample is bad, the pdf integrates to 1 within 1e-3, and the sample passes at the corrected `level`
+// (sidak_level), checked in that order (a density not normalised fails the histogram too); each failure names
+// the kind of mistake it points to.
 inline void require_fit(const ChiSquare& r, double level) {
     INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value << " (level " << level
                        << "), integral of the pdf " << r.expected_total / r.samples << ", bad samples "
@@ -248,11 +249,11 @@ inline void require_fit(const ChiSquare& r, double level) {
         CHECK(r.bad_samples == 0);
     }
     {
-        INFO(kHistogramDiffers);
-        CHECK(r.p_value > level);
+        INFO(kNotNormalised);
+        CHECK(r.expected_total / r.samples == Approx(1).margin(1e-3));
     }
-    INFO(kNotNormalised);
-    CHECK(r.expected_total / r.samples == Approx(1).margin(1e-3));
+    INFO(kHistogramDiffers);
+    CHECK(r.p_value > level);
 }
 
 // For a sampler that may lose samples (a BSDF whose sample leaves on the wrong side): the sample passes at
