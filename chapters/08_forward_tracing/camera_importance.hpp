@@ -25,9 +25,9 @@ struct FilmPoint {
     int y = 0;
 };
 
-// The film point of the direction d from the eye (any length): with z = d · w, a = (d · u) / z,
-// b = (d · v) / z, px = (a / half_width + 1) W / 2, py = (1 − b / half_height) H / 2 (chapter 01's
-// film_direction inverted). Nothing when z <= 0 (behind the eye) or the point falls outside the film.
+// The film point of the direction d from the eye (any length): chapter 01's film_direction inverted (scale d to
+// the film plane at distance 1 along w, then its coordinates along u and v to pixels). Nothing when d points
+// behind the eye or the point falls outside the film.
 std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Vec3& d);
 // The film point of the scene point x: project_direction(x − eye).
 std::optional<FilmPoint> project_point(const PinholeCamera& camera, const Vec3& x);
