@@ -337,8 +337,10 @@ def command_wrong(args: argparse.Namespace) -> int:
     right = sum(1 for _, s in runs if s and s.correct)
     print(f"running {len(runs)} times the tests of {len(exercises)} exercises: with the right body, then with each "
           f"of its {sum(counts.values())} wrong solutions and {right} other right solutions ...", flush=True)
-    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]",
-                                                  "--abort"], str(build), e.chapter) for e, _ in runs]
+    # A run stops at its first failure, unless the wrong solution names what a failure must say: that may be
+    # a later test's (the one about the mistake's kind), so all the exercise's tests run.
+    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]"]
+                      + ([] if s and s.says else ["--abort"]), str(build), e.chapter) for e, s in runs]
     # A shader's exercise is switched in its source, then rebuilt: those runs one at a time, the others at once.
     in_shader = [i for i, (e, _) in enumerate(runs) if e.glsl]
     in_cpp = [i for i in range(len(runs)) if not runs[i][0].glsl]
