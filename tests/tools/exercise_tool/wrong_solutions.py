@@ -90,7 +90,7 @@ def load(root: Path, exercises: list[Exercise]) -> dict[str, list[WrongSolution]
                 correct = isinstance(entry, dict) and entry.get("correct") is True
                 what = "answer" if correct else "mistake"
                 if not isinstance(entry, dict) or not isinstance(entry.get(what), str) or not entry[what]:
-                    errors.append(f"{label}: needs a \"{what}\" (one line saying what "
+                    errors.append(f"{label}: needs {'an' if correct else 'a'} \"{what}\" (one line saying what "
                                   f"{'the other right answer is' if correct else 'is wrong'})")
                     continue
                 says = entry.get("says", "")
