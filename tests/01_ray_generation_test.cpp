@@ -126,16 +126,27 @@ TEST_CASE("A pixel sample: the centre, u within its stratum, and samples beyond 
           "[ch01][ex:ch01.pixel_sample]") {
     // The centre sampler takes the pixel's centre, whatever u is.
     CHECK(pixel_sample_point(PixelSampler::kCenter, 3, 4, 0, 1, Vec2(0.9f, 0.1f)) == Vec2(3.5f, 4.5f));
-    // Stratum i of n × n = 4 × 4 is [i % 4, i % 4 + 1) × [i / 4, i / 4 + 1) / 4, and u places the sample in it.
-    for (const Vec2 u : {Vec2(0.1f, 0.7f), Vec2(0.6f, 0.2f)}) {
-        const Vec2 p = pixel_sample_point(PixelSampler::kStratified, 3, 4, 6, 16, u);
-        CHECK(p.x == Approx(3 + (2 + u.x) / 4));
-        CHECK(p.y == Approx(4 + (1 + u.y) / 4));
+    // Any correct jitter passes (u or 1 − u, any order of the strata): sample 6 of 4 × 4 stays in one stratum
+    // whatever u is, and moves by exactly a quarter of u's step along each axis, so its density is uniform
+    // over that stratum (the Jacobian of u to the film point is 1/16: 16 times the pixel's density).
+    auto point = [](int index, int count, Vec2 u) {
+        return pixel_sample_point(PixelSampler::kStratified, 3, 4, index, count, u);
+    };
+    const Vec2 middle = point(6, 16, Vec2(0.5f));
+    const Vec2 stratum = glm::floor((middle - Vec2(3, 4)) * Real(4));
+    for (const Vec2 u : {Vec2(0.1f, 0.7f), Vec2(0.6f, 0.2f), Vec2(0.01f, 0.99f)}) {
+        const Vec2 p = point(6, 16, u);
+        INFO("u = (" << u.x << ", " << u.y << "): the sample leaves its stratum, or is not uniform over it (a "
+             "Jacobian other than 1/16 from u to the film point)");
+        CHECK(glm::floor((p - Vec2(3, 4)) * Real(4)) == stratum);
+        CHECK(std::abs(p.x - middle.x) == Approx(std::abs(u.x - 0.5) / 4).margin(1e-6));
+        CHECK(std::abs(p.y - middle.y) == Approx(std::abs(u.y - 0.5) / 4).margin(1e-6));
     }
-    // 5 samples: 2 × 2 strata, and the fifth uniform over the whole pixel.
-    const Vec2 fifth = pixel_sample_point(PixelSampler::kStratified, 3, 4, 4, 5, Vec2(0.3f, 0.8f));
-    CHECK(fifth.x == Approx(3.3));
-    CHECK(fifth.y == Approx(4.8));
+    // 5 samples: 2 × 2 strata, and the fifth uniform over the whole pixel (a step of u moves it as far).
+    const Vec2 fifth = point(4, 5, Vec2(0.3f, 0.8f)), fifth_middle = point(4, 5, Vec2(0.5f));
+    CHECK(glm::floor(fifth) == Vec2(3, 4));
+    CHECK(std::abs(fifth.x - fifth_middle.x) == Approx(0.2).margin(1e-6));
+    CHECK(std::abs(fifth.y - fifth_middle.y) == Approx(0.3).margin(1e-6));
 }
 
 TEST_CASE("Exact edge coverage: whole pixels, half pixels, and the film's total area", "[ch01]") {

@@ -70,7 +70,7 @@ RenderSettings small_settings(int width, int height, int spp, int threads) {
 
 }  // namespace
 
-TEST_CASE("A point light gives E = I cos theta / r^2, and nothing from behind",
+TEST_CASE("A point light's irradiance is its intensity times the solid angle per unit area, and nothing from behind",
           "[ch03][ex:ch03.point_light]") {
     const PointLight light{{0, 2, 0}, Color(4)};
     CHECK(point_light_irradiance(light, {0, 0, 0}, {0, 1, 0}).r == Approx(1));  // 4 · 1 / 2²

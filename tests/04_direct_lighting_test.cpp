@@ -276,8 +276,8 @@ TEST_CASE("The Phong exponent follows roughness: 0 at roughness 1, sharp and fin
 namespace {
 
 // Every chi-square test of this file (hemisphere 1, cosine 1, cones 3, lobes 3, lights 3, triangle 1, quads
-// by solid angle 2), each run at the Šidák-corrected level.
-constexpr int kChiSquareTests = 14;
+// by solid angle 2, a narrow cone and a sharp lobe 2), each run at the Šidák-corrected level.
+constexpr int kChiSquareTests = 16;
 const double kAlphaPerTest = test::sidak_level(kChiSquareTests, 0.01);
 
 }  // namespace
@@ -340,32 +340,52 @@ TEST_CASE("Uniform points on a triangle: the barycentrics pass the chi-square te
     }
     ChiSquare r = chi_square(observed, expected);
     INFO("chi-square " << r.statistic << ", " << r.dof << " dof, p = " << r.p_value);
-    CHECK(bad == 0);
+    {
+        INFO(kOutsideSupport);
+        CHECK(bad == 0);
+    }
+    INFO(kHistogramDiffers);
     CHECK(r.p_value > kAlphaPerTest);
 }
 
 TEST_CASE("A narrow cone and a sharp lobe keep sin theta, and a narrow cone tells inside from outside",
           "[stability][ex:ch04.power_cosine][ex:ch04.uniform_cone][ex:ch04.uniform_cone_pdf]") {
-    // A cone of half-angle 1e-3 (1 − cos θmax = 5e-7, a few ulps of 1 in float) and a lobe of exponent 10⁷:
-    // sin θ must come from 1 − cos θ, exactly as the lesson derives it, never from 1 − cos² θ in float.
-    Pcg32 rng(31, 4);
+    // A cone of half-angle 1e-3 (1 − cos θmax = 5e-7, a few ulps of 1 in float) and a lobe of exponent 10⁷.
+    // Any correct inversion makes the fraction of the cone (1 − cos θ) / (1 − cos θmax), and the lobe's
+    // cumulative distribution cos^(e+1) α, uniform on [0, 1]: read back from each direction's sin θ (in double,
+    // 1 − cos θ = sin²θ / (1 + cos θ)), they pass the chi-square test in 100 equal cells only if sin θ kept its
+    // digits; a sin θ from 1 − cos²θ in float takes a handful of values there.
     const double half_angle = 1e-3;
     const Real one_minus_cos_max = Real(2 * std::sin(half_angle / 2) * std::sin(half_angle / 2));
-    const double exponent = 1e7;
-    for (int i = 0; i < 2000; ++i) {
+    const Real exponent = 1e7f;
+    auto one_minus_cos = [](const Vec3& w) {
+        const double sin2 = double(w.x) * double(w.x) + double(w.y) * double(w.y);
+        return sin2 / (1 + std::sqrt(std::max(0.0, 1 - sin2)));
+    };
+    constexpr int kCells = 100, kSamples = 100000;
+    std::vector<double> cone_cells(kCells, 0), lobe_cells(kCells, 0), expected(kCells, double(kSamples) / kCells);
+    auto cell = [](double v) { return std::clamp(int(v * kCells), 0, kCells - 1); };
+    Pcg32 rng(31, 4);
+    long long outside = 0;
+    for (int i = 0; i < kSamples; ++i) {
         const Vec2 u = rng.next_vec2();
         const Vec3 w = sample_uniform_cone(u, one_minus_cos_max);
-        const double v = double(u.x) * double(one_minus_cos_max);  // 1 − cos θ
-        const double sin_exact = std::sqrt(v * (2 - v));
-        INFO("u = (" << u.x << ", " << u.y << ")");
-        CHECK(std::hypot(double(w.x), double(w.y)) == Approx(sin_exact).epsilon(1e-4).margin(1e-12));
-        CHECK(uniform_cone_pdf(w, one_minus_cos_max) > 0);
-        const Vec3 lobe = sample_power_cosine(u, Real(exponent));
-        // 1 − cos α = 1 − (1 − u₁)^(1/(e+1)), in double through expm1 and log1p.
-        const double lobe_v = -std::expm1(std::log1p(-double(u.x)) / (exponent + 1));
-        CHECK(std::hypot(double(lobe.x), double(lobe.y)) ==
-              Approx(std::sqrt(lobe_v * (2 - lobe_v))).epsilon(1e-3).margin(1e-12));
+        outside += !(uniform_cone_pdf(w, one_minus_cos_max) > 0);
+        cone_cells[std::size_t(cell(one_minus_cos(w) / double(one_minus_cos_max)))] += 1;
+        const double lobe_cdf = std::exp((double(exponent) + 1) * std::log1p(-one_minus_cos(
+                                             sample_power_cosine(u, exponent))));
+        lobe_cells[std::size_t(cell(lobe_cdf))] += 1;
     }
+    {
+        INFO(kOutsideSupport);
+        CHECK(outside == 0);
+    }
+    const ChiSquare cone_fit = chi_square(cone_cells, expected), lobe_fit = chi_square(lobe_cells, expected);
+    INFO("sin theta lost its digits (from 1 - cos^2 in float?), or a wrong inversion: chi-square of the cone "
+         << cone_fit.statistic << " (p = " << cone_fit.p_value << "), of the lobe " << lobe_fit.statistic
+         << " (p = " << lobe_fit.p_value << "), " << kCells - 1 << " dof");
+    CHECK(cone_fit.p_value > kAlphaPerTest);
+    CHECK(lobe_fit.p_value > kAlphaPerTest);
     // Directions inside and outside cones of half-angle 1e-3 and 3e-4 (1 − cos θmax = 4.5e-8, under one ulp of
     // 1: 1 − z in float is 0 or 6e-8 there, and only sin²θ / (1 + z) tells inside from outside).
     for (const double cone : {1e-3, 3e-4}) {

@@ -505,7 +505,7 @@ TEST_CASE("Grazing rays give finite radiance, never NaN",
     if (skim) CHECK(glm::dot(skim->wi, n) > 0);
 }
 
-TEST_CASE("The uniform hemisphere weight 2 rho cos has mean rho",
+TEST_CASE("The uniform hemisphere weight of a Lambert surface has mean rho",
           "[statistical][ex:ch04.lambert][ex:ch04.uniform_hemisphere][ex:ch05.uniform_scatter]") {
     const LambertBrdf lambert{Color(0.7f)};
     Pcg32 rng(1100, 0);

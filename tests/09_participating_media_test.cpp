@@ -236,7 +236,8 @@ TEST_CASE("Henyey-Greenstein sampling: the mean sampled cosine is g, and p / pdf
             REQUIRE(s.p == s.pdf);
         }
         const double mean = sum / n, error = std::sqrt((sum2 / n - mean * mean) / n);
-        INFO("g = " << g << ", mean cosine " << mean << " +- " << error);
+        INFO("g = " << g << ", mean cosine " << mean << " +- " << error
+                      << ": the samples' mean cosine is not g, a wrong inversion?");
         CHECK(std::abs(mean - g) < 5 * error);
     }
 }

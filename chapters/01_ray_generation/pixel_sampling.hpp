@@ -16,9 +16,9 @@ constexpr auto names_of(PixelSampler) {
 }
 
 // The film point of sample `index` of `count` in pixel (x, y), from a uniform random pair u in [0, 1)².
-// center: (x + ½, y + ½). uniform: (x + u₁, y + u₂). stratified: the pixel is cut into n×n strata,
-// n = ⌊√count⌋; sample i < n² lies in stratum (i mod n, ⌊i / n⌋) at (x + (i mod n + u₁)/n, y + (⌊i/n⌋ + u₂)/n);
-// samples past n² are uniform.
+// center: the pixel's centre. uniform: a uniform point of the pixel. stratified: the pixel is cut into n×n
+// strata, n = ⌊√count⌋ (the largest square grid count fills), and each of the first n² samples is uniform in
+// a stratum of its own; the samples past n² are uniform over the pixel.
 Vec2 pixel_sample_point(PixelSampler sampler, int x, int y, int index, int count, Vec2 u);
 
 }  // namespace rt

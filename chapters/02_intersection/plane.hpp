@@ -1,4 +1,4 @@
-// Ray–plane intersection: the plane {p : n · (p − p₀) = 0} meets o + t d at t = n · (p₀ − o) / (n · d).
+// Ray–plane intersection: the plane {p : n · (p − p₀) = 0} meets o + t d where o + t d satisfies its equation.
 #pragma once
 
 #include <optional>

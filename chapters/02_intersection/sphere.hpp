@@ -28,7 +28,8 @@ struct SphereRoots {
 std::optional<SphereRoots> sphere_roots_textbook(const Ray& ray, const Sphere& sphere);
 
 // Robust: Δ = r² − |f − b d|² (the perpendicular distance from the centre to the line, Hearn & Baker;
-// Ray Tracing Gems ch. 7), q = −(b + sign(b) √Δ), roots q and c₀ / q (no subtraction of near-equal numbers).
+// Ray Tracing Gems ch. 7), q = −(b + sign(b) √Δ) one root, the other from the product of the roots (Vieta):
+// no subtraction of near-equal numbers.
 inline std::optional<SphereRoots> sphere_roots_stable(const Ray& ray, const Sphere& sphere) {
     // EXERCISE(ch02.sphere_stable) § Each shape's equation
     const Vec3 f = ray.origin - sphere.center;

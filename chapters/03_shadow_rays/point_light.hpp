@@ -1,7 +1,7 @@
 // Light from a point light on a diffuse surface, physically scaled. A point light of radiant intensity I
 // (W/sr) at distance r sends the flux I dω through a patch of area dA seen at angle θ, dω = cos θ dA / r², so
 // the irradiance (W/m²) of the patch is
-//     E = I cos θ / r²                           (Lambert's cosine law and the inverse-square law)
+//     E = I dω / dA                              (Lambert's cosine law and the inverse-square law)
 // and a diffuse (Lambertian) surface of albedo ρ reflects the same radiance in every direction:
 //     L = (ρ / π) E                              (ρ / π is the Lambert BRDF; chapter 04 derives it)
 #pragma once
@@ -11,8 +11,8 @@
 
 namespace rt {
 
-// E = I max(0, cos θ) / r² at point p with unit normal n, with cos θ = n · (x − p) / r and r = |x − p|, for
-// the light at x; zero when the light is behind the surface or at the point itself.
+// E at point p with unit normal n, for the light at x (cos θ = n · (x − p) / r, r = |x − p|); zero when the
+// light is behind the surface or at the point itself.
 Color point_light_irradiance(const PointLight& light, const Vec3& p, const Vec3& n);
 
 // L = (ρ / π) E: the radiance a Lambertian surface of albedo ρ reflects under irradiance E.

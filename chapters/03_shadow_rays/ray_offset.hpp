@@ -5,8 +5,8 @@
 //  - epsilon: o = p + s ε n, s = sign(d · n): a fixed distance along the normal. Too small far from the
 //             origin (p + ε n rounds back to p once ε < ulp(p)), too large for small scenes (rays start
 //             beyond a nearby occluder: light leaks).
-//  - robust:  o = p + s δ n with δ = |n_x| e_x + |n_y| e_y + |n_z| e_z (e = hit.point_error), the distance
-//             along n that clears the box of possible true points, then each component rounded one ulp
+//  - robust:  o = p + s δ n with δ the largest distance along n between p and a point of its error box
+//             (e = hit.point_error): it clears the box of possible true points; then each component rounded one ulp
 //             further away from the surface (PBRT 4 §6.8.6): scale-free, and never short.
 #pragma once
 
@@ -32,7 +32,7 @@ constexpr auto names_of(OffsetMethod) {
 // The offset of that method and epsilon; throws InputError unless epsilon is finite and > 0.
 RayOffset make_ray_offset(OffsetMethod method, Real epsilon);
 
-// The robust origin: δ = |n| · e, o = p + s δ n (s = sign(d · n), +1 when d · n = 0), then every component of
+// The robust origin: o = p + s δ n (s = sign(d · n), +1 when d · n = 0; δ as above), then every component of
 // o that moved is stepped one ulp further in the direction it moved (next_float.hpp).
 Vec3 robust_offset(const Vec3& p, const Vec3& point_error, const Vec3& n, const Vec3& direction);
 // The fixed-epsilon origin: o = p + s ε n, s = sign(d · n).

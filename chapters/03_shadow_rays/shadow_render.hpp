@@ -1,5 +1,5 @@
 // Chapter 03's picture: what the camera sees, lit by the scene's point lights through shadow rays.
-//   L(p) = L_e(p) + Σ_lights (ρ / π) E_i V_i,   E_i = I_i cos θ_i / r_i²,   V_i = 1 if the light is visible
+//   L(p) = L_e(p) + Σ_lights (ρ / π) E_i V_i,   E_i = point_light_irradiance,   V_i = 1 if the light is visible
 // A shadow ray is traced only where it can change the answer: a light behind the surface (cos θ ≤ 0) adds
 // nothing and costs nothing, and a scene without point lights traces no shadow rays at all.
 #pragma once

@@ -24,7 +24,9 @@ inline Real picked_planar_pdf(const Color& radiance, Real distance, Real cos_lig
     return luminance(radiance) * distance * distance / (cos_light * total_weight);
 }
 
-// x = origin + u₁ U + u₂ V. Nothing when p is behind the light (it emits one-sided) or sees it edge-on.
+// x = origin + u₁ U + u₂ V (the solid-angle sampler hands it the coordinates it chose, so this map is the
+// contract), with the solid-angle density of its direction. Nothing when p is behind the light (it emits
+// one-sided) or sees it edge-on.
 std::optional<LightSample> sample_quad_light(const QuadLight& light, const Vec3& p, Vec2 u);
 // The solid-angle density with which sample_quad_light picks direction wi from p (0 if wi misses the light).
 Real quad_light_pdf(const QuadLight& light, const Vec3& p, const Vec3& wi);

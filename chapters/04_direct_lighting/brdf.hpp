@@ -12,7 +12,8 @@
 
 namespace rt {
 
-// Ideal diffuse (Lambert): f = ρ / π for every pair of directions above the surface. ∫ f cos = ρ.
+// Ideal diffuse (Lambert): f = ρ times the constant for which ∫ f cos = ρ, the same for every pair of
+// directions above the surface.
 // Sampled cosine-weighted: pdf = cos θ_i / π.
 class LambertBrdf final : public Bsdf {
   public:
@@ -26,8 +27,8 @@ class LambertBrdf final : public Bsdf {
 
 // Ideal specular: all light from wi leaves along its mirror image r(wi) = 2 (n · wi) n − wi. f is a delta
 // (Dirac) distribution: eval is 0 for every wi a light sample can produce (the set r(wo) has measure zero),
-// so the direct term of a mirror from area and point lights is 0. sample() returns wi = r(wo) with
-// f = R / cos θ_i and pdf = 1, so f cos / pdf = R, the reflectance.
+// so the direct term of a mirror from area and point lights is 0. sample() returns wi = r(wo) with pdf = 1
+// and the f for which f cos θ_i / pdf = R, the reflectance.
 class MirrorBrdf final : public Bsdf {
   public:
     explicit MirrorBrdf(const Color& reflectance);
@@ -39,9 +40,9 @@ class MirrorBrdf final : public Bsdf {
 };
 
 // Glossy: the normalized modified Phong lobe around the mirror direction r(wo) (Lafortune & Willems 1994):
-// f = ρ (e + 2) / (2π) cos^e α, with cos α = max(0, wi · r(wo)). (e + 2) / (2π) makes ∫ f cos = ρ at normal
-// incidence, less elsewhere. wi · r(wo) = wo · r(wi), so it is reciprocal. e = phong_exponent(roughness).
-// Sampled from the lobe: pdf = (e + 1) / (2π) cos^e α.
+// f = ρ c cos^e α, with cos α = max(0, wi · r(wo)) and c the constant that makes ∫ f cos = ρ at normal
+// incidence (less elsewhere). wi · r(wo) = wo · r(wi), so it is reciprocal. e = phong_exponent(roughness).
+// Sampled from the lobe: pdf = power_cosine_pdf(cos α, e).
 class GlossyBrdf final : public Bsdf {
   public:
     GlossyBrdf(const Color& albedo, Real exponent);
@@ -54,8 +55,8 @@ class GlossyBrdf final : public Bsdf {
 };
 
 // Retro-reflective: the same normalized lobe around wo itself (light returns toward where it came from):
-// f = ρ (e + 2) / (2π) cos^e β, cos β = max(0, wi · wo); symmetric in wi and wo. pdf = (e + 1) / (2π) cos^e
-// β.
+// f = ρ c cos^e β, cos β = max(0, wi · wo), c the glossy lobe's constant; symmetric in wi and wo.
+// pdf = power_cosine_pdf(cos β, e).
 class RetroreflectiveBrdf final : public Bsdf {
   public:
     RetroreflectiveBrdf(const Color& albedo, Real exponent);

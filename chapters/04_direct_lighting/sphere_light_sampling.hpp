@@ -13,7 +13,7 @@
 
 namespace rt {
 
-// 1 − cos θmax = sin²θmax / (1 + cos θmax), with cos θmax = √(1 − sin²θmax).
+// 1 − cos θmax from sin²θmax (cos θmax = √(1 − sin²θmax)), without subtracting two numbers close to 1.
 Real one_minus_cos_stable(Real sin2_max);
 // The textbook 1 − √(1 − sin²θmax): cancels to 0 once sin²θmax < 2⁻²⁴ (kept for the test that shows it).
 Real one_minus_cos_naive(Real sin2_max);

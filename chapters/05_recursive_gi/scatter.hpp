@@ -23,7 +23,7 @@ struct Scatter {
 std::optional<Scatter> mirror_scatter(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n);
 
 // One direction uniform over the hemisphere around n (chapter 04's sample_uniform_hemisphere, p = 1 / (2π)),
-// w = f(wo, wi) cos θ_i · 2π; for Lambert w = 2 ρ cos θ_i, whose mean over the hemisphere is ρ.
+// w = f(wo, wi) cos θ_i / p; for Lambert a closed form whose mean over the hemisphere is ρ.
 // Nothing when the weight is 0 (wi in the tangent plane, or outside a lobe).
 std::optional<Scatter> uniform_scatter(const Bsdf& brdf, const Vec3& wo, const Vec3& n, Vec2 u);
 

@@ -12,9 +12,9 @@
 
 namespace rt {
 
-// w_a = 1 / (1 + (n_b p_b / n_a p_a)^β), written as a ratio so p² cannot overflow. Edge cases, so that
-// w_a + w_b = 1 always and nothing is NaN: p_a = ∞ (a delta, or a light seen edge-on) against a finite p_b
-// gives 1; p_a = 0 against p_b > 0 gives 0; both 0 or both ∞ give ½.
+// w_a = (n_a p_a)^β / ((n_a p_a)^β + (n_b p_b)^β), written so that p² cannot overflow, with w_a + w_b = 1
+// and no NaN at every edge: p_a = ∞ (a delta, or a light seen edge-on) or 0 against a finite p_b, and two
+// equal products (both 0, both ∞).
 inline Real mis_weight(Real n_a, Real p_a, Real n_b, Real p_b, int beta) {
     // EXERCISE(ch06.mis_weight) § Light sampling, BRDF sampling, and MIS
     const Real a = n_a * p_a, b = n_b * p_b;

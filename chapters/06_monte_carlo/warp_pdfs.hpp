@@ -7,7 +7,8 @@
 
 namespace rt {
 
-// Uniform over the whole sphere: z = 1 − 2 u₁, φ = 2π u₂; pdf = 1 / (4π).
+// Uniform over the whole sphere, pdf = 1 / (4π): by inversion of the distributions of z and of φ, with sin θ
+// kept to its digits near the poles.
 Vec3 sample_uniform_sphere(Vec2 u);
 inline constexpr Real kUniformSpherePdf = Real(0.25) * kInvPi;
 

@@ -3,8 +3,8 @@
 // distance 1 along w, a pixel covers A_pix = (2 half_width)(2 half_height) / (W H) of it):
 //   I_j = (1 / A_pix) ∫_pixel L dA_film.
 // A film point at angle θ_c from w is 1 / cos θ_c from the eye and the film is tilted by θ_c to the ray, so
-// dA_film = dω / cos³θ_c, and I_j = ∫ We L cos θ_c dω with We = 1 / (A_pix cos⁴θ_c) over the pixel's
-// directions (0 elsewhere): the importance a light path must be weighted by when it reaches the camera.
+// dA_film = dω / cos³θ_c, and I_j = ∫ We L cos θ_c dω with We over the pixel's directions (0 elsewhere)
+// the function of θ_c that makes the two agree: the importance a light path is weighted by at the camera.
 #pragma once
 
 #include <optional>
@@ -25,9 +25,9 @@ struct FilmPoint {
     int y = 0;
 };
 
-// The film point of the direction d from the eye (any length): with z = d · w, a = (d · u) / z,
-// b = (d · v) / z, px = (a / half_width + 1) W / 2, py = (1 − b / half_height) H / 2 (chapter 01's
-// film_direction inverted). Nothing when z <= 0 (behind the eye) or the point falls outside the film.
+// The film point of the direction d from the eye (any length): chapter 01's film_direction inverted (scale d to
+// the film plane at distance 1 along w, then its coordinates along u and v to pixels). Nothing when d points
+// behind the eye or the point falls outside the film.
 std::optional<FilmPoint> project_direction(const PinholeCamera& camera, const Vec3& d);
 // The film point of the scene point x: project_direction(x − eye).
 std::optional<FilmPoint> project_point(const PinholeCamera& camera, const Vec3& x);
@@ -35,7 +35,7 @@ std::optional<FilmPoint> project_point(const PinholeCamera& camera, const Vec3& 
 // A_pix = 4 half_width half_height / (W H): one pixel's area on the film at distance 1.
 Real pixel_area(const PinholeCamera& camera);
 
-// We = 1 / (A_pix cos⁴θ_c): the importance of a direction at angle θ_c from the view, within its pixel.
+// We: the importance of a direction at angle θ_c from the view, within its pixel.
 Real pinhole_importance(const PinholeCamera& camera, Real cos_theta);
 
 // The camera light paths connect to: the scene's, as a pinhole. This chapter's importance is a pinhole's;

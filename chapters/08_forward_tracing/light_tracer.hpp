@@ -3,10 +3,10 @@
 // is the same sampler). With throughput β_k = β₀ Π f cos θ / pdf after k bounces, a path reaches the camera
 // two ways:
 //   aperture: the camera is a lens of radius R focused at infinity; a segment that happens to cross it adds
-//             β We / A_lens to the pixel its direction maps to (We = 1 / (A_pix cos⁴θ_c), A_lens = π R²).
+//             β We / A_lens to the pixel its direction maps to (We = pinhole_importance, A_lens = π R²).
 //             Almost no path crosses a small lens: the fraction is measured.
 //   connect:  at every non-specular vertex x (and at the light's own point), a visibility ray toward the
-//             pinhole, and the splat  β f(wo, x→eye) G We,  G = cos θ_x cos θ_c / r²,
+//             pinhole, and the splat  β f(wo, x→eye) G We,  G the geometry term (cos θ_c dω per dA(x)),
 //             into the pixel x projects to. A mirror vertex cannot be connected (its f is a delta), so what a
 //             mirror shows is lost to this camera.
 // Glass (chapter 07's smooth dielectric): reflection with probability R, transmission with T; a light path

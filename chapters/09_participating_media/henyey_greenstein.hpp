@@ -15,9 +15,8 @@ namespace rt {
 // and cos θ = 1 the textbook 1 + g² − 2 g cos θ loses every digit to cancellation.
 Real henyey_greenstein(Real cos_theta, Real g);
 
-// cos θ drawn with density 2π p(cos θ) from u in [0, 1): for |g| < 1e-3 the isotropic 1 − 2u, else
-//   cos θ = (1 + g² − ((1 − g²) / (1 − g + 2 g u))²) / (2 g),
-// clamped to [−1, 1].
+// cos θ drawn with density 2π p(cos θ) from u in [0, 1), by inversion of its cumulative distribution (the
+// isotropic one for |g| < 1e-3, where the general one divides by nearly 0), clamped to [−1, 1].
 Real sample_henyey_greenstein_cos(Real g, Real u);
 
 class HenyeyGreenstein final : public PhaseFunction {

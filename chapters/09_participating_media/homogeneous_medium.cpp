@@ -9,7 +9,7 @@ namespace rt {
 
 FreeFlight sample_free_flight(const Color& sigma_t, const Color& sigma_s, Real t_max, int channel, Real u) {
     // EXERCISE(ch09.free_flight) § 2. Free flight
-    // t = −ln(1 − u) / σ_c: exponentially distributed; a channel that does not interact never stops.
+    // Exponentially distributed, through log1p (exact for small u); a channel that does not interact never stops.
     const Real sigma = sigma_t[channel];
     const Real t = sigma > 0 ? -std::log1p(-u) / sigma : kInfinity;
     if (t < t_max) {

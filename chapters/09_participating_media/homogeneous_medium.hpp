@@ -4,8 +4,8 @@
 //   transmittance     T(d) = exp(−σ_t d)             (what is left of a ray after a distance d)
 //   single-scattering albedo  ω = σ_s / σ_t          (the fraction of each interaction that scatters)
 //   mean free path    1 / σ_t                        (the mean distance between interactions)
-// Free flight draws the distance to the next interaction with density p(t) = σ_t e^(−σ_t t), by inversion:
-// t = −ln(1 − u) / σ_t. Before the surface at t_max the path scatters there (weight T(t) σ_s / p(t) = ω);
+// Free flight draws the distance to the next interaction with density p(t) = σ_t e^(−σ_t t), by inversion of
+// its cumulative distribution. Before the surface at t_max the path scatters there (weight T(t) σ_s / p(t) = ω);
 // past it, it reaches the surface (weight T(t_max) / P(t ≥ t_max) = 1).
 //
 // Chromatic media (σ_t differing per channel) have one such density per channel. Single-sample spectral MIS

@@ -4,9 +4,8 @@
 // trous), each tap also weighed by the edge-stopping weights (edge_stopping.hpp):
 //   c_{i+1}(p) = Σ_q h(q) w_i(p, q) c_i(p + 2^i q) / Σ_q h(q) w_i(p, q).
 // Five levels reach as far as a 125×125 kernel at 5 · 25 taps a pixel. The colour weight reads the level's
-// own colours c_i and their variances, which each level filters along (the samples being independent):
-//   Var_{i+1}(p) = Σ_q (h w_i)² Var_i(q) / (Σ_q h w_i)²,
-// so the edge stopping on colour tightens as the noise goes. Taps outside the image take no part.
+// own colours c_i and their variances, which each level filters along as the variance of its weighted mean
+// of independent values, so the edge stopping on colour tightens as the noise goes. Taps outside the image take no part.
 #pragma once
 
 #include <array>

@@ -4,6 +4,7 @@ sections it names, the marks it refuses, that the stubbed sources compile with t
 errors, and that the switchable edition of `deps` stubs an exercise only when told to at run time.
 Run: python3 tests/exercises/test_exercises_tool.py [--compiler g++]   (CTest: label `tools`)."""
 
+import json
 import os
 import shutil
 import subprocess
@@ -32,7 +33,7 @@ WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Wshadow", "-Wconversion", "-Wno-
 
 sys.path.insert(0, str(ROOT / "tests" / "tools"))
 sys.dont_write_bytecode = True  # no __pycache__ folders in the repository
-from exercise_tool import edition, marks, test_runs  # noqa: E402  (tests/tools/ is not a package on the path)
+from exercise_tool import edition, marks, test_runs, wrong_solutions  # noqa: E402  (tests/tools/ is not a package on the path)
 
 
 def copy_of_fixture(folder: Path) -> Path:
@@ -210,6 +211,27 @@ class Marks(unittest.TestCase):
         with self.assertRaises(marks.ToolError) as refused:
             edition.generate(self.root, self.folder / "switchable", [], force=False, switchable=True)
         self.assertIn('ch07.hypotenuse #1: "square(p) + square(q)" occurs 0 times', str(refused.exception))
+
+    def test_other_right_solutions_and_what_a_failure_must_say_are_read_and_checked(self):
+        path = self.root / "tests/wrong_solutions/ch07.json"
+        data = json.loads(path.read_text(encoding="utf-8"))
+        data["ch07.hypotenuse"][0]["says"] = "not squared"
+        data["ch07.hypotenuse"].append({"correct": True, "answer": "q² + p²",
+                                        "replace": {"square(p) + square(q)": "square(q) + square(p)"}})
+
+        def load():
+            path.write_text(json.dumps(data), encoding="utf-8")
+            return wrong_solutions.load(self.root, marks.find_exercises(self.root))["ch07.hypotenuse"]
+
+        self.assertEqual([(s.correct, s.says, s.mistake) for s in load()],
+                         [(False, "not squared", "the sides not squared"), (False, "", "a whole body of its own"),
+                          (True, "", "q² + p²")])
+        data["ch07.hypotenuse"][2]["says"] = "passes"  # a right solution fails nowhere
+        with self.assertRaisesRegex(marks.ToolError, 'ch07.hypotenuse #3: "says" must be'):
+            load()
+        del data["ch07.hypotenuse"][2]["says"], data["ch07.hypotenuse"][2]["answer"]
+        with self.assertRaisesRegex(marks.ToolError, 'ch07.hypotenuse #3: needs an "answer"'):
+            load()
 
     def rewrite(self, old, new):
         path = self.root / "chapters/07_fixture/fixture.cpp"

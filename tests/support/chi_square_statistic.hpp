@@ -213,7 +213,10 @@ inline DirectionHistogram histogram_directions(const DirectionSampler& sampler, 
             continue;
         }
         const Vec3 w = d.w;
-        if (!is_finite(w) || std::abs(glm::length(w) - 1) > 1e-4f || !(pdf(w) > 0)) {
+        // On the horizon z = 0 exactly a lobe's density is 0 but its inversion may land there (u = 0 for
+        // cos α = u^(1/(e+1)), which 1 − u never reaches): the edge of a support above it, not outside it.
+        const bool on_horizon = w.z == 0 && pdf(glm::normalize(Vec3(w.x, w.y, 1))) > 0;
+        if (!is_finite(w) || std::abs(glm::length(w) - 1) > 1e-4f || !(pdf(w) > 0 || on_horizon)) {
             ++h.bad;
             continue;
         }
@@ -279,6 +282,18 @@ inline SegmentHistogram histogram_segment(const SegmentWarp& warp, std::uint64_t
     return h;
 }
 
+// What each failed check of a fit says about the derivation behind it (a test of any correct answer: the
+// samples are compared with the density, never with one formula).
+inline constexpr const char* kOutsideSupport =
+    "samples outside the density's support, or not unit vectors: a wrong range (a sign, a missing square "
+    "root) or a density that forgets where it is 0?";
+inline constexpr const char* kNotNormalised =
+    "the density is not normalised: its integral over the sphere is not 1 (a constant forgotten, or the "
+    "Jacobian of a change of variables)?";
+inline constexpr const char* kHistogramDiffers =
+    "the histogram differs from the density: a wrong inversion of the cumulative distribution, or a "
+    "Jacobian missing (from the sampler or the density)?";
+
 // What keeps a fitted sample from passing at `level`, one line each (none: it passes). Every sampler: no
 // bad sample, p > level. One that loses no sample: its pdf integrates to 1 within 1e-3. One that may lose
 // samples (a BSDF whose sample leaves on the wrong side): its pdf integrates to at most 1 (within the 1e-3 of
@@ -293,20 +308,20 @@ inline std::vector<std::string> fit_problems(const ChiSquare& r, double level, b
     std::vector<std::string> problems;
     const double n = r.samples, integral = r.expected_total / n, lost = double(r.lost) / n;
     if (r.bad_samples != 0)
-        problems.push_back(std::to_string(r.bad_samples) +
-                           " bad samples (not finite unit directions, or where the pdf is 0)");
-    if (!(r.p_value > level))
-        problems.push_back("p = " + shown(r.p_value) + " is not above the level " + shown(level) +
-                           ": the histogram does not follow the pdf");
+        problems.push_back(std::to_string(r.bad_samples) + " bad samples: " + kOutsideSupport);
     if (!may_lose && !(std::abs(integral - 1) <= 1e-3))
-        problems.push_back("the pdf integrates to " + shown(integral) + ", not 1");
+        problems.push_back("the pdf integrates to " + shown(integral) + ": " + kNotNormalised);
     if (may_lose) {
         const double sigma = std::sqrt(std::max(lost * (1 - lost), 1 / n) / n);
-        if (!(integral <= 1 + 1e-3)) problems.push_back("the pdf integrates to " + shown(integral) + " > 1");
+        if (!(integral <= 1 + 1e-3))
+            problems.push_back("the pdf integrates to " + shown(integral) + " > 1: " + kNotNormalised);
         if (!(std::abs(lost - (1 - integral)) <= 1e-3 + 5 * sigma))
             problems.push_back("lost " + shown(lost) + " of the samples, but the pdf leaves out " +
                                shown(1 - integral));
     }
+    if (!(r.p_value > level))
+        problems.push_back("p = " + shown(r.p_value) + " is not above the level " + shown(level) + ": " +
+                           kHistogramDiffers);
     return problems;
 }
 

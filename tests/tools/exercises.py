@@ -38,7 +38,8 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
                                         tests that reach it; prints the tags each test needs
   exercises.py wrong SCRATCH [--only ch04]  CI: each exercise's wrong solutions (tests/wrong_solutions/,
                                         at least three each) are caught by its own chapter's tests, in one
-                                        build of the switchable edition of `deps`
+                                        build of the switchable edition of `deps`, and its other right
+                                        solutions there ("correct": true) pass them
   exercises.py check --build DIR        CI: in a student edition's build, the failing tests are exactly
                                         the tests tagged with an exercise stubbed, each naming it (in the
                                         full edition's build: every unit test passes)
@@ -324,14 +325,16 @@ def command_wrong(args: argparse.Namespace) -> int:
     """CI: every exercise has at least three plausible wrong solutions in tests/wrong_solutions/, and each is
     caught by its own chapter's tests: one build of the switchable edition (as `deps`), then for each wrong
     solution the chapter's tests tagged with the exercise are run with it in place of the right body, and at
-    least one must fail (or crash, or time out). With the right body they must all pass."""
+    least one must fail (or crash, or time out), its output containing the entry's "says" where it has one.
+    With the right body, and with each other right solution (an entry "correct": true), they must all pass."""
     out = Path(args.out).resolve()
     only = [o for o in (args.only or "").split(",") if o]
     exercises = generate(args.root, out, only, force=True, switchable=True)
     wrong = load_wrong_solutions(args.root, find_exercises(args.root))
-    problems = [f"{e.where()}: exercise {e.name} has {len(wrong.get(e.name, []))} wrong solutions in "
+    counts = {e.name: sum(1 for s in wrong.get(e.name, []) if not s.correct) for e in exercises}
+    problems = [f"{e.where()}: exercise {e.name} has {counts[e.name]} wrong solutions in "
                 f"tests/wrong_solutions/{e.chapter}.json; at least {MINIMUM_PER_EXERCISE} are needed"
-                for e in exercises if len(wrong.get(e.name, [])) < MINIMUM_PER_EXERCISE]
+                for e in exercises if counts[e.name] < MINIMUM_PER_EXERCISE]
     programs = {f"{e.chapter}_test" for e in exercises}
     build = build_test_programs(out, args.jobs, programs)
     program_of = {t.program: t.command[0] for t in unit_tests(build)}
@@ -341,10 +344,13 @@ def command_wrong(args: argparse.Namespace) -> int:
             problems.append(f"{e.where()}: exercise {e.name}: its chapter has no test program {e.chapter}_test")
             continue
         runs += [(e, None)] + [(e, s) for s in wrong.get(e.name, [])]
+    right = sum(1 for _, s in runs if s and s.correct)
     print(f"running {len(runs)} times the tests of {len(exercises)} exercises: with the right body, then with each "
-          f"of its {sum(len(wrong.get(e.name, [])) for e in exercises)} wrong solutions ...", flush=True)
-    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]",
-                                                  "--abort"], str(build), e.chapter) for e, _ in runs]
+          f"of its {sum(counts.values())} wrong solutions and {right} other right solutions ...", flush=True)
+    # A run stops at its first failure, unless the wrong solution names what a failure must say: that may be
+    # a later test's (the one about the mistake's kind), so all the exercise's tests run.
+    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]"]
+                      + ([] if s and s.says else ["--abort"]), str(build), e.chapter) for e, s in runs]
     # A shader's exercise is switched in its source, then rebuilt: those runs one at a time, the others at once.
     in_shader = [i for i, (e, _) in enumerate(runs) if e.glsl]
     in_cpp = [i for i in range(len(runs)) if not runs[i][0].glsl]
@@ -356,21 +362,30 @@ def command_wrong(args: argparse.Namespace) -> int:
     for i in in_shader:
         e, s = runs[i]
         outcomes[i] = run_with_shader_switch(out, e, s.number if s else 0, [tests[i]], args)[0]
-    caught = 0
+    caught = accepted = 0
     for (e, s), (passed, output) in zip(runs, outcomes):
-        if s is None:
+        if s is None or s.correct:
             if not passed:
-                problems.append(f"{e.name}: its tests fail with the right body:\n" + output[-2000:])
+                which = f"{s.source}: {s.key}, the right solution \"{s.mistake}\"" if s else "the right body"
+                problems.append(f"{e.name}: its tests fail with {which}:\n" + output[-2000:])
+            accepted += passed and s is not None
+            if args.verbose and s:
+                print(f"  {s.key:34} {'passes' if passed else 'FAILS'} (a right solution): {s.mistake}")
             continue
         how = "" if passed else failed_test(output)
+        # Catch2 wraps a message's lines: compared with every run of white space made one space.
+        unsaid = not passed and s.says and " ".join(s.says.split()) not in " ".join(output.split())
         if passed:
             problems.append(f"{s.source}: {s.key} is not caught by {e.chapter}_test \"[{TAG_PREFIX}{e.name}]\": "
                             f"{s.mistake}")
+        elif unsaid:
+            problems.append(f"{s.source}: {s.key} is caught, but the failure never says \"{s.says}\": {s.mistake}")
         else:
             caught += 1
-        if args.verbose or passed:
+        if args.verbose or passed or unsaid:
             print(f"  {s.key:34} {'caught' if not passed else 'NOT CAUGHT'}{' by ' + how if how else ''}: {s.mistake}")
-    print(f"{caught} of {sum(1 for _, s in runs if s)} wrong solutions caught by their own chapter's tests")
+    print(f"{caught} of {sum(counts.values())} wrong solutions caught by their own chapter's tests (saying what "
+          f"they were asked to); {accepted} of {right} other right solutions pass")
     for p in problems:
         print("  " + p)
     return 1 if problems else 0

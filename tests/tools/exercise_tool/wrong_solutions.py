@@ -12,6 +12,12 @@ list of wrong solutions, each a mistake a student might make, written as edits o
       ]
     }
 
+An entry may also say what its chapter's tests must print when they catch it, "says": "not normalised" (a text
+of the failure message, so a wrong derivation is caught by a message naming its kind). An entry with
+"correct": true and an "answer" instead of a "mistake" is another right solution (`1 − u` for `u`, another
+inversion), written the same way: `exercises.py wrong` requires the tests to PASS with it, so that a
+derivation's tests accept every correct answer, not one closed form.
+
 Each key of "replace" must occur exactly once in the exercise's marked body (so a wrong solution that no longer
 fits the code it edits is an error, not a silent pass); "body" instead gives the whole wrong body. The
 switchable edition of `exercises.py deps` and `exercises.py wrong` carries every wrong solution beside the right
@@ -34,9 +40,11 @@ MINIMUM_PER_EXERCISE = 3
 class WrongSolution:
     exercise: str  # "ch04.cosine_hemisphere"
     number: int  # 1, 2, ...: its place in the exercise's list
-    mistake: str  # what the student got wrong, in one line
+    mistake: str  # what the student got wrong, in one line (for a right solution: its answer)
     body: list[str]  # the wrong body's lines
     source: str  # "tests/wrong_solutions/ch04.json"
+    correct: bool = False  # another right solution: the tests must pass with it
+    says: str = ""  # a text the failing tests' output must contain (the mistake's kind)
 
     @property
     def key(self) -> str:  # the value of RT_WRONG_SOLUTION that selects it
@@ -79,8 +87,15 @@ def load(root: Path, exercises: list[Exercise]) -> dict[str, list[WrongSolution]
             right = body_lines(texts[exercise.file], exercise)
             for number, entry in enumerate(entries, 1):
                 label = f"{where}: {name} #{number}"
-                if not isinstance(entry, dict) or not isinstance(entry.get("mistake"), str) or not entry["mistake"]:
-                    errors.append(f"{label}: needs a \"mistake\" (one line saying what is wrong)")
+                correct = isinstance(entry, dict) and entry.get("correct") is True
+                what = "answer" if correct else "mistake"
+                if not isinstance(entry, dict) or not isinstance(entry.get(what), str) or not entry[what]:
+                    errors.append(f"{label}: needs {'an' if correct else 'a'} \"{what}\" (one line saying what "
+                                  f"{'the other right answer is' if correct else 'is wrong'})")
+                    continue
+                says = entry.get("says", "")
+                if not isinstance(says, str) or (correct and says):
+                    errors.append(f"{label}: \"says\" must be a text of the failure message, on a wrong solution")
                     continue
                 if ("replace" in entry) == ("body" in entry):
                     errors.append(f"{label}: give either \"replace\" (edits of the right body) or \"body\"")
@@ -110,9 +125,10 @@ def load(root: Path, exercises: list[Exercise]) -> dict[str, list[WrongSolution]
                         continue
                     wrong = text.split("\n")
                 if [line.strip() for line in wrong] == [line.strip() for line in right]:
-                    errors.append(f"{label}: the wrong body is the right one")
+                    errors.append(f"{label}: the body is the marked one, unchanged")
                     continue
-                found.setdefault(name, []).append(WrongSolution(name, number, entry["mistake"], wrong, where))
+                found.setdefault(name, []).append(
+                    WrongSolution(name, number, entry[what], wrong, where, correct, says))
     if errors:
         raise ToolError("\n".join(errors))
     return found
