@@ -16,10 +16,10 @@
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
 #include "random_unit.hpp"
-#include "rt/core/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "shader_probe.hpp"
 
@@ -152,8 +152,7 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
 }
 
 TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
-          "[gpu]" SHADER_EXERCISES
-          "[stability][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
     MeshShape mesh = make_icosphere(3);  // 1280 triangles
     jitter_radii(mesh, Real(0.05), 11);
     for (Vec3& p : mesh.positions) p = p * Real(3.7) + Vec3{10.3f, -5.1f, 2.9f};
@@ -353,8 +352,7 @@ TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU doe
     check_agreement("ch07_coloured_glass.json", ShaderKind::kCompute);
 }
 
-TEST_CASE(
-    "The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
+TEST_CASE("The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
           "[gpu]" SHADER_EXERCISES
           "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.glossy]"
