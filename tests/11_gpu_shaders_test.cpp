@@ -118,6 +118,28 @@ TEST_CASE("An environment image is not in the shaders: a note says so, and its a
     CHECK(flattened(scene).notes.empty());
 }
 
+TEST_CASE("A BSDF the shaders do not know is refused with one line (exit 2), not a logic error") {
+    // A chapter's own BSDF class, which chapter 11 has no exporter for.
+    class Unknown final : public Bsdf {
+      public:
+        Unknown() : Bsdf({.diffuse = true}) {}
+        Color eval(const Vec3&, const Vec3&, const Vec3&) const override { return Color(0); }
+        BsdfSample sample(const Vec3&, const Vec3&, Vec2, Real) const override { return {}; }
+        Real pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0; }
+    };
+    Scene scene = scene_of({Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"}});
+    scene.materials[0].name = "odd";
+    MaterialHooks hooks = refraction_materials();
+    hooks.models["diffuse"].bsdf = [](const Material&, bool, BsdfAtHit& at) -> const Bsdf& {
+        return at.emplace<Unknown>();
+    };
+    const RenderScene prepared(scene, EffectSet::all(), hooks);
+    CHECK_THROWS_MATCHES(
+        flatten_scene(scene, prepared.materials, prepared.lights, LightPicker(prepared.lights)), InputError,
+        Catch::Message("diffuse material 'odd': its BSDF is not in the shaders (the chapters "
+                       "before 11 render it)"));
+}
+
 TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
           "[gpu]" SHADER_EXERCISES "[random]") {
     std::vector<ShaderProbe::Query> queries;
