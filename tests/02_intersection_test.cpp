@@ -103,7 +103,9 @@ TEST_CASE("Both roots of a sphere in front of, around and behind the origin, in 
           "[sphere][ex:ch02.sphere_stable][ex:ch02.sphere_textbook]") {
     // A unit sphere 5 along the ray: roots 4 and 6; around the origin: −1 and 1; 5 behind: −6 and −4.
     const Ray ray{{0, 0, 0}, {0, 0, -1}};
-    const struct { Real z, t0, t1; } cases[] = {{-5, 4, 6}, {0, -1, 1}, {5, -6, -4}};
+    const struct {
+        Real z, t0, t1;
+    } cases[] = {{-5, 4, 6}, {0, -1, 1}, {5, -6, -4}};
     for (const auto& c : cases) {
         const Sphere sphere{{0, 0, c.z}, 1};
         for (const auto& roots : {sphere_roots_stable(ray, sphere), sphere_roots_textbook(ray, sphere)}) {
@@ -128,9 +130,9 @@ TEST_CASE("A triangle behind the ray's origin is not hit, by either test",
 
 TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane, never hits it again",
           "[triangle][stability][ex:ch02.triangle_watertight]") {
-    // Long slivers far from the origin: the hit point o + t d lies off the plane by rounding, and a ray from
-    // it that leaves the plane on the side where it lies can still compute a tiny t > 0 for the same
-    // triangle. The watertight test accepts t only beyond its bound δt on the rounding of t.
+    // Long slivers far from the origin: the hit point o + t d lies off the plane by rounding, and a ray from it
+    // that leaves the plane on the side where it lies can still compute a tiny t > 0 for the same triangle.
+    // The watertight test accepts t only beyond its bound δt on the rounding of t.
     Pcg32 rng(29, 8);
     int leaving = 0, rehits = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -158,9 +160,8 @@ TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane,
     CHECK(rehits == 0);
 }
 
-TEST_CASE(
-    "Rays aimed exactly at a box's corners and at points of its edges enter it, and a box behind is missed",
-    "[bvh][ex:ch02.slab_test]") {
+TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it, and a box behind is missed",
+          "[bvh][ex:ch02.slab_test]") {
     // The box's own corner and edge points, from random origins far and near: the three slabs' distances are
     // rounded apart, and only the exit's enlargement by 1 + 2γ₃ keeps the entry before it.
     Pcg32 rng(17, 3);
@@ -172,14 +173,12 @@ TEST_CASE(
         Vec3 target = lo;
         for (int axis = 0; axis < 3; ++axis) {
             const Real pick = rng.next_real();
-            target[axis] = pick < Real(0.4)   ? box.min[axis]
-                           : pick < Real(0.8) ? box.max[axis]
-                                              : box.min[axis] + rng.next_real() * size[axis];
+            target[axis] = pick < Real(0.4) ? box.min[axis] : pick < Real(0.8) ? box.max[axis]
+                                                             : box.min[axis] + rng.next_real() * size[axis];
         }
         const Vec3 origin = target + random_unit(rng) * (Real(1) + rng.next_real() * Real(1000));
         const Vec3 d = glm::normalize(target - origin);
-        const bool inside =
-            glm::all(glm::greaterThanEqual(origin, box.min)) && glm::all(glm::lessThanEqual(origin, box.max));
+        const bool inside = glm::all(glm::greaterThanEqual(origin, box.min)) && glm::all(glm::lessThanEqual(origin, box.max));
         if (!is_finite(d) || inside) continue;
         ++rays;
         if (slab_entry(box, Ray{origin, d}, inverse_direction(d), kInfinity) == kInfinity) ++missed;
@@ -370,8 +369,7 @@ TEST_CASE("The wide BVH holds every leaf of the binary one once, in the binary n
         for (int s : seen) CHECK(s == 1);
         CHECK(parents[0] == 0);
         for (std::size_t n = 1; n < parents.size(); ++n) CHECK(parents[n] == 1);
-        // Four children a node where the binary tree has them: fewer nodes than half the binary ones, plus
-        // one.
+        // Four children a node where the binary tree has them: fewer nodes than half the binary ones, plus one.
         CHECK(wide.nodes().size() <= bvh.nodes().size() / 2 + 1);
         // Every binary leaf is a wide leaf, and every wide node but the root is a child.
         const auto binary_leaves = std::count_if(bvh.nodes().begin(), bvh.nodes().end(),
@@ -849,18 +847,10 @@ TEST_CASE("The BVH builds over degenerate sets: all in one point, on one plane, 
         const Vec3 c = Vec3(center) + Vec3(rng.next_real() * 8, 0, 0);
         across_line.insert(across_line.end(), {c + Vec3(0, -1, -1), c + Vec3(0, 1, -1), c + Vec3(0, 0, 1)});
     }
-    SECTION("one point: nothing is ever hit") {
-        CHECK(check_soup(point, rays_at(rng, center, 4, 2000)) == 0);
-    }
-    SECTION("one plane") {
-        CHECK(check_soup(plane, rays_at(rng, center, 4, 4000)) > 400);
-    }
-    SECTION("one line: no triangle has an area") {
-        CHECK(check_soup(line, rays_at(rng, center, 4, 2000)) == 0);
-    }
-    SECTION("centroids on one line") {
-        CHECK(check_soup(across_line, rays_at(rng, center, 4, 4000)) > 200);
-    }
+    SECTION("one point: nothing is ever hit") { CHECK(check_soup(point, rays_at(rng, center, 4, 2000)) == 0); }
+    SECTION("one plane") { CHECK(check_soup(plane, rays_at(rng, center, 4, 4000)) > 400); }
+    SECTION("one line: no triangle has an area") { CHECK(check_soup(line, rays_at(rng, center, 4, 2000)) == 0); }
+    SECTION("centroids on one line") { CHECK(check_soup(across_line, rays_at(rng, center, 4, 4000)) > 200); }
 }
 
 TEST_CASE("The BVH culls no box it should enter, at every scale from 1e-40 to 1e30 and across them",
@@ -926,8 +916,7 @@ TEST_CASE("Triangle soups from 1e-12 to 1e12 get the brute-force nearest hit thr
         std::vector<Vec3> corners;
         for (int i = 0; i < 800; ++i) {
             const Vec3 c = point_near(rng, Vec3d(0), 10 * scale);
-            for (int k = 0; k < 3; ++k)
-                corners.push_back(Vec3(Vec3d(c) + Vec3d(point_near(rng, Vec3d(0), scale))));
+            for (int k = 0; k < 3; ++k) corners.push_back(Vec3(Vec3d(c) + Vec3d(point_near(rng, Vec3d(0), scale))));
         }
         CHECK(check_soup(corners, rays_at(rng, Vec3d(0), 10 * scale, 3000)) > 300);
     }
@@ -948,18 +937,11 @@ TEST_CASE("A triangle packet gives the watertight test's nearest hit bit for bit
         for (int i = 0; i < count; ++i) {
             const Vec3 a = random_vector(2), b = random_vector(1);
             switch (rng.next_uint() % 6) {
-                case 0:
-                    triangles.push_back({a, a, a + b});
-                    break;
-                case 1:
-                    triangles.push_back({a, a + b, a + Real(2) * b});
-                    break;
-                case 2:
-                    triangles.push_back({a * Real(1e4), a * Real(1e4) + random_vector(Real(1e5)),
-                                         a * Real(1e4) + random_vector(Real(1e5))});
-                    break;
-                case 3:
-                    triangles.push_back({a, a + random_vector(Real(1e-4)), a + random_vector(Real(1e-4))});
+                case 0: triangles.push_back({a, a, a + b}); break;
+                case 1: triangles.push_back({a, a + b, a + Real(2) * b}); break;
+                case 2: triangles.push_back({a * Real(1e4), a * Real(1e4) + random_vector(Real(1e5)),
+                                             a * Real(1e4) + random_vector(Real(1e5))}); break;
+                case 3: triangles.push_back({a, a + random_vector(Real(1e-4)), a + random_vector(Real(1e-4))});
                     break;
                 default: {
                     const Vec3 next = hub + random_vector(1);
@@ -1111,8 +1093,8 @@ TEST_CASE("The wide BVH visits the nearest leaf first and culls every child ente
     for (const Case c : {Case{-10, 1, 0, 10}, Case{Real(509.5), -1, 254, Real(0.5)}}) {
         const std::uint32_t first_leaf = leaf_of(c.nearest_box);
         REQUIRE(first_leaf > 0);
-        const WideRay ray = make_wide_ray({Vec3(c.origin_x, Real(0.5), Real(0.5)),
-                                           glm::normalize(Vec3(c.direction_x, Real(1e-4), Real(1e-4)))});
+        const WideRay ray = make_wide_ray(
+            {Vec3(c.origin_x, Real(0.5), Real(0.5)), glm::normalize(Vec3(c.direction_x, Real(1e-4), Real(1e-4)))});
         REQUIRE(ray.finite);
         CHECK(wide.bounds().contains(ray.ray.origin) == (c.origin_x > 0));
         auto test = [&](std::uint32_t first, std::uint32_t count, Real& limit) {

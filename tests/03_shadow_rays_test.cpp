@@ -121,18 +121,9 @@ TEST_CASE("Each offset moves the origin to the side the new ray goes, by its own
 TEST_CASE("A step of the bits is std::nextafter, for zeros, subnormals, the largest floats and infinities",
           "[ch03]") {
     using limits = std::numeric_limits<Real>;
-    std::vector<Real> values{Real(0),
-                             -Real(0),
-                             limits::denorm_min(),
-                             -limits::denorm_min(),
-                             limits::min(),
-                             -limits::min(),
-                             limits::max(),
-                             -limits::max(),
-                             kInfinity,
-                             -kInfinity,
-                             Real(1),
-                             Real(-1)};
+    std::vector<Real> values{Real(0),          -Real(0),          limits::denorm_min(), -limits::denorm_min(),
+                             limits::min(),    -limits::min(),    limits::max(),        -limits::max(),
+                             kInfinity,        -kInfinity,        Real(1),              Real(-1)};
     Pcg32 rng(7, 1);
     for (int i = 0; i < 100000; ++i) {  // any bit pattern: every exponent, both signs
         const auto bits = RealBits((std::uint64_t(rng.next_uint()) << 32) | rng.next_uint());
@@ -140,8 +131,7 @@ TEST_CASE("A step of the bits is std::nextafter, for zeros, subnormals, the larg
     }
     for (const Real v : values) {
         INFO(v);
-        CHECK(std::bit_cast<RealBits>(next_float_up(v)) ==
-              std::bit_cast<RealBits>(std::nextafter(v, kInfinity)));
+        CHECK(std::bit_cast<RealBits>(next_float_up(v)) == std::bit_cast<RealBits>(std::nextafter(v, kInfinity)));
         CHECK(std::bit_cast<RealBits>(next_float_down(v)) ==
               std::bit_cast<RealBits>(std::nextafter(v, -kInfinity)));
     }
@@ -272,8 +262,8 @@ TEST_CASE("A scene without lights, or without the shadows effect, traces no shad
 TEST_CASE(
     "The default scene renders finite, plausible, identical on 1 and 2 threads, one shadow ray per light in "
     "front",
-    "[ch03][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
-    "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
+          "[ch03][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.point_light][ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     const Scene scene = load_scene(scene_path("ch03_default.json"));
     const World world(scene);
     RenderSettings settings = small_settings(80, 45, 2, 1);

@@ -17,10 +17,10 @@
 #include "05_recursive_gi/scatter.hpp"
 #include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 
 using namespace rt;

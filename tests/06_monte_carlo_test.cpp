@@ -26,17 +26,17 @@
 #include "06_monte_carlo/distribution_2d.hpp"
 #include "06_monte_carlo/environment.hpp"
 #include "06_monte_carlo/frisvad_frame.hpp"
-#include "06_monte_carlo/irradiance_estimators.hpp"
 #include "06_monte_carlo/lat_long_map.hpp"
+#include "06_monte_carlo/irradiance_estimators.hpp"
 #include "06_monte_carlo/mis.hpp"
 #include "06_monte_carlo/owen_sobol.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "06_monte_carlo/warp_pdfs.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 #include "support/direction_warps.hpp"
@@ -91,7 +91,8 @@ Warp uniform_sphere_warp() {
 // Every warp under test, in the order of its seed (101, 102, …; see require_warps_fit).
 std::vector<Warp> warps() {
     std::vector<Warp> w{uniform_hemisphere_warp(), cosine_hemisphere_warp(), uniform_sphere_warp()};
-    for (const auto& group : {cone_warps(), power_cosine_warps(), light_warps(), solid_angle_quad_warps()}) {
+    for (const auto& group :
+         {cone_warps(), power_cosine_warps(), light_warps(), solid_angle_quad_warps()}) {
         w.insert(w.end(), group.begin(), group.end());
     }
     return w;
@@ -830,10 +831,9 @@ TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
     CHECK_THROWS_AS(from_string<SamplingStrategy>("importance"), InputError);
 }
 
-TEST_CASE(
-    "Roulette judges beta with the samples' radiance scale divided out: a path through glass is not "
-    "made rarer and brighter, and either way the estimate stays unbiased",
-    "[roulette][ex:ch05.termination]") {
+TEST_CASE("Roulette judges beta with the samples' radiance scale divided out: a path through glass is not "
+          "made rarer and brighter, and either way the estimate stays unbiased",
+          "[roulette][ex:ch05.termination]") {
     // Roulette reads no scene: an empty one, under chapter 06's default rule (from kPathRouletteStart).
     const RenderScene prepared(Scene{}, EffectSet::all());
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, PathOptions{});
@@ -889,7 +889,7 @@ std::shared_ptr<Image> test_sky(bool lit_poles, int width = 16, int height = 8) 
     }
     image->at(width / 3, height / 4) = Color(200, 180, 150);  // the sun
     for (int x = 0; x < width; ++x) {
-        image->at(x, 0) = lit_poles && x == 1 ? Color(5) : Color(0);                   // the top pole's row
+        image->at(x, 0) = lit_poles && x == 1 ? Color(5) : Color(0);                  // the top pole's row
         image->at(x, height - 1) = lit_poles && x == width - 2 ? Color(3) : Color(0);  // the bottom one's
     }
     return image;
@@ -951,12 +951,10 @@ TEST_CASE("Distribution2D: p(u, v) = w / mean w, and the marginal times the cond
         REQUIRE(s.j == std::min(1, int(s.uv.y * 2)));
         ++count[std::size_t(s.j * 4 + s.i)];
     }
-    for (std::size_t c = 0; c < 8; ++c)
-        CHECK(count[c] == Approx(kN * w[c] / 12).margin(5 * std::sqrt(kN / 4.0)));
+    for (std::size_t c = 0; c < 8; ++c) CHECK(count[c] == Approx(kN * w[c] / 12).margin(5 * std::sqrt(kN / 4.0)));
 }
 
-TEST_CASE("The lat-long map: direction(uv) and point(w) are inverse, and sin θ is the Jacobian's",
-          "[environment]") {
+TEST_CASE("The lat-long map: direction(uv) and point(w) are inverse, and sin θ is the Jacobian's", "[environment]") {
     const LatLongMap map = LatLongMap::turned_by_degrees(30);
     Pcg32 rng(3, 1);
     for (int n = 0; n < 1000; ++n) {
@@ -993,13 +991,11 @@ TEST_CASE("The environment image's sampler fits its pdf (chi-square), which inte
     }
 }
 
-TEST_CASE("No NaN or infinity at the poles: sin θ from the direction, not from acos(y)",
-          "[environment][stability]") {
+TEST_CASE("No NaN or infinity at the poles: sin θ from the direction, not from acos(y)", "[environment][stability]") {
     const Environment environment(image_light(test_sky(true)));
     const Vec3 n(0, 1, 0);
-    // The naive way: θ = acos(y) in float. A direction 1e-4 from the pole has y = 1 − 5e-9, which float
-    // rounds to 1: θ = 0, sin θ = 0, and p(u, v) / (2π² sin θ) is infinite although the direction is not the
-    // pole.
+    // The naive way: θ = acos(y) in float. A direction 1e-4 from the pole has y = 1 − 5e-9, which float rounds
+    // to 1: θ = 0, sin θ = 0, and p(u, v) / (2π² sin θ) is infinite although the direction is not the pole.
     const Vec3 near_pole = glm::normalize(Vec3(0.866e-4f, 1, 0.5e-4f));  // φ = 30°: the lit pixel (1, 0)
     const float naive_sin = std::sin(std::acos(near_pole.y));
     CHECK(naive_sin == 0.0f);
@@ -1048,8 +1044,7 @@ TEST_CASE("rotate_y turns the map about +y", "[environment]") {
 }
 
 TEST_CASE(
-    "Furnace: a constant image equal to the uniform sky gives the same image within noise (its samples "
-    "differ)",
+    "Furnace: a constant image equal to the uniform sky gives the same image within noise (its samples differ)",
     "[render][environment][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
     "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch05.termination]"
     "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
@@ -1094,11 +1089,10 @@ TEST_CASE(
     CHECK(std::abs(mean - kAlbedo) <= 4 * standard_error);
 }
 
-TEST_CASE(
-    "An environment image: every strategy converges to the same image, MIS with the least error",
-    "[render][environment][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
-    "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.uniform_hemisphere]"
-    "[ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+TEST_CASE("An environment image: every strategy converges to the same image, MIS with the least error",
+          "[render][environment][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable]"
+          "[ex:ch03.robust_offset][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.uniform_hemisphere]"
+          "[ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     Scene scene = furnace_scene(0.7f);
     scene.environment = image_light(test_sky(true), 40);
     constexpr int kSize = 12, kRuns = 6;

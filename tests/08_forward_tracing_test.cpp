@@ -24,8 +24,8 @@
 #include "08_forward_tracing/light_emission.hpp"
 #include "08_forward_tracing/light_tracer.hpp"
 #include "08_forward_tracing/splat_render.hpp"
-#include "rt/io/assets.hpp"
 #include "rt/io/effects.hpp"
+#include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "rt/render/interrupt.hpp"
 #include "support/chi_square.hpp"
@@ -418,8 +418,7 @@ TEST_CASE("The combined tracer renders finite and the same bits on 1 and 3 threa
 
 TEST_CASE("An interrupted combined render equals the whole render of the samples it kept, caustics included",
           "[ch08][interrupt]" kCombinedTracerExercises) {
-    // The caustic under the glass sphere is the light paths' share: a partial image without them was too
-    // dark.
+    // The caustic under the glass sphere is the light paths' share: a partial image without them was too dark.
     const Scene scene = load_scene(scene_path("ch08_default.json"));
     const EffectSet all = needed(scene) & EffectSet::all();
     // 512 light paths per camera sample of 16 × 16 pixels: 2^17, one wave of 8 chunks of 2^14 paths, so the
@@ -818,9 +817,10 @@ TEST_CASE(
     // to the pinhole through it, carrying importance (Transport::kImportance), and both renders must agree.
     const StudyScene s(default_scene_with_glass([](Material& m) { m.roughness = 0.3f; }), 10, 10);
     const auto& materials = s.scene.materials;
-    const int glass = int(std::find_if(materials.begin(), materials.end(),
-                                       [](const Material& m) { return m.type == "dielectric"; }) -
-                          materials.begin());
+    const int glass =
+        int(std::find_if(materials.begin(), materials.end(),
+                         [](const Material& m) { return m.type == "dielectric"; }) -
+            materials.begin());
     REQUIRE(glass < int(materials.size()));
     CHECK(s.importance.bsdf(glass).flags().transmission);
     CHECK_FALSE(s.importance.bsdf(glass).flags().delta);

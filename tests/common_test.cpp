@@ -22,13 +22,13 @@
 #endif
 
 #include "rt/core/did_you_mean.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/flags/study_flags.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/environment_image.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/picture_compare.hpp"
@@ -68,8 +68,7 @@ TEST_CASE("An OpenEXR environment image reads as its PFM does, wherever its data
     // Values a half float holds exactly, so the .exr stores them without rounding.
     Image image(6, 3);
     for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x)
-            image.at(x, y) = Color(Real(x) * 0.25f, Real(y) * 2, 1024.f / Real(1 << x));
+        for (int x = 0; x < image.width(); ++x) image.at(x, y) = Color(Real(x) * 0.25f, Real(y) * 2, 1024.f / Real(1 << x));
     const fs::path pfm = temporary_folder() / "sky_exact.pfm";
     write_pfm(image, pfm);
     for (const Imath::V2i& corner : {Imath::V2i(0, 0), Imath::V2i(-3, 7)}) {
@@ -84,8 +83,7 @@ TEST_CASE("An OpenEXR environment image reads as its PFM does, wherever its data
         const fs::path exr = temporary_folder() / "sky_exact.exr";
         {
             Imf::RgbaOutputFile file(exr.c_str(), Imf::Header(window, window), Imf::WRITE_RGB);
-            file.setFrameBuffer(&pixels[0][0] - corner.x - corner.y * image.width(), 1,
-                                std::size_t(image.width()));
+            file.setFrameBuffer(&pixels[0][0] - corner.x - corner.y * image.width(), 1, std::size_t(image.width()));
             file.writePixels(image.height());
         }
         const Image from_exr = read_environment_image(exr), from_pfm = read_environment_image(pfm);
@@ -124,8 +122,7 @@ TEST_CASE("A PNG is written whole under its name, with no temporary file left", 
     CHECK(fs::file_size(folder / "picture.png") > 0);
     // Nothing else: no staging file (.rt-PID-N.staging) is left beside it.
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(folder))
-        names.push_back(entry.path().filename().string());
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
     CHECK(names == std::vector<std::string>{"picture.png"});
 }
 
@@ -232,8 +229,7 @@ TEST_CASE("The parallel engine runs every item once, on any number of threads", 
     }
 }
 
-TEST_CASE("The parallel engine on one thread runs every item in order on the calling thread",
-          "[render][parallel]") {
+TEST_CASE("The parallel engine on one thread runs every item in order on the calling thread", "[render][parallel]") {
     std::vector<std::size_t> order;
     bool elsewhere = false;
     const std::thread::id caller = std::this_thread::get_id();
@@ -247,16 +243,13 @@ TEST_CASE("The parallel engine on one thread runs every item in order on the cal
 
 namespace {
 std::atomic<int> items_before_stop{0};
-bool stop_after_three() {
-    return items_before_stop.fetch_add(1) >= 3;
-}
+bool stop_after_three() { return items_before_stop.fetch_add(1) >= 3; }
 }  // namespace
 
 TEST_CASE("The parallel engine starts no item once stopped, and says it stopped", "[render][parallel]") {
     items_before_stop = 0;
     int ran = 0;
-    const bool whole =
-        parallel_for(10, {.threads = 1, .stop = stop_after_three}, [&](std::size_t, int) { ++ran; });
+    const bool whole = parallel_for(10, {.threads = 1, .stop = stop_after_three}, [&](std::size_t, int) { ++ran; });
     CHECK_FALSE(whole);
     CHECK(ran == 3);
 }
@@ -385,9 +378,8 @@ TEST_CASE("The observer sees every pass's sums, and the image is the same with i
 
 // Records what the loop measures of each pixel, as the app's heat maps do.
 class CostRecorder final : public RenderObserver {
-  public:
-    CostRecorder(int width, bool measures)
-        : width_(width), measures_(measures), cost_(std::size_t(width * width)) {}
+public:
+    CostRecorder(int width, bool measures) : width_(width), measures_(measures), cost_(std::size_t(width * width)) {}
     bool measures_cost() const override { return measures_; }
     void add_cost(int x, int y, const PixelCost& cost) override {
         PixelCost& sum = cost_[std::size_t(y * width_ + x)];
@@ -399,7 +391,7 @@ class CostRecorder final : public RenderObserver {
     const std::vector<PixelCost>& cost() const { return cost_; }
     int calls() const { return calls_; }
 
-  private:
+private:
     int width_;
     bool measures_;
     std::vector<PixelCost> cost_;
@@ -433,8 +425,7 @@ TEST_CASE("The observer is told each pixel's rays, bounces and samples, only whe
     CHECK(unmeasured.calls() == 0);
 }
 
-TEST_CASE("A restart of the live view stops the render as an interrupt does, and is no signal",
-          "[render][live]") {
+TEST_CASE("A restart of the live view stops the render as an interrupt does, and is no signal", "[render][live]") {
     int taken = 0;
     auto sample = [&](const PixelSample&, Pcg32&, RayCounts&) {
         if (++taken == 400) set_render_restart(true);
@@ -457,15 +448,13 @@ namespace {
 enum class Fruit { kApple, kPear, kPlum };
 
 constexpr auto names_of(Fruit) {
-    return enum_names<Fruit>("--fruit",
-                             {{Fruit::kApple, "apple"}, {Fruit::kPear, "pear"}, {Fruit::kPlum, "plum"}});
+    return enum_names<Fruit>("--fruit", {{Fruit::kApple, "apple"}, {Fruit::kPear, "pear"}, {Fruit::kPlum, "plum"}});
 }
 
 }  // namespace
 
-TEST_CASE(
-    "An enum's one table of names gives to_string, parsing and its error, and the flag with its choices",
-    "[flags]") {
+TEST_CASE("An enum's one table of names gives to_string, parsing and its error, and the flag with its choices",
+          "[flags]") {
     for (Fruit f : {Fruit::kApple, Fruit::kPear, Fruit::kPlum}) CHECK(from_string<Fruit>(to_string(f)) == f);
     CHECK(to_string(Fruit::kPlum) == "plum");
     CHECK(joined_names<Fruit>() == "apple|pear|plum");
@@ -484,7 +473,7 @@ TEST_CASE(
     REQUIRE(knobs.knobs().size() == 1);
     CHECK(knobs.knobs()[0].name == "--fruit");
     CHECK(knobs.knobs()[0].choices == std::vector<std::string>{"apple", "pear", "plum"});
-    CHECK(knobs.knobs()[0].value == "pear");           // the default, by its name
+    CHECK(knobs.knobs()[0].value == "pear");  // the default, by its name
     std::vector<std::string> plum{"plum", "--fruit"};  // CLI11 reads the vector last first
     app.parse(plum);
     CHECK(fruit == Fruit::kPlum);
@@ -492,17 +481,15 @@ TEST_CASE(
     CHECK_THROWS_WITH(app.parse(fig), "--fruit: fig not in {apple,pear,plum}");
 }
 
-TEST_CASE(
-    "A study's shared options take their name and help from one table, and are refused without the study",
-    "[flags]") {
+TEST_CASE("A study's shared options take their name and help from one table, and are refused without the study",
+          "[flags]") {
     CLI::App app("test", "test");
     bool study = false;
     std::string csv;
     int reference_spp = 8;
     CLI::Option* study_flag = app.add_flag("--aa-study", study, "A study");
     const CLI::Option* csv_option = add_study_option(app, kCsvOption, csv, {{study_flag}});
-    const CLI::Option* spp_option =
-        add_reference_spp_option(app, reference_spp, 2, {{study_flag}}, "Its own words");
+    const CLI::Option* spp_option = add_reference_spp_option(app, reference_spp, 2, {{study_flag}}, "Its own words");
     CHECK(csv_option->get_name() == "--csv");
     CHECK(csv_option->get_description() == "With --aa-study: also write the table as CSV");
     CHECK(spp_option->get_name() == "--reference-spp");
@@ -533,10 +520,8 @@ TEST_CASE("The live view's knobs are a chapter's flags that take a value, set as
     app.add_option("--max-depth", depth, "Bounces at most")->check(CLI::Range(1, 1000));
     app.add_flag("--study", study, "A demo mode");
     app.add_option("--study-runs", study_runs, "With --study: runs per row");
-    app.add_option("--variant", variant, "connect or aperture")
-        ->check(CLI::IsMember({"connect", "aperture"}));
-    CLI::Option* aperture_option =
-        app.add_option("--aperture", aperture, "With --variant aperture: the radius");
+    app.add_option("--variant", variant, "connect or aperture")->check(CLI::IsMember({"connect", "aperture"}));
+    CLI::Option* aperture_option = app.add_option("--aperture", aperture, "With --variant aperture: the radius");
     // As chapter 08 does: a check after the values are stored.
     app.parse_complete_callback([aperture_option, &variant] {
         if (aperture_option->count() > 0 && variant != "aperture")
@@ -636,9 +621,8 @@ TEST_CASE("A loaded scene lists every file it read: the scene, its textures, mes
           std::vector<std::string>{"the scene scenes/ch04_smooth_mesh.json",
                                    "the mesh of shapes[2] meshes/ch04_torus.obj",
                                    "the mesh of shapes[3] meshes/ch04_torus.ply"});
-    CHECK(inputs_of("ch06_sky.json") ==
-          std::vector<std::string>{"the scene scenes/ch06_sky.json",
-                                   "the environment image environments/sky.hdr"});
+    CHECK(inputs_of("ch06_sky.json") == std::vector<std::string>{"the scene scenes/ch06_sky.json",
+                                                                 "the environment image environments/sky.hdr"});
     CHECK(inputs_of("cornell.json") == std::vector<std::string>{"the scene scenes/cornell.json"});
 }
 
@@ -700,11 +684,10 @@ TEST_CASE("Mesh errors name the scene, the place and the OBJ file", "[scene]") {
     CHECK_THAT(error_for(scene_with_mesh("empty.obj")),
                Catch::Contains("empty.obj: must have at least one face, got none"));
     std::ofstream(folder / "out_of_range.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n";
-    CHECK_THAT(
-        error_for(scene_with_mesh("out_of_range.obj")),
-        Catch::Contains("shapes[0].file") &&
-            Catch::EndsWith("out_of_range.obj: line 4, column 7: vertex index must be a whole number in "
-                            "[1, 3] (or negative, counting back from the last), got \"9\""));
+    CHECK_THAT(error_for(scene_with_mesh("out_of_range.obj")),
+               Catch::Contains("shapes[0].file") &&
+                   Catch::EndsWith("out_of_range.obj: line 4, column 7: vertex index must be a whole number in "
+                                   "[1, 3] (or negative, counting back from the last), got \"9\""));
     std::ofstream(folder / "good.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
     const Scene scene = parse_scene(scene_with_mesh("good.obj"), folder / "mesh.json");
     const auto& mesh = std::get<MeshShape>(scene.shapes[0].geometry);
@@ -827,14 +810,12 @@ TEST_CASE("The error over a region is the error of the crop", "[metrics]") {
     CHECK_THROWS(compare(image, reference, PixelRect{2, 1, 7, 3}));
 }
 
-TEST_CASE(
-    "Pictures: a PNG reads back as written, and a comparison counts, bounds and maps the pixels that differ",
-    "[image]") {
+TEST_CASE("Pictures: a PNG reads back as written, and a comparison counts, bounds and maps the pixels that differ",
+          "[image]") {
     Image image(16, 8);
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 16; ++x) image.at(x, y) = Color(Real(x) / 15, Real(y) / 7, 0.5f);
-    const auto path =
-        std::filesystem::temp_directory_path() / ("rt_picture_" + std::to_string(getpid()) + ".png");
+    const auto path = std::filesystem::temp_directory_path() / ("rt_picture_" + std::to_string(getpid()) + ".png");
     write_png(image, path);
     const Picture read = read_png(path);
     std::filesystem::remove(path);

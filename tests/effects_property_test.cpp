@@ -35,10 +35,10 @@
 #include "11_gpu_shaders/gpu_render.hpp"
 #endif
 #include "rt/core/conductor_presets.hpp"
-#include "rt/core/random.hpp"
-#include "rt/io/assets.hpp"
 #include "rt/io/effects.hpp"
 #include "rt/io/material_kind.hpp"
+#include "rt/core/random.hpp"
+#include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
 
 using namespace rt;
@@ -340,14 +340,13 @@ constexpr const char* kBrightFloor = R"({"camera": {"from": [0, 5e-4, 0], "at": 
   "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"}],
   "lights": [{"type": "point", "position": [0, 1e-4, 0], "intensity": [1e9, 1e9, 1e9]}]})";
 
-TEST_CASE(
-    "A point light of 1e9 at 1e-4 above a white floor renders 1e9 / (π 1e-8) in every chapter, unclamped",
-    "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.wide_bvh_traversal]"
-    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
-    "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
-    "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
-    "[ex:ch09.transmittance][ex:ch09.volume_vertex][ex:ch08.connect][ex:ch08.pinhole_importance]"
-    "[ex:ch08.project_direction][ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]") {
+TEST_CASE("A point light of 1e9 at 1e-4 above a white floor renders 1e9 / (π 1e-8) in every chapter, unclamped",
+          "[effects][property][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane][ex:ch02.wide_bvh_traversal]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.direct_light]"
+          "[ex:ch04.lambert][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
+          "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract][ex:ch09.free_flight]"
+          "[ex:ch09.transmittance][ex:ch09.volume_vertex][ex:ch08.connect][ex:ch08.pinhole_importance]"
+          "[ex:ch08.project_direction][ex:ch11.bvh_traversal][ex:ch11.next_real][ex:ch11.pcg32]") {
     const Scene scene = parse_scene(kBrightFloor, "bright_floor.json");
     check_scene(scene, "bright_floor.json");
     const double exact = 1e9 / (std::numbers::pi * 1e-8);
@@ -355,8 +354,7 @@ TEST_CASE(
         // Chapter 08 traces from the light: a pixel this narrow gets its light only now and then (its
         // estimate is compared, within noise, in the data scenes' test below).
         if (std::string(chapter.name) == "ch08") continue;
-        const Image image =
-            chapter.render(scene, simulated_effects(scene, chapter.supported), tiny_settings());
+        const Image image = chapter.render(scene, simulated_effects(scene, chapter.supported), tiny_settings());
         double lowest = exact, highest = exact;
         for (const Color& pixel : image.pixels()) {
             for (int c = 0; c < 3; ++c) {

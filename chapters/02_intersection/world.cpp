@@ -48,8 +48,8 @@ void World::collapse_to_wide() {
         }
         for (std::size_t at = 0; at < triangles.size(); at += kTriangleLanes) {
             const std::size_t n = std::min<std::size_t>(kTriangleLanes, triangles.size() - at);
-            triangle_packets_.push_back(
-                make_triangle_packet(std::span(triangles).subspan(at, n), std::span(slots).subspan(at, n)));
+            triangle_packets_.push_back(make_triangle_packet(std::span(triangles).subspan(at, n),
+                                                             std::span(slots).subspan(at, n)));
         }
         const std::uint32_t packets = std::uint32_t(triangle_packets_.size()) - first_packet;
         if (triangles.size() == leaf.count) return WideBvh::ItemRange{kPacketItem | first_packet, packets};
@@ -276,8 +276,7 @@ bool World::test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slo
 
 // The items of a wide leaf, in order: a triangle packet at once, any other primitive alone.
 bool World::test_items(const Ray& ray, const WatertightRay& sheared, const PacketRay& packet_ray,
-                       std::uint32_t first, std::uint32_t count, Real& t_max, bool any_hit,
-                       Candidate& found) const {
+                       std::uint32_t first, std::uint32_t count, Real& t_max, bool any_hit, Candidate& found) const {
     bool hit = false;
     auto test_packet = [&](std::uint32_t index) {
         const TrianglePacket& packet = triangle_packets_[index];

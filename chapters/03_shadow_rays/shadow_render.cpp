@@ -81,8 +81,8 @@ std::vector<std::string> shading_notes(const Scene& scene) {
         }
         const auto effect = effect_of(m);
         if (!effect) continue;
-        notes.push_back(m.type + " material '" + m.name + "': shaded as Lambertian here; " +
-                        simulated_from(m));
+        notes.push_back(m.type + " material '" + m.name +
+                        "': shaded as Lambertian here; " + simulated_from(m));
     }
     return notes;
 }

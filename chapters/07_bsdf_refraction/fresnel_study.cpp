@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "fresnel.hpp"
-#include "rt/core/errors.hpp"
 #include "rt/io/effects.hpp"
+#include "rt/core/errors.hpp"
 
 namespace rt {
 namespace {

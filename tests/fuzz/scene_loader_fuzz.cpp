@@ -8,8 +8,8 @@
 #include <string>
 #include <variant>
 
-#include "rt/core/errors.hpp"
 #include "rt/io/effects.hpp"
+#include "rt/core/errors.hpp"
 #include "rt/io/scene_loader.hpp"
 
 namespace {

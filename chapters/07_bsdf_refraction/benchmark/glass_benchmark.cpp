@@ -23,9 +23,9 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
 #include "reference_halves.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/scene_loader.hpp"
 
@@ -83,8 +83,7 @@ int main(int argc, char** argv) {
     app.add_flag("--speed-only", speed_only, "Only the samples per second");
     CLI11_PARSE(app, argc, argv);
     try {
-        run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache, speed_only,
-            conv_scene);
+        run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache, speed_only, conv_scene);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ch07_benchmark: %s\n", e.what());
         return 1;
@@ -169,13 +168,12 @@ void run(int size, int spp, int repeats, int threads, int conv_size, int referen
     // Chapter 07's own renderer for the scene, as chapter07() chooses it.
     const Renderer renderer = choose_renderer(needed(converging) & EffectSet::all());
     const std::filesystem::path halves = std::filesystem::path(cache) / stem;
-    const Image a =
-        cached_half(renderer, converging, conv, reference_spp / 2, 1001, halves.string() + "_a.pfm");
-    const Image b =
-        cached_half(renderer, converging, conv, reference_spp / 2, 1002, halves.string() + "_b.pfm");
+    const Image a = cached_half(renderer, converging, conv, reference_spp / 2, 1001, halves.string() + "_a.pfm");
+    const Image b = cached_half(renderer, converging, conv, reference_spp / 2, 1002, halves.string() + "_b.pfm");
     const double noise = relative_mse(a, a, b) / 4;  // (A − r) = (A − B) / 2; the mean's noise is a quarter
-    std::printf("\ntime to relative MSE %.0e, %s %dx%d, reference %d spp (its own relative MSE %.2e)\n",
-                target, conv_scene.c_str(), conv_size, conv_size, reference_spp, noise);
+    std::printf(
+        "\ntime to relative MSE %.0e, %s %dx%d, reference %d spp (its own relative MSE %.2e)\n", target,
+        conv_scene.c_str(), conv_size, conv_size, reference_spp, noise);
     std::printf("%-22s %6s %12s %10s %16s\n", "estimator", "spp", "rel. MSE", "time (s)", "time to target");
     for (SamplingStrategy strategy :
          {SamplingStrategy::kMis, SamplingStrategy::kLight, SamplingStrategy::kBrdf}) {

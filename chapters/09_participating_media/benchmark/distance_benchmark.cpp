@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "volume_path_tracer.hpp"
 

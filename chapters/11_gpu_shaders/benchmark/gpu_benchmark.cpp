@@ -16,10 +16,10 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 
 namespace {
@@ -36,8 +36,8 @@ struct Rates {
 
 // `simulated` without refraction renders the scene without glass: the material table shades each dielectric
 // as its stand-in, a light grey Lambert surface (albedo 0.73).
-Rates measure(const GlContext& gl, const Scene& scene, const EffectSet& simulated,
-              const RenderSettings& settings, int rounds) {
+Rates measure(const GlContext& gl, const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
+              int rounds) {
     const GpuRenderer compute(gl, scene, simulated, ShaderKind::kCompute);
     const GpuRenderer fragment(gl, scene, simulated, ShaderKind::kFragment);
     // One round unmeasured: the driver's compile, the caches.
@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
     app.add_option("--spp", spp)->check(CLI::Range(1, 1 << 16));
     app.add_option("--rounds", rounds, "Rounds of the three renders, alternately")->check(CLI::Range(1, 100));
     app.add_option("--threads", threads, "The C++ renderer's threads")->check(CLI::Range(1, 1024));
-    app.add_option("--egl", egl, "EGL platform: auto|surfaceless|device")->check(choices<EglPlatform>());
+    app.add_option("--egl", egl, "EGL platform: auto|surfaceless|device")
+        ->check(choices<EglPlatform>());
     CLI11_PARSE(app, argc, argv);
     try {
         const GlContext gl(from_string<EglPlatform>(egl));
@@ -91,7 +92,8 @@ int main(int argc, char** argv) {
         std::printf("%-28s %14s %14s %14s %12s %12s\n", "scene", "CPU samples/s", "compute", "fragment",
                     "compute/CPU", "fragment/CPU");
         for (const bool glass : {true, false}) {
-            const EffectSet simulated = glass ? needed(scene) : needed(scene).without({Effect::kRefraction});
+            const EffectSet simulated =
+                glass ? needed(scene) : needed(scene).without({Effect::kRefraction});
             const Rates r = measure(gl, scene, simulated, settings, rounds);
             const double cpu = median(r.cpu), compute = median(r.compute), fragment = median(r.fragment);
             std::printf("%-28s %14.4g %14.4g %14.4g %12.3f %12.3f\n",

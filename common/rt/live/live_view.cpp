@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/render/interrupt.hpp"
 
@@ -49,7 +49,7 @@ struct Snapshot {
 };
 
 class Session {
-  public:
+public:
     explicit Session(const LiveRun& run) : run_(run) {}
 
     int serve(int port) {
@@ -74,7 +74,7 @@ class Session {
         return interrupted_exit_status();
     }
 
-  private:
+private:
     EffectSet simulated() const { return (run_.needed & run_.chapter.supported).without(switched_off_); }
     bool switchable(Effect e) const {
         return e != Effect::kCameraRays && (run_.needed & run_.chapter.supported).contains(e);
@@ -161,30 +161,30 @@ class Session {
                                {"switchable", switchable(e)}});
         }
         const double seconds = std::max(s.seconds, 1e-9);
-        const nlohmann::json state = {{"chapter", run_.chapter.executable},
-                                      {"scene", run_.scene.file},
-                                      {"width", run_.settings.width},
-                                      {"height", run_.settings.height},
-                                      {"render", render_number_},
-                                      {"pass", s.pass},
-                                      {"frame", frame_},
-                                      {"status", s.status},
-                                      {"spp_target", samples_taken(run_.settings).size()},
-                                      {"spp_min", s.spp_min},
-                                      {"spp_mean", s.spp_mean},
-                                      {"samples", s.samples},
-                                      {"seconds", s.seconds},
-                                      {"samples_per_second", double(s.samples) / seconds},
-                                      {"rays", rays},
-                                      {"ray_total", s.rays.total()},
-                                      {"errors", s.errors},
-                                      {"simulated", simulated().to_string()},
-                                      {"knobs", knobs},
-                                      {"effects", effects},
-                                      {"message", message_}};
+        const nlohmann::json state = {
+            {"chapter", run_.chapter.executable},
+            {"scene", run_.scene.file},
+            {"width", run_.settings.width},
+            {"height", run_.settings.height},
+            {"render", render_number_},
+            {"pass", s.pass},
+            {"frame", frame_},
+            {"status", s.status},
+            {"spp_target", samples_taken(run_.settings).size()},
+            {"spp_min", s.spp_min},
+            {"spp_mean", s.spp_mean},
+            {"samples", s.samples},
+            {"seconds", s.seconds},
+            {"samples_per_second", double(s.samples) / seconds},
+            {"rays", rays},
+            {"ray_total", s.rays.total()},
+            {"errors", s.errors},
+            {"simulated", simulated().to_string()},
+            {"knobs", knobs},
+            {"effects", effects},
+            {"message", message_}};
         // A text that is not UTF-8 (a scene's file name may be any bytes) is shown with U+FFFD in its place.
-        server_->publish(std::move(png),
-                         state.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
+        server_->publish(std::move(png), state.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
     }
 
     // A change from the page: applied, and the render started again; or refused with the reason.
@@ -231,10 +231,9 @@ class Session {
 }  // namespace
 
 void add_live_flags(CLI::App& app, LiveOptions& options) {
-    app.add_flag(
-        "--live", options.live,
-        "Serve a live view for a class on http://127.0.0.1:PORT: the image pass by pass, the counters, "
-        "and the knobs and effects switched without restarting; writes no file; Ctrl-C stops it");
+    app.add_flag("--live", options.live,
+                 "Serve a live view for a class on http://127.0.0.1:PORT: the image pass by pass, the counters, "
+                 "and the knobs and effects switched without restarting; writes no file; Ctrl-C stops it");
     app.add_option("--port", options.port, "With --live: the port (0: any free one, printed)")
         ->check(CLI::Range(0, 65535));
 }

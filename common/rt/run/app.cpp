@@ -7,11 +7,11 @@
 #include <thread>
 #include <vector>
 
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
 #include "rt/io/assets.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/output_files.hpp"
 #include "rt/io/picture_compare.hpp"
@@ -32,11 +32,9 @@ namespace fs = std::filesystem;
 void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
     const std::string executable = chapter.executable;
     app.add_option("--scene", o.scene,
-                   "Scene file (JSON), or the name of one in assets/scenes/; default: " +
-                       std::string(chapter.default_scene));
-    app.add_option("--out", o.out,
-                   "Output PNG; the linear radiance is written beside it as .pfm; default: " + executable +
-                       ".png in the current folder");
+                   "Scene file (JSON), or the name of one in assets/scenes/; default: " + std::string(chapter.default_scene));
+    app.add_option("--out", o.out, "Output PNG; the linear radiance is written beside it as .pfm; default: " +
+                   executable + ".png in the current folder");
     app.add_option("--width", o.width, "Image width in pixels; default: the scene's image.width")
         ->check(CLI::Range(1, kMaxImageSide));
     app.add_option("--height", o.height, "Image height in pixels; default: the scene's image.height")
@@ -45,14 +43,12 @@ void add_core_flags(CLI::App& app, CoreOptions& o, const ChapterInfo& chapter) {
         ->check(CLI::Range(1, kMaxSamplesPerPixel));
     app.add_option("--seed", o.seed, "Random seed");
     app.add_option("--threads", o.threads, "Render threads (0: every core)")->check(CLI::Range(0, 1024));
-    app.add_option(
-        "--reference", o.reference,
-        "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
-        "picture (the image's picture is compared with it, and where they differ is shown)");
-    app.add_option(
-        "--heat", o.heat,
-        "Also write what each pixel cost (PNG): rays per sample | bounces per sample (path length) | "
-        "samples, in false colour with their bars");
+    app.add_option("--reference", o.reference,
+                   "Reference image to measure the error against: a PFM (radiance), or a PNG such as a lesson's "
+                   "picture (the image's picture is compared with it, and where they differ is shown)");
+    app.add_option("--heat", o.heat,
+                   "Also write what each pixel cost (PNG): rays per sample | bounces per sample (path length) | "
+                   "samples, in false colour with their bars");
     app.add_flag("--quiet", o.quiet, "No progress bar");
 }
 
@@ -112,13 +108,11 @@ void print_summary(const ChapterInfo& chapter, const RunContext& context, const 
     for (const ExtraImage& extra : run.extra_images) {
         if (!reference || !extra.radiance) continue;
         const ErrorMetrics e = compare(extra.image, *reference);
-        std::printf(
-            "  error of the %s image against the reference: RMSE %.5g, relative MSE %.5g, mean error %+.5g\n",
-            extra.suffix.substr(1).c_str(), e.rmse, e.relative_mse, e.mean_error);
+        std::printf("  error of the %s image against the reference: RMSE %.5g, relative MSE %.5g, mean error %+.5g\n",
+                    extra.suffix.substr(1).c_str(), e.rmse, e.relative_mse, e.mean_error);
     }
     if (reference_picture) {
-        // A PNG reference holds what a PNG shows: the image's own picture is compared with it, level by
-        // level.
+        // A PNG reference holds what a PNG shows: the image's own picture is compared with it, level by level.
         const PictureDifference d = compare_pictures(to_picture(r.image), *reference_picture, 0);
         std::printf("  picture against the reference picture:\n%s", describe(d, "    ").c_str());
     }
@@ -180,8 +174,7 @@ void check_flag_combinations(CLI::App& app, const RunFlags& flags, const Chapter
         for (const auto& [flag, given] : not_with) {
             if (given) {
                 throw InputError(std::string("--live: writes no file and renders whole, in one process: not "
-                                             "with ") +
-                                 flag);
+                                             "with ") + flag);
             }
         }
     } else if (app.get_option("--port")->count() > 0) {
@@ -190,9 +183,8 @@ void check_flag_combinations(CLI::App& app, const RunFlags& flags, const Chapter
     const std::string renders_whole = chapter.renders_whole_because ? chapter.renders_whole_because() : "";
     if (!renders_whole.empty() && (!split.samples.empty() || !split.resume.empty() || mpi.size() > 1)) {
         const std::string split_by = !split.samples.empty() ? "--samples"
-                                     : !split.resume.empty()
-                                         ? "--resume"
-                                         : "mpirun with " + std::to_string(mpi.size()) + " ranks";
+                                     : !split.resume.empty() ? "--resume"
+                                                              : "mpirun with " + std::to_string(mpi.size()) + " ranks";
         throw InputError(split_by + ": " + renders_whole);
     }
 }
@@ -291,14 +283,10 @@ Reference read_reference(const fs::path& file, const RenderSettings& settings) {
 // What a film of this run records to be told apart from other renders' (render_identity.hpp).
 FilmIdentity film_identity(const CLI::App& app, const RunFlags& flags, const ChapterInfo& chapter,
                            const Scene& scene, const fs::path& scene_file, const RenderSettings& settings) {
-    return FilmIdentity{chapter.executable,
-                        scene_file.filename().string(),
-                        scene_fingerprint(scene, scene_file),
-                        chapter_flags_text(app, flags.core_flags),
-                        settings.width,
-                        settings.height,
-                        settings.samples_per_pixel,
-                        settings.seed};
+    return FilmIdentity{chapter.executable,         scene_file.filename().string(),
+                        scene_fingerprint(scene, scene_file), chapter_flags_text(app, flags.core_flags),
+                        settings.width,             settings.height,
+                        settings.samples_per_pixel, settings.seed};
 }
 
 // The rendered run, on rank 0 (every rank's samples gathered): its files (PNG, PFM, film, further images,
@@ -332,13 +320,12 @@ int write_files_and_summary(const ChapterInfo& chapter, const RunFlags& flags, c
     }
     const std::string written = write_outputs(r.image, png_out, film ? &*film : nullptr, run.extra_images);
     if (heat_maps)
-        run.notes.push_back(heat_maps->write(flags.core.heat) +
-                            (mpi.size() > 1 ? " (this rank's samples)" : ""));
+        run.notes.push_back(heat_maps->write(flags.core.heat) + (mpi.size() > 1 ? " (this rank's samples)" : ""));
     // The summary speaks of every rank's samples, not rank 0's share.
     RenderSettings all_ranks = context.settings;
     all_ranks.samples = plan.whole;
-    print_summary(chapter, RunContext{context.scene, all_ranks, context.simulated}, needed(context.scene),
-                  run, reference.image, reference.picture, written);
+    print_summary(chapter, RunContext{context.scene, all_ranks, context.simulated}, needed(context.scene), run,
+                  reference.image, reference.picture, written);
     if (r.interrupted) return interrupted_exit_status();
     // A signal that came once the render was done: the complete image was written all the same.
     return status_after_writing(chapter.executable, "the complete image");
@@ -361,8 +348,8 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
     const fs::path png = output_png(flags.core, chapter);
     if (!flags.live.live) probe_outputs(app, flags, chapter, png, scene);
     const Reference reference = read_reference(flags.core.reference, settings);
-    const SplitPlan plan = plan_split(
-        flags.split, film_identity(app, flags, chapter, scene, scene_file, settings), mpi, settings);
+    const SplitPlan plan =
+        plan_split(flags.split, film_identity(app, flags, chapter, scene, scene_file, settings), mpi, settings);
     if (flags.live.live) {
         LiveKnobs knobs(app, flags.core_flags, std::vector<std::string>(argv + 1, argv + argc));
         return run_live(LiveRun{chapter, scene, settings, needed(scene), render, knobs, reference.image},
