@@ -364,8 +364,8 @@ TEST_CASE("A scene's fingerprint covers its textures' texels and its meshes' nor
     const auto with_texture = [&](auto change) {
         Scene scene = wood;
         for (Material& m : scene.materials) {
-            for (Material::Textured& textured : m.textures) {
-                auto* image = std::get_if<ImageTextureDesc>(&textured.texture.pattern);
+            for (Material::Textured& given : m.textures) {
+                auto* image = std::get_if<ImageTextureDesc>(&given.texture.pattern);
                 if (!image) continue;
                 TextureImage texels = *image->image;
                 change(texels);
