@@ -118,7 +118,7 @@ TEST_CASE("An environment image is not in the shaders: a note says so, and its a
     CHECK(flattened(scene).notes.empty());
 }
 
-TEST_CASE("A BSDF the shaders do not know is refused with one line (exit 2), not a logic error") {
+TEST_CASE("A BSDF the shaders do not know is refused with one line (exit 2) and no logic error") {
     // A chapter's own BSDF class, which chapter 11 has no exporter for.
     class Unknown final : public Bsdf {
       public:
