@@ -1155,7 +1155,7 @@ TEST_CASE("Texture coordinates of a sphere follow pbrt's (phi, theta) about the 
     Scene scene = scene_of(shapes);
     const Ray down{{0, 5, 0}, {0, -1, 0}};
     CHECK(World(scene).intersect(down)->uv == Vec2d{0});
-    scene.materials[0].texture = TextureDesc{CheckerDesc{}, Color(0.5f)};
+    scene.materials[0].textures = {{&Material::albedo, TextureDesc{CheckerDesc{}, Color(0.5f)}}};
     const auto top = World(scene).intersect(down);
     REQUIRE(top);
     CHECK(top->uv.y == 1);

@@ -35,7 +35,7 @@ using namespace rt;
 
 namespace {
 
-Material material(const char* name, MaterialType type = MaterialType::kDiffuse) {
+Material material(const char* name, const char* type = "diffuse") {
     Material m;
     m.name = name;
     m.type = type;
@@ -221,9 +221,9 @@ TEST_CASE("A scale that moves the scene beyond a scene file's limit of 1e9 is re
 
 TEST_CASE("Materials and lights this chapter does not simulate are named with their chapter", "[ch03]") {
     Scene scene = scene_of({Shape{SphereShape{}, 0, "shapes[0]"}});
-    scene.materials[0] = material("chrome", MaterialType::kMirror);
-    scene.materials.push_back(material("glass", MaterialType::kDielectric));
-    scene.materials.push_back(material("satin", MaterialType::kGlossy));
+    scene.materials[0] = material("chrome", "mirror");
+    scene.materials.push_back(material("glass", "dielectric"));
+    scene.materials.push_back(material("satin", "glossy"));
     Material lamp = material("lamp");
     lamp.emission = Color(5);
     scene.materials.push_back(lamp);

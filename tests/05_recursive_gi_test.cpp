@@ -17,7 +17,7 @@
 #include "05_recursive_gi/scatter.hpp"
 #include "05_recursive_gi/termination.hpp"
 #include "random_unit.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
@@ -78,7 +78,7 @@ DirectOptions simulating(const EffectSet& effects) {
 
 Material diffuse(Color albedo, Color emission = Color(0)) {
     Material m;
-    m.type = MaterialType::kDiffuse;
+    m.type = "diffuse";
     m.albedo = albedo;
     m.emission = emission;
     return m;
@@ -86,7 +86,7 @@ Material diffuse(Color albedo, Color emission = Color(0)) {
 
 Material mirror(Color reflectance) {
     Material m;
-    m.type = MaterialType::kMirror;
+    m.type = "mirror";
     m.reflectance = reflectance;
     return m;
 }
@@ -554,7 +554,7 @@ TEST_CASE(
 
     Scene no_mirror = cornell;
     for (Material& m : no_mirror.materials) {
-        if (m.type == MaterialType::kMirror) m = diffuse(Color(0.5f));
+        if (m.type == "mirror") m = diffuse(Color(0.5f));
     }
     const RenderResult diffuse_only = render_scene(no_mirror, t, 24, 1, 1);
     CHECK(diffuse_only.rays[RayKind::kReflection] == 0);

@@ -33,7 +33,7 @@
 #include "06_monte_carlo/owen_sobol.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
 #include "06_monte_carlo/warp_pdfs.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"

@@ -37,10 +37,11 @@
 #include "07_bsdf_refraction/snell.hpp"
 #include "random_unit.hpp"
 #include "rt/core/conductor_presets.hpp"
-#include "rt/core/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
+#include "rt/io/material_kind.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
 
@@ -617,19 +618,21 @@ TEST_CASE("Path parts: the glass box's estimate split by path kind sums to it an
     CHECK(totals[std::size_t(PathPart::kBsdfHit)] > 0);
 }
 
-TEST_CASE("Sobol samples, the default: the glass box renders finite, the same on 1 and 2 threads, near stratified",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
-          "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
+TEST_CASE(
+    "Sobol samples, the default: the glass box renders finite, the same on 1 and 2 threads, near stratified",
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch07.dielectric_sample]"
+    "[ex:ch07.fresnel_exact][ex:ch07.refract]") {
     const Scene scene = load_scene(scene_path("ch07_default.json"));
     RenderSettings settings = small_settings(32, 16);
     PathOptions stratified_points;
     stratified_points.sampler = PointSet::kStratified;
     const EffectSet simulated = chapter07_effects(scene);
     const RenderResult a = render_with(Renderer::kPaths, scene, simulated, settings);
-    const RenderResult stratified = render_with(Renderer::kPaths, scene, simulated, settings, stratified_points);
+    const RenderResult stratified =
+        render_with(Renderer::kPaths, scene, simulated, settings, stratified_points);
     settings.threads = 1;
     const RenderResult b = render_with(Renderer::kPaths, scene, simulated, settings);
     CHECK(PathOptions{}.sampler == PointSet::kSobol);
@@ -667,8 +670,7 @@ TEST_CASE("Coloured glass absorbs: a sphere with absorption is darker, and redde
     const RenderSettings settings = small_settings(32, 16);
     const RenderResult before = render_scene(scene, settings);
     for (Material& m : scene.materials) {
-        if (m.type == MaterialType::kDielectric)
-            m.absorption = Color(0, 0.01f, 0.02f);  // the sphere: 180 across
+        if (m.type == "dielectric") m.absorption = Color(0, 0.01f, 0.02f);  // the sphere: 180 across
     }
     const RenderResult after = render_scene(scene, settings);
     Color b(0), a(0);
@@ -1185,11 +1187,11 @@ TEST_CASE(
         }
         // The stand-in colour of chapters 03 to 06 is this reflectance at normal incidence.
         Material m;
-        m.type = MaterialType::kConductor;
+        m.type = "conductor";
         m.eta = metal.eta;
         m.k = metal.k;
         const Color f0 = fresnel_conductor(1, metal.eta, metal.k);
-        for (int ch = 0; ch < 3; ++ch) CHECK(m.stand_in_albedo()[ch] == Approx(f0[ch]).epsilon(1e-6));
+        for (int ch = 0; ch < 3; ++ch) CHECK(stand_in_albedo(m)[ch] == Approx(f0[ch]).epsilon(1e-6));
     }
     // Gold is yellow: it reflects red best and blue worst, at every angle short of grazing.
     for (Real c : {1.0f, 0.7f, 0.3f}) {
@@ -1334,9 +1336,44 @@ TEST_CASE("A conductor is a reflector of the effects, stood in for by its normal
     const MaterialTable before(scene, EffectSet::all());
     const auto* stand_in = dynamic_cast<const LambertBrdf*>(&before.bsdf(0));
     REQUIRE(stand_in);
-    CHECK(stand_in->albedo == scene.materials[0].stand_in_albedo());
+    CHECK(stand_in->albedo == stand_in_albedo(scene.materials[0]));
     REQUIRE(before.notes().size() == 2);
     CHECK(before.notes()[0].find("chapter 07") != std::string::npos);
+}
+
+TEST_CASE("A texture feeds a conductor's index: the metal at a hit is the checker's square's",
+          "[conductor][texture]") {
+    const Scene scene = parse_scene(R"({
+      "camera": {"from": [0, 0, 4], "at": [0, 0, 0]},
+      "materials": {"tiles": {"type": "conductor", "roughness": 0.3, "k": [3, 3, 3],
+                              "eta": {"checker": {"even": [0.2, 0.4, 1.5], "odd": [2.9, 2.9, 2.9]}}}},
+      "shapes": [{"type": "quad", "origin": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "tiles"}],
+      "lights": [{"type": "environment", "radiance": [1, 1, 1]}]
+    })",
+                                    "tiles.json");
+    const Material& tiles = scene.materials[0];
+    CHECK(tiles.eta ==
+          (Color(0.2f, 0.4f, 1.5f) + Color(2.9f)) / Real(2));  // the mean, for chapters without it
+    const MaterialTable table(scene, EffectSet::all(), refraction_materials());
+    const Vec3 n(0, 0, 1), wo = glm::normalize(Vec3(0.3f, 0.1f, 1)),
+                           wi = glm::normalize(Vec3(-0.2f, 0.4f, 1));
+    BsdfAtHit at;
+    Hit hit;
+    hit.material = 0;
+    for (const auto& [uv, eta] :
+         {std::pair{Vec2(0.5f, 0.5f), Color(0.2f, 0.4f, 1.5f)}, {Vec2(1.5f, 0.5f), Color(2.9f)}}) {
+        hit.uv = uv;
+        const auto* metal = dynamic_cast<const Conductor*>(&table.bsdf(hit, at));
+        REQUIRE(metal);
+        CHECK(metal->eta == eta);
+        CHECK(metal->eval(wo, wi, n) == Conductor(eta, Color(3), 0.3f).eval(wo, wi, n));
+    }
+    // Before chapter 07, its Lambert stand-in takes the colour at normal incidence of the square's metal.
+    const MaterialTable before(scene, EffectSet::all());
+    hit.uv = {0.5f, 0.5f};
+    Material even = tiles;
+    even.eta = Color(0.2f, 0.4f, 1.5f);
+    CHECK(dynamic_cast<const LambertBrdf&>(before.bsdf(hit, at)).albedo == stand_in_albedo(even));
 }
 
 TEST_CASE("The renderer and the path parts are named by their names_of tables", "[names]") {

@@ -24,7 +24,7 @@
 #include "08_forward_tracing/light_emission.hpp"
 #include "08_forward_tracing/light_tracer.hpp"
 #include "08_forward_tracing/splat_render.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "rt/render/interrupt.hpp"
@@ -109,7 +109,7 @@ template <typename Change>
 Scene default_scene_with_glass(Change&& change) {
     Scene scene = load_scene(scene_path("ch08_default.json"));
     for (Material& m : scene.materials)
-        if (m.type == MaterialType::kDielectric) change(m);
+        if (m.type == "dielectric") change(m);
     return scene;
 }
 
@@ -314,7 +314,7 @@ TEST_CASE("A glass sphere of index 1 changes nothing but hides what lies behind 
             for (int k = 0; k < 36; ++k) {
                 const auto hit = a.prepared.world.intersect(camera_ray(
                     a.camera, Real(x) + (Real(k % 6) + 0.5f) / 6, Real(y) + (Real(k / 6) + 0.5f) / 6));
-                if (hit && a.scene.materials[std::size_t(hit->material)].type == MaterialType::kDielectric)
+                if (hit && a.scene.materials[std::size_t(hit->material)].type == "dielectric")
                     sphere[std::size_t(y * 8 + x)] = 1;
             }
     constexpr int kBatches = 8;
@@ -819,7 +819,7 @@ TEST_CASE(
     const auto& materials = s.scene.materials;
     const int glass =
         int(std::find_if(materials.begin(), materials.end(),
-                         [](const Material& m) { return m.type == MaterialType::kDielectric; }) -
+                         [](const Material& m) { return m.type == "dielectric"; }) -
             materials.begin());
     REQUIRE(glass < int(materials.size()));
     CHECK(s.importance.bsdf(glass).flags().transmission);

@@ -28,7 +28,7 @@
 #include "09_participating_media/media_scenes.hpp"
 #include "09_participating_media/tracer_choice.hpp"
 #include "09_participating_media/volume_path_tracer.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"

@@ -18,7 +18,7 @@
 #include "10_denoising/feature_buffers.hpp"
 #include "10_denoising/path_features.hpp"
 #include "10_denoising/ssim.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"

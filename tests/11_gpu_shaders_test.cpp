@@ -16,10 +16,10 @@
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
 #include "random_unit.hpp"
-#include "rt/core/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "shader_probe.hpp"
 
@@ -118,6 +118,28 @@ TEST_CASE("An environment image is not in the shaders: a note says so, and its a
     CHECK(flattened(scene).notes.empty());
 }
 
+TEST_CASE("A BSDF the shaders do not know is refused with one line (exit 2) and no logic error") {
+    // A chapter's own BSDF class, which chapter 11 has no exporter for.
+    class Unknown final : public Bsdf {
+      public:
+        Unknown() : Bsdf({.diffuse = true}) {}
+        Color eval(const Vec3&, const Vec3&, const Vec3&) const override { return Color(0); }
+        BsdfSample sample(const Vec3&, const Vec3&, Vec2, Real) const override { return {}; }
+        Real pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0; }
+    };
+    Scene scene = scene_of({Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"}});
+    scene.materials[0].name = "odd";
+    MaterialHooks hooks = refraction_materials();
+    hooks.models["diffuse"].bsdf = [](const Material&, bool, BsdfAtHit& at) -> const Bsdf& {
+        return at.emplace<Unknown>();
+    };
+    const RenderScene prepared(scene, EffectSet::all(), hooks);
+    CHECK_THROWS_MATCHES(
+        flatten_scene(scene, prepared.materials, prepared.lights, LightPicker(prepared.lights)), InputError,
+        Catch::Message("diffuse material 'odd': its BSDF is not in the shaders (the chapters "
+                       "before 11 render it)"));
+}
+
 TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
           "[gpu]" SHADER_EXERCISES "[random]") {
     std::vector<ShaderProbe::Query> queries;
@@ -152,8 +174,7 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
 }
 
 TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
-          "[gpu]" SHADER_EXERCISES
-          "[stability][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
     MeshShape mesh = make_icosphere(3);  // 1280 triangles
     jitter_radii(mesh, Real(0.05), 11);
     for (Vec3& p : mesh.positions) p = p * Real(3.7) + Vec3{10.3f, -5.1f, 2.9f};
@@ -353,8 +374,7 @@ TEST_CASE("The compute shader renders chapter 07's coloured glass as the CPU doe
     check_agreement("ch07_coloured_glass.json", ShaderKind::kCompute);
 }
 
-TEST_CASE(
-    "The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
+TEST_CASE("The compute shader renders chapter 07's glossy surfaces and glass as the CPU does",
           "[gpu]" SHADER_EXERCISES
           "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.glossy]"

@@ -25,7 +25,7 @@
 #endif
 
 #include "rt/core/did_you_mean.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/random.hpp"

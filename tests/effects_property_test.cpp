@@ -35,7 +35,8 @@
 #include "11_gpu_shaders/gpu_render.hpp"
 #endif
 #include "rt/core/conductor_presets.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
+#include "rt/io/material_kind.hpp"
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
@@ -253,7 +254,7 @@ class SceneDraw {
     }
     std::string material() {
         std::ostringstream s;
-        const std::string_view type = kMaterialTypeNames[std::size_t(whole(5))];
+        const std::string type = course_material_kinds()[std::size_t(whole(5))].type;
         s << R"({"type": ")" << type << '"';
         if (type == "mirror") s << R"(, "reflectance": )" << colour(0, 1);
         if (type == "diffuse" || type == "glossy" || type == "retroreflective")

@@ -142,7 +142,8 @@ TEST_CASE("Samples up to float's largest are summed, merged and filmed exactly, 
     // A point light of 1e9 at 1e-4 above a white floor (1e9 / (π 1e-8)), float's largest, and an ordinary
     // sample beside them.
     const Real largest = std::numeric_limits<float>::max();
-    const Color first(Real(3.1830989e16), largest, Real(0.5)), second(Real(3.1830989e16), Real(3e38), Real(2e15));
+    const Color first(Real(3.1830989e16), largest, Real(0.5)),
+        second(Real(3.1830989e16), Real(3e38), Real(2e15));
     PixelSum one;
     one.add(first);
     CHECK(one.mean() == first);
@@ -155,7 +156,8 @@ TEST_CASE("Samples up to float's largest are summed, merged and filmed exactly, 
     PixelSum negative;  // below −2^50 too
     negative.add(Color(-largest, Real(-1e20), Real(-0x1p50)));
     CHECK(negative.mean() == Color(-largest, Real(-1e20), Real(-0x1p50)));
-    if constexpr (sizeof(Real) > sizeof(float)) {  // a double build: beyond the sums, a sample counts as infinite
+    if constexpr (sizeof(Real) >
+                  sizeof(float)) {  // a double build: beyond the sums, a sample counts as infinite
         PixelSum beyond;
         beyond.add(Color(Real(0x1p128), 0, 0));
         CHECK(beyond.mean().r == kInfinity);
@@ -291,7 +293,8 @@ TEST_CASE("A film is input: negative sums, sums beyond its samples' reach and Na
     // The parts of 2^50 and above: never negative, and below 2^128 a sample.
     Film high_negative = piece({0, 3});
     high_negative.sums.at(3, 2).add_high({0, 0, -1});
-    refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 in channel 2") && Catch::Contains("parts of 2^50 and above"));
+    refused(high_negative, Catch::Contains("has a sum of -1.1259e+15 in channel 2") &&
+                               Catch::Contains("parts of 2^50 and above"));
     Film high_huge = piece({0, 3});
     high_huge.sums.at(3, 2).add_high({(Int128(3) << 78) + 1, 0, 0});
     refused(high_huge, Catch::Contains("in channel 0 for 3 samples, outside [0, 1.02085e+39]"));
@@ -361,8 +364,9 @@ TEST_CASE("A scene's fingerprint covers its textures' texels and its meshes' nor
     const auto with_texture = [&](auto change) {
         Scene scene = wood;
         for (Material& m : scene.materials) {
-            if (!m.texture) continue;
-            if (auto* image = std::get_if<ImageTextureDesc>(&m.texture->pattern)) {
+            for (Material::Textured& given : m.textures) {
+                auto* image = std::get_if<ImageTextureDesc>(&given.texture.pattern);
+                if (!image) continue;
                 TextureImage texels = *image->image;
                 change(texels);
                 image->image = std::make_shared<const TextureImage>(texels);

@@ -12,7 +12,7 @@ namespace rt {
 World::World(const Scene& scene, WorldOptions options) : options_(options) {
     for (const Shape& shape : scene.shapes) {
         const Material& m = scene.material_of(shape);
-        add(shape, m.emissive(), m.texture.has_value());
+        add(shape, m.emissive(), !m.textures.empty());
     }
     if (!corners_.empty()) corners_.resize(triangles_.size());
     bounded_count_ = std::uint32_t(primitives_.size());

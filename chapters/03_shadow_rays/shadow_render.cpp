@@ -4,7 +4,8 @@
 #include "01_ray_generation/pixel_sampling.hpp"
 #include "environment_note.hpp"
 #include "point_light.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
+#include "rt/io/material_kind.hpp"
 #include "shadow_ray.hpp"
 
 namespace rt {
@@ -21,7 +22,7 @@ Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg3
 Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
                       RayCounts& rays) {
     if (!options.direct) return Color(0);
-    const Color albedo = scene.materials[std::size_t(hit.material)].stand_in_albedo();
+    const Color albedo = stand_in_albedo(scene.materials[std::size_t(hit.material)]);
     if (albedo == Color(0)) return Color(0);
     Color irradiance(0);
     for (const PointLight& light : scene.point_lights) {
@@ -73,14 +74,14 @@ std::vector<std::string> shading_notes(const Scene& scene) {
     for (std::size_t i = 0; i < scene.materials.size(); ++i) {
         if (!used[i]) continue;
         const Material& m = scene.materials[i];
-        if (m.texture) {
-            notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+        if (!m.textures.empty()) {
+            notes.push_back(m.type + " material '" + m.name +
                             "': its texture is shaded as its mean colour here; textures are simulated from "
                             "chapter 04 on");
         }
         const auto effect = effect_of(m);
         if (!effect) continue;
-        notes.push_back(std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name +
+        notes.push_back(m.type + " material '" + m.name +
                         "': shaded as Lambertian here; " + simulated_from(m));
     }
     return notes;

@@ -9,26 +9,27 @@
 // A material whose colour is a texture has it evaluated here, in bsdf(hit, at): the one place where a
 // texture meets a BSDF, so every path loop that asks for the BSDF at a hit gets it.
 // What a chapter cannot simulate gets a stand-in here, and only here, with a note for the run's summary:
-//   a dielectric without refraction:     Lambert of Material::stand_in_albedo() (0.73);
-//   a glossy lobe without "glossy":      Lambert of its albedo;
-//   a mirror without "reflection":       black (it shows only its emission);
-//   a conductor before chapter 07, or    Lambert of Material::stand_in_albedo(), its colour at normal
-//   without "reflection":                incidence;
+//   a type without its effect simulated,  Lambert of its stand-in albedo (rt/io/material_kind.hpp: a glossy
+//   or without a model in the hooks:      lobe's albedo, a dielectric's 0.73, a conductor's colour at
+//                                         normal incidence), or its model's own stand-in (a mirror: black,
+//                                         it shows only its emission);
 //   a medium without "media":            inside a dielectric, the Beer–Lambert absorption of σ_a + σ_s (what
 //                                        chapter 07's hook makes of it); between the shapes, empty space.
 // Chapter 04 knows the four BRDFs; a later chapter adds what it simulates through MaterialHooks, so the table
 // grows without this chapter including the later one.
 #pragma once
 
-#include <functional>
+#include <deque>
 #include <memory>
 #include <string>
-#include <variant>
+#include <utility>
 #include <vector>
 
 #include "02_intersection/hit.hpp"
 #include "brdf.hpp"
 #include "bsdf.hpp"
+#include "bsdf_at_hit.hpp"
+#include "material_hooks.hpp"
 #include "medium.hpp"
 #include "rt/core/effect_set.hpp"
 #include "rt/core/scene.hpp"
@@ -36,38 +37,21 @@
 
 namespace rt {
 
-// The makers a later chapter hands the table for the materials it simulates.
-struct MaterialHooks {
-    // With refraction simulated: the BSDF of a dielectric seen from outside (true) or inside, and what fills
-    // it (null for clear glass).
-    std::function<std::unique_ptr<Bsdf>(const Material&, bool outside)> dielectric;
-    std::function<std::unique_ptr<Medium>(const Material&)> dielectric_interior;
-    // With reflection simulated (chapter 07): the BSDF of a conductor (the same from both sides).
-    std::function<std::unique_ptr<Bsdf>(const Material&)> conductor;
-    // With media simulated (chapter 09): the medium a scene's "medium" describes, inside a dielectric or
-    // between the shapes.
-    std::function<std::unique_ptr<Medium>(const MediumDesc&)> medium;
-};
-
-// Room for the BSDF of a textured material at one hit: the caller's, on its stack, so the table stays
-// shared and read-only between threads. Empty (and never written) in a scene without textures.
-using BsdfAtHit = std::variant<std::monostate, LambertBrdf, MirrorBrdf, GlossyBrdf, RetroreflectiveBrdf>;
-
 class MaterialTable {
   public:
-    MaterialTable(const Scene& scene, const EffectSet& simulated, const MaterialHooks& hooks = {});
+    MaterialTable(const Scene& scene, const EffectSet& simulated,
+                  const MaterialHooks& hooks = direct_lighting_materials());
 
     // The BSDF at a hit on material m, from the side the ray came from (Hit::front_face).
     const Bsdf& bsdf(int material, bool front_face = true) const {
         return *sides_[2 * std::size_t(material) + (front_face ? 0 : 1)];
     }
     // The BSDF at `hit`, from the side the ray came from: bsdf(material, front_face), or for a textured
-    // material the same BSDF with its colour (albedo, or a mirror's reflectance) replaced by the texture at
-    // hit.uv, made in `at` (valid while `at` is and until its next use).
+    // material the same BSDF with each textured colour parameter replaced by its texture at hit.uv, made in
+    // `at` (valid while `at` is and until its next use).
     const Bsdf& bsdf(const Hit& hit, BsdfAtHit& at) const {
-        const Bsdf& own = bsdf(hit.material, hit.front_face);
-        const TexturedColour* textured = textured_[std::size_t(hit.material)].get();
-        return textured ? textured->recolour(own, textured->texture.at(hit.uv), at) : own;
+        const Textured* textured = textured_[std::size_t(hit.material)].get();
+        return textured ? textured->at(hit, at) : bsdf(hit.material, hit.front_face);
     }
     // What the ray meets when it hits material m from that side: its emission, only on the outside.
     Color emission(int material, bool front_face) const {
@@ -82,15 +66,20 @@ class MaterialTable {
     std::size_t size() const { return emission_.size(); }
 
   private:
-    // A textured material's texture, and how to make its BSDF with another colour.
-    struct TexturedColour {
-        Texture texture;
-        const Bsdf& (*recolour)(const Bsdf& own, const Color& colour, BsdfAtHit& at);
+    // A textured material: its textures, and how to make its BSDF with their colours.
+    struct Textured {
+        Material plain;  // the material without its name and textures: cheap to copy at each hit
+        std::vector<std::pair<Color Material::*, Texture>> textures;
+        MakeBsdf bsdf;
+
+        const Bsdf& at(const Hit& hit, BsdfAtHit& room) const;
     };
 
-    std::vector<std::unique_ptr<Bsdf>> owned_;
-    std::vector<std::unique_ptr<const TexturedColour>> textured_;  // per material; null: a constant colour
-    std::vector<const Bsdf*> sides_;                               // 2 per material: outside, inside
+    void add(const Material& m, bool used, const EffectSet& simulated, const MaterialHooks& hooks);
+
+    std::deque<BsdfAtHit> owned_;                            // each material's BSDFs, made as a hit's are
+    std::vector<std::unique_ptr<const Textured>> textured_;  // per material; null: constant colours
+    std::vector<const Bsdf*> sides_;                         // 2 per material: outside, inside
     std::vector<Color> emission_;
     std::vector<std::unique_ptr<Medium>> interiors_;
     std::unique_ptr<Medium> exterior_;

@@ -12,7 +12,8 @@
 namespace rt {
 
 struct RenderScene {
-    RenderScene(const Scene& scene_, const EffectSet& simulated, const MaterialHooks& hooks = {})
+    RenderScene(const Scene& scene_, const EffectSet& simulated,
+                const MaterialHooks& hooks = direct_lighting_materials())
         : scene(scene_),
           world(scene_, world_options_for(simulated)),
           materials(scene_, simulated, hooks),

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "fresnel.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 
 namespace rt {

@@ -10,7 +10,8 @@
 
 namespace rt {
 
-// The hooks; `transport` is what the paths that read the table carry (its dielectrics' BTDF).
+// Chapter 04's hooks and these two types; `transport` is what the paths that read the table carry (its
+// dielectrics' BTDF).
 MaterialHooks refraction_materials(Transport transport = Transport::kRadiance);
 
 }  // namespace rt

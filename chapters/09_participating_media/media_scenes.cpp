@@ -8,7 +8,7 @@ Scene medium_sphere_scene(const MediumDesc& medium, Real ior, Real sky) {
     scene.camera = {{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30};
     Material m;
     m.name = "medium";
-    m.type = MaterialType::kDielectric;
+    m.type = "dielectric";
     m.roughness = 0;
     m.ior = ior;
     m.medium = medium;
@@ -24,7 +24,7 @@ Scene medium_slab_scene(const MediumDesc& medium, Real thickness) {
     scene.camera = {{0, thickness + 1, 0}, {0, 0, 0}, {0, 0, 1}, 1};
     Material slab;
     slab.name = "slab";
-    slab.type = MaterialType::kDielectric;
+    slab.type = "dielectric";
     slab.roughness = 0;
     slab.ior = 1;
     slab.medium = medium;

@@ -86,77 +86,111 @@ GpuPrimitive triangle_record(const Triangle& t, int material) {
 }
 
 std::string named(const Material& m) {
-    return std::string(kMaterialTypeNames[std::size_t(m.type)]) + " material '" + m.name + "'";
+    return m.type + " material '" + m.name + "'";
 }
 
-// What the table's BSDF for material i is, as the shader's record. The GPU cannot call a virtual function,
-// so each BSDF is asked its class here, once.
+// What the exporter of one BSDF class is given: the material, the table's BSDF from outside and inside, and
+// where its notes go (only for a material some shape uses).
+struct MaterialExport {
+    const Material& m;
+    const Bsdf& outside;
+    const Bsdf& inside;
+    bool used;
+    std::vector<std::string>& notes;
+};
+using ExportBsdf = void (*)(const MaterialExport& e, GpuMaterial& g);
+
+void lambert_record(const MaterialExport& e, GpuMaterial& g) {
+    g.info.x = GpuMaterial::kLambert;
+    g.color = v4(static_cast<const LambertBrdf&>(e.outside).albedo);
+}
+
+void mirror_record(const MaterialExport& e, GpuMaterial& g) {
+    g.info.x = GpuMaterial::kMirror;
+    g.color = v4(static_cast<const MirrorBrdf&>(e.outside).reflectance);
+}
+
+void glossy_record(const MaterialExport& e, GpuMaterial& g) {
+    const auto& glossy = static_cast<const GlossyBrdf&>(e.outside);
+    g.info.x = GpuMaterial::kGlossy;
+    g.color = v4(glossy.albedo, glossy.exponent);
+}
+
+void retroreflective_record(const MaterialExport& e, GpuMaterial& g) {
+    const auto& retro = static_cast<const RetroreflectiveBrdf&>(e.outside);
+    g.info.x = GpuMaterial::kRetroreflective;
+    g.color = v4(retro.albedo, retro.exponent);
+}
+
+// Glass of class B from both sides, carrying radiance: the shaders' smooth interface, its two η.
+template <class B>
+void glass_record(const MaterialExport& e, GpuMaterial& g) {
+    const auto& outside = static_cast<const B&>(e.outside);
+    if (typeid(e.inside) != typeid(B) || outside.transport != Transport::kRadiance)
+        throw std::logic_error(named(e.m) + ": the shaders trace radiance through glass only");
+    g.info.x = GpuMaterial::kSmoothDielectric;
+    g.eta = {float(outside.eta), float(static_cast<const B&>(e.inside).eta), 0.0f, 0.0f};
+}
+
+// Chapter 07's GGX glass is not in the shaders: the smooth interface of the same index stands in.
+void rough_glass_record(const MaterialExport& e, GpuMaterial& g) {
+    glass_record<RoughDielectric>(e, g);
+    if (e.used) {
+        char ior[32];
+        std::snprintf(ior, sizeof ior, "%g", double(e.m.ior));
+        e.notes.push_back(named(e.m) +
+                          ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " + ior +
+                          " (chapter 07 renders it rough)");
+    }
+}
+
+// Chapter 07's conductors are not in the shaders: a mirror of the metal's colour at normal incidence, F(0°),
+// stands in.
+void conductor_record(const MaterialExport& e, GpuMaterial& g) {
+    const auto& metal = static_cast<const Conductor&>(e.outside);
+    g.info.x = GpuMaterial::kMirror;
+    g.color = v4(fresnel_conductor(1, metal.eta, metal.k));
+    if (e.used) {
+        e.notes.push_back(named(e.m) +
+                          ": conductors (complex Fresnel, GGX) are not in the shaders; shaded as a " +
+                          "mirror of its colour at normal incidence (chapter 07 renders it)");
+    }
+}
+
+// The shaders' record of the table's BSDF for material i, by its class: the GPU cannot call a virtual
+// function, so each BSDF is exported here, once. A class the shaders do not know is refused, as a light is.
 GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std::size_t i, bool used,
                             std::vector<std::string>& notes) {
+    static const std::unordered_map<std::type_index, ExportBsdf> by_class{
+        {typeid(LambertBrdf), lambert_record},
+        {typeid(MirrorBrdf), mirror_record},
+        {typeid(GlossyBrdf), glossy_record},
+        {typeid(RetroreflectiveBrdf), retroreflective_record},
+        {typeid(SmoothDielectric), glass_record<SmoothDielectric>},
+        {typeid(RoughDielectric), rough_glass_record},
+        {typeid(Conductor), conductor_record},
+    };
     const Material& m = scene.materials[i];
     const int index = int(i);
     const Bsdf& outside = table.bsdf(index, true);
+    const auto found = by_class.find(typeid(outside));
+    if (found == by_class.end())
+        throw InputError(named(m) + ": its BSDF is not in the shaders (the chapters before 11 render it)");
     GpuMaterial g;
     g.emission = v4(table.emission(index, true));
     g.info.y = outside.flags().black ? 1u : 0u;
-    if (const auto* lambert = dynamic_cast<const LambertBrdf*>(&outside)) {
-        g.info.x = GpuMaterial::kLambert;
-        g.color = v4(lambert->albedo);
-    } else if (const auto* mirror = dynamic_cast<const MirrorBrdf*>(&outside)) {
-        g.info.x = GpuMaterial::kMirror;
-        g.color = v4(mirror->reflectance);
-    } else if (const auto* glossy = dynamic_cast<const GlossyBrdf*>(&outside)) {
-        g.info.x = GpuMaterial::kGlossy;
-        g.color = v4(glossy->albedo, glossy->exponent);
-    } else if (const auto* retro = dynamic_cast<const RetroreflectiveBrdf*>(&outside)) {
-        g.info.x = GpuMaterial::kRetroreflective;
-        g.color = v4(retro->albedo, retro->exponent);
-    } else if (const auto* glass = dynamic_cast<const SmoothDielectric*>(&outside)) {
-        const auto* inside = dynamic_cast<const SmoothDielectric*>(&table.bsdf(index, false));
-        if (!inside || glass->transport != Transport::kRadiance)
-            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
-        g.info.x = GpuMaterial::kSmoothDielectric;
-        g.eta = {float(glass->eta), float(inside->eta), 0.0f, 0.0f};
-    } else if (const auto* rough = dynamic_cast<const RoughDielectric*>(&outside)) {
-        // Chapter 07's GGX glass is not in the shaders: the smooth interface of the same index stands in.
-        const auto* inside = dynamic_cast<const RoughDielectric*>(&table.bsdf(index, false));
-        if (!inside || rough->transport != Transport::kRadiance)
-            throw std::logic_error(named(m) + ": the shaders trace radiance through glass only");
-        g.info.x = GpuMaterial::kSmoothDielectric;
-        g.eta = {float(rough->eta), float(inside->eta), 0.0f, 0.0f};
-        if (used) {
-            char ior[32];
-            std::snprintf(ior, sizeof ior, "%g", double(m.ior));
-            notes.push_back(named(m) +
-                            ": rough glass (GGX) is not in the shaders; shaded as smooth glass of ior " +
-                            ior + " (chapter 07 renders it rough)");
-        }
-    } else if (const auto* metal = dynamic_cast<const Conductor*>(&outside)) {
-        // Chapter 07's conductors are not in the shaders: a mirror of the metal's colour at normal incidence,
-        // F(0°), stands in.
-        g.info.x = GpuMaterial::kMirror;
-        g.color = v4(fresnel_conductor(1, metal->eta, metal->k));
-        if (used) {
-            notes.push_back(named(m) +
-                            ": conductors (complex Fresnel, GGX) are not in the shaders; shaded as a " +
-                            "mirror of its colour at normal incidence (chapter 07 renders it)");
-        }
-    } else {
-        throw std::logic_error(named(m) + ": a BSDF the shaders do not know");
-    }
-    if (m.texture && used && !outside.flags().black) {
+    found->second({m, outside, table.bsdf(index, false), used, notes}, g);
+    if (!m.textures.empty() && used && !outside.flags().black) {
         notes.push_back(named(m) +
                         ": textures are not in the shaders; shaded as the texture's mean colour "
                         "(chapter 04 renders it textured)");
     }
     if (const Medium* interior = table.interior(index)) {
-        const auto* absorbing = dynamic_cast<const AbsorbingMedium*>(interior);
-        if (!absorbing) {
-            throw std::logic_error(named(m) + ": a medium the shaders do not know");
-        } else {
-            g.info.z = 1u;
-            g.absorption = v4(absorbing->absorption);
-        }
+        if (typeid(*interior) != typeid(AbsorbingMedium))
+            throw InputError(named(m) +
+                             ": its medium is not in the shaders (the chapters before 11 render it)");
+        g.info.z = 1u;
+        g.absorption = v4(static_cast<const AbsorbingMedium&>(*interior).absorption);
     }
     return g;
 }

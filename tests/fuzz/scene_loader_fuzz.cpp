@@ -8,7 +8,7 @@
 #include <string>
 #include <variant>
 
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/io/scene_loader.hpp"
 

@@ -28,7 +28,7 @@
 #include "bsdf_render.hpp"
 #include "path_parts.hpp"
 #include "reference_halves.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"

@@ -23,7 +23,7 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
 #include "reference_halves.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/image_io.hpp"

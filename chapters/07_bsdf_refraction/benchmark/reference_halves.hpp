@@ -6,7 +6,7 @@
 #include <string>
 
 #include "bsdf_render.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/image_io.hpp"

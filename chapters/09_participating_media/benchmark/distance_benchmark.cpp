@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"

@@ -11,7 +11,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "media_materials.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"

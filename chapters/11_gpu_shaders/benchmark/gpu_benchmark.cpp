@@ -16,7 +16,7 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
@@ -35,7 +35,7 @@ struct Rates {
 };
 
 // `simulated` without refraction renders the scene without glass: the material table shades each dielectric
-// as its stand-in, diffuse white (albedo Material::kDielectricStandIn).
+// as its stand-in, a light grey Lambert surface (albedo 0.73).
 Rates measure(const GlContext& gl, const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
               int rounds) {
     const GpuRenderer compute(gl, scene, simulated, ShaderKind::kCompute);

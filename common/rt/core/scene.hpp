@@ -40,11 +40,6 @@ struct ImageDesc {
     int spp = 16;  // samples per pixel
 };
 
-enum class MaterialType { kDiffuse, kMirror, kGlossy, kRetroreflective, kDielectric, kConductor };
-// The names the scene files use, in the order of MaterialType.
-inline constexpr std::array<std::string_view, 6> kMaterialTypeNames = {
-    "diffuse", "mirror", "glossy", "retroreflective", "dielectric", "conductor"};
-
 // A homogeneous participating medium (chapter 09): per unit of length, light is absorbed at the rate sigma_a
 // and scattered at the rate sigma_s, per colour channel; g is the Henyey–Greenstein asymmetry of the
 // scattering (0 isotropic, > 0 forward, < 0 backward), in (−1, 1).
@@ -68,15 +63,16 @@ enum class TextureWrap { kRepeat, kClamp };        // what a coordinate outside 
 enum class TextureFilter { kBilinear, kNearest };  // how texels between texel centres are blended
 enum class TextureEncoding { kSrgb, kLinear };     // how the file's 8-bit values map to linear RGB
 constexpr auto names_of(TextureWrap) {
-    return enum_names<TextureWrap>("wrap", {{TextureWrap::kRepeat, "repeat"}, {TextureWrap::kClamp, "clamp"}});
+    return enum_names<TextureWrap>("wrap",
+                                   {{TextureWrap::kRepeat, "repeat"}, {TextureWrap::kClamp, "clamp"}});
 }
 constexpr auto names_of(TextureFilter) {
-    return enum_names<TextureFilter>("filter",
-                                     {{TextureFilter::kBilinear, "bilinear"}, {TextureFilter::kNearest, "nearest"}});
+    return enum_names<TextureFilter>(
+        "filter", {{TextureFilter::kBilinear, "bilinear"}, {TextureFilter::kNearest, "nearest"}});
 }
 constexpr auto names_of(TextureEncoding) {
-    return enum_names<TextureEncoding>("encoding",
-                                       {{TextureEncoding::kSrgb, "srgb"}, {TextureEncoding::kLinear, "linear"}});
+    return enum_names<TextureEncoding>(
+        "encoding", {{TextureEncoding::kSrgb, "srgb"}, {TextureEncoding::kLinear, "linear"}});
 }
 struct ImageTextureDesc {
     std::string file;                           // as the scene file names it
@@ -93,42 +89,35 @@ struct CheckerDesc {
 };
 struct TextureDesc {
     std::variant<ImageTextureDesc, CheckerDesc> pattern;
-    Color mean{0};  // its average colour over a period: what a chapter without textures shades it as
+    Color mean{0};   // its average colour over a period: what a chapter without textures shades it as
+    Color least{0};  // its least value per channel (a conductor's index must not be 0 anywhere)
 };
 
+// A material as the scene file gives it: its type's name and the parameters of the course's types. What
+// each type reads, the effect it needs and its stand-in are its MaterialKind's (rt/io/material_kind.hpp).
 struct Material {
+    // A colour parameter given as a texture instead of [r, g, b]: which one (&Material::albedo, ...) and the
+    // texture; the parameter itself then holds the texture's mean.
+    struct Textured {
+        Color Material::*parameter;
+        TextureDesc texture;
+    };
+
     std::string name;
-    MaterialType type = MaterialType::kDiffuse;
-    Color albedo{0.8f};       // diffuse, glossy, retroreflective: reflectance in [0, 1]
-    Color reflectance{1.0f};  // mirror: the fraction reflected
-    Color emission{0.0f};     // radiance emitted (any type): makes its shapes area lights
-    Real roughness = 0.2f;    // glossy, retroreflective: width of the lobe in (0, 1]; dielectric and
-                              // conductor: 0 is smooth, r > 0 rough (GGX microfacets of α = r², chapter 07)
-    Real ior = 1.5f;          // dielectric: index of refraction
-    Color absorption{0.0f};   // dielectric: Beer–Lambert absorption coefficient per unit length
+    std::string type = "diffuse";  // as the scene file spells it: a MaterialKind's name
+    Color albedo{0.8f};            // diffuse, glossy, retroreflective: reflectance in [0, 1]
+    Color reflectance{1.0f};       // mirror: the fraction reflected
+    Color emission{0.0f};          // radiance emitted (any type): makes its shapes area lights
+    Real roughness = 0.2f;         // glossy, retroreflective: width of the lobe in (0, 1]; dielectric and
+                            // conductor: 0 is smooth, r > 0 rough (GGX microfacets of α = r², chapter 07)
+    Real ior = 1.5f;                   // dielectric: index of refraction
+    Color absorption{0.0f};            // dielectric: Beer–Lambert absorption coefficient per unit length
     std::optional<MediumDesc> medium;  // dielectric: a participating medium inside (instead of absorption)
-    // The texture the colour parameter (albedo, or a mirror's reflectance) names instead of [r, g, b], if
-    // any; the colour itself is then the texture's mean.
-    std::optional<TextureDesc> texture;
     Color eta{1};  // conductor: the real part η of the complex index of refraction η + i k
     Color k{0};    // conductor: its imaginary part, the extinction coefficient
+    std::vector<Textured> textures;  // the colour parameters given as textures, in the file's order
 
     bool emissive() const { return emission.r > 0 || emission.g > 0 || emission.b > 0; }
-    // The albedo of the Lambert surface a chapter shades this material as when it cannot simulate its type:
-    // its albedo (diffuse, glossy, retro-reflective), a mirror's reflectance, for a dielectric (before
-    // chapter 07) a light grey, kDielectricStandIn, and for a conductor (before chapter 07) its reflectance
-    // at normal incidence, F(0°) = ((η − 1)² + k²) / ((η + 1)² + k²) (chapter 07's fresnel_conductor at
-    // cos θ = 1; a test holds the two equal). The one place a stand-in colour is chosen.
-    Color stand_in_albedo() const {
-        if (type == MaterialType::kMirror) return reflectance;
-        if (type == MaterialType::kDielectric) return Color(kDielectricStandIn);
-        if (type == MaterialType::kConductor) {
-            const Color below = eta - Color(1), above = eta + Color(1), k2 = k * k;
-            return (below * below + k2) / (above * above + k2);
-        }
-        return albedo;
-    }
-    static constexpr Real kDielectricStandIn = Real(0.73);
 };
 
 // Scale, then rotations about x, y and z (degrees), then translation; or, for a mesh, any affine matrix

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace scene_reading;
 
-constexpr std::string_view kTopKeys[] = {"description", "camera", "image",   "materials",
+constexpr std::string_view kTopKeys[] = {"description", "camera", "image",  "materials",
                                          "shapes",      "lights", "medium", "effects"};
 constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov", "aperture", "focus_distance",
                                             "mirrored"};
@@ -74,8 +74,11 @@ std::vector<SceneInput> files_read(const Scene& scene, const fs::path& file) {
     const fs::path folder = file.parent_path();
     std::vector<SceneInput> inputs{{"the scene", file}};
     for (const Material& m : scene.materials) {
-        const auto* image = m.texture ? std::get_if<ImageTextureDesc>(&m.texture->pattern) : nullptr;
-        if (image) inputs.push_back({"the texture of materials." + shown_name(m.name), folder / image->file});
+        for (const Material::Textured& textured : m.textures) {
+            const auto* image = std::get_if<ImageTextureDesc>(&textured.texture.pattern);
+            if (image)
+                inputs.push_back({"the texture of materials." + shown_name(m.name), folder / image->file});
+        }
     }
     for (const Shape& shape : scene.shapes) {
         if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry); mesh && !mesh->file.empty())

@@ -3,9 +3,9 @@
 #include <array>
 #include <memory>
 
-#include "rt/core/conductor_presets.hpp"
 #include "rt/core/enum_names.hpp"
 #include "rt/io/input_file.hpp"
+#include "rt/io/material_kind.hpp"
 #include "rt/io/texture_image.hpp"
 
 namespace rt::scene_reading {
@@ -55,22 +55,27 @@ TextureDesc read_image_texture(const Node& node, const fs::path& scene_folder) {
         file.fail(shown(path) + ": " + e.what());
     }
     Vec3d sum(0);
-    for (const Color& t : desc.image->texels) sum += Vec3d(t);
+    Color least(kInfinity);
+    for (const Color& t : desc.image->texels) {
+        sum += Vec3d(t);
+        least = glm::min(least, t);
+    }
     const Color mean(sum / double(desc.image->texels.size()));
-    return {desc, mean};
+    return {desc, mean, least};
 }
 
 // A checker's squares are 1 / scale of a texture coordinate: the smallest that float, with its steps of 2^-24
 // on coordinates near 1 (a quad's, a triangle's, a sphere's), still draws with 16 steps across.
 constexpr Real kLargestCheckerScale = 1 << 20;
 
-TextureDesc read_checker(const Node& node) {
+// Its colours are in [0, limit] (1 for a reflectance).
+TextureDesc read_checker(const Node& node, double limit) {
     node.expect_object(std::array<std::string_view, 1>{"checker"}, "a checker texture");
     const Node checker = node["checker"];
     checker.expect_object(kCheckerKeys, "a checker");
     CheckerDesc desc;
-    if (checker.has("even")) desc.even = checker["even"].color_in(1);
-    if (checker.has("odd")) desc.odd = checker["odd"].color_in(1);
+    if (checker.has("even")) desc.even = checker["even"].color_in(limit);
+    if (checker.has("odd")) desc.odd = checker["odd"].color_in(limit);
     if (checker.has("scale")) {
         const Node scale = checker["scale"];
         desc.scale = scale.positive();
@@ -81,48 +86,7 @@ TextureDesc read_checker(const Node& node) {
                 show(desc.scale));
         }
     }
-    return {desc, (desc.even + desc.odd) / Real(2)};
-}
-
-// A colour parameter (albedo, reflectance): [r, g, b] in [0, 1], or a texture, whose mean is the colour.
-Color read_colour_parameter(const Node& node, const fs::path& scene_folder,
-                            std::optional<TextureDesc>& texture) {
-    if (!node.json().is_object()) return node.color_in(1);
-    if (node.has("texture")) {
-        texture = read_image_texture(node, scene_folder);
-    } else if (node.has("checker")) {
-        texture = read_checker(node);
-    } else {
-        node.fail("must be [r, g, b] or a texture: {\"texture\": \"file.png\"} or {\"checker\": {...}}");
-    }
-    return texture->mean;
-}
-
-// A conductor's complex index η + i k: a named preset (conductor_presets.hpp), or both "eta" and "k", each
-// >= 0 per channel and not both 0 in a channel (an index of 0 refracts nothing and divides by zero).
-void read_conductor_index(const Node& node, Material& m) {
-    if (node.has("preset")) {
-        const Node preset = node["preset"];
-        if (node.has("eta") || node.has("k")) preset.fail("give either a preset or eta and k, not both");
-        const std::string name = preset.string();
-        for (const ConductorPreset& p : kConductorPresets) {
-            if (p.name == name) {
-                m.eta = p.eta;
-                m.k = p.k;
-                return;
-            }
-        }
-        preset.fail("unknown conductor preset " + quote(name) + suggestion(name, kConductorPresetNames) +
-                    "; expected gold, copper or aluminium");
-    }
-    if (!node.has("eta") && !node.has("k")) node.fail("a conductor needs eta and k, or a preset");
-    m.eta = node["eta"].color_in(kLargestNumber);
-    m.k = node["k"].color_in(kLargestNumber);
-    for (int i = 0; i < 3; ++i) {
-        if (m.eta[i] == 0 && m.k[i] == 0) {
-            node["eta"].element(std::size_t(i)).fail("eta and k must not both be 0 in a channel");
-        }
-    }
+    return {desc, (desc.even + desc.odd) / Real(2), glm::min(desc.even, desc.odd)};
 }
 
 }  // namespace
@@ -136,56 +100,43 @@ MediumDesc read_medium(const Node& node) {
     return medium;
 }
 
+Color read_colour_parameter(const Node& node, const fs::path& scene_folder, Material& m,
+                            Color Material::*parameter, double limit) {
+    if (!node.json().is_object()) return m.*parameter = node.color_in(limit);
+    TextureDesc texture;
+    if (node.has("texture")) {
+        texture = read_image_texture(node, scene_folder);
+    } else if (node.has("checker")) {
+        texture = read_checker(node, limit);
+    } else {
+        node.fail("must be [r, g, b] or a texture: {\"texture\": \"file.png\"} or {\"checker\": {...}}");
+    }
+    m.textures.push_back({parameter, texture});
+    return m.*parameter = texture.mean;
+}
+
 Material read_material(const Node& node, const std::string& name, const fs::path& scene_folder) {
     if (!node.json().is_object()) node.fail("must be an object, got " + std::string(node.json().type_name()));
     const std::string type = node["type"].string();
-    if (type != "dielectric" && node.has("medium")) {
+    const MaterialKind* kind = find_material_kind(type);
+    if (node.has("medium") && !(kind && kind->takes("medium"))) {
         node["medium"].fail("only a dielectric material holds a medium (its shapes' inside), got a " +
                             shown_name(type) + " material");
     }
+    if (!kind) {
+        const std::vector<std::string_view> names = material_type_names();
+        std::string expected;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + std::string(names[i]);
+        node["type"].fail("unknown material type " + quote(type) + suggestion(type, names) + "; expected " +
+                          expected);
+    }
+    node.expect_object(kind->keys, "a " + type + " material");
     Material m;
     m.name = name;
-    if (type == "diffuse") {
-        m.type = MaterialType::kDiffuse;
-        node.expect_object(std::array<std::string_view, 3>{"type", "albedo", "emission"},
-                           "a diffuse material");
-    } else if (type == "mirror") {
-        m.type = MaterialType::kMirror;
-        node.expect_object(std::array<std::string_view, 3>{"type", "reflectance", "emission"},
-                           "a mirror material");
-    } else if (type == "glossy" || type == "retroreflective") {
-        m.type = type == "glossy" ? MaterialType::kGlossy : MaterialType::kRetroreflective;
-        node.expect_object(std::array<std::string_view, 4>{"type", "albedo", "roughness", "emission"},
-                           "a " + type + " material");
-    } else if (type == "dielectric") {
-        m.type = MaterialType::kDielectric;
-        m.roughness = 0;  // smooth unless the file says otherwise
-        node.expect_object(std::array<std::string_view, 5>{"type", "ior", "absorption", "roughness", "medium"},
-                           "a dielectric material");
-        if (node.has("absorption") && node.has("medium")) {
-            node["medium"].fail("give either absorption or medium (a medium's sigma_a is its absorption)");
-        }
-    } else if (type == "conductor") {
-        m.type = MaterialType::kConductor;
-        m.roughness = 0;  // smooth unless the file says otherwise
-        node.expect_object(
-            std::array<std::string_view, 6>{"type", "eta", "k", "preset", "roughness", "emission"},
-            "a conductor material");
-        read_conductor_index(node, m);
-    } else {
-        node["type"].fail("unknown material type " + quote(type) + suggestion(type, kMaterialTypeNames) +
-                          "; expected diffuse, mirror, glossy, retroreflective, dielectric or conductor");
-    }
-    if (node.has("albedo")) m.albedo = read_colour_parameter(node["albedo"], scene_folder, m.texture);
-    if (node.has("reflectance"))
-        m.reflectance = read_colour_parameter(node["reflectance"], scene_folder, m.texture);
+    m.type = type;
+    kind->read(node, scene_folder, m);
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
-    // A conductor's roughness may be 0, a smooth metal; a lobe's may not (it would be a delta).
-    if (node.has("roughness"))
-        m.roughness = node["roughness"].real_in(0, 1, m.type != MaterialType::kConductor, false);
-    if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
-    if (node.has("absorption")) m.absorption = node["absorption"].color_in(kLargestNumber);
-    if (node.has("medium")) m.medium = read_medium(node["medium"]);
     return m;
 }
 

@@ -7,7 +7,7 @@
 #include <thread>
 #include <vector>
 
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"

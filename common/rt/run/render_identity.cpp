@@ -37,11 +37,13 @@ std::uint64_t scene_fingerprint(const Scene& scene, const std::filesystem::path&
     if (scene.environment && scene.environment->image)
         hash = hash_of(scene.environment->image->pixels(), hash);
     for (const Material& m : scene.materials) {
-        const auto* texture = m.texture ? std::get_if<ImageTextureDesc>(&m.texture->pattern) : nullptr;
-        if (!texture) continue;
-        const int size[2] = {texture->image->width, texture->image->height};
-        hash = fnv1a(size, sizeof size, hash);
-        hash = hash_of(texture->image->texels, hash);
+        for (const Material::Textured& textured : m.textures) {
+            const auto* texture = std::get_if<ImageTextureDesc>(&textured.texture.pattern);
+            if (!texture) continue;
+            const int size[2] = {texture->image->width, texture->image->height};
+            hash = fnv1a(size, sizeof size, hash);
+            hash = hash_of(texture->image->texels, hash);
+        }
     }
     return hash;
 }

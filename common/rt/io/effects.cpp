@@ -1,39 +1,26 @@
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 
 #include <array>
 #include <variant>
 
+#include "rt/io/material_kind.hpp"
+
 namespace rt {
 namespace {
 
-// Whether a light shining on the material is seen again: a diffuse, glossy or retro-reflective lobe or a
-// mirror that reflects something, and every dielectric (Fresnel reflects some of any light, a medium inside
-// may scatter it, and a chapter without refraction shades it as a grey stand-in). Mirrors and smooth glass
-// count although the path loop samples no light at their delta vertices: chapters 03 and 04 shade them as
-// Lambert stand-ins, which light does reach.
+// Whether a light shining on the material is seen again: a surface that reflects or transmits something.
+// Its stand-in's albedo says so for every type: a lobe's albedo, a mirror's reflectance, a conductor's F(0°),
+// a dielectric's grey (Fresnel reflects some of any light, a medium inside may scatter it). Mirrors and
+// smooth glass count although the path loop samples no light at their delta vertices: chapters 03 and 04
+// shade them as Lambert stand-ins, which light does reach.
 bool lit_by_lights(const Material& m) {
-    if (m.type == MaterialType::kDielectric) return true;
-    if (m.type == MaterialType::kConductor) return !is_black(m.stand_in_albedo());  // F(0°) > 0
-    const Color reflects = m.type == MaterialType::kMirror ? m.reflectance : m.albedo;
-    return reflects.r > 0 || reflects.g > 0 || reflects.b > 0;
+    return !is_black(stand_in_albedo(m));
 }
 
 }  // namespace
 
 std::optional<Effect> effect_of(const Material& m) {
-    switch (m.type) {
-        case MaterialType::kDiffuse:
-            return std::nullopt;
-        case MaterialType::kMirror:
-        case MaterialType::kConductor:
-            return Effect::kReflection;
-        case MaterialType::kGlossy:
-        case MaterialType::kRetroreflective:
-            return Effect::kGlossy;
-        case MaterialType::kDielectric:
-            return Effect::kRefraction;
-    }
-    return std::nullopt;
+    return kind_of(m).effect;
 }
 
 EffectSet needed(const Scene& scene) {
@@ -75,8 +62,10 @@ std::string chapter_that_adds(Effect effect) {
 }
 
 std::string simulated_from(const Material& m) {
-    if (m.type == MaterialType::kConductor) return "a conductor is simulated from chapter 07 on";
-    const auto effect = effect_of(m);
+    const MaterialKind& kind = kind_of(m);
+    if (!kind.first_chapter.empty())
+        return "a " + kind.type + " is simulated from chapter " + kind.first_chapter + " on";
+    const auto effect = kind.effect;
     if (!effect) return "it is simulated from chapter 01 on";
     return std::string(kEffectNames[std::size_t(*effect)]) + " is simulated from " +
            chapter_that_adds(*effect) + " on";
