@@ -6,7 +6,7 @@
                                    differs from the committed SVG or is missing; exit 77 (skipped) when
                                    matplotlib is not installed
 
-One module per chapter (chNN_*.py) draws its figures; figure_style.py makes the SVG deterministic.
+One module per chapter (chNN_*.py) draws its figures, course_*.py those of common/README.md; figure_style.py makes the SVG deterministic.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ def every_diagram() -> dict[str, bytes]:
     """Each diagram's path under chapters/ and its SVG bytes."""
     from figure_style import svg_bytes
     diagrams = {}
-    for module_file in sorted(HERE.glob("ch[0-9][0-9]_*.py")):
+    for module_file in sorted([*HERE.glob("ch[0-9][0-9]_*.py"), *HERE.glob("course_*.py")]):
         module = importlib.import_module(module_file.stem)
         for path, fig in module.figures().items():
             diagrams[path] = svg_bytes(fig)
