@@ -215,7 +215,7 @@ TEST_CASE("A scale that moves the scene beyond a scene file's limit of 1e9 is re
     CHECK_THROWS_WITH(check_scale(scene, Real(1e9), "--study-scales (times --scale)"),
                       Catch::StartsWith("--study-scales (times --scale): 1e+09 moves"));
     const Scene box =
-        scene_of({Shape{BoxShape{{0, 0, 0}, {1, 1, 1}, {Vec3{2}, Vec3{0}, Vec3{0, 0, 10}}}, 0, "b"}});
+        scene_of({Shape{BoxShape{{0, 0, 0}, {1, 1, 1}, {Vec3{2}, Vec3{0}, Vec3{0, 0, 10}, {}}}, 0, "b"}});
     CHECK(largest_coordinate(box) == Approx(12));
 }
 
@@ -485,7 +485,7 @@ TEST_CASE("The floor right under a box resting on it gets exactly zero light",
           "[ex:ch03.robust_offset][ex:ch03.shadow_ray]") {
     Scene base = scene_of(
         {Shape{PlaneShape{{0, 0, 0}, {0, 1, 0}}, 0, "floor"},
-         Shape{BoxShape{{0, 0, 0}, {1, 0.8f, 1.2f}, {Vec3{1}, Vec3{0, 30, 0}, Vec3{0.37f, 0, -0.21f}}}, 0,
+         Shape{BoxShape{{0, 0, 0}, {1, 0.8f, 1.2f}, {Vec3{1}, Vec3{0, 30, 0}, Vec3{0.37f, 0, -0.21f}, {}}}, 0,
                "box"}});
     base.point_lights = {PointLight{{0.5f, 3, 0.4f}, Color(10)}, PointLight{{5, 0.5f, 0.2f}, Color(10)}};
     Scene floor_only = base;
@@ -506,11 +506,11 @@ TEST_CASE("The floor right under a box resting on it gets exactly zero light",
             const auto hit = floor_world.intersect(Ray{under + Vec3{0, s, 0}, {0, -1, 0}});
             REQUIRE(hit);
             RayCounts rays;
-            lit += point_lights_at(world, scene, *hit, {}, rays) != Color(0) ? 1 : 0;
+            lit += point_lights_at(world, scene, *hit, Color(1), {}, rays) != Color(0) ? 1 : 0;
             const Vec3 beside = box.transform.apply_to_point({Real(1.05), 0, Real(1.2) * rng.next_real()});
             const auto open = floor_world.intersect(Ray{beside + Vec3{0, s, 0}, {0, -1, 0}});
             REQUIRE(open);
-            lit_beside += point_lights_at(world, scene, *open, {}, rays) != Color(0) ? 1 : 0;
+            lit_beside += point_lights_at(world, scene, *open, Color(1), {}, rays) != Color(0) ? 1 : 0;
         }
         CHECK(lit == 0);
         CHECK(lit_beside == 10000);  // the light is blocked by the box, not by the floor itself

@@ -19,11 +19,9 @@ Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg3
     return camera_ray_through(camera, film, [&] { return rng.next_vec2(); });
 }
 
-Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
-                      RayCounts& rays) {
-    if (!options.direct) return Color(0);
-    const Color albedo = stand_in_albedo(scene.materials[std::size_t(hit.material)]);
-    if (albedo == Color(0)) return Color(0);
+Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const Color& albedo,
+                      const ShadowOptions& options, RayCounts& rays) {
+    if (!options.direct || albedo == Color(0)) return Color(0);
     Color irradiance(0);
     for (const PointLight& light : scene.point_lights) {
         const Color e = point_light_irradiance(light, hit.point, hit.normal);
@@ -34,21 +32,29 @@ Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, co
     return lambert_radiance(albedo, irradiance);
 }
 
-Color radiance(const World& world, const Scene& scene, const Ray& ray, const ShadowOptions& options,
-               RayCounts& rays) {
+std::vector<Color> stand_in_albedos(const Scene& scene) {
+    std::vector<Color> albedos;
+    for (const Material& m : scene.materials) albedos.push_back(stand_in_albedo(m));
+    return albedos;
+}
+
+Color radiance(const World& world, const Scene& scene, const std::vector<Color>& albedos, const Ray& ray,
+               const ShadowOptions& options, RayCounts& rays) {
     const auto hit = world.intersect(ray);
     if (!hit) return scene.environment ? scene.environment->radiance : Color(0);
     const Material& material = scene.materials[std::size_t(hit->material)];
-    return material.emission + point_lights_at(world, scene, *hit, options, rays);
+    return material.emission +
+           point_lights_at(world, scene, *hit, albedos[std::size_t(hit->material)], options, rays);
 }
 
 RenderResult render_shadows(const World& world, const Scene& scene, const PinholeCamera& camera,
                             const ShadowOptions& options, const RenderSettings& settings) {
     const int spp = settings.samples_per_pixel;
+    const std::vector<Color> albedos = stand_in_albedos(scene);
     return render(settings, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
         const Ray ray = primary_ray(camera, s, spp, rng);
         rays.add(RayKind::kCamera);
-        return radiance(world, scene, ray, options, rays);
+        return radiance(world, scene, albedos, ray, options, rays);
     });
 }
 

@@ -33,15 +33,19 @@ ShadowOptions shadow_options(const EffectSet& simulated, const RayOffset& offset
 // The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);
 
-// The direct light of the scene's point lights at `hit`: Σ (ρ / π) E_i V_i, one shadow ray per light in
-// front.
-Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const ShadowOptions& options,
-                      RayCounts& rays);
+// The direct light of the scene's point lights at `hit`, a surface of that albedo: Σ (ρ / π) E_i V_i, one
+// shadow ray per light in front.
+Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const Color& albedo,
+                      const ShadowOptions& options, RayCounts& rays);
+
+// Each material's albedo as this chapter shades it (its stand-in Lambert), by material index: found once,
+// not at every hit.
+std::vector<Color> stand_in_albedos(const Scene& scene);
 
 // The radiance along a camera ray: at the nearest hit, emission plus the point lights' direct light; on a
 // miss, the environment's radiance (black without one).
-Color radiance(const World& world, const Scene& scene, const Ray& ray, const ShadowOptions& options,
-               RayCounts& rays);
+Color radiance(const World& world, const Scene& scene, const std::vector<Color>& albedos, const Ray& ray,
+               const ShadowOptions& options, RayCounts& rays);
 
 RenderResult render_shadows(const World& world, const Scene& scene, const PinholeCamera& camera,
                             const ShadowOptions& options, const RenderSettings& settings);

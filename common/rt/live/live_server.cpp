@@ -128,6 +128,13 @@ struct LiveServer::Impl {
     }
 
     void serve(const std::vector<LiveRoute>& routes) {
+        configure_connections();
+        refuse_other_hosts();
+        add_routes(routes);
+    }
+
+    // One request a connection, bounded waits, a thread per connection.
+    void configure_connections() {
         // SO_REUSEADDR only: cpp-httplib's default adds SO_REUSEPORT, with which a second server could share
         // a port already in use instead of being refused.
         server.set_socket_options([](socket_t socket) {
@@ -139,6 +146,10 @@ struct LiveServer::Impl {
         server.set_read_timeout(kReadWriteSeconds);
         server.set_write_timeout(kReadWriteSeconds);
         server.new_task_queue = [] { return new ConnectionThreads; };
+    }
+
+    // Before any route: one Host, ours, and no other page's Origin.
+    void refuse_other_hosts() {
         server.set_pre_routing_handler([this](const httplib::Request& request, httplib::Response& response) {
             // One Host, as HTTP/1.1 requires (RFC 9112, 3.2): with two, which one a proxy or a browser
             // trusted is not known.
@@ -159,6 +170,10 @@ struct LiveServer::Impl {
             response.set_header("Cache-Control", "no-store");
             return httplib::Server::HandlerResponse::Unhandled;
         });
+    }
+
+    // The page, the routes a program adds, and the live view's state, image and changes.
+    void add_routes(const std::vector<LiveRoute>& routes) {
         server.Get("/", [this](const httplib::Request&, httplib::Response& response) {
             response.set_content(page, "text/html; charset=utf-8");
         });
