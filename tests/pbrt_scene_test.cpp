@@ -15,7 +15,7 @@
 #include "04_direct_lighting/render_scene.hpp"
 #include "05_recursive_gi/gi_render.hpp"
 #include "06_monte_carlo/path_tracer.hpp"
-#include "rt/core/effects.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/pbrt_reader.hpp"

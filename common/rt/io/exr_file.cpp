@@ -27,11 +27,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+#ifndef RT_HAVE_OPENEXR
 constexpr const char* kNotBuilt =
     "OpenEXR files are not read or written by this build (install libopenexr-dev "
     "and configure again)";
-
-#ifdef RT_HAVE_OPENEXR
+#else
 constexpr const char* kChannelNames[3] = {"R", "G", "B"};
 
 // OpenEXR writes through an OStream: this one is the staging file's, and it throws when a write fails (the
