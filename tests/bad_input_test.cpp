@@ -641,7 +641,7 @@ TEST_CASE("Paths in messages are quoted and escaped when they hold anything but 
     CHECK(error_of([] { check_writable("no\nsuch/x.png"); }) ==
           "\"no\\nsuch/x.png\": cannot be written: folder \"no\\nsuch\" does not exist");
     CHECK(error_of([] { load_scene("two\nlines.json"); }) ==
-          "\"two\\nlines.json\": must be a scene file (JSON), got no such file");
+          "\"two\\nlines.json\": must be a scene file (JSON or pbrt-v4), got no such file");
 }
 
 TEST_CASE("Staging names are short, unique per process, never someone else's, and removed on every path",
@@ -849,7 +849,7 @@ TEST_CASE("A C1 control character in a name is escaped, as a control byte is", "
 TEST_CASE("A byte that is not UTF-8 in a folder's name is escaped as a hexadecimal escape", "[bad_input][message]") {
     CHECK(shown("caf\xe9/scene.json") == "\"caf\\xe9/scene.json\"");
     CHECK(error_of([] { load_scene("caf\xe9/scene.json"); }) ==
-          "\"caf\\xe9/scene.json\": must be a scene file (JSON), got no such file");
+          "\"caf\\xe9/scene.json\": must be a scene file (JSON or pbrt-v4), got no such file");
     // An overlong form, a surrogate, a sequence cut short: each byte escaped.
     CHECK(printable("\xc0\xaf") == "\\xc0\\xaf");
     CHECK(printable("\xed\xa0\x80") == "\\xed\\xa0\\x80");

@@ -292,7 +292,7 @@ TEST_CASE("An area light emits on pbrt's side: its normals' when given, else its
                Contains("t.pbrt:6:1: Shape \"sphere\": ReverseOrientation on an emitting sphere"));
 }
 
-TEST_CASE("Include reads a file from the main scene's folder; the ignored parameters are named once",
+TEST_CASE("Include reads a file from the main scene's folder, and the ignored parameters are named once",
           "[pbrt][loader]") {
     const fs::path folder = fs::temp_directory_path() / ("pbrt_scene_test_" + std::to_string(getpid()));
     fs::create_directories(folder / "parts");

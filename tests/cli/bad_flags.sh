@@ -57,8 +57,8 @@ check "--out: must name a file ending in .png or .exr, with a name before the ex
 mkdir -p "$scratch/folders/picture.png" "$scratch/folders/other.pfm"
 check "--out: $scratch/folders/picture.png: cannot be written: it is a folder" "${small[@]}" --out "$scratch/folders/picture.png"
 check "--out: $scratch/folders/other.pfm: cannot be written: it is a folder" "${small[@]}" --out "$scratch/folders/other.png"
-check "$scratch/absent.json: must be a scene file (JSON), got no such file" "${small[@]}" --scene "$scratch/absent.json"
-check "$scratch: must be a scene file (JSON), got a folder" "${small[@]}" --scene "$scratch"
+check "$scratch/absent.json: must be a scene file (JSON or pbrt-v4), got no such file" "${small[@]}" --scene "$scratch/absent.json"
+check "$scratch: must be a scene file (JSON or pbrt-v4), got a folder" "${small[@]}" --scene "$scratch"
 # Empty values and values CLI11 alone would read as something else: refused, never replaced.
 check "usage: --scene: must not be empty (see --help)" "${small[@]}" --scene ""
 check "usage: --out: must not be empty (see --help)" "${small[@]}" --out ""
@@ -76,7 +76,7 @@ check "--out: must name a file ending in .png or .exr, with a name before the ex
 # A symbolic link loop is named as one, not as a missing file.
 ln -s loop_b "$scratch/loop_a"
 ln -s loop_a "$scratch/loop_b"
-check "$scratch/loop_a: must be a scene file (JSON), got a path that cannot be followed (Too many levels of symbolic links)" "${small[@]}" --scene "$scratch/loop_a"
+check "$scratch/loop_a: must be a scene file (JSON or pbrt-v4), got a path that cannot be followed (Too many levels of symbolic links)" "${small[@]}" --scene "$scratch/loop_a"
 check "--reference: $scratch/loop_a: must be a PFM file, got a path that cannot be followed (Too many levels of symbolic links)" "${small[@]}" --reference "$scratch/loop_a"
 # References: negative radiance; a CRLF header; the file this run would write.
 { printf 'PF\n8 4\n-1.0\n'; head -c 380 /dev/zero; printf '\x00\x00\x80\xbf'; } > "$scratch/ref/negative.pfm"
