@@ -150,7 +150,8 @@ struct Builder {
 
     // Builds the subtree of `node` over [begin, end), whose bounds are `bounds`.
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds) {
-        const auto& [box, centroids] = bounds;
+        const Aabb& box = bounds.box;
+        const Aabb& centroids = bounds.centroids;
         nodes[node].min = box.min;
         nodes[node].max = box.max;
         const std::uint32_t count = end - begin;
