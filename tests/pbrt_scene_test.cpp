@@ -152,7 +152,9 @@ TEST_CASE("A pbrt camera shows pbrt's picture, not its mirror, in both aspect ra
 }
 
 TEST_CASE("A pbrt scene renders as its equivalent JSON scene, and not as its mirror image",
-          "[pbrt][camera][ex:ch01.camera_ray][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+          "[pbrt][camera][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.sphere_stable][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.uniform_cone]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // An asymmetric picture: a lamp sphere up and to world +x, a grey sphere down and to -x, seen by pbrt's
     // LookAt (left-handed). The lamp is of pbrt's default material, diffuse grey 0.5, and emits.
     const std::string world = "WorldBegin\nAttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [4 4 4]\n"
@@ -310,7 +312,10 @@ TEST_CASE("Include reads a file from the main scene's folder, and the ignored pa
 }
 
 TEST_CASE("cornell.pbrt, cornell.json written by hand in pbrt-v4 form, renders the same image",
-          "[pbrt][round_trip][ex:ch01.camera_ray][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+          "[pbrt][round_trip][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.triangle_watertight][ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch04.uniform_triangle]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const Scene json = load_scene(scene_path("cornell.json"));
     const Scene pbrt = load_scene(scene_path("cornell.pbrt"));
     CHECK(glm::length(pbrt.camera.from - json.camera.from) < 1e-3);
