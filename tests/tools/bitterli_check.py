@@ -16,6 +16,16 @@ seeds' difference and printed beside the figures (the measure asks it below 0.3 
 through exr_to_pfm (the course's OpenEXR reader). Exit status 0 when every scene agrees, 1 when one does not,
 2 when a program is missing; the data's absence is said and is not an error.
 
+Veach MIS differs, and the course is right: Tungsten's reference is not the scene of its pbrt-v4 file. On the
+mirror-like plate it shows 0.297 to 0.301 times F(cos θ) L of the lamps, equally in every channel, where a
+conductor of the file's η and k reflects F(cos θ) L (tests/07_bsdf_refraction_test.cpp checks the course does);
+across the four plates it is 0.29 to 0.31 times the direct light of a Beckmann lobe of α = roughness (Tungsten's
+Microfacet.hpp), 0.0 to 0.44 times a GGX lobe's (pbrt-v4's, the course's); and it holds no light that
+scattered twice (its plates mirror none of the lit wall and floor, and its walls and floor are the course's
+direct light alone to 0.1 %), where the file says maxdepth 3. So Bitterli's scene gave the plates albedo 0.3
+and Beckmann facets, and its render counted direct light only; none of it reached the pbrt file. Given those
+three (an experiment, not in the course), the course agrees with the reference to 0.2 %.
+
   python3 tests/tools/bitterli_check.py [--build build/release] [--spp 256] [--scene cornell-box ...]
 """
 import argparse
@@ -31,6 +41,9 @@ import tempfile
 REPO = pathlib.Path(__file__).resolve().parents[2]
 SHARED = REPO.parent / "shared" / "bitterli"
 SCENES = {"cornell-box": 0.01, "veach-mis": 0.015}  # the channel means' tolerance
+# Where a reference is known not to be its file's scene (the docstring gives the evidence).
+KNOWN = {"veach-mis": "Tungsten's reference is not this file's scene: its plates are Beckmann facets of albedo 0.3 "
+                      "and it counts direct light only (see this script's docstring)"}
 BLOCK_TOLERANCE = 0.01
 DOWNSAMPLE = 4
 BLOCK = 16
@@ -212,7 +225,7 @@ def check(name, tolerance, tools, spp, work):
           f"  (within {tolerance * 100:.1f} %; own noise about {max(noise) * 100:.2f} %)")
     print(f"  16x16 blocks: median relative difference {median * 100:.2f} % (within {BLOCK_TOLERANCE * 100:.0f} %), "
           f"largest {max(blocks) * 100:.2f} %, over {len(blocks)} blocks")
-    print(f"  {'agrees' if ok else 'DIFFERS'}")
+    print(f"  {'agrees' if ok else 'DIFFERS'}" + ("" if ok or name not in KNOWN else f": {KNOWN[name]}"))
     return ok
 
 
