@@ -39,7 +39,10 @@ the Catch2 tag [ex:ch02.sphere_normal] (a test may carry several).
   exercises.py wrong SCRATCH [--only ch04]  CI: each exercise's wrong solutions (tests/wrong_solutions/,
                                         at least three each) are caught by its own chapter's tests, in one
                                         build of the switchable edition of `deps`, and its other right
-                                        solutions there ("correct": true) pass them
+                                        solutions there ("correct": true) pass them; for the whole course,
+                                        `check` follows there with every exercise stubbed at run time
+  exercises.py warnings --build DIR     CI: a student edition's files with exercises compile without a
+                                        warning (syntax only: the tests run in `wrong`'s build)
   exercises.py check --build DIR        CI: in a student edition's build, the failing tests are exactly
                                         the tests tagged with an exercise stubbed, each naming it (in the
                                         full edition's build: every unit test passes)
@@ -61,9 +64,10 @@ from exercise_tool.course_map import (chapters_needed, map_problems, needs_first
                                      needs_first_cell)
 from exercise_tool.edition import generate, set_shader_switch  # noqa: E402
 from exercise_tool.next_exercise import command_next as run_next  # noqa: E402
-from exercise_tool.marks import TAG_PREFIX, ToolError, find_exercises, selected  # noqa: E402
-from exercise_tool.test_runs import (UnitTest, exercise_tags, next_exercise, run_each, run_tests,  # noqa: E402
-                                     source_of_build, summarise, unit_tests)
+from exercise_tool.marks import TAG_PREFIX, Exercise, ToolError, find_exercises, selected  # noqa: E402
+from exercise_tool.stub_warnings import stub_warnings  # noqa: E402
+from exercise_tool.test_runs import (TestResult, UnitTest, exercise_tags, next_exercise, run_each,  # noqa: E402
+                                     run_tests, source_of_build, summarise, unit_tests)
 from exercise_tool.wrong_solutions import MINIMUM_PER_EXERCISE, load as load_wrong_solutions  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent.parent
@@ -198,13 +202,19 @@ def command_check(args: argparse.Namespace) -> int:
     still stubbed, and each names one of them; every tag names a marked exercise; every exercise has a test.
     In a build of the full edition (nothing stubbed) that is: every test passes."""
     build = Path(args.build)
-    source = source_of_build(build)
-    exercises = find_exercises(source)
-    names = {e.name for e in exercises}
+    exercises = find_exercises(source_of_build(build))
     stubbed = {e.name for e in exercises if e.stubbed}
-    results = run_tests(build, None, args.jobs)
+    edition = "student edition" if stubbed else "full edition (nothing stubbed)"
+    return report_failures_against_tags(edition, exercises, stubbed, run_tests(build, None, args.jobs))
+
+
+def report_failures_against_tags(edition: str, exercises: list[Exercise], stubbed: set[str],
+                                 results: list[TestResult]) -> int:
+    """Prints whether the failing tests are exactly those tagged with an exercise in `stubbed`, each naming one
+    of them (and every tag a marked exercise, every exercise tested): 0 if so, 1 with the problems if not."""
     if not results:
-        raise ToolError(f"{build}: no test results")
+        raise ToolError("no test results")
+    names = {e.name for e in exercises}
     problems = []
     expected = [r for r in results if set(r.tags) & stubbed]
     failing = [r for r in results if not r.passed]
@@ -233,7 +243,6 @@ def command_check(args: argparse.Namespace) -> int:
     for e in exercises:
         if e.name not in tested:
             problems.append(f"{e.where()}: exercise {e.name} has no test tagged [{TAG_PREFIX}{e.name}]")
-    edition = "student edition" if stubbed else "full edition (nothing stubbed)"
     print(f"{edition}: {len(results)} unit tests, {len(failing)} failing, {len(expected)} tagged as depending on "
           f"the {len(stubbed)} exercises stubbed ({len(exercises)} marked, {len(tested)} with tests)")
     if len(failing) != len(expected):
@@ -303,12 +312,13 @@ def command_deps(args: argparse.Namespace) -> int:
 
 def build_test_programs(source: Path, jobs: int, only: set[str] | None = None) -> Path:
     """Configures (once) and builds the test programs of the edition in `source`, in source/build/release (with
-    `only`, those programs only, e.g. {"ch04_test"}). Warnings stay warnings: a wrong solution may leave a
-    variable unused."""
+    `only`, those programs only, e.g. {"ch04_test"}). With the course's flags, so that ccache reuses the course's
+    objects of every file without an exercise; in the files with one, warnings stay warnings (a wrong solution
+    may leave a variable unused)."""
     build = source / "build" / "release"  # as deep as the course's own build: ccache reuses unchanged objects
     if not (build / "CMakeCache.txt").is_file():
-        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                        "-DRT_WARNINGS_AS_ERRORS=OFF"], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"],
+                       check=True, stdout=subprocess.DEVNULL)
     targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
         ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
     if only is not None:
@@ -336,7 +346,7 @@ def command_wrong(args: argparse.Namespace) -> int:
                 f"tests/wrong_solutions/{e.chapter}.json; at least {MINIMUM_PER_EXERCISE} are needed"
                 for e in exercises if counts[e.name] < MINIMUM_PER_EXERCISE]
     programs = {f"{e.chapter}_test" for e in exercises}
-    build = build_test_programs(out, args.jobs, programs)
+    build = build_test_programs(out, args.jobs, programs if only else None)
     program_of = {t.program: t.command[0] for t in unit_tests(build)}
     runs = []  # (exercise, wrong solution or None for the right body)
     for e in exercises:
@@ -388,6 +398,37 @@ def command_wrong(args: argparse.Namespace) -> int:
           f"they were asked to); {accepted} of {right} other right solutions pass")
     for p in problems:
         print("  " + p)
+    status = 1 if problems else 0
+    if not only:
+        status |= check_stubbed_at_run_time(out, build, exercises, args)
+    return status
+
+
+def check_stubbed_at_run_time(edition: Path, build: Path, exercises: list[Exercise], args: argparse.Namespace) -> int:
+    """CI's check of the student edition, in the switchable edition's build: with every exercise stubbed at run
+    time (RT_STUB_EXERCISE=*, and each shader's switch at -1, its chapter's test program rebuilt), the failing
+    tests are exactly those tagged with an exercise, each naming it (as `check` in a student edition's build)."""
+    shaders = [e for e in exercises if e.glsl]
+    for e in shaders:
+        set_shader_switch(edition, e, -1)
+    try:
+        build_test_programs(edition, args.jobs, {f"{e.chapter}_test" for e in shaders})
+        results = run_tests(build, None, args.jobs, environment={"RT_STUB_EXERCISE": "*"})
+    finally:
+        for e in shaders:
+            set_shader_switch(edition, e, 0)
+    return report_failures_against_tags("student edition (every exercise stubbed at run time)", exercises,
+                                        {e.name for e in exercises}, results)
+
+
+def command_warnings(args: argparse.Namespace) -> int:
+    """CI: the student edition's files with exercises compile without a warning (see stub_warnings.py)."""
+    build = Path(args.build)
+    problems = stub_warnings(source_of_build(build), build, args.jobs)
+    for p in problems:
+        print(p)
+    print(f"{len(problems)} files with stubbed exercises warn" if problems else
+          "every file with a stubbed exercise compiles without a warning")
     return 1 if problems else 0
 
 
@@ -478,6 +519,11 @@ def main(argv: list[str]) -> int:
         if name == "status":
             c.add_argument("-L", "--label", help="one chapter's tests only, e.g. ch02")
             c.add_argument("-v", "--verbose", action="store_true", help="name the failing tests")
+    warn = commands.add_parser("warnings", help="CI: a student edition's files with exercises compile without a "
+                               "warning (syntax only)")
+    warn.add_argument("--build", required=True, help="the edition's build folder, configured with "
+                      "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DRT_EXERCISE_WARNINGS_AS_ERRORS=ON")
+    warn.add_argument("-j", "--jobs", type=int, default=2, help="compilers run in parallel (default 2)")
     lint = commands.add_parser("lint", help="marks well formed, tags naming marked exercises, every exercise tested")
     lint.add_argument("--build", required=True, help="a build folder with the test programs built")
     deps = commands.add_parser("deps", help="which tests depend on which exercise (one build, one run per exercise)")
@@ -495,7 +541,7 @@ def main(argv: list[str]) -> int:
     args = parser.parse_args(argv)
     try:
         return {"list": command_list, "map": command_map, "generate": command_generate, "status": command_status,
-                "check": command_check, "lint": command_lint, "deps": command_deps,
+                "check": command_check, "warnings": command_warnings, "lint": command_lint, "deps": command_deps,
                 "wrong": command_wrong, "next": command_next, "test": command_next}[args.command](args)
     except ToolError as error:
         print(f"exercises.py: {error}", file=sys.stderr)

@@ -245,7 +245,7 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
     for e in chosen:
         by_file.setdefault(e.file, []).append(e)
     files = repository_files(root)
-    exercise_folders = {} if switchable else files_keeping_warnings(list(by_file), files)
+    exercise_folders = files_keeping_warnings(list(by_file), files)
     switch_header = Path("common/rt") / SWITCH_HEADER.name
     wanted = {out / f for f in files} | {out / EDITION_MARKER} | ({out / switch_header} if switchable else set())
     if out.exists():

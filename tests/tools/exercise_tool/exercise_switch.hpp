@@ -4,6 +4,7 @@
 //     if (stubbed_here) throw std::logic_error("not implemented: chNN.name ...");
 // so one build can stand for the edition with any one exercise stubbed, chosen when a test runs:
 //   RT_STUB_EXERCISE=chNN.name  that exercise throws as in the student edition, the others run as written;
+//   RT_STUB_EXERCISE=*          every exercise throws: the student edition, at run time;
 //   RT_EXERCISE_LOG=FILE        each exercise the process reaches appends its name to FILE;
 //   RT_WRONG_SOLUTION=chNN.name:K  that exercise runs its K-th wrong solution (tests/wrong_solutions/) instead.
 // The static is initialised on the first call only, so each exercise is looked up (and logged) once per
@@ -24,7 +25,7 @@ inline bool stubbed(const char* exercise) {
         }
     }
     const char* chosen = std::getenv("RT_STUB_EXERCISE");
-    return chosen != nullptr && std::strcmp(chosen, exercise) == 0;
+    return chosen != nullptr && (std::strcmp(chosen, "*") == 0 || std::strcmp(chosen, exercise) == 0);
 }
 
 // Which of the exercise's wrong solutions (tests/wrong_solutions/) runs instead of its body: K when

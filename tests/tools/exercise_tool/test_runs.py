@@ -105,12 +105,14 @@ def run_each(tests: list[UnitTest], jobs: int, timeout: int = 300,
                              range(len(tests))))
 
 
-def run_tests(build: Path, label: str | None, jobs: int, timeout: int = 300) -> list[TestResult]:
-    """Runs the build's unit tests (one chapter's with `label`), each alone as CTest would run it."""
+def run_tests(build: Path, label: str | None, jobs: int, timeout: int = 300,
+              environment: dict[str, str] | None = None) -> list[TestResult]:
+    """Runs the build's unit tests (one chapter's with `label`), each alone as CTest would run it (with
+    `environment` added to this process's)."""
     tests = [t for t in unit_tests(build) if not label or t.label == label]
     tags = exercise_tags({t.command[0] for t in tests})
     print(f"running {len(tests)} unit tests{' labelled ' + label if label else ''} in {build} ...", flush=True)
-    outcomes = run_each(tests, jobs, timeout)
+    outcomes = run_each(tests, jobs, timeout, environment_of=(lambda _: environment) if environment else None)
     return [TestResult(t.name, t.program, t.label, passed, output, tags.get((t.program, t.name), []))
             for t, (passed, output) in zip(tests, outcomes)]
 
