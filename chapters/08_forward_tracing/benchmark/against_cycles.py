@@ -15,6 +15,8 @@ measured the same way against its own reference, two halves that Cycles renders.
   * each renderer's time to --target (1e-3): interpolated in log-log between the two measured points that
     bracket the target, otherwise extrapolated from the nearest point with relMSE proportional to 1 / time
     (marked "extrapolated"); from render times and from process wall times;
+  * how many times sooner each renderer reaches it than each other, by the issues' figure: Cycles' render time
+    against a course program's whole process wall time (training passes, scene loading and BVH included);
   * the converged images' agreement: the mean of each region (walls, floor, ceiling, lamp, tall box, sphere;
     pixels whose 3x3 neighbourhood sees one shape) for each renderer at its highest spp, against the reference.
 
@@ -29,6 +31,11 @@ Example (from the repository root, with the lead's build):
         --cycles-spp 64,256,1024 --course-spp 64,256,1024 --repeats 2 --threads 2 \\
         --course "ch07=build/release/chapters/07_bsdf_refraction/ch07_bsdf_refraction --scene {scene} \\
                   --width {size} --height {size} --spp {spp} --seed {seed} --threads {threads} --quiet --out {png}"
+
+Any course executable that takes these flags and prints the summary line "time X s" can be measured: one
+--course flag per program, e.g. --course "ch12=build/release/chapters/12_path_guiding/ch12_path_guiding ...".
+--cycles-variant "Cycles-guiding=--guiding" adds Cycles with its path guiding (cycles_scene.py refuses it where
+Blender was built without OpenPGL, as Debian's 3.4.1 is); --cycles-spp "" leaves Cycles out (course programs only).
 
 Template fields: {scene} {size} {spp} {seed} {threads}, {out} (the PFM that is read afterwards) and {png}
 (the same name ending in .png: the course's executables take a PNG name and write the PFM beside it). Seeds
@@ -250,10 +257,10 @@ def run_command(argv, log):
     return proc.stdout, wall
 
 
-def run_cycles(args, spp, seed, out, log):
+def run_cycles(args, spp, seed, out, log, extra=()):
     argv = [args.blender, "-b", "--factory-startup", "--python", os.path.join(HERE, "cycles_scene.py"), "--",
             "--scene", args.scene, "--size", str(args.size), "--spp", str(spp), "--seed", str(seed),
-            "--threads", str(args.threads), "--out", out]
+            "--threads", str(args.threads), "--out", out, *extra]
     text, wall = run_command(argv, log)
     m = re.search(r"cycles_scene: render_seconds ([0-9.]+)", text)
     if not m:
@@ -278,6 +285,24 @@ def run_course(args, template, spp, seed, out, log):
     if re.search(r"all pixels finite: NO", text):
         raise SystemExit("against_cycles.py: the course's image has non-finite pixels (see %s)" % log)
     return float(m.group(1)), wall, None
+
+
+def is_cycles(how):
+    """A renderer's `how` is cycles_scene.py's extra arguments (a list) for Cycles, a command template for the course."""
+    return isinstance(how, list)
+
+
+def print_sooner_by(renderers, to_target):
+    """How many times sooner each renderer (row) reaches the target than each other (column), by the issues'
+    figure: Cycles' render time against a course program's whole process wall time."""
+    names = [name for name, _, _ in renderers]
+    own = {name: to_target[name][0 if is_cycles(how) else 1] for name, how, _ in renderers}
+    print("\n## Sooner by: row against column (Cycles' render time, a course program's process wall time)\n")
+    print("| renderer | time to target | " + " | ".join("than %s" % n for n in names) + " |")
+    print("|---|---|" + "---|" * len(names))
+    for row in names:
+        print("| %s | %.1f s | " % (row, own[row]) + " | ".join(
+            "-" if row == col else "%.2fx" % (own[col] / own[row]) for col in names) + " |")
 
 
 def median(v):
@@ -318,6 +343,9 @@ def main():
     p.add_argument("--course", action="append", default=[], metavar="NAME=TEMPLATE",
                    help="a course command (repeatable); fields {scene} {size} {spp} {seed} {threads}, {out} (the PFM "
                         "read) and {png} (the same name ending in .png)")
+    p.add_argument("--cycles-variant", action="append", default=[], metavar="NAME=ARGS",
+                   help="Cycles again with more cycles_scene.py arguments (repeatable), measured against Cycles' "
+                        "reference, e.g. \"Cycles-guiding=--guiding\"")
     p.add_argument("--cycles-time", choices=["render", "operator"], default="render",
                    help="Cycles' render time: its own path-tracing time (render) or the wall time of "
                         "bpy.ops.render.render, synchronisation and BVH build included (operator)")
@@ -338,6 +366,7 @@ def main():
     args.scene = os.path.abspath(args.scene)
 
     scene_name = os.path.splitext(os.path.basename(args.scene))[0]
+    os.makedirs(args.reference_dir, exist_ok=True)  # where the reference halves are cached
     if args.reference_command:
         stem = os.path.join(args.reference_dir, "reference_%s_%d_%dspp" % (scene_name, args.size,
                                                                          args.reference_spp))
@@ -348,7 +377,7 @@ def main():
         ref, noise = converged_reference(stem, args.size)
     # Cycles against its own converged reference, or against the course's.
     cycles_ref, cycles_noise = ref, noise
-    if args.cycles_reference_spp:
+    if args.cycles_reference_spp and parse_spp(args.cycles_spp):
         cycles_stem = os.path.join(args.reference_dir, "cycles_reference_%s_%d_%dspp" % (
             scene_name, args.size, args.cycles_reference_spp))
         cycles_ref, cycles_noise = converged_reference(cycles_stem, args.size, lambda seed, out: run_cycles(
@@ -356,14 +385,20 @@ def main():
         print("converged means, Cycles' reference / the course's: %.4f (their own relative MSE %.3e and %.3e)" %
               (sum(cycles_ref.data) / sum(ref.data), cycles_noise, noise), flush=True)
 
-    renderers = [("Cycles", None, parse_spp(args.cycles_spp))]
+    # (name, how, spps): how is a course command template (a string) or cycles_scene.py's extra arguments (a list).
+    renderers = [("Cycles", [], parse_spp(args.cycles_spp))] if parse_spp(args.cycles_spp) else []
+    for item in args.cycles_variant:
+        name, sep, extra = item.partition("=")
+        if not sep or " " in name or not renderers:
+            raise SystemExit("against_cycles.py: --cycles-variant must be NAME=ARGS, with Cycles run, got %r" % item)
+        renderers.append((name, shlex.split(extra), parse_spp(args.cycles_spp)))
     for item in args.course:
         name, sep, template = item.partition("=")
         if not sep or not template.strip() or " " in name:
             raise SystemExit("against_cycles.py: --course must be NAME=TEMPLATE, got %r" % item)
         renderers.append((name, template, parse_spp(args.course_spp)))
-    if len(renderers) < 2:
-        raise SystemExit("against_cycles.py: give at least one --course NAME=TEMPLATE")
+    if len(renderers) < 2 or not args.course:
+        raise SystemExit("against_cycles.py: give at least one --course NAME=TEMPLATE, and Cycles or a second one")
 
     work = args.work or tempfile.mkdtemp(prefix="against_cycles_")
     os.makedirs(work, exist_ok=True)
@@ -386,14 +421,14 @@ def main():
                 spp = spps[level]
                 out = os.path.join(work, "%s_%dspp_seed%d.pfm" % (name, spp, seed))
                 log = out[:-4] + ".log"
-                if template is None:
-                    render, wall, op = run_cycles(args, spp, seed, out, log)
+                if is_cycles(template):
+                    render, wall, op = run_cycles(args, spp, seed, out, log, template)
                 else:
                     render, wall, op = run_course(args, template, spp, seed, out, log)
                 img = read_pfm(out)
                 if (img.width, img.height) != (args.size, args.size):
                     raise SystemExit("against_cycles.py: %s is %dx%d" % (out, img.width, img.height))
-                own_ref, own_noise = (cycles_ref, cycles_noise) if template is None else (ref, noise)
+                own_ref, own_noise = (cycles_ref, cycles_noise) if is_cycles(template) else (ref, noise)
                 raw = relative_mse(img, own_ref)
                 worst, med = error_shape(img, own_ref)
                 results[name][spp].append({"seed": seed, "render_s": render, "wall_s": wall, "op_s": op,
@@ -433,11 +468,7 @@ def main():
         tw, how_w = time_to_target([(w, e) for _, _, w, e in pts], args.target)
         to_target[name] = (tr, tw)
         print("| %s | %.1f s | %s | %.1f s | %s |" % (name, tr, how_r, tw, how_w))
-    cycles_r, cycles_w = to_target["Cycles"]
-    for name, _, _ in renderers[1:]:
-        tr, tw = to_target[name]
-        print("\n%s reaches %g in 1/%.2f of Cycles' time (render times), 1/%.2f (process wall times); the goal "
-              "of issue 18 is 1/5." % (name, args.target, cycles_r / tr, cycles_w / tw))
+    print_sooner_by(renderers, to_target)
 
     print("\n## Converged agreement: region means at the highest spp against the reference\n")
     scene = json.load(open(args.scene))

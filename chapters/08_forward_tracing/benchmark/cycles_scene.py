@@ -52,6 +52,9 @@ def parse_args():
     p.add_argument("--bounces", type=int, default=64, help="max bounces, of every kind")
     p.add_argument("--light-threshold", type=float, default=None,
                    help="Cycles' light_sampling_threshold (default: Cycles' own, 0.01; 0 switches it off)")
+    p.add_argument("--guiding", action="store_true",
+                   help="Cycles' path guiding on (use_guiding, surfaces and volumes; refused where the build has no "
+                        "OpenPGL, whose use_guiding changes nothing)")
     p.add_argument("--two-sided-emission", action="store_true",
                    help="diagnosis only: emit on both sides (the course's lamps emit on one)")
     p.add_argument("--plane-size", type=float, default=1e4,
@@ -323,6 +326,13 @@ def configure(scene_desc, args):
     if args.light_threshold is not None:
         c.light_sampling_threshold = args.light_threshold
     c.use_fast_gi = False
+    if args.guiding:
+        import _cycles
+        if not _cycles.with_path_guiding:
+            sys.stderr.write("cycles_scene.py: --guiding: Blender %s was built without path guiding (OpenPGL): "
+                             "use_guiding would render the unguided image\n" % bpy.app.version_string)
+            sys.exit(2)
+        c.use_guiding = c.use_surface_guiding = c.use_volume_guiding = True
     c.film_exposure = 1.0
     c.use_auto_tile = False  # one tile: the image is small
     scene.view_layers[0].cycles.use_denoising = False
