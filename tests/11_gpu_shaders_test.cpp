@@ -140,6 +140,17 @@ TEST_CASE("A BSDF the shaders do not know is refused with one line (exit 2) and 
                        "before 11 render it)"));
 }
 
+TEST_CASE("Chapter 07's coated diffuse is not in the shaders: refused with one line (exit 2)") {
+    Scene scene = scene_of({Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"}});
+    scene.materials[0].name = "plastic";
+    scene.materials[0].type = "coateddiffuse";
+    const RenderScene prepared(scene, EffectSet::all(), refraction_materials());
+    CHECK_THROWS_MATCHES(
+        flatten_scene(scene, prepared.materials, prepared.lights, LightPicker(prepared.lights)), InputError,
+        Catch::Message("coateddiffuse material 'plastic': its BSDF is not in the shaders (the chapters "
+                       "before 11 render it)"));
+}
+
 TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
           "[gpu]" SHADER_EXERCISES "[random]") {
     std::vector<ShaderProbe::Query> queries;

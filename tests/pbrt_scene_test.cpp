@@ -236,6 +236,141 @@ TEST_CASE("pbrt materials map onto the course's: diffuse, conductor (spectra, re
     CHECK(j["materials"]["m (emitting)"]["emission"] == nlohmann::json{2.0, 4.0, 6.0});
 }
 
+TEST_CASE(
+    "pbrt's coateddiffuse is the course's smooth coat: reflectance and eta read, what pbrt's layer adds "
+    "named or refused",
+    "[pbrt][loader]") {
+    const std::string world = kCamera + "WorldBegin\n";
+    auto material = [&](const std::string& m) {
+        return translated(world + m + "\nShape \"sphere\"\n")["materials"].begin().value();
+    };
+    CHECK(material("Material \"coateddiffuse\" \"rgb reflectance\" [0.2 0.3 0.4] \"float eta\" 1.4") ==
+          nlohmann::json{{"type", "coateddiffuse"}, {"albedo", {0.2, 0.3, 0.4}}, {"ior", 1.4}});
+    // pbrt's defaults: reflectance 0.5, eta 1.5, a smooth coat; roughness 0 and albedo 0 may be said.
+    CHECK(
+        material("Material \"coateddiffuse\" \"float roughness\" 0 \"rgb albedo\" [0 0 0] \"float g\" 0.3") ==
+        nlohmann::json{{"type", "coateddiffuse"}, {"albedo", {0.5, 0.5, 0.5}}, {"ior", 1.5}});
+    // It loads as the course's material; the layer's thickness and the random walk's settings are named.
+    const PbrtTranslation t = translate_pbrt_text(
+        world +
+            "Material \"coateddiffuse\" \"integer maxdepth\" 4 \"integer nsamples\" 2\nShape \"sphere\"\n",
+        "t.pbrt");
+    const Scene scene = read_scene(t.scene, "t.pbrt");
+    CHECK(scene.materials.at(0).type == "coateddiffuse");
+    CHECK(scene.materials.at(0).ior == Approx(1.5));
+    REQUIRE(t.notes.size() == 3);
+    CHECK_THAT(t.notes[0], Contains("\"thickness\" 0.01"));
+    CHECK_THAT(t.notes[1], Contains("\"maxdepth\""));
+    CHECK_THAT(t.notes[2], Contains("\"nsamples\""));
+    // What the course's coat cannot be is refused, with its place.
+    CHECK(error_of(world + "Material \"coateddiffuse\" \"float roughness\" 0.1\n") ==
+          "t.pbrt:4:26: Material \"coateddiffuse\": \"float roughness\": a rough coat is not in the course: "
+          "its "
+          "coateddiffuse has a smooth coat (roughness 0, pbrt's default)");
+    CHECK_THAT(error_of(world + "Material \"coateddiffuse\" \"rgb albedo\" [0.5 0.5 0.5]\n"),
+               Contains("t.pbrt:4:26: Material \"coateddiffuse\": \"rgb albedo\": a scattering layer"));
+    CHECK_THAT(error_of(world + "Material \"coateddiffuse\" \"float eta\" 0.9\n"),
+               Contains("\"float eta\": must be in [1, 10]"));
+    CHECK_THAT(error_of(world + "Material \"coateddiffuse\" \"float displacement\" 1\n"),
+               Contains("it reads reflectance, eta, roughness 0"));
+}
+
+TEST_CASE("pbrt textures: imagemap and checkerboard on any colour parameter, as the course's textures",
+          "[pbrt][loader]") {
+    const std::string world = kCamera + "WorldBegin\n";
+    auto first_material = [&](const std::string& text) {
+        return translated(world + text + "\nShape \"sphere\"\n")["materials"].begin().value();
+    };
+    // An 8-bit image: sRGB unless said otherwise (pbrt's default), uscale and vscale its repeats.
+    const std::string wood =
+        (scene_path("cornell.json").parent_path().parent_path() / "textures" / "ch04_wood.png").string();
+    nlohmann::json m =
+        first_material("Texture \"wood\" \"spectrum\" \"imagemap\" \"string filename\" \"" + wood +
+                       "\" \"float uscale\" 2 "
+                       "\"float vscale\" 3\nMaterial \"diffuse\" \"texture reflectance\" \"wood\"");
+    CHECK(m["albedo"] == nlohmann::json{{"texture", wood},
+                                        {"encoding", "srgb"},
+                                        {"filter", "bilinear"},
+                                        {"wrap", "repeat"},
+                                        {"scale", {2.0, 3.0}}});
+    CHECK(loaded(world + "Texture \"wood\" \"spectrum\" \"imagemap\" \"string filename\" \"" + wood +
+                 "\"\nMaterial \"diffuse\" \"texture reflectance\" \"wood\"\nShape \"sphere\"\n")
+              .materials.at(0)
+              .textures.size() == 1);
+    m = first_material("Texture \"data\" \"spectrum\" \"imagemap\" \"string filename\" \"" + wood +
+                       "\" \"string encoding\" "
+                       "\"linear\" \"string filter\" \"point\" \"string wrap\" \"clamp\"\n"
+                       "Material \"coateddiffuse\" \"texture reflectance\" \"data\"");
+    CHECK(m["albedo"]["encoding"] == "linear");
+    CHECK(m["albedo"]["filter"] == "nearest");
+    CHECK(m["albedo"]["wrap"] == "clamp");
+    // A checkerboard: tex1 on the even squares; a float one is grey; on a conductor's index too.
+    m = first_material(
+        "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [0.1 0.2 0.3] \"rgb tex2\" [0.9 0.8 0.7] "
+        "\"float uscale\" 4 \"float vscale\" 4\nMaterial \"diffuse\" \"texture reflectance\" \"c\"");
+    CHECK(m["albedo"] ==
+          nlohmann::json{{"checker", {{"even", {0.1, 0.2, 0.3}}, {"odd", {0.9, 0.8, 0.7}}, {"scale", 4.0}}}});
+    m = first_material(
+        "Texture \"g\" \"spectrum\" \"checkerboard\"\nMaterial \"conductor\" \"texture eta\" \"g\"");
+    CHECK(m["eta"] ==
+          nlohmann::json{{"checker", {{"even", {1.0, 1.0, 1.0}}, {"odd", {0.0, 0.0, 0.0}}, {"scale", 1.0}}}});
+    // The course loads it and shades the checker: the scene's material holds the texture.
+    const Scene scene = loaded(world +
+                               "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex2\" [0.5 0.5 0.5]\n"
+                               "Material \"diffuse\" \"texture reflectance\" \"c\"\nShape \"sphere\"\n");
+    REQUIRE(scene.materials.at(0).textures.size() == 1);
+    CHECK(scene.materials[0].textures[0].parameter == &Material::albedo);
+    // What the course's textures cannot be is refused at its place.
+    CHECK(error_of(world + "Texture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"sky.exr\"\n") ==
+          "t.pbrt:4:35: Texture \"t\": \"string filename\": the course's textures are 8-bit PNG or JPEG "
+          "images (float "
+          "EXR, PFM and HDR images and TGA are not in the course), got \"sky.exr\"");
+    CHECK(error_of(world + "Material \"diffuse\" \"texture reflectance\" \"none\"\n") ==
+          "t.pbrt:4:20: Material \"diffuse\": \"texture reflectance\": unknown texture \"none\" (a Texture "
+          "directive "
+          "defines it)");
+    CHECK_THAT(
+        error_of(
+            world +
+            "Texture \"f\" \"float\" \"checkerboard\"\nMaterial \"diffuse\" \"texture reflectance\" \"f\"\n"),
+        Contains(
+            "t.pbrt:5:20: Material \"diffuse\": \"texture reflectance\": texture \"f\" is a float texture"));
+    CHECK_THAT(error_of(world + "Texture \"c\" \"spectrum\" \"checkerboard\" \"rgb tex1\" [2 2 2]\n"
+                                "Material \"diffuse\" \"texture reflectance\" \"c\"\n"),
+               Contains("texture \"c\": its values must be in [0, 1] here"));
+    CHECK_THAT(error_of(world + "Texture \"c\" \"spectrum\" \"checkerboard\" \"float uscale\" 2\n"),
+               Contains("t.pbrt:4:39: Texture \"c\": \"float uscale\": uscale and vscale must be equal"));
+    CHECK_THAT(
+        error_of(world + "Texture \"c\" \"spectrum\" \"marble\"\n"),
+        Contains("t.pbrt:4:1: texture \"marble\" is not in the course; it reads imagemap, checkerboard"));
+}
+
+TEST_CASE("A pbrt blackbody is RGB of luminance 1: at 2856 K the chromaticity of CIE illuminant A",
+          "[pbrt][loader]") {
+    const nlohmann::json j = translated(kCamera +
+                                        "WorldBegin\nAreaLightSource \"diffuse\" \"blackbody L\" 2856 "
+                                        "\"float scale\" 3\nShape \"sphere\"\n");
+    const Vec3d rgb = vec(j["materials"].begin().value()["emission"]) / 3.0;
+    // Linear sRGB to CIE XYZ (IEC 61966-2-1).
+    const double X = 0.4124564 * rgb.x + 0.3575761 * rgb.y + 0.1804375 * rgb.z;
+    const double Y = 0.2126729 * rgb.x + 0.7151522 * rgb.y + 0.0721750 * rgb.z;
+    const double Z = 0.0193339 * rgb.x + 0.1191920 * rgb.y + 0.9503041 * rgb.z;
+    CHECK(Y == Approx(1).margin(1e-5));
+    CHECK(X / (X + Y + Z) == Approx(0.44757).margin(1e-3));  // illuminant A, a blackbody of 2856 K
+    CHECK(Y / (X + Y + Z) == Approx(0.40745).margin(1e-3));
+    // Hotter is bluer; below about 1900 K blue leaves the sRGB gamut, clipped to 0.
+    const Vec3d hot = vec(translated(
+        kCamera + "WorldBegin\nLightSource \"point\" \"blackbody I\" 10000\n")["lights"][0]["intensity"]);
+    CHECK(hot.z > hot.x);
+    const Vec3d cold = vec(translated(
+        kCamera + "WorldBegin\nLightSource \"point\" \"blackbody I\" 1667\n")["lights"][0]["intensity"]);
+    CHECK(cold.z == 0);
+    CHECK(error_of(kCamera + "WorldBegin\nLightSource \"point\" \"blackbody I\" 1000\n") ==
+          "t.pbrt:4:21: LightSource \"point\": \"blackbody I\": must be in [1667, 25000] kelvin (the range "
+          "of the "
+          "course's conversion), got 1000");
+}
+
 TEST_CASE("pbrt lights map onto the course's: point, spot, distant, a constant infinite light", "[pbrt][loader]") {
     const nlohmann::json j = translated(
         kCamera + "WorldBegin\nTranslate 0 1 0\n"

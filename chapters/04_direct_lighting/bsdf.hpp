@@ -25,6 +25,9 @@ struct BsdfFlags {
                                 // transmission, and may return a wi on the far side of n
     bool diffuse = false;       // scatters diffusely (Lambert): its bounces are counted as indirect rays
     bool black = false;         // scatters nothing: no shadow ray, no bounce
+    // A delta lobe beside a lobe that is not (chapter 07's coated diffuse): not `delta`, so it takes light
+    // samples, but only its own sample() draws the delta lobe, whose samples it marks BsdfSample::delta.
+    bool delta_lobe = false;
 };
 
 struct BsdfSample {
@@ -32,7 +35,7 @@ struct BsdfSample {
     Color f{
         0};  // f(wo, wi); for a delta lobe, the factor that makes f |cos θ_i| / pdf the fraction scattered
     Real pdf = 0;  // solid-angle density; for a delta lobe, 1 by convention
-    bool delta = false;
+    bool delta = false;  // drawn from a delta lobe: what the path meets next counts in full
     bool transmitted = false;  // wi is on the far side of the surface: the path crosses it
     // A factor of f that Russian roulette leaves out when it judges the path (chapter 06's loop hands chapter
     // 05's judged_scale the product of the samples' 1 / roulette_scale): 1 for every BSDF of this chapter; a

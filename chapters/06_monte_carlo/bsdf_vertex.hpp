@@ -60,15 +60,16 @@ class BsdfVertex {
     }
     // The density MIS weighs with: the BSDF's.
     Real pdf(const Vec3& wi) const { return bsdf_.pdf(wo_, wi, hit_.shading_normal); }
-    // The continuation: the BSDF's own sampling at a delta BSDF, under the BSDF strategy, and when
-    // `bsdf_draws`; the uniform or cosine hemisphere otherwise. None when it carries nothing.
+    // The continuation: the BSDF's own sampling at a delta BSDF (or one with a delta lobe), under the BSDF
+    // strategy, and when `bsdf_draws`; the uniform or cosine hemisphere otherwise. None when it carries
+    // nothing.
     std::optional<Continuation> sample(SampleStream rng) const {
         const BsdfFlags& flags = bsdf_.flags();
         const Vec3& n = hit_.shading_normal;
         Continuation c;
         BsdfSample& s = c.sample;
         const Vec2 u = rng.next_vec2();
-        if (flags.delta || strategy_ == SamplingStrategy::kBrdf || bsdf_draws_) {
+        if (flags.delta || flags.delta_lobe || strategy_ == SamplingStrategy::kBrdf || bsdf_draws_) {
             // A BSDF with two lobes (reflection and transmission) takes one more number to choose between
             // them.
             s = bsdf_.sample(wo_, n, u, flags.transmission ? rng.next_real() : Real(0));

@@ -246,8 +246,8 @@ void PathTracer::trace(Ray ray, Path& path, SampleStream rng, RayCounts& rays, P
         if (observer) observer->sampled(path.beta, s, next->cos_i);
         path.beta *= s.f * (next->cos_i / s.pdf);
         path.eta_scale /= s.roulette_scale;
-        path.from = {hit->point, hit->shading_normal, flags.delta ? kInfinity : s.pdf, flags.delta};
-        if (!flags.delta) ++path.bounces;
+        path.from = {hit->point, hit->shading_normal, s.delta ? kInfinity : s.pdf, s.delta};
+        if (!s.delta) ++path.bounces;
         if (!ext.survives(*hit, path, rng)) break;
         ray = spawn_ray(*hit, s.wi, options_.offset);
         rays.add(ray_kind(flags, s.transmitted));

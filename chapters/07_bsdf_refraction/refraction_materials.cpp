@@ -1,5 +1,6 @@
 #include "refraction_materials.hpp"
 
+#include "coated_diffuse.hpp"
 #include "conductor.hpp"
 #include "dielectric.hpp"
 #include "rough_dielectric.hpp"
@@ -24,6 +25,9 @@ MaterialHooks refraction_materials(Transport transport) {
     };
     hooks.models["conductor"].bsdf = [](const Material& m, bool, BsdfAtHit& at) -> const Bsdf& {
         return at.emplace<Conductor>(m.eta, m.k, m.roughness);
+    };
+    hooks.models["coateddiffuse"].bsdf = [](const Material& m, bool, BsdfAtHit& at) -> const Bsdf& {
+        return at.emplace<CoatedDiffuse>(m.albedo, m.ior);
     };
     return hooks;
 }

@@ -133,7 +133,7 @@ bool LightTracer::trace(Pcg32& rng, Image& film, RayCounts& rays) const {
         const Real cos_i = scattering_cosine(s.wi, hit->normal, s.transmitted);
         if (!(cos_i > 0) || !(s.pdf > 0) || is_black(s.f)) break;
         relative *= s.f * (cos_i / s.pdf);
-        if (!flags.delta) ++diffuse_bounces;
+        if (!s.delta) ++diffuse_bounces;
         if (!continue_path(options_.termination, depth + 1, relative, rng.next_real())) break;
         ray = spawn_ray(*hit, s.wi, options_.offset);
         rays.add(ray_kind(flags, s.transmitted));

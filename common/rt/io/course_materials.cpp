@@ -1,6 +1,6 @@
 // The course's own material types as the scene format reads them (assets/scenes/README.md, "materials"): each
 // one's keys, its parameters and their limits, its effect and its stand-in. Chapter 04 simulates the first
-// four, chapter 07 dielectrics and conductors.
+// four, chapter 07 dielectrics, conductors and coated diffuse surfaces.
 #include "rt/core/conductor_presets.hpp"
 #include "rt/io/material_kind.hpp"
 #include "rt/io/scene_materials.hpp"
@@ -110,10 +110,28 @@ MaterialKind conductor() {
             "07",        f0};
 }
 
+// A Lambert base of reflectance "albedo" under a smooth clear coat of index "ior" (chapter 07's
+// coated_diffuse.hpp): its coat is a mirror (reflection). Before chapter 07 it is Lambert of what it
+// reflects at normal incidence: the coat's F(0°) = ((η − 1) / (η + 1))², and the base's colour through it,
+// (1 − F(0°)) albedo (a black base still reflects its coat's few per cent).
+MaterialKind coated_diffuse() {
+    const auto read = [](const Node& node, const fs::path& folder, Material& m) {
+        if (node.has("albedo")) read_colour_parameter(node["albedo"], folder, m, &Material::albedo);
+        if (node.has("ior")) m.ior = node["ior"].real_in(1, 10, false, false);
+    };
+    const auto coat_and_base = [](const Material& m) {
+        const Real f0 = (m.ior - 1) * (m.ior - 1) / ((m.ior + 1) * (m.ior + 1));
+        return Color(f0) + (1 - f0) * m.albedo;
+    };
+    return {"coateddiffuse", {"type", "albedo", "ior", "emission"}, read, Effect::kReflection, "07",
+            coat_and_base};
+}
+
 }  // namespace
 
 std::vector<MaterialKind> course_material_kinds() {
-    return {diffuse(), mirror(), glossy("glossy"), glossy("retroreflective"), dielectric(), conductor()};
+    return {diffuse(),    mirror(),    glossy("glossy"), glossy("retroreflective"),
+            dielectric(), conductor(), coated_diffuse()};
 }
 
 }  // namespace rt

@@ -45,7 +45,7 @@ inline Color stand_in_albedo(const Material& m) {
 }
 
 // The course's own types (course_materials.cpp): diffuse, mirror, glossy, retroreflective, dielectric,
-// conductor, in that order.
+// conductor, coateddiffuse, in that order.
 std::vector<MaterialKind> course_material_kinds();
 
 }  // namespace rt

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "rt/core/errors.hpp"
+#include "rt/core/printable.hpp"
 #include "rt/io/pbrt_spectra.hpp"
 #include "rt/io/scene_loader.hpp"
 
@@ -28,6 +29,31 @@ Vec3d color_in(PbrtParameters& params, std::string_view name, Vec3d fallback, do
     return c;
 }
 
+// A colour parameter given as a value in [0, high] per channel, or as a spectrum texture (a checkerboard's
+// colours in the same range): the course's [r, g, b] or texture object.
+Json colour_or_texture(PbrtParameters& params, std::string_view name, Vec3d fallback, double high,
+                       const Textures& textures) {
+    const std::optional<std::string> named = params.texture(name);
+    if (!named) return to_json(color_in(params, name, fallback, high));
+    const auto found = textures.find(*named);
+    const std::string quoted = "texture \"" + printable(*named, 64) + "\"";
+    if (found == textures.end()) params.fail(name, "unknown " + quoted + " (a Texture directive defines it)");
+    if (found->second.type != "spectrum")
+        params.fail(name, quoted + " is a float texture; a colour takes a spectrum one");
+    const Json& course = found->second.course;
+    if (course.contains("checker")) {
+        for (const char* square : {"even", "odd"}) {
+            for (const Json& c : course["checker"][square]) {
+                if (!(c.get<double>() <= high)) {
+                    params.fail(name,
+                                quoted + ": its values must be in [0, " + show_pbrt_number(high) + "] here");
+                }
+            }
+        }
+    }
+    return course;
+}
+
 // The course's roughness r (GGX α = r²) for pbrt's "roughness" (or equal "uroughness" and "vroughness"):
 // α = roughness, or √roughness with "remaproughness" true (pbrt's default). pbrt treats α below 10⁻³ as
 // smooth, and so does the course (roughness 0).
@@ -48,22 +74,25 @@ double roughness(PbrtParameters& params) {
     return alpha < 1e-3 ? 0.0 : std::sqrt(alpha);
 }
 
-Json conductor(PbrtParameters& params) {
-    Vec3d eta, k;
+Json conductor(PbrtParameters& params, const Textures& textures) {
+    Json eta, k;
     if (params.has("reflectance")) {
         if (params.has("eta") || params.has("k")) params.fail("reflectance", "give eta and k or reflectance, not both");
         // pbrt-v4: η = 1 and k = 2 √r / √(1 − r), the metal whose reflectance at normal incidence is r.
         const Vec3d r = color_in(params, "reflectance", Vec3d(0), 1);
+        Vec3d from_r;
         for (int i = 0; i < 3; ++i) {
             if (r[i] >= 1) params.fail("reflectance", "must be below 1 in every channel (k would be infinite)");
-            k[i] = 2 * std::sqrt(r[i]) / std::sqrt(1 - r[i]);
+            from_r[i] = 2 * std::sqrt(r[i]) / std::sqrt(1 - r[i]);
         }
-        eta = Vec3d(1);
+        eta = to_json(Vec3d(1));
+        k = to_json(from_r);
     } else {
-        eta = color_in(params, "eta", *pbrt_named_spectrum("metal-Cu-eta"), kLargestSceneNumber);
-        k = color_in(params, "k", *pbrt_named_spectrum("metal-Cu-k"), kLargestSceneNumber);
+        eta = colour_or_texture(params, "eta", *pbrt_named_spectrum("metal-Cu-eta"), kLargestSceneNumber,
+                                textures);
+        k = colour_or_texture(params, "k", *pbrt_named_spectrum("metal-Cu-k"), kLargestSceneNumber, textures);
     }
-    Json m = {{"type", "conductor"}, {"eta", to_json(eta)}, {"k", to_json(k)}};
+    Json m = {{"type", "conductor"}, {"eta", std::move(eta)}, {"k", std::move(k)}};
     if (const double r = roughness(params); r > 0) m["roughness"] = r;
     return m;
 }
@@ -79,24 +108,168 @@ Json dielectric(PbrtParameters& params) {
     return m;
 }
 
+// pbrt-v4's coated diffuse, as the course's smooth clear coat over a Lambert base (chapter 07,
+// coated_diffuse.hpp): "reflectance" and "eta" are its base and coat. pbrt's layer between them is a
+// medium of thickness "thickness" (0.01 unless given) and of single-scattering "albedo" (0: it only
+// absorbs, exp(−thickness / cos θ) at each crossing), walked "nsamples" times for at most "maxdepth" bounces.
+// The course's coat has no layer: a scattering one (albedo > 0) and a rough coat are refused; thickness,
+// maxdepth and nsamples are named in the notes.
+Json coated_diffuse(PbrtParameters& params, const Textures& textures, std::vector<std::string>& notes) {
+    const double eta = params.real("eta").value_or(1.5);
+    if (!(eta >= 1 && eta <= 10)) {
+        params.fail(
+            "eta",
+            "must be in [1, 10] (the course's coat is at least as dense as the space around it), got " +
+                show_pbrt_number(eta));
+    }
+    if (roughness(params) > 0)
+        params.fail(params.has("roughness") ? "roughness" : "uroughness",
+                    "a rough coat is not in the course: its coateddiffuse has a smooth coat (roughness 0, "
+                    "pbrt's default)");
+    const Vec3d albedo = color_in(params, "albedo", Vec3d(0), 1);
+    if (albedo != Vec3d(0))
+        params.fail("albedo", "a scattering layer under the coat is not in the course (albedo 0 only)");
+    params.ignore("g");  // the layer's phase function: nothing scatters with albedo 0
+    const double thickness = params.real("thickness").value_or(0.01);
+    if (!(thickness > 0 && thickness <= kLargestSceneNumber))
+        params.fail("thickness", "must be > 0, got " + show_pbrt_number(thickness));
+    notes.push_back(
+        "Material \"coateddiffuse\" \"thickness\" " + show_pbrt_number(thickness) +
+        " (the course's coat is clear: pbrt's layer absorbs exp(-thickness / cos) at each crossing)");
+    for (const char* p : {"maxdepth", "nsamples"}) {
+        if (params.ignore(p))
+            notes.push_back(std::string("Material \"coateddiffuse\" \"") + p +
+                            "\" (the course's coat is exact: no random walk)");
+    }
+    return {{"type", "coateddiffuse"},
+            {"albedo", colour_or_texture(params, "reflectance", Vec3d(0.5), 1, textures)},
+            {"ior", eta}};
+}
+
+// pbrt-v4's imagemap: an 8-bit PNG or JPEG file (the course's textures), sRGB-encoded unless "encoding" says
+// "linear"; repeated uscale × vscale times.
+Json image_texture(PbrtParameters& params, std::vector<std::string>& notes) {
+    const std::optional<std::string> file = params.string("filename");
+    if (!file) params.fail("filename", "an imagemap needs \"string filename\"");
+    std::string extension = std::filesystem::path(*file).extension().string();
+    for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png" && extension != ".jpg" && extension != ".jpeg") {
+        params.fail("filename",
+                    "the course's textures are 8-bit PNG or JPEG images (float EXR, PFM and HDR "
+                    "images and TGA are not in the course), got \"" +
+                        printable(*file, 64) + "\"");
+    }
+    const std::string encoding = params.string("encoding").value_or("sRGB");
+    if (encoding != "sRGB" && encoding != "linear")
+        params.fail("encoding", "must be sRGB or linear (the course has no gamma encodings)");
+    if (params.real("scale").value_or(1) != 1)
+        params.fail("scale", "must be 1: the course's textures are not scaled");
+    if (params.boolean("invert").value_or(false))
+        params.fail("invert", "must be false: the course's textures are not inverted");
+    const std::string filter = params.string("filter").value_or("bilinear");
+    if (filter == "trilinear" || filter == "ewa" || filter == "EWA") {
+        notes.push_back("Texture \"imagemap\" \"filter\" \"" + filter +
+                        "\" (the course filters bilinearly, without mip-maps)");
+    } else if (filter != "bilinear" && filter != "point") {
+        params.fail("filter", "must be point, bilinear, trilinear or ewa");
+    }
+    if (params.ignore("maxanisotropy"))
+        notes.push_back("Texture \"imagemap\" \"maxanisotropy\" (the course filters bilinearly)");
+    const std::string wrap = params.string("wrap").value_or("repeat");
+    if (wrap != "repeat" && wrap != "clamp")
+        params.fail("wrap", "must be repeat or clamp (the course has no black or octahedralsphere wrap)");
+    return {{"texture", *file},
+            {"encoding", encoding == "sRGB" ? "srgb" : "linear"},
+            {"filter", filter == "point" ? "nearest" : "bilinear"},
+            {"wrap", wrap}};
+}
+
+// pbrt-v4's checkerboard: tex1 where ⌊su u⌋ + ⌊sv v⌋ is even, tex2 elsewhere, each a value (a float one is
+// grey); the course's checker has one scale, so uscale and vscale must agree.
+Json checkerboard(PbrtParameters& params, const std::string& type) {
+    if (params.integer("dimension").value_or(2) != 2)
+        params.fail("dimension", "must be 2 (the course has no solid checkerboard)");
+    auto value = [&](const char* name, double fallback) {
+        if (params.texture(name))
+            params.fail(name, "a checkerboard of textures is not in the course: give a value");
+        if (type == "float") {
+            const double v = params.real(name).value_or(fallback);
+            if (!(v >= 0 && v <= kLargestSceneNumber))
+                params.fail(name, "must be in [0, 1e9], got " + show_pbrt_number(v));
+            return to_json(Vec3d(v));
+        }
+        return to_json(color_in(params, name, Vec3d(fallback), kLargestSceneNumber));
+    };
+    return {{"checker", {{"even", value("tex1", 1)}, {"odd", value("tex2", 0)}}}};
+}
+
 }  // namespace
 
-Json material(const std::string& type, PbrtParameters& params, const std::string& type_place) {
-    Json m;
-    if (type == "diffuse") {
-        m = {{"type", "diffuse"}, {"albedo", to_json(color_in(params, "reflectance", Vec3d(0.5), 1))}};
-    } else if (type == "conductor") {
-        m = conductor(params);
-    } else if (type == "dielectric") {
-        m = dielectric(params);
-    } else {
-        throw InputError(type_place + "material \"" + type +
-                         "\" is not in the course (coateddiffuse and textures are not yet); it reads diffuse, "
-                         "conductor, dielectric");
+Json texture(const std::string& kind, const std::string& type, PbrtParameters& params,
+             const std::string& type_place, std::vector<std::string>& notes) {
+    if (type != "spectrum" && type != "float") {
+        throw InputError(type_place + "texture type \"" + printable(type, 64) +
+                         "\" is not pbrt-v4's: spectrum or float");
     }
-    params.refuse_unused(type == "diffuse"     ? "reflectance"
-                         : type == "conductor" ? "eta, k, reflectance, roughness, uroughness, vroughness, remaproughness"
-                                               : "eta, roughness, uroughness, vroughness, remaproughness");
+    if (params.string("mapping").value_or("uv") != "uv")
+        params.fail("mapping", "must be uv (the course maps textures by the shapes' uv)");
+    const double su = params.real("uscale").value_or(1), sv = params.real("vscale").value_or(1);
+    if (!(su > 0 && su <= kLargestSceneNumber))
+        params.fail("uscale", "must be in (0, 1e9], got " + show_pbrt_number(su));
+    if (!(sv > 0 && sv <= kLargestSceneNumber))
+        params.fail("vscale", "must be in (0, 1e9], got " + show_pbrt_number(sv));
+    if (params.real("udelta").value_or(0) != 0)
+        params.fail("udelta", "must be 0: the course's textures are not offset");
+    if (params.real("vdelta").value_or(0) != 0)
+        params.fail("vdelta", "must be 0: the course's textures are not offset");
+    Json t;
+    if (kind == "imagemap") {
+        t = image_texture(params, notes);
+        t["scale"] = {su, sv};
+        params.refuse_unused(
+            "filename, encoding, scale 1, invert false, filter, maxanisotropy, wrap, mapping uv, "
+            "uscale, vscale, udelta 0, vdelta 0");
+    } else if (kind == "checkerboard") {
+        if (su != sv) {
+            params.fail(params.has("vscale") ? "vscale" : "uscale",
+                        "uscale and vscale must be equal: the course's checker has one scale");
+        }
+        t = checkerboard(params, type);
+        t["checker"]["scale"] = su;
+        params.refuse_unused("tex1, tex2, dimension 2, mapping uv, uscale, vscale, udelta 0, vdelta 0");
+    } else {
+        throw InputError(type_place + "texture \"" + printable(kind, 64) +
+                         "\" is not in the course; it reads imagemap, checkerboard");
+    }
+    return t;
+}
+
+namespace {
+
+// The course's material, before refuse_unused.
+Json course_material(const std::string& type, PbrtParameters& params, const std::string& type_place,
+                     const Textures& textures, std::vector<std::string>& notes) {
+    if (type == "diffuse")
+        return {{"type", "diffuse"},
+                {"albedo", colour_or_texture(params, "reflectance", Vec3d(0.5), 1, textures)}};
+    if (type == "conductor") return conductor(params, textures);
+    if (type == "dielectric") return dielectric(params);
+    if (type == "coateddiffuse") return coated_diffuse(params, textures, notes);
+    throw InputError(type_place + "material \"" + type +
+                     "\" is not in the course; it reads diffuse, conductor, dielectric, coateddiffuse");
+}
+
+}  // namespace
+
+Json material(const std::string& type, PbrtParameters& params, const std::string& type_place,
+              const Textures& textures, std::vector<std::string>& notes) {
+    Json m = course_material(type, params, type_place, textures, notes);
+    params.refuse_unused(
+        type == "diffuse"     ? "reflectance"
+        : type == "conductor" ? "eta, k, reflectance, roughness, uroughness, vroughness, remaproughness"
+        : type == "coateddiffuse"
+            ? "reflectance, eta, roughness 0, thickness, albedo 0, g, maxdepth, nsamples, remaproughness"
+            : "eta, roughness, uroughness, vroughness, remaproughness");
     return m;
 }
 

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <glm/mat4x4.hpp>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "rt/io/pbrt_parameters.hpp"
 
@@ -12,8 +14,23 @@ namespace rt::pbrt {
 
 using Json = nlohmann::json;
 
-// A material: diffuse, conductor or dielectric; `type_place` refuses another type.
-Json material(const std::string& type, PbrtParameters& params, const std::string& type_place);
+// A named texture (Texture "name" "spectrum" "imagemap" ...): its pbrt type, spectrum or float, and the
+// course's texture object (assets/scenes/README.md, "A texture").
+struct Texture {
+    std::string type;
+    Json course;
+};
+using Textures = std::map<std::string, Texture, std::less<>>;
+
+// A texture of class imagemap (an 8-bit PNG or JPEG) or checkerboard (of two values); `type_place` refuses
+// another class.
+Json texture(const std::string& kind, const std::string& type, PbrtParameters& params,
+             const std::string& type_place, std::vector<std::string>& notes);
+
+// A material: diffuse, conductor, dielectric or coateddiffuse, its colours rgb values or `textures`;
+// `type_place` refuses another type. What it reads but the course's image does not show is added to `notes`.
+Json material(const std::string& type, PbrtParameters& params, const std::string& type_place,
+              const Textures& textures, std::vector<std::string>& notes);
 
 // An area light's emitted radiance, L × scale (one-sided only).
 Json area_emission(PbrtParameters& params);

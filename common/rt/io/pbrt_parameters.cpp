@@ -192,8 +192,16 @@ std::optional<std::string> PbrtParameters::string(std::string_view name) {
 std::optional<Vec3d> PbrtParameters::color(std::string_view name) {
     const PbrtParameter* p = find(name, {"rgb", "color", "spectrum", "blackbody", "texture"});
     if (!p) return std::nullopt;
-    if (p->type == "texture") fail(name, "textures are not read by the course yet; give an rgb value");
-    if (p->type == "blackbody") fail(name, "blackbody spectra are not read by the course yet; give an rgb value");
+    if (p->type == "texture") fail(name, "the course reads no texture here; give an rgb value");
+    if (p->type == "blackbody") {
+        if (p->numbers.size() != 1) fail(name, "must be one temperature in kelvin");
+        const double kelvin = p->numbers[0];
+        if (!(kelvin >= kBlackbodyLeast && kelvin <= kBlackbodyMost)) {
+            fail(name, "must be in [1667, 25000] kelvin (the range of the course's conversion), got " +
+                           show_pbrt_number(kelvin));
+        }
+        return pbrt_blackbody_rgb(kelvin);
+    }
     if (p->type == "spectrum") {
         if (p->strings.size() != 1) {
             fail(name, "the course reads a spectrum only by name (" + std::string(kPbrtNamedSpectra) +
@@ -208,6 +216,16 @@ std::optional<Vec3d> PbrtParameters::color(std::string_view name) {
     }
     if (p->numbers.size() != 3) fail(name, "must be 3 numbers, got " + std::to_string(p->numbers.size()));
     return Vec3d(p->numbers[0], p->numbers[1], p->numbers[2]);
+}
+
+std::optional<std::string> PbrtParameters::texture(std::string_view name) {
+    for (const PbrtParameter& p : list_) {
+        if (p.name == name && p.type != "texture") return std::nullopt;
+    }
+    const PbrtParameter* p = find(name, {"texture"});
+    if (!p) return std::nullopt;
+    if (p->strings.size() != 1) fail(name, "must name one texture, got " + std::to_string(p->strings.size()));
+    return p->strings[0];
 }
 
 std::optional<Vec3d> PbrtParameters::point3(std::string_view name) {

@@ -39,6 +39,8 @@ class PbrtParameters {
     std::optional<std::string> string(std::string_view name);
     // rgb, or spectrum by one of the named metal spectra (pbrt_spectra.hpp); the value in linear RGB.
     std::optional<Vec3d> color(std::string_view name);
+    // The texture a "texture NAME" parameter names; nothing when it is absent or of another type.
+    std::optional<std::string> texture(std::string_view name);
     std::optional<Vec3d> point3(std::string_view name);
 
     // Marks a parameter as read without using it, and returns whether it was given.

@@ -80,6 +80,8 @@ class Reader {
     bool world_directive(const std::string& name, const std::string& type, PbrtParameters& params,
                          const std::string& where);
     void shape(const std::string& type, PbrtParameters& params, const std::string& where);
+    // Texture "name" "spectrum" "imagemap" ...: defines a texture that materials' colours may name.
+    void texture(const Tokens& tokens, std::size_t& at, const std::string& where, const std::string& place);
     Json finish();
     void note_ignored(const std::string& what) {
         if (std::find(notes_.begin(), notes_.end(), what) == notes_.end()) notes_.push_back(what);
@@ -91,6 +93,7 @@ class Reader {
     std::vector<std::pair<glm::dmat4, std::string>> transform_stack_;
     std::map<std::string, glm::dmat4> coordinate_systems_;
     std::map<std::string, std::pair<Json, std::string>> named_materials_;  // name → material, its place
+    pbrt::Textures textures_;
     std::optional<CameraState> camera_;
     bool world_ = false;
     int width_ = 1280, height_ = 720, spp_ = 16;
@@ -197,9 +200,9 @@ void Reader::include(const std::string& name, const std::string& where, const st
 }
 
 // The directives the course knows but does not implement, with what it would take.
-constexpr std::string_view kRefusedDirectives[] = {"ObjectBegin", "ObjectEnd", "ObjectInstance", "MakeNamedMedium",
-                                                   "MediumInterface", "TransformTimes", "ActiveTransform", "Attribute",
-                                                   "Option", "Texture"};
+constexpr std::string_view kRefusedDirectives[] = {"ObjectBegin",     "ObjectEnd",       "ObjectInstance",
+                                                   "MakeNamedMedium", "MediumInterface", "TransformTimes",
+                                                   "ActiveTransform", "Attribute",       "Option"};
 constexpr std::string_view kTransformDirectives[] = {"Identity", "Translate", "Scale", "Rotate", "LookAt", "Transform",
                                                      "ConcatTransform", "CoordinateSystem", "CoordSysTransform"};
 // Directives followed by a quoted type or name and a parameter list.
@@ -247,10 +250,12 @@ void Reader::directive(const Tokens& tokens, std::size_t& at, const std::string&
         const std::string owner = name + " \"" + printable(type, 64) + "\"";
         PbrtParameters params(read_pbrt_parameters(tokens, at, place), place, where, owner);
         if (!options_directive(name, type, params, where)) world_directive(name, type, params, where);
+    } else if (name == "Texture") {
+        texture(tokens, at, where, place);
     } else if (listed(name, kRefusedDirectives)) {
-        throw InputError(where + name + " is not in the course" +
-                         (name == "Texture" ? " yet: give materials rgb values" : "") +
-                         " (it reads the directives listed in assets/scenes/README.md, \"pbrt-v4 scenes\")");
+        throw InputError(where + name +
+                         " is not in the course (it reads the directives listed in assets/scenes/README.md, "
+                         "\"pbrt-v4 scenes\")");
     } else {
         throw InputError(where + "unknown directive " + printable(name, 64) +
                          " (the course reads the directives listed in assets/scenes/README.md, \"pbrt-v4 scenes\")");
@@ -308,14 +313,16 @@ bool Reader::world_directive(const std::string& name, const std::string& type, P
                              const std::string& where) {
     if (!world_) throw InputError(where + name + " before WorldBegin: it belongs in the world block");
     const std::string type_place = where;
+    std::vector<std::string> notes;
     if (name == "Material") {
-        state_.material = pbrt::material(type, params, type_place);
+        state_.material = pbrt::material(type, params, type_place, textures_, notes);
         state_.material_name = "Material " + type + " " + std::to_string(++anonymous_materials_);
     } else if (name == "MakeNamedMaterial") {
         const std::optional<std::string> material_type = params.string("type");
         if (!material_type) params.fail("type", "MakeNamedMaterial needs \"string type\"");
         if (named_materials_.count(type)) throw InputError(where + "MakeNamedMaterial \"" + printable(type, 64) + "\": defined twice");
-        named_materials_[type] = {pbrt::material(*material_type, params, type_place), where};
+        named_materials_[type] = {pbrt::material(*material_type, params, type_place, textures_, notes),
+                                  where};
     } else if (name == "NamedMaterial") {
         params.refuse_unused("nothing");
         const auto found = named_materials_.find(type);
@@ -338,6 +345,7 @@ bool Reader::world_directive(const std::string& name, const std::string& type, P
     } else {
         return false;
     }
+    for (const std::string& note : notes) note_ignored(note);
     return true;
 }
 
@@ -376,6 +384,30 @@ void Reader::transform_directive(const std::string& name, const Tokens& tokens, 
         }
         ctm = found->second;
     }
+}
+
+void Reader::texture(const Tokens& tokens, std::size_t& at, const std::string& where,
+                     const std::string& place) {
+    const std::string name = next_string(tokens, at, place, "Texture");
+    const std::string type = next_string(tokens, at, place, "Texture");
+    const std::string kind = next_string(tokens, at, place, "Texture");
+    PbrtParameters params(read_pbrt_parameters(tokens, at, place), place, where,
+                          "Texture \"" + printable(name, 64) + "\"");
+    if (!world_) throw InputError(where + "Texture before WorldBegin: it belongs in the world block");
+    if (textures_.count(name))
+        throw InputError(where + "Texture \"" + printable(name, 64) + "\": defined twice");
+    std::vector<std::string> notes;
+    Json course = pbrt::texture(kind, type, params, where, notes);
+    // An image from the main scene's folder, as an Include: a file that cannot be read is refused here, at
+    // its place.
+    if (course.contains("texture")) {
+        const std::string file = course["texture"].get<std::string>();
+        if (const std::string problem = not_a_regular_file(folder_ / file); !problem.empty()) {
+            params.fail("filename", "\"" + printable(file, 64) + "\" cannot be read (" + problem + ")");
+        }
+    }
+    textures_[name] = {type, std::move(course)};
+    for (const std::string& note : notes) note_ignored(note);
 }
 
 void Reader::camera(PbrtParameters& params, const std::string& where) {
