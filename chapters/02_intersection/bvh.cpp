@@ -63,6 +63,25 @@ struct Bins {
     std::array<std::array<std::uint32_t, kBins>, 3> count{};
 };
 
+// Which of kBins slabs a centroid falls in, along each axis of a node, in double: a float extent may be
+// subnormal (its inverse infinite) or overflow to infinity (centroids at -3e38 and 3e38). kBins / extent is
+// computed once per node, so a primitive's bin takes a product, not a division; (c − lo) kBins / extent is
+// in [0, kBins] (up to rounding) for every centroid of the node: the bin is in [0, kBins).
+struct BinScale {
+    Vec3d lower, scale;
+
+    explicit BinScale(const Aabb& centroids) : lower(centroids.min) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const double extent = double(centroids.max[axis]) - double(centroids.min[axis]);
+            scale[axis] = extent > 0 ? kBins / extent : 0;
+        }
+    }
+    int bin_of(const Vec3& c, int axis) const {
+        const double t = (double(c[axis]) - lower[axis]) * scale[axis];
+        return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
+    }
+};
+
 // A split of a node: the bins [0, bin) along `axis` go to the first child.
 struct Split {
     int axis = 0;
@@ -84,21 +103,13 @@ struct Builder {
         return b;
     }
 
-    // The slab of centroid c along `axis`, in double: a float extent may be subnormal (its inverse infinite)
-    // or overflow to infinity (centroids at -3e38 and 3e38). (c − lo) / extent is in [0, 1] for every
-    // centroid of the node: the bin is in [0, kBins).
-    static int bin_of(const Vec3& c, int axis, const Aabb& centroids) {
-        const double extent = double(centroids.max[axis]) - double(centroids.min[axis]);
-        const double t = (double(c[axis]) - double(centroids.min[axis])) / extent * kBins;
-        return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
-    }
-
-    Bins bin(std::uint32_t begin, std::uint32_t end, const Aabb& centroids) const {
+    // Bins [begin, end) by their centroids, in one pass over the node's primitives.
+    Bins bin(std::uint32_t begin, std::uint32_t end, const BinScale& scale) const {
         Bins bins;
         for (std::uint32_t i = begin; i < end; ++i) {
             const Reference& r = references[i];
             for (int axis = 0; axis < 3; ++axis) {
-                const int b = bin_of(r.centroid, axis, centroids);
+                const int b = scale.bin_of(r.centroid, axis);
                 ++bins.count[axis][b];
                 bins.box[axis][b].extend(r.box);
             }
@@ -170,19 +181,39 @@ struct Builder {
         } else if (depth >= kMaxDepth) {
             middle = median_split(begin, end, longest);
         } else {
-            const Bins bins = bin(begin, end, centroids);
+            const BinScale scale(centroids);
+            const Bins bins = bin(begin, end, scale);
             const Split split = cheapest_split(bins, centroids);
             const double split_cost = kTraversalCost + split.cost / node_area;
             if (count <= kMaxLeafSize && !(split_cost < tests(count))) return make_leaf(node, begin, end);
-            middle =
-                std::uint32_t(std::partition(references.begin() + begin, references.begin() + end,
-                                             [&](const Reference& r) {
-                                                 return bin_of(r.centroid, split.axis, centroids) < split.bin;
-                                             }) -
-                              references.begin());
-            if (middle == begin || middle == end) middle = median_split(begin, end, split.axis);
+            Bounds first, second;
+            middle = partition(begin, end, split, scale, first, second);
+            if (middle != begin && middle != end)
+                return split_node(node, begin, middle, end, depth, first, second);
+            middle = median_split(begin, end, split.axis);
         }
         split_node(node, begin, middle, end, depth, bounds_of(begin, middle), bounds_of(middle, end));
+    }
+
+    // Moves the primitives of [begin, end) whose centroid falls in the split's first bins before the others
+    // (std::partition's swaps, in its order) and returns where the second part starts; the two parts' bounds
+    // are made in the same pass, each primitive read once rather than partitioned and then read again.
+    std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split, const BinScale& scale,
+                            Bounds& first, Bounds& second) {
+        auto goes_first = [&](const Reference& r) { return scale.bin_of(r.centroid, split.axis) < split.bin; };
+        std::uint32_t i = begin, j = end;
+        while (true) {
+            for (; i < j && goes_first(references[i]); ++i) first.extend(references[i]);
+            if (i == j) return i;
+            for (--j; i < j && !goes_first(references[j]); --j) second.extend(references[j]);
+            if (i == j) {
+                second.extend(references[i]);
+                return i;
+            }
+            std::swap(references[i], references[j]);
+            first.extend(references[i++]);
+            second.extend(references[j]);
+        }
     }
 
     // Makes `node` interior, its children over [begin, middle) and [middle, end), depth first: the first

@@ -38,6 +38,10 @@ void World::collapse_to_wide() {
     const bool pack = options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
     std::vector<Triangle> triangles;  // a leaf's, reused from leaf to leaf: no allocation per leaf
     std::vector<std::uint32_t> slots;
+    // At most one packet per leaf more than a packet per four triangles: reserved at once, not grown.
+    std::size_t leaves = 0;
+    for (const BvhNode& node : bvh_.nodes()) leaves += node.leaf();
+    if (pack) triangle_packets_.reserve(triangles_.size() / kTriangleLanes + leaves);
     wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
         const std::uint32_t first_packet = std::uint32_t(triangle_packets_.size());
         triangles.clear();
@@ -177,6 +181,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
                 const bool has_uv = !g.texture_coordinates.empty();
+                triangles_.reserve(triangles_.size() + g.triangles.size());
+                primitives_.reserve(primitives_.size() + g.triangles.size());
                 for (std::size_t i = 0; i < g.triangles.size(); ++i) {
                     const auto& tri = g.triangles[i];
                     if (g.smooth() || has_uv) {
