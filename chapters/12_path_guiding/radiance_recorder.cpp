@@ -1,0 +1,35 @@
+#include "radiance_recorder.hpp"
+
+#include <algorithm>
+
+namespace rt {
+
+bool RadianceRecorder::reached(const Hit& hit, const BsdfFlags& flags, int /*bounces*/) {
+    point_ = hit.point;
+    delta_ = flags.delta;
+    return true;
+}
+
+void RadianceRecorder::sampled(const Color& beta, const BsdfSample& sample, Real cos_i) {
+    if (delta_) return;
+    vertices_.push_back({point_, sample.wi, sample.pdf, beta * sample.f * (cos_i / sample.pdf), path_.L});
+}
+
+void RadianceRecorder::record() const {
+    // EXERCISE(ch12.incident_radiance) § Learning from paths
+    for (const Vertex& v : vertices_) {
+        const Color after = glm::max(path_.L - v.gathered, Color(0));
+        Real sum = 0;
+        int channels = 0;
+        for (int c = 0; c < 3; ++c) {
+            if (!(v.beta_after[c] > 0)) continue;
+            sum += after[c] / v.beta_after[c];
+            ++channels;
+        }
+        const Real incident = channels > 0 ? sum / Real(channels) : Real(0);
+        field_.record(v.point, v.wi, incident / v.pdf);
+    }
+    // END EXERCISE
+}
+
+}  // namespace rt
