@@ -15,7 +15,7 @@ namespace rt {
 // dω / (du dv): the solid angle per unit area of the square.
 inline constexpr Real kEqualAreaJacobian = Real(4 * std::numbers::pi);
 
-// The point of [0, 1]² of unit direction w (φ = atan2(y, x) taken in [0, 2π)).
+// The point of [0, 1)² of unit direction w (φ = atan2(y, x) taken in [0, 2π)).
 Vec2 equal_area_point(const Vec3& w);
 // The unit direction of point p of [0, 1]².
 Vec3 equal_area_direction(Vec2 p);
