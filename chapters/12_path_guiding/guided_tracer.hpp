@@ -15,8 +15,9 @@ class GuidedPaths : public SurfacePaths {
 
     // Chapter 06's vertex, guided by the field's guide at the hit unless the BSDF is a delta.
     GuidedVertex vertex(const Hit& hit, const Vec3& wo, const Bsdf& bsdf) const {
-        const DirectionalQuadtree* guide = bsdf.flags().delta ? nullptr : field_.guide_at(hit.point);
-        return {SurfacePaths::vertex(hit, wo, bsdf), guide, field_.settings().guided_fraction};
+        const BsdfFlags& flags = bsdf.flags();
+        const DirectionalQuadtree* guide = flags.delta ? nullptr : field_.guide_at(hit.point);
+        return {SurfacePaths::vertex(hit, wo, bsdf), flags.transmission, guide, field_.settings().guided_fraction};
     }
 
   private:

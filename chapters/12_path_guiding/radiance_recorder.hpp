@@ -1,11 +1,14 @@
 // What a training path teaches the guiding field. It watches the path (a PathObserver of chapter 06: the
-// loop is not copied) and notes, at each vertex that drew its continuation wi with density p, the throughput
-// β_{k+1} = β_k f |cos θ_i| / p after it and the radiance L_k the path had gathered so far. When the path
-// ends with L, everything gathered after vertex k arrived there along wi, so
-//   L_i(x_k, wi) ≈ (L − L_k) / β_{k+1}   (per colour channel; their mean),
-// an estimate of the incident radiance, which the field records with weight L_i / p: summed over a pass,
-// each quadrant's weights estimate ∫ L_i dω over its solid angle. Delta vertices are not recorded (they
-// are never guided).
+// loop is not copied) and notes, at each vertex k that drew its continuation wi with density p, the
+// throughput β_{k+1} = β_k f |cos θ_i| / p after it, and the radiance L_{k+1} the path had gathered when it
+// reached its next vertex (the light met there included). When the path ends with L, what it gathered after
+// that arrived at x_k along wi by scattering at the next vertex, so
+//   L_i(x_k, wi) ≈ (L − L_{k+1}) / β_{k+1}   (per colour channel; their mean)
+// estimates the indirect radiance incident at x_k from wi: the light that next-event estimation cannot
+// find. (An emitter seen straight along wi is next-event estimation's, and a guide that learned it would
+// spend its samples where light sampling already does well.) The field records it with weight L_i / p:
+// summed over a pass, each quadrant's weights estimate ∫ L_i dω over its solid angle. Delta vertices are
+// not recorded (they are never guided), but reaching one is reaching the next vertex.
 #pragma once
 
 #include <vector>
@@ -30,7 +33,9 @@ class RadianceRecorder : public PathObserver {
     struct Vertex {
         Vec3 point, wi;
         Real pdf;
-        Color beta_after, gathered;  // β_{k+1}, L_k
+        Color beta_after;      // β_{k+1}
+        Color arrived{0};      // L_{k+1}
+        bool reached = false;  // whether the path reached a next vertex (else nothing arrived by scattering)
     };
     GuidingField& field_;
     const PathState& path_;
