@@ -38,7 +38,8 @@ std::uint64_t training_seed(std::uint64_t seed, int pass) {
 }
 
 GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera, const RenderSettings& settings,
-                           const PathOptions& options, const GuidedRenderOptions& guided) {
+                           const PathOptions& options, const GuidedRenderOptions& guided,
+                           const TrainedField& trained) {
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     GuidingField field(guiding_bounds(scene_box(prepared.world, camera.eye), camera.eye), guided.field);
     GuidedRender out;
@@ -56,6 +57,7 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
         training_seconds += r.seconds;
         training_rays += r.rays;
     }
+    if (trained) trained(field, tracer);
     out.result = render_paths(GuidedTracer(tracer, field, false), camera, settings);
     out.result.seconds += training_seconds;
     out.result.rays += training_rays;

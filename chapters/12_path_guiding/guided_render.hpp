@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,13 @@ struct GuidedRender {
     std::size_t bytes = 0;  // the trees' memory at the end
 };
 
+// What to do with the field once trained, before the image (the lesson's picture of it), with the tracer.
+using TrainedField = std::function<void(const GuidingField&, const PathTracer&)>;
+
 // Renders `prepared` with chapter 06's paths (their options `options`) guided as the header says.
 GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera, const RenderSettings& settings,
-                           const PathOptions& options, const GuidedRenderOptions& guided);
+                           const PathOptions& options, const GuidedRenderOptions& guided,
+                           const TrainedField& trained = nullptr);
 
 // The summary's lines: the passes, their rays, the trees' memory.
 std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedRenderOptions& guided);

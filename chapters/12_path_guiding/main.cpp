@@ -2,17 +2,20 @@
 // from: training passes of 1, 2, 4, … samples per pixel record the radiance their paths carried into a
 // spatial binary tree of directional quadtrees (Practical Path Guiding), and each vertex then draws its
 // continuation from the learned distribution or the BSDF, by one-sample MIS. `--training-passes 0` renders
-// chapter 06's unguided paths; the summary gives each pass's rays and the trees' memory.
+// chapter 06's unguided paths; the summary gives each pass's rays and the trees' memory; `--guide-picture`
+// draws what the guide learned at a point beside the light that arrives there.
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_notes.hpp"
-#include "guided_render.hpp"
+#include "guiding_flags.hpp"
+#include "rt/io/image_io.hpp"
 #include "rt/run/app.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
     PathOptions options;
     GuidedRenderOptions guided;
+    GuidePictureRequest picture;
     const ChapterInfo chapter{
         "ch12_path_guiding",
         "Chapter 12: path guiding: a spatial binary tree of directional quadtrees learned in training "
@@ -29,26 +32,21 @@ int main(int argc, char** argv) {
         }};
     auto flags = [&](CLI::App& app) {
         add_sampler_flag(app, options.sampler);
-        app.add_option("--training-passes", guided.training_passes,
-                       "Training passes of 1, 2, 4, ... spp before the image (0: no guiding)")
-            ->check(CLI::Range(0, 16));
-        app.add_option("--guided-fraction", guided.field.guided_fraction,
-                       "alpha: the chance a guided vertex draws from the guide rather than the BSDF")
-            ->check(CLI::Range(0.0, 0.99));
-        app.add_option("--spatial-threshold", guided.field.spatial_threshold,
-                       "c: a leaf of the spatial tree splits after pass k past c sqrt(2^k) vertices")
-            ->check(CLI::Range(1.0, 1e9));
-        app.add_option("--energy-threshold", guided.field.energy_threshold,
-                       "rho: a quadrant splits past this share of its quadtree's energy")
-            ->check(CLI::Range(1e-4, 0.5));
+        add_guiding_flags(app, guided, picture);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         options.simulated = context.simulated;
+        if (!picture.file.empty()) check_writable("--guide-picture", picture.file);
         const RenderScene prepared(context.scene, context.simulated, refraction_materials());
         const PinholeCamera camera =
             make_pinhole_camera(context.scene.camera, context.settings.width, context.settings.height);
-        GuidedRender run = render_guided(prepared, camera, context.settings, options, guided);
         std::vector<std::string> notes = refraction_notes(context.scene, Renderer::kPaths, options);
+        const auto draw = [&](const GuidingField& field, const PathTracer& tracer) {
+            if (picture.file.empty()) return;
+            write_png(guide_picture(field, tracer, picture, context.settings.threads), picture.file);
+            notes.push_back("wrote the guide's picture " + picture.file.string());
+        };
+        GuidedRender run = render_guided(prepared, camera, context.settings, options, guided, draw);
         for (std::string& note : guiding_notes(run, guided)) notes.push_back(std::move(note));
         return ChapterRun{std::move(run.result), std::move(notes), std::nullopt};
     };
