@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "06_monte_carlo/render_paths.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
 #include "guided_tracer.hpp"
 
 namespace rt {
@@ -63,6 +64,14 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
     out.result.rays += training_rays;
     out.bytes = field.bytes();
     return out;
+}
+
+GuidedRender render_guided(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
+                           PathOptions options, const GuidedRenderOptions& guided, const TrainedField& trained) {
+    options.simulated = simulated;
+    const RenderScene prepared(scene, simulated, refraction_materials());
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+    return render_guided(prepared, camera, settings, options, guided, trained);
 }
 
 std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedRenderOptions& guided) {

@@ -48,6 +48,12 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
                            const PathOptions& options, const GuidedRenderOptions& guided,
                            const TrainedField& trained = nullptr);
 
+// The same on `scene` as the chapter's run renders it: what `simulated` holds, on chapter 07's materials (its
+// dielectrics), with a camera of the settings' size.
+GuidedRender render_guided(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
+                           PathOptions options, const GuidedRenderOptions& guided,
+                           const TrainedField& trained = nullptr);
+
 // The summary's lines: the passes, their rays, the trees' memory.
 std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedRenderOptions& guided);
 

@@ -25,7 +25,7 @@ Vec3 GuidedVertex::guide_sample(Vec2 u) const {
 
 std::optional<Continuation> GuidedVertex::sample(SampleStream rng) const {
     if (!guide_) return BsdfVertex::sample(rng);
-    // EXERCISE(ch12.one_sample_mis) § One-sample MIS
+    // EXERCISE(ch12.one_sample_mis) § 5. One-sample MIS
     if (rng.next_real() < alpha_) {
         const Vec3 wi = guide_sample(rng.next_vec2());
         const Scattering f = toward(wi);

@@ -5,7 +5,6 @@
 // chapter 06's unguided paths; the summary gives each pass's rays and the trees' memory; `--guide-picture`
 // draws what the guide learned at a point beside the light that arrives there.
 #include "06_monte_carlo/sampling_flags.hpp"
-#include "07_bsdf_refraction/bsdf_render.hpp"
 #include "07_bsdf_refraction/refraction_notes.hpp"
 #include "guiding_flags.hpp"
 #include "rt/io/image_io.hpp"
@@ -35,18 +34,15 @@ int main(int argc, char** argv) {
         add_guiding_flags(app, guided, picture);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
-        options.simulated = context.simulated;
         if (!picture.file.empty()) check_writable("--guide-picture", picture.file);
-        const RenderScene prepared(context.scene, context.simulated, refraction_materials());
-        const PinholeCamera camera =
-            make_pinhole_camera(context.scene.camera, context.settings.width, context.settings.height);
         std::vector<std::string> notes = refraction_notes(context.scene, Renderer::kPaths, options);
         const auto draw = [&](const GuidingField& field, const PathTracer& tracer) {
             if (picture.file.empty()) return;
             write_png(guide_picture(field, tracer, picture, context.settings.threads), picture.file);
             notes.push_back("wrote the guide's picture " + picture.file.string());
         };
-        GuidedRender run = render_guided(prepared, camera, context.settings, options, guided, draw);
+        GuidedRender run =
+            render_guided(context.scene, context.simulated, context.settings, options, guided, draw);
         for (std::string& note : guiding_notes(run, guided)) notes.push_back(std::move(note));
         return ChapterRun{std::move(run.result), std::move(notes), std::nullopt};
     };

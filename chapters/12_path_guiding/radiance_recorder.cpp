@@ -20,7 +20,7 @@ void RadianceRecorder::sampled(const Color& beta, const BsdfSample& sample, Real
 }
 
 void RadianceRecorder::record() const {
-    // EXERCISE(ch12.incident_radiance) § Learning from paths
+    // EXERCISE(ch12.incident_radiance) § 4. Learning from paths
     for (const Vertex& v : vertices_) {
         const Color after = v.reached ? glm::max(path_.L - v.arrived, Color(0)) : Color(0);
         Real sum = 0;
