@@ -35,8 +35,8 @@ void DirectionalQuadtree::record(Vec2 p, Real weight) {
     p = glm::clamp(p, Vec2(0), Vec2(kOneMinusEpsilon));
     for (std::uint32_t node = 0;;) {
         const int q = quadrant_of(p);
-        std::atomic_ref<std::uint64_t>(nodes_[node].energy[std::size_t(q)]).fetch_add(units,
-                                                                                  std::memory_order_relaxed);
+        std::atomic_ref<std::uint64_t>(nodes_[node].energy[std::size_t(q)])
+            .fetch_add(units, std::memory_order_relaxed);
         node = nodes_[node].child[std::size_t(q)];
         if (node == 0) return;
     }

@@ -32,8 +32,8 @@ struct DirectionSample {
 
 class DirectionalQuadtree {
   public:
-    // Recorded weight w adds round(w / kEnergyUnit) units; a weight above kMaxRecord counts as kMaxRecord (the
-    // distribution only guides: a capped firefly biases no image).
+    // Recorded weight w adds round(w / kEnergyUnit) units; a weight above kMaxRecord counts as kMaxRecord
+    // (the distribution only guides: a capped firefly biases no image).
     static constexpr double kEnergyUnit = 1.0 / 65536;
     static constexpr double kMaxRecord = 1 << 20;
 

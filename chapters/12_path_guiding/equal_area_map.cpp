@@ -10,7 +10,8 @@ Vec2 equal_area_point(const Vec3& w) {
     Real phi = std::atan2(w.y, w.x);
     if (phi < 0) phi += Real(2 * std::numbers::pi);
     // The pole z = 1, and φ just below 2π (which rounds to 1 in float): the square's point stays in [0, 1)².
-    return {std::min((z + 1) / 2, kOneMinusEpsilon), std::min(phi / Real(2 * std::numbers::pi), kOneMinusEpsilon)};
+    return {std::min((z + 1) / 2, kOneMinusEpsilon),
+            std::min(phi / Real(2 * std::numbers::pi), kOneMinusEpsilon)};
 }
 
 Vec3 equal_area_direction(Vec2 p) {

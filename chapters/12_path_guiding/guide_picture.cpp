@@ -51,7 +51,8 @@ Image guide_picture(const GuidingField& field, const PathTracer& tracer, const G
     });
     std::vector<double> radiance(std::size_t(side * side));
     for (int y = 0; y < side; ++y)
-        for (int x = 0; x < side; ++x) radiance[std::size_t(y * side + x)] = double(luminance(incident.image.at(x, y)));
+        for (int x = 0; x < side; ++x)
+            radiance[std::size_t(y * side + x)] = double(luminance(incident.image.at(x, y)));
     Image picture(2 * side + gap, side);
     paint(picture, 0, side, density);
     paint(picture, side + gap, side, radiance);

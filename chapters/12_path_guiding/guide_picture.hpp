@@ -16,8 +16,8 @@ namespace rt {
 struct GuidePictureRequest {
     std::filesystem::path file;  // empty: no picture
     Vec3 at{0};
-    int size = 128;   // each panel's side in pixels
-    int paths = 64;   // unguided paths per pixel of the right panel
+    int size = 128;  // each panel's side in pixels
+    int paths = 64;  // unguided paths per pixel of the right panel
 };
 
 // The picture of `field` at request.at, the right panel traced by `tracer` (on `threads` threads, 0: every

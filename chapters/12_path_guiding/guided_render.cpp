@@ -38,9 +38,9 @@ std::uint64_t training_seed(std::uint64_t seed, int pass) {
     return seed + 0x9E3779B97F4A7C15ull * std::uint64_t(pass + 1);
 }
 
-GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera, const RenderSettings& settings,
-                           const PathOptions& options, const GuidedRenderOptions& guided,
-                           const TrainedField& trained) {
+GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera,
+                           const RenderSettings& settings, const PathOptions& options,
+                           const GuidedRenderOptions& guided, const TrainedField& trained) {
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     GuidingField field(guiding_bounds(scene_box(prepared.world, camera.eye), camera.eye), guided.field);
     GuidedRender out;
@@ -67,7 +67,8 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
 }
 
 GuidedRender render_guided(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
-                           PathOptions options, const GuidedRenderOptions& guided, const TrainedField& trained) {
+                           PathOptions options, const GuidedRenderOptions& guided,
+                           const TrainedField& trained) {
     options.simulated = simulated;
     const RenderScene prepared(scene, simulated, refraction_materials());
     const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
@@ -81,17 +82,19 @@ std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedR
         notes.push_back("guiding: no training pass: chapter 06's paths, unguided");
         return notes;
     }
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
-                  "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
-                  "<= %d",
-                  render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold,
-                  f.max_depth);
+    char text[320];
+    std::snprintf(
+        text, sizeof text,
+        "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
+        "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
+        "<= %d",
+        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold,
+        f.max_depth);
     notes.push_back(text);
     for (std::size_t k = 0; k < render.passes.size(); ++k) {
         const TrainingPass& p = render.passes[k];
-        std::snprintf(text, sizeof text, "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s; rays: ", k + 1,
+        std::snprintf(text, sizeof text,
+                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s; rays: ", k + 1,
                       p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str());
         notes.push_back(text + ray_counts(p.rays));
     }

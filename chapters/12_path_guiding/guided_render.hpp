@@ -44,9 +44,9 @@ struct GuidedRender {
 using TrainedField = std::function<void(const GuidingField&, const PathTracer&)>;
 
 // Renders `prepared` with chapter 06's paths (their options `options`) guided as the header says.
-GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera, const RenderSettings& settings,
-                           const PathOptions& options, const GuidedRenderOptions& guided,
-                           const TrainedField& trained = nullptr);
+GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera,
+                           const RenderSettings& settings, const PathOptions& options,
+                           const GuidedRenderOptions& guided, const TrainedField& trained = nullptr);
 
 // The same on `scene` as the chapter's run renders it: what `simulated` holds, on chapter 07's materials (its
 // dielectrics), with a camera of the settings' size.

@@ -17,7 +17,8 @@ class GuidedPaths : public SurfacePaths {
     GuidedVertex vertex(const Hit& hit, const Vec3& wo, const Bsdf& bsdf) const {
         const BsdfFlags& flags = bsdf.flags();
         const DirectionalQuadtree* guide = flags.delta ? nullptr : field_.guide_at(hit.point);
-        return {SurfacePaths::vertex(hit, wo, bsdf), flags.transmission, guide, field_.settings().guided_fraction};
+        return {SurfacePaths::vertex(hit, wo, bsdf), flags.transmission, guide,
+                field_.settings().guided_fraction};
     }
 
   private:

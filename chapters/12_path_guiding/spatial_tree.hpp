@@ -34,7 +34,8 @@ class SpatialTree {
     std::size_t leaf_count() const { return leaf_nodes_.size(); }
     const Aabb& bounds() const { return bounds_; }
     std::size_t bytes() const {
-        return sizeof(*this) + nodes_.capacity() * sizeof(Node) + leaf_nodes_.capacity() * sizeof(std::uint32_t);
+        return sizeof(*this) + nodes_.capacity() * sizeof(Node) +
+               leaf_nodes_.capacity() * sizeof(std::uint32_t);
     }
 
   private:
