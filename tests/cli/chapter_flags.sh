@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# chapter_flags.sh CH01_EXECUTABLE ... CH10_EXECUTABLE: the chapters' own flags are read as strictly as the
+# chapter_flags.sh CH01_EXECUTABLE ... CH10_EXECUTABLE CH12_EXECUTABLE: the chapters' own flags are read as strictly as the
 # core ones (strict_flags.hpp): NaN, infinities and partial numbers are refused with exit 2 and one line; a
 # flag that matters only with another is refused without it (only_with.hpp), before anything renders; and a
 # study probes every file it writes before it renders anything (its --csv, its cached references).
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
-ch01=$1 ch02=$2 ch03=$3 ch04=$4 ch05=$5 ch06=$6 ch07=$7 ch08=$8 ch09=$9 ch10=${10}
+ch01=$1 ch02=$2 ch03=$3 ch04=$4 ch05=$5 ch06=$6 ch07=$7 ch08=$8 ch09=$9 ch10=${10} ch12=${11}
 small=(--width 8 --height 4 --spp 1 --quiet)
 real="must be a finite decimal number of magnitude at most 1e30"
 
@@ -27,6 +27,10 @@ check "$ch09" "usage: --tracer: combined not in {auto,paths} (see --help)" "${sm
 # of it is refused before anything renders (--tracer paths renders in pieces).
 check "$ch09" "--samples (or MPI ranks): this scene's caustics are rendered by the combined tracer, which renders whole; --tracer paths renders in pieces" \
     "${small[@]}" --scene cornell.json --samples 0:1 --out out.png
+check "$ch12" "usage: --guided-fraction: $real, got \"nan\" (see --help)" "${small[@]}" --guided-fraction nan
+# Chapter 12's picture of the guide is probed before the training renders.
+check "$ch12" "--guide-picture: missing/g.png: cannot be written: folder missing does not exist" "${small[@]}" \
+    --guide-picture missing/g.png --out out.png
 # Chapter 04's --quad-lights, which chapters 06 to 09 take too, names one of its two strategies.
 for exe in "$ch04" "$ch06" "$ch07" "$ch08" "$ch09"; do
     check "$exe" "usage: --quad-lights: spherical not in {area,solid-angle} (see --help)" "${small[@]}" --quad-lights spherical
@@ -60,6 +64,7 @@ only "$ch08" --study-size --forward-study --study-size 16
 only "$ch09" --caps --knob-study --caps 1 2
 only "$ch09" --study-paths --walk-study --study-paths 10
 only "$ch10" --runs --study --runs 3
+only "$ch12" --guide-at --guide-picture --guide-at 1 2 3
 only "$ch10" --sigma-spatial "--denoiser bilateral or --study, got --denoiser atrous" --denoiser atrous --sigma-spatial 2
 only "$ch10" --levels "--denoiser atrous or --study, got --denoiser bilateral" --denoiser bilateral --levels 3
 only "$ch10" --sigma-colour "--denoiser bilateral or atrous or --study, got --denoiser none" \

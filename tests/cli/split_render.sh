@@ -9,6 +9,8 @@
 # tracer splats light paths, so it refuses --samples with one line (exit 2); its --tracer reverse is split.
 # Chapter 11 (the GPU) sums in float and refuses --samples too.
 # Chapter 10 denoises the whole image: it refuses --samples too, and --denoiser none (its noisy image) is split.
+# Chapter 12's training passes learn from each other: a guided render refuses --samples, --training-passes 0
+# is split.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 pfm_check=$1
@@ -62,6 +64,13 @@ for exe in "$@"; do
                 "$exe" "${size[@]}" --samples $r --out out.png
         done
         args+=(--denoiser none)
+    fi
+    if [[ $name == ch12_* ]]; then
+        for r in 0:2 0:5; do
+            expect_bad_input "$name guided --samples $r" "$name: --samples: each training pass learns" 1 -- \
+                "$exe" "${size[@]}" --samples $r --out out.png
+        done
+        args+=(--training-passes 0)
     fi
     dir="$scratch/$name" && mkdir -p "$dir" && cd "$dir" || exit 1
     render "$name whole" "$exe" "${args[@]}" --out whole.png

@@ -41,6 +41,14 @@ for exe in "$@"; do
     if [[ $name == ch10_* ]]; then
         args+=(--denoiser none)  # chapter 10 denoises only a whole image; its noisy image is split
     fi
+    if [[ $name == ch12_* ]]; then
+        # A guided render's passes learn from each other: it refuses ranks; unguided it is split.
+        "$mpiexec" --oversubscribe -np 2 "$exe" "${size[@]}" --out guided.png > stdout 2> stderr
+        status=$?
+        [ "$status" -eq 2 ] || fail "$name guided under mpirun -np 2: exit status $status, expected 2"
+        [ ! -e guided.png ] || fail "$name guided under mpirun -np 2: wrote guided.png"
+        args+=(--training-passes 0)
+    fi
     "$exe" "${args[@]}" --out whole.png > whole.stdout 2> stderr || fail "$name whole: $(tail -n 2 stderr)"
     for k in 1 2 3; do
         if ! "$mpiexec" --oversubscribe -np "$k" "$exe" "${args[@]}" --out "ranks$k.png" > "ranks$k.stdout" 2> stderr; then

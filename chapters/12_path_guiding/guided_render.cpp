@@ -1,0 +1,106 @@
+#include "guided_render.hpp"
+
+#include <cstdio>
+
+#include "06_monte_carlo/render_paths.hpp"
+#include "07_bsdf_refraction/refraction_materials.hpp"
+#include "guided_tracer.hpp"
+
+namespace rt {
+
+namespace {
+
+std::string megabytes(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g MB", double(bytes) / 1e6);
+    return text;
+}
+
+std::string ray_counts(const RayCounts& rays) {
+    std::string text;
+    for (int k = 0; k < kRayKindCount; ++k) {
+        text += (k > 0 ? ", " : "") + std::string(kRayKindNames[std::size_t(k)]) + " " +
+                std::to_string(rays.count[std::size_t(k)]);
+    }
+    return text;
+}
+
+// The scene's box: its BVH's root, or the camera's surroundings where only planes fill it.
+Aabb scene_box(const World& world, const Vec3& eye) {
+    const auto& nodes = world.bvh().nodes();
+    if (!nodes.empty()) return nodes.front().box();
+    return {eye - Vec3(1), eye + Vec3(1)};
+}
+
+}  // namespace
+
+std::uint64_t training_seed(std::uint64_t seed, int pass) {
+    return seed + 0x9E3779B97F4A7C15ull * std::uint64_t(pass + 1);
+}
+
+GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& camera,
+                           const RenderSettings& settings, const PathOptions& options,
+                           const GuidedRenderOptions& guided, const TrainedField& trained) {
+    const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
+    GuidingField field(guiding_bounds(scene_box(prepared.world, camera.eye), camera.eye), guided.field);
+    GuidedRender out;
+    double training_seconds = 0;
+    RayCounts training_rays;
+    for (int k = 0; k < guided.training_passes; ++k) {
+        RenderSettings pass = settings;
+        pass.samples_per_pixel = 1 << k;
+        pass.seed = training_seed(settings.seed, k);
+        pass.progress = ProgressStyle::kNone;
+        pass.observer = nullptr;
+        const RenderResult r = render_paths(GuidedTracer(tracer, field, true), camera, pass);
+        field.finish_pass();
+        out.passes.push_back({pass.samples_per_pixel, r.seconds, r.rays, field.leaf_count(), field.bytes()});
+        training_seconds += r.seconds;
+        training_rays += r.rays;
+    }
+    if (trained) trained(field, tracer);
+    out.result = render_paths(GuidedTracer(tracer, field, false), camera, settings);
+    out.result.seconds += training_seconds;
+    out.result.rays += training_rays;
+    out.bytes = field.bytes();
+    return out;
+}
+
+GuidedRender render_guided(const Scene& scene, const EffectSet& simulated, const RenderSettings& settings,
+                           PathOptions options, const GuidedRenderOptions& guided,
+                           const TrainedField& trained) {
+    options.simulated = simulated;
+    const RenderScene prepared(scene, simulated, refraction_materials());
+    const PinholeCamera camera = make_pinhole_camera(scene.camera, settings.width, settings.height);
+    return render_guided(prepared, camera, settings, options, guided, trained);
+}
+
+std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedRenderOptions& guided) {
+    std::vector<std::string> notes;
+    const GuidingSettings& f = guided.field;
+    if (render.passes.empty()) {
+        notes.push_back("guiding: no training pass: chapter 06's paths, unguided");
+        return notes;
+    }
+    char text[320];
+    std::snprintf(
+        text, sizeof text,
+        "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
+        "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
+        "<= %d",
+        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold,
+        f.max_depth);
+    notes.push_back(text);
+    for (std::size_t k = 0; k < render.passes.size(); ++k) {
+        const TrainingPass& p = render.passes[k];
+        std::snprintf(text, sizeof text,
+                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s; rays: ", k + 1,
+                      p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str());
+        notes.push_back(text + ray_counts(p.rays));
+    }
+    notes.push_back("guiding trees' memory: " + megabytes(render.bytes) +
+                    "; the time and rays below include the training passes");
+    return notes;
+}
+
+}  // namespace rt
