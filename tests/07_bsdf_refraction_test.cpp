@@ -296,16 +296,18 @@ TEST_CASE("The dielectric chooses each lobe by its share of the energy and its w
             if (s.lobe == DielectricLobe::kReflection) {
                 ++reflected;
                 CHECK(glm::length(s.wi - Vec3(-wo.x, -wo.y, wo.z)) < 1e-6f);
-                sum_r += s.weight.r, sum_r2 += double(s.weight.r) * s.weight.r;
+                sum_r += s.weight.r;
+                sum_r2 += double(s.weight.r) * s.weight.r;
             } else {
                 CHECK(s.wi.z < 0);
-                sum_t += s.weight.r, sum_t2 += double(s.weight.r) * s.weight.r;
+                sum_t += s.weight.r;
+                sum_t2 += double(s.weight.r) * s.weight.r;
             }
         }
         INFO("eta " << eta << ", R " << R);
         // Binomial: σ = √(n R (1 − R)); 5σ. The means: 5 standard errors, and a float's rounding.
         const double sigma = std::sqrt(n * R * (1 - R));
-        const auto error = [n](double sum, double sum2) {
+        const auto tolerance = [n](double sum, double sum2) {
             return 5 * std::sqrt(std::max(0.0, sum2 / n - (sum / n) * (sum / n)) / n) + 1e-6;
         };
         {
@@ -315,13 +317,13 @@ TEST_CASE("The dielectric chooses each lobe by its share of the energy and its w
         {
             INFO("the mean weight of reflections over all samples is " << sum_r / n << ", not R: the weight of a "
                  "reflection is wrong");
-            CHECK(std::abs(sum_r / n - R) < error(sum_r, sum_r2));
+            CHECK(std::abs(sum_r / n - R) < tolerance(sum_r, sum_r2));
         }
         {
             const double expected = (1 - R) / (double(eta) * eta);
             INFO("the mean weight of transmissions over all samples is " << sum_t / n << ", not T / eta^2 = "
                  << expected << ": the weight of a transmission is wrong");
-            CHECK(std::abs(sum_t / n - expected) < error(sum_t, sum_t2));
+            CHECK(std::abs(sum_t / n - expected) < tolerance(sum_t, sum_t2));
         }
     }
 }

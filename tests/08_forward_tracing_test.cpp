@@ -705,16 +705,16 @@ TEST_CASE("A connection's splat falls with the square of the distance and follow
     const StudyScene s(load_scene(scene_path("ch06_default.json")), 8, 8);
     const ForwardTracer tracer_f(s, EffectSet::all());
     const LambertBrdf lambert{Color(0.5f)};
-    const auto splat = [&](Real distance, Real tilt) {
+    const auto splat_of = [&](Real distance, Real tilt) {
         Image film(8, 8);
         RayCounts rays;
         Hit hit;
         hit.point = s.camera.eye + distance * s.camera.forward;
         hit.normal = std::cos(tilt) * -s.camera.forward + std::sin(tilt) * s.camera.right;
         tracer_f.tracer.connect(hit, hit.normal, lambert, Color(1), film, rays);
-        return double(film.mean());
+        return film.mean();
     };
-    const double near = splat(100, 0), far = splat(200, 0), tilted = splat(100, Real(kPi / 3));
+    const double near = splat_of(100, 0), far = splat_of(200, 0), tilted = splat_of(100, Real(kPi / 3));
     REQUIRE(near > 0);
     {
         INFO("twice as far, the splat is " << near / far << " times smaller, not 4: the square of the distance");
