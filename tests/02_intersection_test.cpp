@@ -88,6 +88,24 @@ TEST_CASE("Quads are hit inside their parallelogram with coordinates a and b", "
                                kInfinity));  // degenerate
 }
 
+TEST_CASE("A quad hit's coordinates rebuild the hit point on slanted, stretched quads",
+          "[quad][ex:ch02.quad]") {
+    // Whatever the derivation, (a, b) are the point's coordinates: Q + a u + b v is the hit point. Edges neither
+    // unit nor at right angles, so a projection on u or v alone, or a missing 1 / (n · n), is off.
+    const Quad quad = make_quad({1, -2, 3}, {3, 1, -0.5f}, {1.5f, 2.5f, 1});
+    Pcg32 rng(21, 4);
+    int wrong = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Vec2 ab = rng.next_vec2();
+        const Vec3 target = quad.origin + ab.x * quad.u + ab.y * quad.v;
+        const Vec3 origin = target + (random_unit(rng) + quad.normal * Real(1.5)) * Real(4);
+        const auto hit = intersect_quad(Ray{origin, glm::normalize(target - origin)}, quad, kInfinity);
+        if (!hit || std::abs(hit->ab.x - ab.x) > 1e-4f || std::abs(hit->ab.y - ab.y) > 1e-4f) ++wrong;
+    }
+    INFO("hits whose (a, b) are not the point's coordinates: Q + a u + b v is not the hit point");
+    CHECK(wrong == 0);
+}
+
 TEST_CASE("Planes are hit from either side and never by a parallel ray", "[plane][ex:ch02.plane]") {
     const Plane plane = make_plane({0, -1, 0}, {0, 2, 0});
     CHECK(plane.normal == Vec3{0, 1, 0});
@@ -163,7 +181,7 @@ TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane,
 TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it, and a box behind is missed",
           "[bvh][ex:ch02.slab_test]") {
     // The box's own corner and edge points, from random origins far and near: the three slabs' distances are
-    // rounded apart, and only the exit's enlargement by 1 + 2γ₃ keeps the entry before it.
+    // rounded apart, and only widening entry and exit by their rounding bound keeps the entry before the exit.
     Pcg32 rng(17, 3);
     int missed = 0, rays = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -185,8 +203,42 @@ TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges ente
         // The same box behind the origin.
         if (slab_entry(box, Ray{origin, -d}, inverse_direction(-d), kInfinity) != kInfinity) ++missed;
     }
-    INFO(rays << " rays");
+    INFO(rays << " rays; a miss of a point on the box's surface: the slab distances' rounding is not covered");
     CHECK(missed == 0);
+}
+
+TEST_CASE("The slab test's widening stays within rounding: clear misses miss and the entry is near the exact one",
+          "[bvh][ex:ch02.slab_test]") {
+    // Any correct bound is a few γₙ: a ray passing a box a thousandth of its size away misses it, and the entry
+    // distance is the exact one (in double) to a relative 10⁻⁵.
+    Pcg32 rng(23, 5);
+    int too_loose = 0, entry_off = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 lo = (Vec3{rng.next_real(), rng.next_real(), rng.next_real()} - Real(0.5)) * Real(200);
+        const Real size = Real(0.5) + rng.next_real() * Real(10);
+        const Aabb box{lo, lo + Vec3{size}};
+        // A line past the edge x = max, y = max by 10⁻³ of the box, square to the edge's diagonal (1, 1, 0): on
+        // it x + y stays above max.x + max.y, so it misses the box.
+        const Vec3 past = box.max + Vec3{1, 1, 0} * (size * Real(1e-3));
+        const Vec3 along = glm::normalize(Vec3{1, -1, 0} * (rng.next_real() - Real(0.5)) +
+                                          Vec3{0, 0, 1} * (rng.next_real() - Real(0.5)));
+        const Vec3 start = past - along * Real(20 + rng.next_real() * 100);
+        if (is_finite(along) && slab_entry(box, Ray{start, along}, inverse_direction(along), kInfinity) < kInfinity)
+            ++too_loose;
+        const Vec3 origin = box.center() + random_unit(rng) * Real(20 + rng.next_real() * 100);
+        const Vec3 d = glm::normalize(box.center() - origin);
+        const Real t = slab_entry(box, Ray{origin, d}, inverse_direction(d), kInfinity);
+        double exact = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            const double face = d[axis] > 0 ? box.min[axis] : box.max[axis];
+            exact = std::max(exact, (face - double(origin[axis])) / double(d[axis]));
+        }
+        if (!(std::abs(double(t) - exact) <= 1e-5 * exact)) ++entry_off;
+    }
+    INFO("boxes entered by a ray that clearly misses them, or entries far from the exact distance: a widening "
+         "larger than the rounding can be");
+    CHECK(too_loose == 0);
+    CHECK(entry_off == 0);
 }
 
 TEST_CASE("Both triangle tests agree on a plain triangle and give barycentrics",

@@ -233,7 +233,14 @@ TEST_CASE("The mirror is a delta: light samples see 0, its one direction reflect
     CHECK(s.delta);
     CHECK(s.wi.x == Approx(-wo.x));
     CHECK(s.wi.z == Approx(wo.z));
-    CHECK(s.f.r * s.wi.z / s.pdf == Approx(0.9));  // the reflected fraction is the reflectance, <= 1
+    // The reflected fraction is the reflectance, <= 1, at every angle (a grazing one too).
+    for (const Real degrees : {0.0f, 20.0f, 45.0f, 70.0f, 89.0f}) {
+        const Vec3 w = polar(radians(degrees));
+        const BsdfSample t = sample(mirror, w, kUp, Vec2(0.5f));
+        INFO("wo at " << degrees << " degrees: the weight f cos theta_i / pdf must be the reflectance R (a "
+                                    "factor of the delta's f missing or extra)");
+        CHECK(t.f.r * t.wi.z / t.pdf == Approx(0.9));
+    }
 }
 
 TEST_CASE("Every BRDF is 0 when wo or wi is below the surface, even inside its lobe",

@@ -2,6 +2,7 @@
 // unbiasedness), the furnace's closed forms against the recursive trace for several albedos and depths,
 // emission counted exactly once, mirror reflection (direction and energy), two mirrors facing each other,
 // grazing rays, ray counts by effect, and the default scene end to end.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
@@ -157,9 +158,23 @@ TEST_CASE("The throughput rule stops below its threshold, and at the cap",
     CHECK_FALSE(continue_path(s, 10, beta, 0.0f));  // the hard cap
 }
 
-TEST_CASE("Russian roulette survives with probability min(1, max throughput) and stays unbiased",
+TEST_CASE("Russian roulette stays unbiased and weights a survivor's largest channel up to 1",
           "[termination][statistical][ex:ch05.termination]") {
     const TerminationSettings s = rule(Termination::kRussianRoulette, 64, Real(0.01), 3);
+    for (const Color& beta : {Color(0.3f, 0.12f, 0.06f), Color(0.02f, 0.9f, 0.5f), Color(0.3f, 1.7f, 0.2f)}) {
+        const Real q = survival_probability(s, 5, beta);
+        INFO("throughput (" << beta.r << ", " << beta.g << ", " << beta.b << "): q = " << q);
+        {
+            INFO("q is not a probability: it must lie in [0, 1]");
+            CHECK((q >= 0 && q <= 1));
+        }
+        Color survivor = beta;
+        if (continue_path(s, 5, survivor, 0.0f)) {
+            INFO("a survivor's largest channel must be weighted up to 1 (or left alone when it is 1 or more)");
+            CHECK(std::max({survivor.r, survivor.g, survivor.b}) ==
+                  Approx(std::max(Real(1), std::max({beta.r, beta.g, beta.b}))));
+        }
+    }
     // Before the start depth, and for q >= 1, it never kills and never rescales.
     for (int depth = 0; depth < 3; ++depth) {
         Color beta(0.01f);
@@ -181,7 +196,11 @@ TEST_CASE("Russian roulette survives with probability min(1, max throughput) and
         CHECK(beta.r == Approx(1.0));
         return double(beta.g);
     });
-    CHECK(std::abs(mean.mean - 0.12) <= 4 * mean.error);
+    {
+        INFO("E[beta'] = " << mean.mean << ", not beta = 0.12: the survivors' weight does not make up for the "
+                                           "stopped paths (biased)");
+        CHECK(std::abs(mean.mean - 0.12) <= 4 * mean.error);
+    }
     const double rate = double(survived) / kTrials;
     CHECK(std::abs(rate - 0.3) <= 4 * std::sqrt(0.3 * 0.7 / kTrials));
     // The cap ends it whatever the throughput; a black or NaN throughput ends it at once.

@@ -168,10 +168,14 @@ TEST_CASE("A scene point projects back to the film point its camera ray came thr
             const Ray ray = camera_ray(camera, px, py);
             const auto p = project_point(camera, ray.at(7.5f));
             REQUIRE(p);
-            CHECK(p->px == Approx(px).margin(1e-3));
-            CHECK(p->py == Approx(py).margin(1e-3));
-            CHECK(p->x == int(px));
-            CHECK(p->y == int(py));
+            {
+                INFO("the film point is not the one the camera ray came through: film_direction not inverted");
+                CHECK(p->px == Approx(px).margin(1e-3));
+                CHECK(p->py == Approx(py).margin(1e-3));
+                CHECK(p->x == int(px));
+                CHECK(p->y == int(py));
+            }
+            INFO("cos theta_c is not the cosine between the direction and the camera's axis");
             CHECK(p->cos_theta == Approx(glm::dot(ray.direction, camera.forward)).epsilon(1e-5));
         }
     }
@@ -196,7 +200,11 @@ TEST_CASE("The pinhole importance integrates to 1 over a pixel: a pixel of radia
                 double(pinhole_importance(camera, p->cos_theta) * p->cos_theta) * 4 * std::numbers::pi;
         }
     }
-    for (double s : sums) CHECK(s / kSamples == Approx(1).epsilon(0.03));
+    for (std::size_t j = 0; j < sums.size(); ++j) {
+        INFO("pixel " << j << ": the integral of We cos theta_c over the pixel is " << sums[j] / kSamples
+                      << ", not 1: the importance is not normalised");
+        CHECK(sums[j] / kSamples == Approx(1).epsilon(0.03));
+    }
 }
 
 TEST_CASE("Lights are picked by power, and the light paths' starting throughput sums to the emitted power",
@@ -687,6 +695,33 @@ TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing an
     CHECK(inside->x == 7);
     CHECK_FALSE(project_direction(c, Vec3(0)));
     CHECK(std::isfinite(pinhole_importance(c, 1e-3f)));
+}
+
+TEST_CASE("A connection's splat falls with the square of the distance and follows the cosine at the vertex",
+          "[ch08][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+    // Vertices on the camera's axis, in front of the box, facing the eye or tilted by 60 degrees: whatever
+    // form the geometry term takes, the splat of the same vertex at twice the distance is 4 times smaller, and
+    // tilted it is cos 60 = 1/2 of facing (a Lambert surface's f is the same both ways).
+    const StudyScene s(load_scene(scene_path("ch06_default.json")), 8, 8);
+    const ForwardTracer tracer_f(s, EffectSet::all());
+    const LambertBrdf lambert{Color(0.5f)};
+    const auto splat_of = [&](Real distance, Real tilt) {
+        Image film(8, 8);
+        RayCounts rays;
+        Hit hit;
+        hit.point = s.camera.eye + distance * s.camera.forward;
+        hit.normal = std::cos(tilt) * -s.camera.forward + std::sin(tilt) * s.camera.right;
+        tracer_f.tracer.connect(hit, hit.normal, lambert, Color(1), film, rays);
+        return film.mean();
+    };
+    const double near = splat_of(100, 0), far = splat_of(200, 0), tilted = splat_of(100, Real(kPi / 3));
+    REQUIRE(near > 0);
+    {
+        INFO("twice as far, the splat is " << near / far << " times smaller, not 4: the square of the distance");
+        CHECK(near / far == Approx(4).epsilon(1e-4));
+    }
+    INFO("tilted by 60 degrees, the splat is " << tilted / near << " of facing, not 1/2: the cosine at the vertex");
+    CHECK(tilted / near == Approx(0.5).epsilon(1e-4));
 }
 
 // ---------------------------------------------------------------------------------------------------------

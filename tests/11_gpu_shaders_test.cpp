@@ -165,22 +165,37 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
     for (const std::uint64_t seed :
          {std::uint64_t(0), std::uint64_t(1), std::uint64_t(0x8000000000000005ull)}) {
         const std::vector<ProbeRandom> gpu = probe.random_numbers(queries, seed);
-        std::size_t words_differ = 0, reals_differ = 0;
+        std::size_t words_differ = 0, reals_differ = 0, outside = 0, inexact = 0, odd = 0;
         for (std::size_t i = 0; i < queries.size(); ++i) {
             Pcg32 cpu = Pcg32::for_sample(queries[i].pixel, queries[i].sample, seed);
             for (int k = 0; k < 4; ++k)
                 words_differ += cpu.next_uint() != gpu[i].words[std::size_t(k)] ? 1 : 0;
             for (int k = 0; k < 4; ++k) {
                 const float expected = float(cpu.next_real());
-                reals_differ += std::bit_cast<std::uint32_t>(expected) !=
-                                        std::bit_cast<std::uint32_t>(gpu[i].reals[std::size_t(k)])
-                                    ? 1
-                                    : 0;
+                const float real = gpu[i].reals[std::size_t(k)];
+                reals_differ += std::bit_cast<std::uint32_t>(expected) != std::bit_cast<std::uint32_t>(real) ? 1 : 0;
+                // The properties every right answer has: in [0, 1), a whole number of 2^-24 (exact), and all 24
+                // bits used (about half the numbers odd multiples of 2^-24).
+                const double scaled = std::ldexp(double(real), 24);
+                outside += real >= 0 && real < 1 ? 0 : 1;
+                inexact += scaled == std::floor(scaled) ? 0 : 1;
+                odd += std::fmod(scaled, 2.0) == 1.0 ? 1 : 0;
             }
         }
-        INFO("seed " << seed);
+        const std::size_t reals = 4 * queries.size();
+        INFO("seed " << seed << ", " << reals << " numbers");
         CHECK(words_differ == 0);
-        CHECK(reals_differ == 0);
+        const auto check_none = [](std::size_t count, const char* kind) {
+            INFO(count << " numbers " << kind);
+            CHECK(count == 0);
+        };
+        check_none(outside, "outside [0, 1)");
+        check_none(inexact, "not exact (rounded: more bits than a float holds)");
+        {
+            INFO(odd << " odd multiples of 2^-24: fewer than 24 bits kept");
+            CHECK(odd > reals / 4);
+        }
+        check_none(reals_differ, "differ from the C++ numbers");
     }
 }
 

@@ -51,11 +51,12 @@ inline Vec3 inverse_direction(const Vec3& d) {
 // A direction component d_i = ±0 never reaches 1 / d_i: the ray is parallel to slab i and stays inside it
 // (min_i <= o_i <= max_i, faces included) or outside it for ever, whatever the zero's sign. A subnormal d_i
 // (below 1.2e-38) has an infinite 1 / d_i in float: its slab is computed in double, where the quotient is
-// finite. A ray starting inside the box enters at t = 0. The exit distance is enlarged by 1 + 2γ₃ (PBRT 4
-// §6.8) and the entry shrunk by 1 − 2γ₃, and both by the smallest float (a product below float's normal
-// range is rounded to a multiple of it, not to a relative error), so rounding never culls a surface lying
-// on the box, neither against the exit nor against a t_max that is the rounded distance of a hit on the same
-// plane; a box of zero thickness (min_i = max_i) is entered and left at one t.
+// finite. A ray starting inside the box enters at t = 0. The entry and exit are widened by the bound on
+// their rounding (in units of γₙ, float_error.hpp; PBRT 4 §6.8, derived in the lesson) and by what rounding
+// does below float's normal range (there a product is rounded to a multiple of the smallest float, not to a
+// relative error), so rounding never culls a surface lying on the box, neither against the exit nor against
+// a t_max that is the rounded distance of a hit on the same plane; a box of zero thickness (min_i = max_i)
+// is entered and left at one t.
 inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, Real t_max) {
     // EXERCISE(ch02.slab_test) § Bounding boxes and the BVH
     constexpr Real kGamma3 = gamma_bound(3);

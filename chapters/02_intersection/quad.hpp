@@ -1,7 +1,7 @@
 // Ray–quad intersection. The parallelogram Q + a u + b v (a, b in [0, 1]) lies in the plane with normal
-// n = u × v; the ray meets that plane at t = n · (Q − o) / (n · d), and with p = o + t d and w = n / (n · n),
-// a = w · ((p − Q) × v) = (p − Q) · (v × w) and b = w · (u × (p − Q)) = (p − Q) · (w × u): the vectors v × w and
-// w × u are computed once per quad.
+// n = u × v. The ray meets that plane where its point satisfies the plane's equation; the hit's coordinates
+// (a, b) solve q = a u + b v for q = p − Q (the lesson derives them with cross products). make_quad computes
+// once per quad the two vectors that turn q into a and b.
 #pragma once
 
 #include <optional>
@@ -16,8 +16,8 @@ struct Quad {
     Vec3 u{1, 0, 0};
     Vec3 v{0, 1, 0};
     Vec3 normal{0, 0, 1};  // unit u × v: the front side
-    // The dual basis of (u, v) in the quad's plane: a = q · a_axis, b = q · b_axis for q = p − Q, where
-    // a_axis = v × w and b_axis = w × u with w = n / (n · n) (zero for a degenerate quad).
+    // The dual basis of (u, v) in the quad's plane (a_axis · u = 1, a_axis · v = 0, b_axis likewise), zero
+    // for a degenerate quad.
     Vec3 a_axis{1, 0, 0};
     Vec3 b_axis{0, 1, 0};
 };

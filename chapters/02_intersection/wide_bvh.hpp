@@ -56,8 +56,8 @@ WideRay make_wide_ray(const Ray& ray);
 // slab_entry (aabb.hpp) on the node's four boxes at once: each box's entry distance on [0, t_max], or +∞
 // where the ray misses it. With every 1 / d_i finite, the slab along i is entered at the lower face when
 // d_i > 0 and the upper one when d_i < 0 (ordering by the direction's sign replaces slab_entry's swap), and
-// each lane does slab_entry's operations in its order, with its conservative rounding (exit enlarged by
-// 1 + 2γ₃, entry shrunk by 1 − 2γ₃): the same distances, bit for bit. A ray with a zero or subnormal d_i
+// each lane does slab_entry's operations in its order, with its conservative widening of entry and exit:
+// the same distances, bit for bit. A ray with a zero or subnormal d_i
 // takes slab_entry itself, box by box.
 inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real t_max) {
     namespace stdx = std::experimental;
@@ -73,8 +73,8 @@ inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real 
     constexpr Real kGamma3 = gamma_bound(3);
     constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
     // The nearest exit and the farthest entry of the three slabs, as they are computed; the rounding
-    // margins are applied once, after the max and the min: x ↦ x (1 − 2γ₃) − s and x ↦ x (1 + 2γ₃) + s are
-    // rounded monotone functions, so max_i of them is them of max_i, bit for bit (and min alike).
+    // margins are applied once, after the max and the min: each widening is a rounded monotone function, so
+    // max_i of it is it of max_i, bit for bit (and min alike).
     BoxLanes t_near_max = 0, t_far_min = kInfinity;
     for (int i = 0; i < 3; ++i) {
         const auto& near = node.corner[r.near_corner[i]][i];

@@ -26,8 +26,8 @@ Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, c
     // END EXERCISE
 }
 
-// The mirror's one direction wi = r(wo), with f = R / cos θ_i and pdf 1 (a delta), so that f cos θ_i / pdf =
-// R; nothing (f = 0) when r(wo) is not above the surface.
+// The mirror's one direction wi = r(wo), pdf 1 (a delta), and the f for which the sample's weight
+// f cos θ_i / pdf is the reflectance R; nothing (f = 0) when r(wo) is not above the surface.
 BsdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n) {
     // EXERCISE(ch04.mirror) § Four BRDFs
     BsdfSample s;

@@ -4,8 +4,8 @@
 //                    Le ρ^(N+1) / (1 − ρ) in a furnace of albedo ρ.
 //  - min throughput: stop when max(β) < β_min ("too dim to matter"). Still biased: the dim paths it drops
 //                    carried light, and many dim paths add up.
-//  - Russian roulette: from bounce d₀ on, go on with probability q = min(1, max(β)) and divide β by q when
-//                    going on: E[β'] = q · β / q + (1 − q) · 0 = β, so the estimate stays unbiased.
+//  - Russian roulette: from bounce d₀ on, go on with a probability q that falls with max(β), and weight a
+//                    survivor so that the mean weight E[β'] over surviving and stopping is β: unbiased.
 // max_depth is a hard cap for every rule, so a path between two perfect mirrors ends too.
 #pragma once
 
@@ -36,12 +36,12 @@ inline constexpr int kSafetyDepthCap = 64;
 
 // The probability q that a path with throughput β at `depth` (bounces made so far) bounces on:
 // 0 at or past max_depth, or when β is zero or not finite; otherwise max depth: 1; min throughput: 1 if
-// max(β) >= β_min, else 0; Russian roulette: 1 before roulette_start_depth, then min(1, max(β)).
+// max(β) >= β_min, else 0; Russian roulette: 1 before roulette_start_depth, then the probability for which
+// a survivor's largest channel is weighted up to exactly 1, and a path of max(β) >= 1 always goes on.
 Real survival_probability(const TerminationSettings& settings, int depth, const Color& throughput);
 
-// Whether a path at `depth` bounces on; with Russian roulette, survival probability q = min(1, max component
-// of throughput), and on survival throughput /= q (unbiased). `u` is a uniform random number in [0, 1).
-// In general: it goes on when u < q (q from survival_probability), and then β /= q when q < 1.
+// Whether a path at `depth` bounces on: it goes on when u < q (q from survival_probability; `u` a uniform
+// random number in [0, 1)), and a survivor's throughput is then rescaled so that E[β'] = β.
 // q is judged on throughput × `judged_scale` (chapter 06's path loop hands in the η² of the glass a path is
 // in, PBRT's η-scale, so that refraction's 1/η² does not end paths inside glass sooner); any q > 0 keeps the
 // estimate unbiased, E[β'] = β.

@@ -1,11 +1,11 @@
-// The smooth dielectric BSDF = BRDF + BTDF: a delta lobe along the mirror direction r(wo) with weight R and a
-// delta lobe along the refracted direction wt with weight T = 1 − R (R the exact Fresnel reflectance). It is
-// sampled by choosing reflection with probability R and transmission with probability T, so each choice's
-// f cos θ / pdf is R / R = 1 and T / T = 1: the Fresnel factor becomes the choice, not a weight.
-// Radiance across the interface: L / η² is what is conserved along a ray through a lossless interface, so
-// radiance from the far side arrives multiplied by (η_i / η_t)² = 1 / η²: a camera path crossing into glass
-// (η = 1.5) carries weight 1 / 2.25 and crossing out 2.25 (these cancel on a path that goes in and out).
-// Light paths (chapter 08) carry importance, which does not scale: the BTDF is not symmetric.
+// The smooth dielectric BSDF = BRDF + BTDF: a delta lobe along the mirror direction r(wo) that reflects the
+// fraction R and a delta lobe along the refracted direction wt that transmits T = 1 − R (R the exact Fresnel
+// reflectance). It is sampled by choosing reflection with probability R and transmission with probability T,
+// each choice weighted by its f cos θ / pdf (the lesson derives them): the Fresnel factor becomes the choice.
+// Radiance across the interface: L / η² is what is conserved along a ray through a lossless interface, so a
+// camera path crossing into glass scales what it brings back (and the inverse crossing out: they cancel on a
+// path that goes in and out). Light paths (chapter 08) carry importance, which does not scale: the BTDF is
+// not symmetric.
 #pragma once
 
 #include "04_direct_lighting/bsdf.hpp"
@@ -16,15 +16,15 @@ namespace rt {
 
 // What a path carries: radiance (from the camera, chapters 04–07) or importance (from the lights, chapter
 // 08, which builds its material table with refraction_materials(Transport::kImportance)). A BSDF that
-// refracts treats them differently: radiance crossing an interface scales by 1 / η², importance does not
-// (the BTDF is not symmetric).
+// refracts treats them differently: radiance crossing an interface scales, importance does not (the BTDF is
+// not symmetric).
 enum class Transport { kRadiance, kImportance };
 
 enum class DielectricLobe { kReflection, kTransmission };
 
 struct DielectricSample {
     Vec3 wi{0, 0, 1};  // unit
-    Color weight{1};   // f cos θ_i / pdf: 1 for reflection, 1 / η² for transmission
+    Color weight{1};   // f cos θ_i / pdf of the lobe chosen, pdf its probability (the lesson derives it)
     DielectricLobe lobe = DielectricLobe::kReflection;
     Real probability = 1;  // of the lobe chosen: R or T
 };

@@ -4,9 +4,10 @@
 // use −cos θ_i and 1 / η (the normal and the ratio flip together).
 // Snell's law gives the transmitted angle: sin θ_t = sin θ_i / η; when sin θ_t >= 1 nothing is transmitted
 // (total internal reflection, possible only for η < 1, i.e. leaving the denser medium).
-//   exact (Fresnel, unpolarized light):  r_par  = (η cos θ_i − cos θ_t) / (η cos θ_i + cos θ_t),
-//                                        r_perp = (cos θ_i − η cos θ_t) / (cos θ_i + η cos θ_t),
-//                                        R = (r_par² + r_perp²) / 2,  T = 1 − R.
+//   exact (Fresnel, unpolarized light):  r_perp = −sin(θ_i − θ_t) / sin(θ_i + θ_t),
+//                                        r_par  = tan(θ_i − θ_t) / tan(θ_i + θ_t),
+//                                        R = (r_par² + r_perp²) / 2,  T = 1 − R; the code uses their form in
+//                                        cos θ_i, cos θ_t and η (the lesson derives it).
 //   conductor (complex index η + i k, unpolarized; pbrt-v4's FrComplex): the same exact formula with the
 //                                        complex index: sin² θ_t = sin² θ_i / (η + i k)², cos θ_t its complex
 //                                        square root, R = (|r_par|² + |r_perp|²) / 2. Nothing is transmitted

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""lesson_lint.py's own tests: what it flags and what it leaves alone, and its exit code on a small tree."""
+"""lesson_lint.py's own tests: what it flags and what it leaves alone, what counts as measurement, and its exit
+code on a small tree."""
 
 import sys
 import tempfile
@@ -29,8 +30,32 @@ CLEAN = [
 ]
 
 
+# Blocks and the measurement words each holds (0: not measurement).
+MEASUREMENT = {
+    "The render takes 4.66 s on two threads.": 8,
+    "Light sampling is 63× more efficient here.": 7,
+    "It loses 5.1 % of the light.": 7,
+    "- roulette's mean is within 0.3% of the reference": 9,
+    "```\nrender 1.10 s, denoise 0.02 s\n```": 8,
+    "| spp | RMSE |\n|---|---|\n| 1 | 0.249 |\n| 4 | 0.125 |": 16,
+    "A 200×200 image, 16 samples per pixel.": 0,
+    "The test fails below the 1 % level.": 0,
+    "A chi-square test of 20 000 samples.": 0,
+    "| code | what |\n|---|---|\n| `a.cpp` | the sampler |": 0,
+    "```\nch07_bsdf_refraction --spp 16 --out glass.png\n```": 0,
+}
+
+
 def main() -> int:
     failures = []
+    for text, words in MEASUREMENT.items():
+        found = lesson_lint.measurement_words(text)
+        if found != words:
+            failures.append(f"measurement words of {text!r}: {found}, expected {words}")
+    # Blocks are counted apart: a measured paragraph does not make its neighbours measurement.
+    two = "Plain words of teaching here.\n\nIt ran in 3 s."
+    if lesson_lint.measurement_words(two) != 5:
+        failures.append(f"a blank line does not separate blocks: {lesson_lint.measurement_words(two)} words")
     for text, what in FLAGGED.items():
         found = [w for _, w, _ in lesson_lint.lesson_flags(text)]
         if what not in found:
@@ -48,6 +73,14 @@ def main() -> int:
         lesson.write_text("word " * (lesson_lint.MAX_WORDS + 1), encoding="utf-8")
         if lesson_lint.main(["lesson_lint", root]) != 1:
             failures.append("a lesson over the budget passes")
+        # 85 words of teaching and 15 of measurement: exactly the share allowed; one more measured word fails.
+        teaching = "word " * 85
+        lesson.write_text(teaching + "\n\nrender " + "took " * 12 + "2.5 s\n", encoding="utf-8")
+        if lesson_lint.main(["lesson_lint", root]) != 0:
+            failures.append("a lesson of exactly 15 % measurement fails")
+        lesson.write_text(teaching + "\n\nrender " + "took " * 13 + "2.5 s\n", encoding="utf-8")
+        if lesson_lint.main(["lesson_lint", root]) != 1:
+            failures.append("a lesson over 15 % measurement passes")
     for failure in failures:
         print("FAIL:", failure)
     print("OK" if not failures else f"{len(failures)} failures")
