@@ -68,9 +68,10 @@ Hit hit_facing_up() {
 }
 
 // Chapter 06's paths on `scene` (the effects chapter 06 simulates for it), guided after `passes` training
-// passes; `spatial` is the spatial tree's threshold c.
+// passes; `spatial` is the spatial tree's threshold c, `combination` what the image is made of.
 GuidedRender render_guided_scene(const Scene& scene, int size, int spp, std::uint64_t seed, int threads,
-                                 int passes, double spatial = 12000) {
+                                 int passes, double spatial = 12000,
+                                 PassCombination combination = PassCombination::kLast) {
     const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
     const RenderScene prepared(scene, simulated);
     PathOptions options;
@@ -80,6 +81,7 @@ GuidedRender render_guided_scene(const Scene& scene, int size, int spp, std::uin
     GuidedRenderOptions guided;
     guided.training_passes = passes;
     guided.field.spatial_threshold = spatial;
+    guided.combination = combination;
     return render_guided(prepared, camera, settings, options, guided);
 }
 
@@ -378,6 +380,36 @@ TEST_CASE("Guided paths keep the white furnace (unguided: nothing scattered to l
     REQUIRE(box.result.image.all_finite());
     // The walls light each other: the guide learned, and drew some continuations.
     CHECK(box.result.image.pixels() != render_unguided(closed_box_scene(), 8, 64, 5, 2).image.pixels());
+    CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
+}
+
+TEST_CASE("Passes combined by inverse variance: each image weighted by 1 / its variance, unmeasured ones left out",
+          "[guiding]") {
+    const auto filled = [](Real value) {
+        Image image(2, 1);
+        for (Color& c : image.pixels()) c = Color(value);
+        return image;
+    };
+    const std::vector<Image> images{filled(1), filled(4), filled(100)};
+    // Weights 1 and 1/3; the third image, of variance 0, is not measured: (1 + 4 / 3) / (1 + 1 / 3) = 1.75.
+    const Image combined = combined_by_variance(images, {1, 3, 0});
+    for (const Color& c : combined.pixels()) CHECK(double(c.g) == Approx(1.75).epsilon(1e-6));
+    CHECK(combined_by_variance(images, {0, 0, 0}).pixels() == images.back().pixels());
+}
+
+TEST_CASE("Combined by inverse variance, the guided closed box keeps L = 1 and each pass of 2+ spp has a variance",
+          "[guiding][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
+    const GuidedRender box =
+        render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kInverseVariance);
+    REQUIRE(box.passes.size() == 3);
+    CHECK(box.passes[0].variance == 0);  // one sample per pixel: no variance to measure
+    CHECK(box.passes[1].variance > 0);
+    CHECK(box.passes[2].variance > 0);
+    REQUIRE(box.result.image.all_finite());
+    CHECK(box.result.image.pixels() != render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3).result.image.pixels());
     CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
 }
 
