@@ -252,6 +252,30 @@ TEST_CASE("The spatial tree splits a leaf past the threshold along alternating a
     CHECK(tree.split(30) == std::vector<std::uint32_t>{0, 1, 2, 3});
 }
 
+TEST_CASE("The stochastic box filter lands records near a leaf's border in the neighbouring leaf too",
+          "[guiding]") {
+    for (const SpatialFilter filter : {SpatialFilter::kNearest, SpatialFilter::kBox}) {
+        GuidingSettings settings;
+        settings.spatial_threshold = 30;
+        settings.spatial_filter = filter;
+        GuidingField field(Aabb{Vec3(0), Vec3(8)}, settings);
+        // Pass 1 splits the box into four leaves, as in the test above: [0, 4] × [0, 4] × [0, 8] holds p.
+        for (int i = 0; i < 100; ++i) field.record(Vec3(0.5f), kLobe, 1);
+        field.record(Vec3(7), kLobe, 1);
+        field.finish_pass();
+        REQUIRE(field.leaf_count() == 4);
+        // Pass 2 records only at p, 0.1 from the border x = 4 (each record's direction its own).
+        const Vec3 p(3.9f, 1, 1);
+        for (int i = 0; i < 200; ++i)
+            field.record(p, glm::normalize(Vec3(Real(i % 17) - 8, Real(i % 13) - 6, 3)), 1);
+        field.finish_pass();
+        CAPTURE(to_string(filter));
+        CHECK(field.guide_at(p) != nullptr);
+        // The leaf beyond the border learned only from the box filter's records.
+        CHECK((field.guide_at(Vec3(5, 1, 1)) != nullptr) == (filter == SpatialFilter::kBox));
+    }
+}
+
 TEST_CASE("A guided vertex's one-sample mixture fits its density by chi-square, and reports that density",
           "[guiding][statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch12.one_sample_mis]") {
     const DirectionalQuadtree guide = trained_tree(kLobe);

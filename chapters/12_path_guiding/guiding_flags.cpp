@@ -23,6 +23,9 @@ void add_guiding_flags(CLI::App& app, GuidedRenderOptions& guided, GuidePictureR
     app.add_option("--energy-threshold", guided.field.energy_threshold,
                    "rho: a quadrant splits past this share of its quadtree's energy")
         ->check(CLI::Range(1e-4, 0.5));
+    add_enum_option(app, guided.field.spatial_filter,
+                    "Where a record lands: its vertex's leaf (nearest), or the leaf of a point drawn from a box "
+                    "of that leaf's size about it (box, Mueller's stochastic box filter)");
     CLI::Option* picture_flag = app.add_option(
         "--guide-picture", picture.file,
         "Write a PNG of the guide learned at --guide-at (left) beside the scattered light arriving there "
