@@ -66,7 +66,8 @@ Image combined_by_variance(const std::vector<Image>& images, const std::vector<d
         if (!(variances[k] > 0)) continue;
         const double w = 1 / variances[k];
         weights += w;
-        for (std::size_t i = 0; i < out.pixel_count(); ++i) out.pixels()[i] += Real(w) * images[k].pixels()[i];
+        for (std::size_t i = 0; i < out.pixel_count(); ++i)
+            out.pixels()[i] += Real(w) * images[k].pixels()[i];
     }
     if (!(weights > 0)) return images.back();
     for (Color& c : out.pixels()) c /= Real(weights);
@@ -93,7 +94,8 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
         pass.seed = training_seed(settings.seed, k);
         pass.progress = ProgressStyle::kNone;
         pass.observer = nullptr;
-        MeasuredRender m = render_measured(GuidedTracer(tracer, field, true), camera, pass, guided.combination);
+        MeasuredRender m =
+            render_measured(GuidedTracer(tracer, field, true), camera, pass, guided.combination);
         const RenderResult& r = m.result;
         field.finish_pass();
         out.passes.push_back(
@@ -104,7 +106,8 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
         variances.push_back(m.variance);
     }
     if (trained) trained(field, tracer);
-    MeasuredRender last = render_measured(GuidedTracer(tracer, field, false), camera, settings, guided.combination);
+    MeasuredRender last =
+        render_measured(GuidedTracer(tracer, field, false), camera, settings, guided.combination);
     out.result = std::move(last.result);
     if (guided.combination == PassCombination::kInverseVariance && !images.empty()) {
         images.push_back(out.result.image);
@@ -139,15 +142,14 @@ std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedR
         "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
         "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
         "<= %d; image: %s",
-        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold,
-        f.max_depth,
+        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold, f.max_depth,
         guided.combination == PassCombination::kLast ? "the last render" : "passes weighted by 1 / variance");
     notes.push_back(text);
     for (std::size_t k = 0; k < render.passes.size(); ++k) {
         const TrainingPass& p = render.passes[k];
         std::snprintf(text, sizeof text,
-                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s, variance %.3g; rays: ",
-                      k + 1, p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str(), p.variance);
+                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s, variance %.3g; rays: ", k + 1,
+                      p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str(), p.variance);
         notes.push_back(text + ray_counts(p.rays));
     }
     notes.push_back("guiding trees' memory: " + megabytes(render.bytes) +

@@ -1,12 +1,11 @@
 // A guided render: training passes of 1, 2, 4, … samples per pixel, each guided by what the passes before it
 // learned and recorded into the guiding field; then the image, with the settings' samples, guided by all of
-// them and recording nothing. The image is the last render's alone, as in Practical Path Guiding (the training
-// images thrown away, the estimate unbiased whatever the guide learned), or every pass's image weighted by the
-// inverse of its measured variance, as Müller's 2019 notes do (the training samples not wasted; the weights,
-// measured from the same samples, bias it slightly).
-// Every pass renders the whole image and records deterministically (fixed-point sums), so the image is the
-// same for any number of threads; but a pass depends on all the passes before it, so a guided render cannot
-// be split into pieces of its samples.
+// them and recording nothing. The image is the last render's alone, as in Practical Path Guiding (the
+// training images thrown away, the estimate unbiased whatever the guide learned), or every pass's image
+// weighted by the inverse of its measured variance, as Müller's 2019 notes do (the training samples not
+// wasted; the weights, measured from the same samples, bias it slightly). Every pass renders the whole image
+// and records deterministically (fixed-point sums), so the image is the same for any number of threads; but a
+// pass depends on all the passes before it, so a guided render cannot be split into pieces of its samples.
 #pragma once
 
 #include <cstddef>
@@ -30,8 +29,8 @@ enum class PassCombination {
 };
 
 constexpr auto names_of(PassCombination) {
-    return enum_names<PassCombination>(
-        "--combine-passes", {{PassCombination::kLast, "last"}, {PassCombination::kInverseVariance, "variance"}});
+    return enum_names<PassCombination>("--combine-passes", {{PassCombination::kLast, "last"},
+                                                            {PassCombination::kInverseVariance, "variance"}});
 }
 
 struct GuidedRenderOptions {

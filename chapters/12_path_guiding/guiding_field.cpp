@@ -21,7 +21,8 @@ namespace {
 // The bits of a vector's three coordinates, mixed into one number.
 std::uint64_t bits_of(const Vec3& v) {
     return std::bit_cast<std::uint64_t>(double(v.x)) * 0x9E3779B97F4A7C15ull ^
-           std::bit_cast<std::uint64_t>(double(v.y)) * 0xC2B2AE3D27D4EB4Full ^ std::bit_cast<std::uint64_t>(double(v.z));
+           std::bit_cast<std::uint64_t>(double(v.y)) * 0xC2B2AE3D27D4EB4Full ^
+           std::bit_cast<std::uint64_t>(double(v.z));
 }
 
 }  // namespace
