@@ -68,9 +68,10 @@ Hit hit_facing_up() {
 }
 
 // Chapter 06's paths on `scene` (the effects chapter 06 simulates for it), guided after `passes` training
-// passes; `spatial` is the spatial tree's threshold c.
+// passes; `spatial` is the spatial tree's threshold c, `combination` what the image is made of.
 GuidedRender render_guided_scene(const Scene& scene, int size, int spp, std::uint64_t seed, int threads,
-                                 int passes, double spatial = 12000) {
+                                 int passes, double spatial = 12000,
+                                 PassCombination combination = PassCombination::kInverseVariance) {
     const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
     const RenderScene prepared(scene, simulated);
     PathOptions options;
@@ -80,6 +81,7 @@ GuidedRender render_guided_scene(const Scene& scene, int size, int spp, std::uin
     GuidedRenderOptions guided;
     guided.training_passes = passes;
     guided.field.spatial_threshold = spatial;
+    guided.combination = combination;
     return render_guided(prepared, camera, settings, options, guided);
 }
 
@@ -250,6 +252,30 @@ TEST_CASE("The spatial tree splits a leaf past the threshold along alternating a
     CHECK(tree.split(30) == std::vector<std::uint32_t>{0, 1, 2, 3});
 }
 
+TEST_CASE("The stochastic box filter lands records near a leaf's border in the neighbouring leaf too",
+          "[guiding]") {
+    for (const SpatialFilter filter : {SpatialFilter::kNearest, SpatialFilter::kBox}) {
+        GuidingSettings settings;
+        settings.spatial_threshold = 30;
+        settings.spatial_filter = filter;
+        GuidingField field(Aabb{Vec3(0), Vec3(8)}, settings);
+        // Pass 1 splits the box into four leaves, as in the test above: [0, 4] × [0, 4] × [0, 8] holds p.
+        for (int i = 0; i < 100; ++i) field.record(Vec3(0.5f), kLobe, 1);
+        field.record(Vec3(7), kLobe, 1);
+        field.finish_pass();
+        REQUIRE(field.leaf_count() == 4);
+        // Pass 2 records only at p, 0.1 from the border x = 4 (each record's direction its own).
+        const Vec3 p(3.9f, 1, 1);
+        for (int i = 0; i < 200; ++i)
+            field.record(p, glm::normalize(Vec3(Real(i % 17) - 8, Real(i % 13) - 6, 3)), 1);
+        field.finish_pass();
+        CAPTURE(to_string(filter));
+        CHECK(field.guide_at(p) != nullptr);
+        // The leaf beyond the border learned only from the box filter's records.
+        CHECK((field.guide_at(Vec3(5, 1, 1)) != nullptr) == (filter == SpatialFilter::kBox));
+    }
+}
+
 TEST_CASE("A guided vertex's one-sample mixture fits its density by chi-square, and reports that density",
           "[guiding][statistical][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch12.one_sample_mis]") {
     const DirectionalQuadtree guide = trained_tree(kLobe);
@@ -350,7 +376,8 @@ TEST_CASE("Guided paths keep the white furnace (unguided: nothing scattered to l
           "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
     const Scene furnace = furnace_scene();
     const int size = 32;
-    const GuidedRender guided = render_guided_scene(furnace, size, 16, 1, 2, 3);
+    // The image is the last render's (every pass's image is chapter 06's, but weighted they are not its image).
+    const GuidedRender guided = render_guided_scene(furnace, size, 16, 1, 2, 3, 12000, PassCombination::kLast);
     const RenderResult& image = guided.result;
     REQUIRE(image.image.all_finite());
     // A convex sphere under the sky receives only the sky's light, which next-event estimation finds: no
@@ -378,6 +405,37 @@ TEST_CASE("Guided paths keep the white furnace (unguided: nothing scattered to l
     REQUIRE(box.result.image.all_finite());
     // The walls light each other: the guide learned, and drew some continuations.
     CHECK(box.result.image.pixels() != render_unguided(closed_box_scene(), 8, 64, 5, 2).image.pixels());
+    CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
+}
+
+TEST_CASE("Passes combined by inverse variance: each image weighted by 1 / its variance, unmeasured ones left out",
+          "[guiding]") {
+    const auto filled = [](Real value) {
+        Image image(2, 1);
+        for (Color& c : image.pixels()) c = Color(value);
+        return image;
+    };
+    const std::vector<Image> images{filled(1), filled(4), filled(100)};
+    // Weights 1 and 1/3; the third image, of variance 0, is not measured: (1 + 4 / 3) / (1 + 1 / 3) = 1.75.
+    const Image combined = combined_by_variance(images, {1, 3, 0});
+    for (const Color& c : combined.pixels()) CHECK(double(c.g) == Approx(1.75).epsilon(1e-6));
+    CHECK(combined_by_variance(images, {0, 0, 0}).pixels() == images.back().pixels());
+}
+
+TEST_CASE("Combined by inverse variance, the guided closed box keeps L = 1 and each pass of 2+ spp has a variance",
+          "[guiding][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+          "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
+    const GuidedRender box =
+        render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kInverseVariance);
+    REQUIRE(box.passes.size() == 3);
+    CHECK(box.passes[0].variance == 0);  // one sample per pixel: no variance to measure
+    CHECK(box.passes[1].variance > 0);
+    CHECK(box.passes[2].variance > 0);
+    REQUIRE(box.result.image.all_finite());
+    const GuidedRender last = render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kLast);
+    CHECK(box.result.image.pixels() != last.result.image.pixels());
     CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
 }
 

@@ -1,5 +1,7 @@
 #include "guided_render.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include "06_monte_carlo/render_paths.hpp"
@@ -32,7 +34,45 @@ Aabb scene_box(const World& world, const Vec3& eye) {
     return {eye - Vec3(1), eye + Vec3(1)};
 }
 
+// A render of `tracer`'s paths, and, under kInverseVariance, its image's variance (the squares of the samples
+// summed beside it).
+struct MeasuredRender {
+    RenderResult result;
+    double variance = 0;
+};
+
+MeasuredRender render_measured(const GuidedTracer& tracer, const PinholeCamera& camera,
+                               const RenderSettings& settings, PassCombination combination) {
+    if (combination == PassCombination::kLast) return {render_paths(tracer, camera, settings)};
+    std::array<PixelSums, 1> squares;
+    MeasuredRender out;
+    out.result = render_layers(settings, squares, [&](const PixelSample& s, Pcg32& rng, RayCounts& rays) {
+        const Color c = sample_radiance(tracer, camera, settings, s, rng, rays);
+        return std::array<Color, 2>{c, c * c};
+    });
+    const Image variance = variance_image(out.result.sums, squares[0]);
+    double sum = 0;
+    for (const Color& v : variance.pixels()) sum += double(luminance(v));
+    out.variance = sum / double(std::max<std::size_t>(variance.pixel_count(), 1));
+    return out;
+}
+
 }  // namespace
+
+Image combined_by_variance(const std::vector<Image>& images, const std::vector<double>& variances) {
+    Image out(images.back().width(), images.back().height());
+    double weights = 0;
+    for (std::size_t k = 0; k < images.size(); ++k) {
+        if (!(variances[k] > 0)) continue;
+        const double w = 1 / variances[k];
+        weights += w;
+        for (std::size_t i = 0; i < out.pixel_count(); ++i)
+            out.pixels()[i] += Real(w) * images[k].pixels()[i];
+    }
+    if (!(weights > 0)) return images.back();
+    for (Color& c : out.pixels()) c /= Real(weights);
+    return out;
+}
 
 std::uint64_t training_seed(std::uint64_t seed, int pass) {
     return seed + 0x9E3779B97F4A7C15ull * std::uint64_t(pass + 1);
@@ -46,20 +86,34 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
     GuidedRender out;
     double training_seconds = 0;
     RayCounts training_rays;
+    std::vector<Image> images;
+    std::vector<double> variances;
     for (int k = 0; k < guided.training_passes; ++k) {
         RenderSettings pass = settings;
         pass.samples_per_pixel = 1 << k;
         pass.seed = training_seed(settings.seed, k);
         pass.progress = ProgressStyle::kNone;
         pass.observer = nullptr;
-        const RenderResult r = render_paths(GuidedTracer(tracer, field, true), camera, pass);
+        MeasuredRender m =
+            render_measured(GuidedTracer(tracer, field, true), camera, pass, guided.combination);
+        const RenderResult& r = m.result;
         field.finish_pass();
-        out.passes.push_back({pass.samples_per_pixel, r.seconds, r.rays, field.leaf_count(), field.bytes()});
+        out.passes.push_back(
+            {pass.samples_per_pixel, r.seconds, r.rays, field.leaf_count(), field.bytes(), m.variance});
         training_seconds += r.seconds;
         training_rays += r.rays;
+        images.push_back(std::move(m.result.image));
+        variances.push_back(m.variance);
     }
     if (trained) trained(field, tracer);
-    out.result = render_paths(GuidedTracer(tracer, field, false), camera, settings);
+    MeasuredRender last =
+        render_measured(GuidedTracer(tracer, field, false), camera, settings, guided.combination);
+    out.result = std::move(last.result);
+    if (guided.combination == PassCombination::kInverseVariance && !images.empty()) {
+        images.push_back(out.result.image);
+        variances.push_back(last.variance);
+        out.result.image = combined_by_variance(images, variances);
+    }
     out.result.seconds += training_seconds;
     out.result.rays += training_rays;
     out.bytes = field.bytes();
@@ -82,20 +136,20 @@ std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedR
         notes.push_back("guiding: no training pass: chapter 06's paths, unguided");
         return notes;
     }
-    char text[320];
+    char text[400];
     std::snprintf(
         text, sizeof text,
         "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
         "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
-        "<= %d",
-        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold,
-        f.max_depth);
+        "<= %d; image: %s",
+        render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold, f.max_depth,
+        guided.combination == PassCombination::kLast ? "the last render" : "passes weighted by 1 / variance");
     notes.push_back(text);
     for (std::size_t k = 0; k < render.passes.size(); ++k) {
         const TrainingPass& p = render.passes[k];
         std::snprintf(text, sizeof text,
-                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s; rays: ", k + 1,
-                      p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str());
+                      "training pass %zu: %d spp, %.3f s, %zu leaves, trees %s, variance %.3g; rays: ", k + 1,
+                      p.samples_per_pixel, p.seconds, p.leaves, megabytes(p.bytes).c_str(), p.variance);
         notes.push_back(text + ray_counts(p.rays));
     }
     notes.push_back("guiding trees' memory: " + megabytes(render.bytes) +

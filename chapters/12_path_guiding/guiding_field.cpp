@@ -1,6 +1,9 @@
 #include "guiding_field.hpp"
 
+#include <bit>
 #include <cmath>
+
+#include "rt/core/random.hpp"
 
 namespace rt {
 
@@ -13,10 +16,28 @@ const DirectionalQuadtree* GuidingField::guide_at(const Vec3& p) const {
     return guide.energy_units() > 0 ? &guide : nullptr;
 }
 
+namespace {
+
+// The bits of a vector's three coordinates, mixed into one number.
+std::uint64_t bits_of(const Vec3& v) {
+    return std::bit_cast<std::uint64_t>(double(v.x)) * 0x9E3779B97F4A7C15ull ^
+           std::bit_cast<std::uint64_t>(double(v.y)) * 0xC2B2AE3D27D4EB4Full ^
+           std::bit_cast<std::uint64_t>(double(v.z));
+}
+
+}  // namespace
+
 void GuidingField::record(const Vec3& p, const Vec3& wi, Real weight) {
-    const std::uint32_t leaf = space_.leaf_of(p);
-    space_.count(leaf);
-    recording_[leaf].record(wi, weight);
+    space_.count(space_.leaf_of(p));
+    Vec3 at = p;
+    if (settings_.spatial_filter == SpatialFilter::kBox) {
+        const Aabb leaf = space_.leaf_box(p);
+        Pcg32 rng(bits_of(p), bits_of(wi));
+        const Vec3 u(rng.next_real(), rng.next_real(), rng.next_real());
+        const Aabb& bounds = space_.bounds();
+        at = glm::clamp(p + (u - Real(0.5)) * (leaf.max - leaf.min), bounds.min, bounds.max);
+    }
+    recording_[space_.leaf_of(at)].record(wi, weight);
 }
 
 void GuidingField::finish_pass() {

@@ -12,15 +12,28 @@
 
 #include "02_intersection/aabb.hpp"
 #include "directional_quadtree.hpp"
+#include "rt/core/enum_names.hpp"
 #include "spatial_tree.hpp"
 
 namespace rt {
+
+// Where a record lands in space.
+enum class SpatialFilter {
+    kNearest,  // the leaf that holds the vertex
+    kBox,      // the leaf that holds a point drawn uniformly from a box of the vertex's leaf's size about it
+};
+
+constexpr auto names_of(SpatialFilter) {
+    return enum_names<SpatialFilter>("--spatial-filter",
+                                     {{SpatialFilter::kNearest, "nearest"}, {SpatialFilter::kBox, "box"}});
+}
 
 struct GuidingSettings {
     double spatial_threshold = 12000;  // c: a leaf splits after pass k past c √(2^k) vertices (the paper's)
     double energy_threshold = 0.01;    // ρ: a quadrant splits past this share of its tree's energy
     int max_depth = 20;                // the quadtrees' deepest level
     Real guided_fraction = 0.5;        // α: the chance a guided vertex draws from the guide, not the BSDF
+    SpatialFilter spatial_filter = SpatialFilter::kNearest;
 };
 
 class GuidingField {
@@ -31,7 +44,10 @@ class GuidingField {
     // pass finished, or no energy recorded in the leaf).
     const DirectionalQuadtree* guide_at(const Vec3& p) const;
     // Records a vertex at p: light of weight `weight` (radiance over the density it was drawn with) arrived
-    // from direction wi. Safe from several threads at once, and the sums do not depend on their order.
+    // from direction wi. Safe from several threads at once, and the sums do not depend on their order. The
+    // vertex counts in p's leaf; under SpatialFilter::kBox its light lands in the leaf of a point drawn about
+    // p (Müller's stochastic box filter, 2019: a leaf learns from the vertices near it too, and neighbouring
+    // guides blend at their border), the point's numbers a hash of p and wi (the same on any thread).
     void record(const Vec3& p, const Vec3& wi, Real weight);
     // Ends a pass as the header says.
     void finish_pass();

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "rt/flags/enum_flag.hpp"
 #include "rt/flags/only_with.hpp"
 
 namespace rt {
@@ -10,6 +11,10 @@ void add_guiding_flags(CLI::App& app, GuidedRenderOptions& guided, GuidePictureR
     app.add_option("--training-passes", guided.training_passes,
                    "Training passes of 1, 2, 4, ... spp before the image (0: no guiding)")
         ->check(CLI::Range(0, 16));
+    add_enum_option(
+        app, guided.combination,
+        "The image: the last render alone (last), or every pass's image weighted by the inverse of "
+        "its variance (variance)");
     app.add_option("--guided-fraction", guided.field.guided_fraction,
                    "alpha: the chance a guided vertex draws from the guide rather than the BSDF")
         ->check(CLI::Range(0.0, 0.99));
@@ -19,6 +24,10 @@ void add_guiding_flags(CLI::App& app, GuidedRenderOptions& guided, GuidePictureR
     app.add_option("--energy-threshold", guided.field.energy_threshold,
                    "rho: a quadrant splits past this share of its quadtree's energy")
         ->check(CLI::Range(1e-4, 0.5));
+    add_enum_option(
+        app, guided.field.spatial_filter,
+        "Where a record lands: its vertex's leaf (nearest), or the leaf of a point drawn from a box "
+        "of that leaf's size about it (box, Mueller's stochastic box filter)");
     CLI::Option* picture_flag = app.add_option(
         "--guide-picture", picture.file,
         "Write a PNG of the guide learned at --guide-at (left) beside the scattered light arriving there "

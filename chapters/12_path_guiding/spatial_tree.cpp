@@ -6,17 +6,28 @@ namespace rt {
 
 SpatialTree::SpatialTree(const Aabb& bounds) : bounds_(bounds), nodes_(1), leaf_nodes_{0} {}
 
-std::uint32_t SpatialTree::leaf_of(const Vec3& p) const {
-    Vec3 lo = bounds_.min, hi = bounds_.max;
+std::uint32_t SpatialTree::descend(const Vec3& p, Aabb& box) const {
+    box = bounds_;
     std::uint32_t node = 0;
     while (nodes_[node].child != 0) {
         const int axis = nodes_[node].axis;
-        const Real middle = (lo[axis] + hi[axis]) / 2;
+        const Real middle = (box.min[axis] + box.max[axis]) / 2;
         const bool second = p[axis] >= middle;
-        (second ? lo : hi)[axis] = middle;
+        (second ? box.min : box.max)[axis] = middle;
         node = nodes_[node].child + std::uint32_t(second);
     }
-    return nodes_[node].leaf;
+    return node;
+}
+
+std::uint32_t SpatialTree::leaf_of(const Vec3& p) const {
+    Aabb box;
+    return nodes_[descend(p, box)].leaf;
+}
+
+Aabb SpatialTree::leaf_box(const Vec3& p) const {
+    Aabb box;
+    descend(p, box);
+    return box;
 }
 
 void SpatialTree::count(std::uint32_t leaf) {

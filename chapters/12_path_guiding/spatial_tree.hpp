@@ -22,6 +22,8 @@ class SpatialTree {
 
     // The number of the leaf whose box holds p (a point outside the box: the leaf nearest it).
     std::uint32_t leaf_of(const Vec3& p) const;
+    // The box of that leaf.
+    Aabb leaf_box(const Vec3& p) const;
     // Counts one vertex in `leaf`; safe from several threads at once.
     void count(std::uint32_t leaf);
     std::uint64_t samples(std::uint32_t leaf) const;
@@ -45,6 +47,9 @@ class SpatialTree {
         std::uint64_t samples = 0;
         int axis = 0;  // the axis its halves are cut along
     };
+    // The leaf node that holds p; its box in `box` (which starts as bounds_).
+    std::uint32_t descend(const Vec3& p, Aabb& box) const;
+
     Aabb bounds_;
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> leaf_nodes_;  // each leaf's node
