@@ -2,14 +2,18 @@
 of equal φ has cells of equal solid angle (dω = dz dφ), so the square (u, v) = ((z + 1) / 2, φ / 2π) holds
 directions with the constant Jacobian 4π (equal_area_map.hpp). On that square, a quadtree refined as
 directional_quadtree.cpp refines it: energy recorded from a lobe of light, max(0, cos)^8 about one
-direction, three rounds of record and refine with ρ = 0.01; each leaf shaded by its density."""
+direction, three rounds of record and refine with ρ = 0.01; each leaf shaded by its density.
+And the one-sample mixture of guided_vertex.cpp on a slice through the hemisphere: light through a gap, the
+BSDF's cosine density, a guide refined as the quadtree is (in one dimension), their mixture, and the weights
+f cos / p that each gives."""
 
 import math
 import random
 
+from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 
-from figure_style import ACCENT, QUIET, RAY, SURFACE, label, new_figure
+from figure_style import ACCENT, LIGHT, QUIET, RAY, SURFACE, label, new_figure
 
 LOBE = (0.71, 0.35, 0.61)  # about the direction of the tests' lobe, normalised
 THRESHOLD = 0.01
@@ -117,5 +121,68 @@ def quadtree_figure():
     return fig
 
 
+GAP_ANGLE, GAP_WIDTH, FLOOR = math.radians(35), math.radians(4), 0.03  # light through a gap, and a dim room
+ALPHA = 0.5  # the guided vertex's share of guided draws
+
+
+def slice_integrand(theta):
+    """f L_i cos on the slice (a diffuse f): the gap's narrow peak over the room's dim light."""
+    return (FLOOR + math.exp(-0.5 * ((theta - GAP_ANGLE) / GAP_WIDTH) ** 2)) * math.cos(theta)
+
+
+def refined_bins(lo, hi, total, depth=0):
+    """The 1-D quadtree: a bin splits while it holds more than 1 % of the energy (ρ of the quadtree)."""
+    energy = integral(slice_integrand, lo, hi)
+    if depth >= 7 or energy <= THRESHOLD * total:
+        return [(lo, hi, energy)]
+    mid = (lo + hi) / 2
+    return refined_bins(lo, mid, total, depth + 1) + refined_bins(mid, hi, total, depth + 1)
+
+
+def integral(f, lo, hi, steps=200):
+    h = (hi - lo) / steps
+    return sum(f(lo + (i + 0.5) * h) for i in range(steps)) * h
+
+
+def mixture_figure():
+    fig = Figure(figsize=(10.0, 3.8))
+    densities, weights = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    half = math.pi / 2
+    thetas = [-half + math.pi * (i + 0.5) / 600 for i in range(600)]
+    total = integral(slice_integrand, -half, half, 2000)
+    bins = refined_bins(-half, half, total)
+
+    def guide(theta):
+        return next(e / (hi - lo) / total for lo, hi, e in bins if lo <= theta < hi)
+
+    def bsdf(theta):
+        return math.cos(theta) / 2
+
+    def mixture(theta):
+        return ALPHA * guide(theta) + (1 - ALPHA) * bsdf(theta)
+
+    degrees = [math.degrees(t) for t in thetas]
+    ideal = [slice_integrand(t) / total for t in thetas]
+    densities.fill_between(degrees, ideal, color=LIGHT, alpha=0.35, lw=0, label="ideal: f L cos, normalised")
+    densities.plot(degrees, [bsdf(t) for t in thetas], color=QUIET, ls="--", label="BSDF: cos θ")
+    densities.plot(degrees, [guide(t) for t in thetas], color=RAY, lw=1, label=f"guide: {len(bins)} bins")
+    densities.plot(degrees, [mixture(t) for t in thetas], color=ACCENT, lw=1.6, label=f"mixture, α = {ALPHA}")
+    densities.set_yscale("log")
+    densities.set_ylim(0.005, 20)
+    densities.set_xlabel("θ (degrees), a slice through the hemisphere")
+    densities.set_title("densities over θ")
+    densities.legend(fontsize=8, loc="upper left", frameon=False)
+    for name, p, style in (("BSDF alone", bsdf, dict(color=QUIET, ls="--")),
+                           ("mixture", mixture, dict(color=ACCENT, lw=1.6))):
+        weights.plot(degrees, [slice_integrand(t) / total / p(t) for t in thetas], label=name, **style)
+    weights.axhline(1, color=SURFACE, lw=0.6)
+    weights.set_yscale("log")
+    weights.set_xlabel("θ (degrees)")
+    weights.set_title("weight f L cos / p: flat at 1 is noise-free")
+    weights.legend(fontsize=8, loc="upper left", frameon=False)
+    return fig
+
+
 def figures():
-    return {"12_path_guiding/images/diagram_quadtree.svg": quadtree_figure()}
+    return {"12_path_guiding/images/diagram_quadtree.svg": quadtree_figure(),
+            "12_path_guiding/images/diagram_one_sample_mis.svg": mixture_figure()}
