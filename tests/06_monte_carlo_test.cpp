@@ -918,6 +918,40 @@ TEST_CASE("An emissive plane, which no light sample can reach, is seen by every 
     }
 }
 
+// A diffuse sphere under a 4 x 4 quad lamp at y = 3 (radiance 1), its front down toward the sphere or up away
+// from it, one-sided or two-sided; the mean of chapter 06's image by `strategy`.
+double under_quad_lamp(bool front_down, bool two_sided, SamplingStrategy strategy) {
+    Scene scene = furnace_scene(0.5f);
+    scene.environment.reset();
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.albedo = Color(0);
+    lamp.emission = Color(1);
+    lamp.two_sided = two_sided;
+    scene.materials.push_back(lamp);
+    const Vec3 x(4, 0, 0), z(0, 0, 4);  // x × z points down
+    scene.shapes.push_back(Shape{QuadShape{{-2, 3, -2}, front_down ? x : z, front_down ? z : x}, 1, "shapes[1]"});
+    scene.camera = CameraDesc{{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30};  // the lamp is out of view
+    return render_scene(scene, strategy, 16, 64, 1).image.mean();
+}
+
+TEST_CASE("A two-sided quad lamp lights both half-spaces equally, by light and by BSDF sampling; a one-sided "
+          "one only its front",
+          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+    const double facing = under_quad_lamp(true, false, SamplingStrategy::kMis);
+    REQUIRE(facing > 0.05);
+    for (SamplingStrategy s : {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
+        INFO(to_string(s) << ", the one-sided lamp facing the sphere: " << facing);
+        CHECK(under_quad_lamp(true, true, s) == Approx(facing).epsilon(0.03));
+        CHECK(under_quad_lamp(false, true, s) == Approx(facing).epsilon(0.03));
+        CHECK(under_quad_lamp(false, false, s) == 0);
+    }
+}
+
 TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
     for (SamplingStrategy s : kAllStrategies) CHECK(from_string<SamplingStrategy>(to_string(s)) == s);
     CHECK_THROWS_AS(from_string<SamplingStrategy>("importance"), InputError);
