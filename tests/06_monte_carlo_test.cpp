@@ -930,18 +930,20 @@ double under_quad_lamp(bool front_down, bool two_sided, SamplingStrategy strateg
     lamp.two_sided = two_sided;
     scene.materials.push_back(lamp);
     const Vec3 x(4, 0, 0), z(0, 0, 4);  // x × z points down
-    scene.shapes.push_back(Shape{QuadShape{{-2, 3, -2}, front_down ? x : z, front_down ? z : x}, 1, "shapes[1]"});
+    scene.shapes.push_back(
+        Shape{QuadShape{{-2, 3, -2}, front_down ? x : z, front_down ? z : x}, 1, "shapes[1]"});
     scene.camera = CameraDesc{{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30};  // the lamp is out of view
     return render_scene(scene, strategy, 16, 64, 1).image.mean();
 }
 
-TEST_CASE("A two-sided quad lamp lights both half-spaces equally, by light and by BSDF sampling; a one-sided "
-          "one only its front",
-          "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
-          "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
-          "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+TEST_CASE(
+    "A two-sided quad lamp lights both half-spaces equally, by light and by BSDF sampling; a one-sided "
+    "one only its front",
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+    "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     const double facing = under_quad_lamp(true, false, SamplingStrategy::kMis);
     REQUIRE(facing > 0.05);
     for (SamplingStrategy s : {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {

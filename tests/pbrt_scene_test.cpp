@@ -429,9 +429,11 @@ TEST_CASE("An area light emits on pbrt's side: its normals' when given, else its
                Contains("t.pbrt:6:1: Shape \"sphere\": ReverseOrientation on an emitting sphere"));
 }
 
-TEST_CASE("A twosided pbrt area light's shapes emit on both sides (the material's two_sided), a sphere's refused",
-          "[pbrt][emission]") {
-    const std::string mesh = "Shape \"trianglemesh\" \"point3 P\" [0 1 0  1 1 0  1 1 1] \"integer indices\" [0 1 2]\n";
+TEST_CASE(
+    "A twosided pbrt area light's shapes emit on both sides (the material's two_sided), a sphere's refused",
+    "[pbrt][emission]") {
+    const std::string mesh =
+        "Shape \"trianglemesh\" \"point3 P\" [0 1 0  1 1 0  1 1 1] \"integer indices\" [0 1 2]\n";
     auto lamp = [&](const std::string& sides) {
         return kCamera + "WorldBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2]" + sides + "\n";
     };

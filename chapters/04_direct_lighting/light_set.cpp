@@ -104,14 +104,15 @@ LightSet collect_lights(const Scene& scene) {
                                           AreaLights::kQuads);
                 } else if constexpr (std::is_same_v<T, TriangleShape>) {
                     area.add<TriangleEmitter>(
-                        sided(make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L), m.two_sided),
+                        sided(make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L),
+                              m.two_sided),
                         AreaLights::kTriangles);
                 } else if constexpr (std::is_same_v<T, BoxShape>) {
                     add_box_faces(g, L, m.two_sided, area);
                 } else if constexpr (std::is_same_v<T, MeshShape>) {
                     for (const auto& tri : g.triangles) {
-                        const TriangleLight t =
-                            make_triangle_light(g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]], L);
+                        const TriangleLight t = make_triangle_light(g.positions[tri[0]], g.positions[tri[1]],
+                                                                    g.positions[tri[2]], L);
                         area.add<TriangleEmitter>(sided(t, m.two_sided), AreaLights::kTriangles);
                     }
                 } else if constexpr (std::is_same_v<T, PlaneShape>) {

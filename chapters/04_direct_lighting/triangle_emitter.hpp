@@ -19,7 +19,8 @@ class TriangleEmitter final : public Light {
     Real pdf(const Vec3& p, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
         const Real cos_light = -glm::dot(triangle_.two_sided ? facing(triangle_, p).normal : hit.normal, wi);
         if (!(cos_light > 0)) return 0;
-        return picked_planar_pdf(triangle_.radiance, hit.t, cos_light, picked.total_weight) * sides(triangle_);
+        return picked_planar_pdf(triangle_.radiance, hit.t, cos_light, picked.total_weight) *
+               sides(triangle_);
     }
     Real power_weight() const override {
         return luminance(triangle_.radiance) * area_of(triangle_) * sides(triangle_);

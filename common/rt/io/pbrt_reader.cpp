@@ -436,7 +436,8 @@ void Reader::shape(const std::string& type, PbrtParameters& params, const std::s
                              "does not emit");
         }
         if (type == "sphere" && state_.emission->contains("two_sided")) {
-            throw InputError(where + "Shape \"sphere\" under a twosided AreaLightSource: the course's sphere "
+            throw InputError(where +
+                             "Shape \"sphere\" under a twosided AreaLightSource: the course's sphere "
                              "lights emit outward only (two-sided: trianglemesh, plymesh)");
         }
         m.update(*state_.emission);

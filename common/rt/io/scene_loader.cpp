@@ -132,8 +132,9 @@ Scene read_scene(const nlohmann::json& root, const fs::path& file) {
             scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
             if (std::holds_alternative<SphereShape>(scene.shapes.back().geometry) &&
                 scene.material_of(scene.shapes.back()).two_sided) {
-                shapes.element(i)["material"].fail("a sphere emits outward only: \"two_sided\" is for quads, "
-                                                   "triangles, boxes and meshes");
+                shapes.element(i)["material"].fail(
+                    "a sphere emits outward only: \"two_sided\" is for quads, "
+                    "triangles, boxes and meshes");
             }
         }
     }

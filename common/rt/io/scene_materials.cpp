@@ -141,7 +141,8 @@ Material read_material(const Node& node, const std::string& name, const fs::path
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
     if (node.has("two_sided")) {
         m.two_sided = node["two_sided"].boolean();
-        if (m.two_sided && !m.emissive()) node["two_sided"].fail("only an emitting material (emission above 0) is two-sided");
+        if (m.two_sided && !m.emissive())
+            node["two_sided"].fail("only an emitting material (emission above 0) is two-sided");
     }
     return m;
 }
