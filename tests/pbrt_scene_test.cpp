@@ -444,7 +444,7 @@ TEST_CASE(
     CHECK_FALSE(loaded(lamp(" \"bool twosided\" false") + mesh).materials[0].two_sided);
     CHECK_FALSE(loaded(lamp("") + mesh).materials[0].two_sided);
     CHECK_THAT(error_of(lamp(" \"bool twosided\" true") + "Shape \"sphere\"\n"),
-               Contains("t.pbrt:6:1: Shape \"sphere\" under a twosided AreaLightSource"));
+               Contains("t.pbrt:5:1: Shape \"sphere\" under a twosided AreaLightSource"));
 }
 
 TEST_CASE("Include reads a file from the main scene's folder, and the ignored parameters are named once",
