@@ -766,9 +766,10 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("A two-sided quad light starts light paths from both sides: cos θ / (2 pi) about either normal, "
-          "twice the power",
-          "[ch08][statistical][ex:ch04.cosine_hemisphere]") {
+TEST_CASE(
+    "A two-sided quad light starts light paths from both sides: cos θ / (2 pi) about either normal, "
+    "twice the power",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere]") {
     const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
       "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2], "two_sided": true}},
       "shapes": [{"type": "quad", "origin": [0, 0, 0], "u": [3, 0, 0], "v": [0, 1, 0], "material": "lamp"}]})");
