@@ -952,7 +952,8 @@ TEST_CASE(
     const double facing = under_lamp(false, true, false, SamplingStrategy::kMis);
     REQUIRE(facing > 0.01);
     for (bool triangles : {false, true}) {
-        for (SamplingStrategy s : {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
+        for (SamplingStrategy s :
+             {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
             INFO(to_string(s) << (triangles ? ", triangles" : ", a quad")
                               << "; the one-sided quad facing the sphere: " << facing);
             CHECK(under_lamp(triangles, true, true, s) == Approx(facing).epsilon(0.03));
