@@ -918,6 +918,51 @@ TEST_CASE("An emissive plane, which no light sample can reach, is seen by every 
     }
 }
 
+// A diffuse sphere under a 4 x 4 lamp at y = 3 (radiance 1: a quad, or its two triangles), its front down
+// toward the sphere or up away from it, one-sided or two-sided; the mean of chapter 06's image by `strategy`.
+double under_lamp(bool triangles, bool front_down, bool two_sided, SamplingStrategy strategy) {
+    Scene scene = furnace_scene(0.5f);
+    scene.environment.reset();
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.albedo = Color(0);
+    lamp.emission = Color(1);
+    lamp.two_sided = two_sided;
+    scene.materials.push_back(lamp);
+    const Vec3 o(-2, 3, -2), x(4, 0, 0), z(0, 0, 4);  // x × z points down
+    const Vec3 u = front_down ? x : z, v = front_down ? z : x;
+    if (triangles) {
+        scene.shapes.push_back(Shape{TriangleShape{{o, o + u, o + u + v}}, 1, "shapes[1]"});
+        scene.shapes.push_back(Shape{TriangleShape{{o, o + u + v, o + v}}, 1, "shapes[2]"});
+    } else {
+        scene.shapes.push_back(Shape{QuadShape{o, u, v}, 1, "shapes[1]"});
+    }
+    scene.camera = CameraDesc{{0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30};  // the lamp is out of view
+    return render_scene(scene, strategy, 16, 64, 1).image.mean();
+}
+
+TEST_CASE(
+    "A two-sided lamp (a quad, two triangles) lights both half-spaces equally, by light and by BSDF "
+    "sampling; a one-sided one only its front",
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.triangle_watertight]"
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+    "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch04.uniform_triangle]"
+    "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
+    "[ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+    const double facing = under_lamp(false, true, false, SamplingStrategy::kMis);
+    REQUIRE(facing > 0.01);
+    for (bool triangles : {false, true}) {
+        for (SamplingStrategy s :
+             {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
+            INFO(to_string(s) << (triangles ? ", triangles" : ", a quad")
+                              << "; the one-sided quad facing the sphere: " << facing);
+            CHECK(under_lamp(triangles, true, true, s) == Approx(facing).epsilon(0.03));
+            CHECK(under_lamp(triangles, false, true, s) == Approx(facing).epsilon(0.03));
+            CHECK(under_lamp(triangles, false, false, s) == 0);
+        }
+    }
+}
+
 TEST_CASE("Sampling strategies are named on the command line", "[strategy]") {
     for (SamplingStrategy s : kAllStrategies) CHECK(from_string<SamplingStrategy>(to_string(s)) == s);
     CHECK_THROWS_AS(from_string<SamplingStrategy>("importance"), InputError);

@@ -802,6 +802,34 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "A two-sided quad light starts light paths from both sides: cos θ / (2 pi) about either normal, "
+    "twice the power",
+    "[ch08][statistical][ex:ch04.cosine_hemisphere]") {
+    const Scene scene = scene_from(R"({"camera": {"from": [0, 0, 5], "at": [0, 0, 0]},
+      "materials": {"lamp": {"type": "diffuse", "albedo": [0, 0, 0], "emission": [2, 2, 2], "two_sided": true}},
+      "shapes": [{"type": "quad", "origin": [0, 0, 0], "u": [3, 0, 0], "v": [0, 1, 0], "material": "lamp"}]})");
+    const EmitterSampler emitters(collect_lights(scene));
+    const double power = 2 * std::numbers::pi * 2 * 3;  // two sides of π L A
+    CHECK(emitters.total_power() == Approx(power).epsilon(1e-5));
+    require_fit(test_directions(
+                    emitted_directions(emitters, false, 5),
+                    [](const Vec3& w) { return std::abs(double(w.z)) / (2 * std::numbers::pi); }, 5),
+                kAlphaPerTest);
+    Pcg32 rng(3, 1);
+    double sum = 0;
+    constexpr int kSamples = 10'000;
+    for (int i = 0; i < kSamples; ++i) {
+        const Real u_pick = rng.next_real();
+        const Vec2 a = rng.next_vec2(), b = rng.next_vec2();
+        const auto e = emitters.sample(u_pick, a, b);
+        REQUIRE(e);
+        CHECK(glm::dot(e->direction, e->origin.normal) >= 0);  // into the side it starts from
+        sum += double(luminance(e->beta));
+    }
+    CHECK(sum / kSamples == Approx(power).epsilon(1e-4));  // every β₀ is Φ / P
+}
+
+TEST_CASE(
     "Light paths start on each light with probability proportional to its power, by chi-square over "
     "the lights",
     "[ch08][statistical][ex:ch04.cosine_hemisphere][ex:ch06.uniform_sphere]") {

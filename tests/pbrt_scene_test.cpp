@@ -429,6 +429,24 @@ TEST_CASE("An area light emits on pbrt's side: its normals' when given, else its
                Contains("t.pbrt:6:1: Shape \"sphere\": ReverseOrientation on an emitting sphere"));
 }
 
+TEST_CASE(
+    "A twosided pbrt area light's shapes emit on both sides (the material's two_sided), a sphere's refused",
+    "[pbrt][emission]") {
+    const std::string mesh =
+        "Shape \"trianglemesh\" \"point3 P\" [0 1 0  1 1 0  1 1 1] \"integer indices\" [0 1 2]\n";
+    auto lamp = [&](const std::string& sides) {
+        return kCamera + "WorldBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2]" + sides + "\n";
+    };
+    const Scene two = loaded(lamp(" \"bool twosided\" true") + mesh);
+    REQUIRE(two.materials.size() == 1);
+    CHECK(two.materials[0].two_sided);
+    CHECK(two.materials[0].emission == Color(2));
+    CHECK_FALSE(loaded(lamp(" \"bool twosided\" false") + mesh).materials[0].two_sided);
+    CHECK_FALSE(loaded(lamp("") + mesh).materials[0].two_sided);
+    CHECK_THAT(error_of(lamp(" \"bool twosided\" true") + "Shape \"sphere\"\n"),
+               Contains("t.pbrt:5:1: Shape \"sphere\" under a twosided AreaLightSource"));
+}
+
 TEST_CASE("Include reads a file from the main scene's folder, and the ignored parameters are named once",
           "[pbrt][loader]") {
     const fs::path folder = fs::temp_directory_path() / ("pbrt_scene_test_" + std::to_string(getpid()));

@@ -54,9 +54,18 @@ class AreaLights {
 };
 
 // The 6 faces of a transformed box (chapter 02's box_faces) as one-sided quad lights, emitting outward.
-void add_box_faces(const BoxShape& box, const Color& radiance, AreaLights& lights) {
-    for (const Quad& face : box_faces(box))
-        lights.add<QuadEmitter>(make_quad_light(face.origin, face.u, face.v, radiance), AreaLights::kQuads);
+// `light` emitting on both sides when `two_sided` (the material's).
+template <class Planar>
+Planar sided(Planar light, bool two_sided) {
+    light.two_sided = two_sided;
+    return light;
+}
+
+void add_box_faces(const BoxShape& box, const Color& radiance, bool two_sided, AreaLights& lights) {
+    for (const Quad& face : box_faces(box)) {
+        lights.add<QuadEmitter>(sided(make_quad_light(face.origin, face.u, face.v, radiance), two_sided),
+                                AreaLights::kQuads);
+    }
 }
 
 // Each of `descriptions` (the scene's lights of one kind) as an Emitter made from it and `more`.
@@ -91,19 +100,20 @@ LightSet collect_lights(const Scene& scene) {
                 if constexpr (std::is_same_v<T, SphereShape>) {
                     area.add<SphereEmitter>(SphereLight{g.center, g.radius, L}, AreaLights::kSpheres);
                 } else if constexpr (std::is_same_v<T, QuadShape>) {
-                    area.add<QuadEmitter>(make_quad_light(g.origin, g.u, g.v, L), AreaLights::kQuads);
+                    area.add<QuadEmitter>(sided(make_quad_light(g.origin, g.u, g.v, L), m.two_sided),
+                                          AreaLights::kQuads);
                 } else if constexpr (std::is_same_v<T, TriangleShape>) {
                     area.add<TriangleEmitter>(
-                        make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L),
+                        sided(make_triangle_light(g.vertices[0], g.vertices[1], g.vertices[2], L),
+                              m.two_sided),
                         AreaLights::kTriangles);
                 } else if constexpr (std::is_same_v<T, BoxShape>) {
-                    add_box_faces(g, L, area);
+                    add_box_faces(g, L, m.two_sided, area);
                 } else if constexpr (std::is_same_v<T, MeshShape>) {
                     for (const auto& tri : g.triangles) {
-                        area.add<TriangleEmitter>(
-                            make_triangle_light(g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]],
-                                                L),
-                            AreaLights::kTriangles);
+                        const TriangleLight t = make_triangle_light(g.positions[tri[0]], g.positions[tri[1]],
+                                                                    g.positions[tri[2]], L);
+                        area.add<TriangleEmitter>(sided(t, m.two_sided), AreaLights::kTriangles);
                     }
                 } else if constexpr (std::is_same_v<T, PlaneShape>) {
                     lights.unsampled.push_back(shape.place + " (an emissive plane has infinite area)");

@@ -16,18 +16,19 @@ class QuadEmitter final : public Light {
     const QuadLight& quad() const { return quad_; }
 
     std::optional<LightSample> sample(const Vec3& p, Vec2 u, QuadLightSampling quads) const override {
-        return sample_quad_light(quad_, p, u, quads);
+        return sample_quad_light(facing(quad_, p), p, u, quads);
     }
     Real pdf(const Vec3& p, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
-        const Real cos_light = -glm::dot(hit.normal, wi);
+        const QuadLight quad = facing(quad_, p);
+        const Real cos_light = -glm::dot(quad_.two_sided ? quad.normal : hit.normal, wi);
         if (!(cos_light > 0)) return 0;
         if (picked.quads == QuadLightSampling::kSolidAngle) {
-            if (const auto view = solid_angle_view(quad_, p))
+            if (const auto view = solid_angle_view(quad, p))
                 return picked.probability * Real(1 / view->solid_angle());
         }
-        return picked_planar_pdf(quad_.radiance, hit.t, cos_light, picked.total_weight);
+        return picked_planar_pdf(quad.radiance, hit.t, cos_light, picked.total_weight) * sides(quad);
     }
-    Real power_weight() const override { return luminance(quad_.radiance) * area_of(quad_); }
+    Real power_weight() const override { return luminance(quad_.radiance) * area_of(quad_) * sides(quad_); }
     bool is_delta() const override { return false; }
     std::string_view kind() const override { return "quad"; }
 

@@ -14,14 +14,17 @@ class TriangleEmitter final : public Light {
     const TriangleLight& triangle() const { return triangle_; }
 
     std::optional<LightSample> sample(const Vec3& p, Vec2 u, QuadLightSampling) const override {
-        return sample_triangle_light(triangle_, p, u);
+        return sample_triangle_light(facing(triangle_, p), p, u);
     }
-    Real pdf(const Vec3&, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
-        const Real cos_light = -glm::dot(hit.normal, wi);
+    Real pdf(const Vec3& p, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
+        const Real cos_light = -glm::dot(triangle_.two_sided ? facing(triangle_, p).normal : hit.normal, wi);
         if (!(cos_light > 0)) return 0;
-        return picked_planar_pdf(triangle_.radiance, hit.t, cos_light, picked.total_weight);
+        return picked_planar_pdf(triangle_.radiance, hit.t, cos_light, picked.total_weight) *
+               sides(triangle_);
     }
-    Real power_weight() const override { return luminance(triangle_.radiance) * area_of(triangle_); }
+    Real power_weight() const override {
+        return luminance(triangle_.radiance) * area_of(triangle_) * sides(triangle_);
+    }
     bool is_delta() const override { return false; }
     std::string_view kind() const override { return "triangle"; }
 

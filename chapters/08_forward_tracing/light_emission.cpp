@@ -30,6 +30,16 @@ void emit_lambertian(EmissionSample& s, Vec2 u_direction) {
     s.beta = kPi * s.position_weight;
 }
 
+// u_direction for the side a light emits from: its front, or for a two-sided light either side with
+// probability 1/2 (u.x picks it and is stretched back to [0, 1); β₀ doubles).
+Vec2 pick_side(EmissionSample& s, bool two_sided, Vec2 u) {
+    if (!two_sided) return u;
+    s.position_weight *= 2;
+    if (u.x < Real(0.5)) return {2 * u.x, u.y};
+    s.origin.normal = -s.origin.normal;
+    return {2 * u.x - 1, u.y};
+}
+
 EmissionSample from_quad(const Light& light, Real P, Vec2 u_point, Vec2 u_direction) {
     const QuadLight& q = static_cast<const QuadEmitter&>(light).quad();
     EmissionSample s;
@@ -39,7 +49,7 @@ EmissionSample from_quad(const Light& light, Real P, Vec2 u_point, Vec2 u_direct
     s.origin.point_error = gamma_bound(3) * (abs(q.origin) + abs(a) + abs(b));
     s.origin.normal = q.normal;
     s.position_weight = q.radiance * (q.area / P);
-    emit_lambertian(s, u_direction);
+    emit_lambertian(s, pick_side(s, q.two_sided, u_direction));
     return s;
 }
 
@@ -52,7 +62,7 @@ EmissionSample from_triangle(const Light& light, Real P, Vec2 u_point, Vec2 u_di
     s.origin.point_error = gamma_bound(7) * (abs(a) + abs(b) + abs(c));
     s.origin.normal = t.normal;
     s.position_weight = t.radiance * (t.area / P);
-    emit_lambertian(s, u_direction);
+    emit_lambertian(s, pick_side(s, t.two_sided, u_direction));
     return s;
 }
 

@@ -1,7 +1,7 @@
 // Where a light path starts: a light chosen with probability P ∝ its power Φ (chapter 04's LightPicker, the
-// one the path tracers sample for next-event estimation), a point on it and a direction
-// it emits into. An area light of radiance Le and area A emits Φ = π lum(Le) A (one-sided, Lambertian); a
-// point light of intensity I emits Φ = 4π lum(I).
+// one the path tracers sample for next-event estimation), a point on it and a direction it emits into. An
+// area light of radiance Le and area A emits Φ = π lum(Le) A (one-sided, Lambertian; a two-sided one twice
+// that, from a side picked with probability 1/2); a point light of intensity I emits Φ = 4π lum(I).
 //   area light:  x uniform by area (pdf_A = 1 / A), ω cosine-weighted about its normal (pdf_ω = cos θ / π):
 //                β₀ = Le cos θ / (P pdf_A pdf_ω) = π Le A / P;
 //   point light: x is the point (a delta), ω uniform over the sphere (pdf_ω = 1 / 4π): β₀ = 4π I / P;

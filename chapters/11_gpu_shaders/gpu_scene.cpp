@@ -176,6 +176,9 @@ GpuMaterial material_record(const Scene& scene, const MaterialTable& table, std:
     const auto found = by_class.find(typeid(outside));
     if (found == by_class.end())
         throw InputError(named(m) + ": its BSDF is not in the shaders (the chapters before 11 render it)");
+    if (m.two_sided)
+        throw InputError(named(m) +
+                         ": two-sided emission is not in the shaders (the chapters before 11 render it)");
     GpuMaterial g;
     g.emission = v4(table.emission(index, true));
     g.info.y = outside.flags().black ? 1u : 0u;

@@ -108,6 +108,7 @@ struct Material {
     Color albedo{0.8f};            // diffuse, glossy, retroreflective: reflectance in [0, 1]
     Color reflectance{1.0f};       // mirror: the fraction reflected
     Color emission{0.0f};          // radiance emitted (any type): makes its shapes area lights
+    bool two_sided = false;        // the emission leaves both sides, not only the front
     Real roughness = 0.2f;         // glossy, retroreflective: width of the lobe in (0, 1]; dielectric and
                             // conductor: 0 is smooth, r > 0 rough (GGX microfacets of α = r², chapter 07)
     Real ior = 1.5f;                   // dielectric: index of refraction

@@ -277,15 +277,15 @@ Json area_emission(PbrtParameters& params) {
     const Vec3d L = color_in(params, "L", Vec3d(1), kLargestSceneNumber);
     const double scale = params.real("scale").value_or(1);
     if (!(scale >= 0)) params.fail("scale", "must be >= 0, got " + show_pbrt_number(scale));
-    if (params.boolean("twosided").value_or(false)) {
-        params.fail("twosided", "the course's area lights emit on one side only (the front, pbrt's default)");
-    }
-    params.refuse_unused("L, scale, twosided false");
+    const bool two_sided = params.boolean("twosided").value_or(false);
+    params.refuse_unused("L, scale, twosided");
     const Vec3d emission = L * scale;
     if (std::max({emission.x, emission.y, emission.z}) > kLargestSceneNumber) {
         params.fail("scale", "makes L × scale exceed the course's limit of 1e9");
     }
-    return to_json(emission);
+    Json keys = {{"emission", to_json(emission)}};
+    if (two_sided) keys["two_sided"] = true;
+    return keys;
 }
 
 namespace {

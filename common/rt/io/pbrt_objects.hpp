@@ -32,7 +32,8 @@ Json texture(const std::string& kind, const std::string& type, PbrtParameters& p
 Json material(const std::string& type, PbrtParameters& params, const std::string& type_place,
               const Textures& textures, std::vector<std::string>& notes);
 
-// An area light's emitted radiance, L × scale (one-sided only).
+// An area light as the keys its shapes' material gains: "emission" L × scale, and "two_sided" true where
+// the light is "twosided".
 Json area_emission(PbrtParameters& params);
 
 // A shape under the transform `ctm` (object to world), its orientation reversed or not, as a course shape

@@ -33,7 +33,7 @@ struct GraphicsState {
     bool reverse_orientation = false;
     std::string material_name = "default";  // a key of the translation's materials, or "default"
     Json material = {{"type", "diffuse"}, {"albedo", {0.5, 0.5, 0.5}}};
-    std::optional<Json> emission;  // the AreaLightSource in force
+    std::optional<Json> emission;  // the AreaLightSource in force: the keys its shapes' material gains
 };
 
 struct CameraState {
@@ -435,7 +435,12 @@ void Reader::shape(const std::string& type, PbrtParameters& params, const std::s
             throw InputError(where + "Shape under AreaLightSource with a dielectric material: the course's glass "
                              "does not emit");
         }
-        m["emission"] = *state_.emission;
+        if (type == "sphere" && state_.emission->contains("two_sided")) {
+            throw InputError(where +
+                             "Shape \"sphere\" under a twosided AreaLightSource: the course's sphere "
+                             "lights emit outward only (two-sided: trianglemesh, plymesh)");
+        }
+        m.update(*state_.emission);
         name += " (emitting)";
     }
     // One course material per distinct content under one name: "Light (emitting)", "Light (emitting) 2", ...

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "rt/io/input_file.hpp"
@@ -129,6 +130,12 @@ Scene read_scene(const nlohmann::json& root, const fs::path& file) {
         const Node shapes = top["shapes"];
         for (std::size_t i = 0; i < shapes.array_size(); ++i) {
             scene.shapes.push_back(read_shape(shapes.element(i), material_index, folder, material_names));
+            if (std::holds_alternative<SphereShape>(scene.shapes.back().geometry) &&
+                scene.material_of(scene.shapes.back()).two_sided) {
+                shapes.element(i)["material"].fail(
+                    "a sphere emits outward only: \"two_sided\" is for quads, "
+                    "triangles, boxes and meshes");
+            }
         }
     }
     const std::vector<bool> used = scene.used_materials();

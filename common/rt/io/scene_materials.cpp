@@ -131,12 +131,19 @@ Material read_material(const Node& node, const std::string& name, const fs::path
         node["type"].fail("unknown material type " + quote(type) + suggestion(type, names) + "; expected " +
                           expected);
     }
-    node.expect_object(kind->keys, "a " + type + " material");
+    std::vector<std::string_view> keys = kind->keys;
+    if (kind->takes("emission")) keys.push_back("two_sided");
+    node.expect_object(keys, "a " + type + " material");
     Material m;
     m.name = name;
     m.type = type;
     kind->read(node, scene_folder, m);
     if (node.has("emission")) m.emission = node["emission"].color_in(kLargestNumber);
+    if (node.has("two_sided")) {
+        m.two_sided = node["two_sided"].boolean();
+        if (m.two_sided && !m.emissive())
+            node["two_sided"].fail("only an emitting material (emission above 0) is two-sided");
+    }
     return m;
 }
 
