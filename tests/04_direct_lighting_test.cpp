@@ -1,12 +1,13 @@
-// Chapter 04: direct lighting. The BRDFs (ρ/π, energy, reciprocity, sampling hooks), light sampling (points
-// on the light, pdfs, the far sphere), the exact irradiance formulas against brute Monte Carlo, and renders:
-// the analytic scene against its exact image, ray counts, and the default scene end to end.
+// Chapter 04: direct lighting. The BRDFs (normalization, energy, reciprocity, sampling hooks), light sampling
+// (points on the light, pdfs, the far sphere), the exact irradiance formulas against brute Monte Carlo, and
+// renders: the analytic scene against its exact image, ray counts, and the default scene end to end.
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -114,19 +115,68 @@ Shape shape(decltype(Shape::geometry) geometry, int material) {
 // ---------------------------------------------------------------------------------------------------------
 // BRDFs
 
-TEST_CASE("The Lambert BRDF is albedo over pi above the surface and 0 below", "[brdf][ex:ch04.lambert]") {
+namespace {
+
+// ∫ f cos θ_i dω_i over the hemisphere for wo along the normal, by the midpoint rule over (cos θ, φ), where
+// dω = d(cos θ) dφ: what a BRDF's normalization must make equal to its albedo.
+double reflected_at_normal(const Bsdf& brdf) {
+    constexpr int kCos = 20000, kPhi = 4;
+    double sum = 0;
+    for (int i = 0; i < kCos; ++i) {
+        const double cos_theta = (i + 0.5) / kCos;
+        for (int j = 0; j < kPhi; ++j) {
+            const Vec3 wi = polar(std::acos(cos_theta), 2 * std::numbers::pi * (j + 0.5) / kPhi);
+            sum += double(eval(brdf, kUp, wi, kUp).g) * cos_theta;
+        }
+    }
+    return sum * 2 * std::numbers::pi / (double(kCos) * kPhi);
+}
+
+// The failure names the kind of mistake a reflected fraction `ratio` (of the albedo) points to.
+std::string normalization_mistake(double ratio, double exponent) {
+    std::ostringstream out;
+    out << "the BRDF reflects " << ratio << " of its albedo, not all of it: the constant is not normalized "
+        << "over the hemisphere (∫ f cos θ dω must be ρ)";
+    if (std::abs(ratio - (exponent + 1) / (exponent + 2)) < 1e-3)
+        out << "; this is the cosine left out of the normalization (∫ f dω = ρ, a density's constant)";
+    return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("The Lambert BRDF is one constant above the surface that reflects all of its albedo, and 0 below",
+          "[brdf][ex:ch04.lambert]") {
     const LambertBrdf lambert{Color(0.2f, 0.5f, 0.8f)};
+    const Color f0 = eval(lambert, kUp, kUp, kUp);
     Pcg32 rng(1, 1);
     for (int i = 0; i < 1000; ++i) {
         Vec3 wo = random_unit(rng), wi = random_unit(rng);
         wo.z = std::abs(wo.z);
         wi.z = std::abs(wi.z);
         const Color f = eval(lambert, wo, wi, kUp);
-        CHECK(f.r == Approx(0.2 / std::numbers::pi));
-        CHECK(f.g == Approx(0.5 / std::numbers::pi));
-        CHECK(f.b == Approx(0.8 / std::numbers::pi));
+        INFO("Lambert's f must not depend on the directions above the surface");
+        REQUIRE(f.r == Approx(f0.r));
+        REQUIRE(f.g == Approx(f0.g));
+        REQUIRE(f.b == Approx(f0.b));
         CHECK(eval(lambert, wo, -wi, kUp) == Color(0));
         CHECK(eval(lambert, -wo, wi, kUp) == Color(0));
+    }
+    const LambertBrdf white{Color(1)};
+    const double ratio = reflected_at_normal(white);
+    INFO(normalization_mistake(ratio, 0));
+    CHECK(ratio == Approx(1).epsilon(1e-4));
+    // The albedo scales f channel by channel.
+    CHECK(f0.r / f0.b == Approx(0.25));
+    CHECK(f0.g / f0.b == Approx(0.625));
+}
+
+TEST_CASE("The glossy lobe about the normal reflects all of its albedo, for broad and sharp lobes",
+          "[brdf][ex:ch04.glossy]") {
+    for (const Real exponent : {0.0f, 1.0f, 6.0f, 48.0f, 1000.0f}) {
+        INFO("exponent e = " << exponent);
+        const double ratio = reflected_at_normal(GlossyBrdf{Color(1), exponent});
+        INFO(normalization_mistake(ratio, exponent));
+        CHECK(ratio == Approx(1).epsilon(1e-3));
     }
 }
 
@@ -181,8 +231,8 @@ TEST_CASE("Every BRDF conserves energy for ten outgoing directions",
 TEST_CASE("Lambert reflects all of albedo 1 and the lobes are normalized at normal incidence",
           "[brdf][statistical][ex:ch04.cosine_hemisphere][ex:ch04.glossy][ex:ch04.lambert]"
           "[ex:ch04.power_cosine][ex:ch04.power_cosine_pdf]") {
-    // Not only <= 1: the (e + 2) / (2π) factor makes a lobe reflect exactly ρ when it lies wholly above the
-    // surface. Estimated with the BRDF's own sampling (f cos / pdf = ρ (e + 2)/(e + 1) cos θ_i).
+    // Not only <= 1: the normalization makes a lobe reflect exactly ρ when it lies wholly above the surface.
+    // Estimated with the BRDF's own sampling.
     for (const auto& [name, owner] : white_brdfs()) {
         const Bsdf& brdf = *owner;
         INFO(name);

@@ -138,10 +138,10 @@ TEST_CASE("Range parameters at 0 give the input back, to the bit",
     REQUIRE(atrous.pixels() == b.colour.pixels());
 }
 
-TEST_CASE("On a flat noisy patch the variance falls by the sum of the squared weights",
+TEST_CASE("On a flat noisy patch each filter leaves the variance its fixed kernel predicts",
           "[filters][statistical][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
     // Uniform noise in [0, 1): variance 1/12. With every guide equal and the colour's switched off, each
-    // filter is a fixed linear kernel k, and the output's variance is Σ k² / 12.
+    // filter is a fixed linear kernel k of independent pixels, whose output variance follows from k.
     const int size = 256;
     Pcg32 rng(11, 3);
     const FeatureBuffers b = flat_buffers(size, size, [&](int, int) { return Color(rng.next_real()); });
@@ -339,11 +339,11 @@ TEST_CASE("The edge-stopping weight is exp(-sum of d2 / s2) on guides worked by 
     }
 }
 
-TEST_CASE("One a-trous level filters the variance by the squared normalised weights, inside and at a corner",
+TEST_CASE("One a-trous level gives the variance of its weighted mean, inside and at a corner",
           "[filters][ex:ch10.atrous_pixel][ex:ch10.edge_stopping]") {
-    // Every guide equal and the colour's off: w = h = h_j h_k, and Var' = Σ (h / Σ h)² Var. Inside, Σ h_j = 1
-    // and Σ h_j² = 70/256 in each axis; at the corner (0, 0) only taps 0, step, 2 step of each axis are in
-    // the image, weighing 6, 4, 1 (/16): Σ h_j² / (Σ h_j)² = (53/256) / (11/16)². The colour x + 2y is
+    // Every guide equal and the colour's off: w = h = h_j h_k, a weighted mean of independent pixels. Inside,
+    // Σ h_j = 1 and Σ h_j² = 70/256 in each axis; at the corner (0, 0) only taps 0, step, 2 step of each axis
+    // are in the image, weighing 6, 4, 1 (/16): Σ h_j² / (Σ h_j)² = (53/256) / (11/16)². The colour x + 2y is
     // linear: inside it stays, at the corner it is the weighted mean, 6 step/11 in x and in y.
     const int size = 20;
     const FeatureBuffers b = flat_buffers(size, size, [](int x, int y) { return Color(Real(x + 2 * y)); });

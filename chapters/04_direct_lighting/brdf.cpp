@@ -19,7 +19,8 @@ Real lobe_power(const Vec3& wi, const Vec3& axis, Real exponent) {
     return c > 0 ? std::pow(c, exponent) : Real(0);
 }
 
-// Lambert: f = ρ / π when wo and wi are both above the surface, else 0.
+// Lambert: one constant, normalized so that albedo ρ reflects the fraction ρ, when wo and wi are both above
+// the surface, else 0.
 Color lambert_eval(const LambertBrdf& lambert, const Vec3& wo, const Vec3& wi, const Vec3& n) {
     // EXERCISE(ch04.lambert) § Four BRDFs
     return above(wo, wi, n) ? lambert.albedo * kInvPi : Color(0);
@@ -40,8 +41,8 @@ BsdfSample mirror_sample(const MirrorBrdf& mirror, const Vec3& wo, const Vec3& n
     // END EXERCISE
 }
 
-// The glossy BRDF's normalized lobe f = ρ (e + 2) / (2π) cos^e α around `axis` (r(wo) for glossy), 0 unless
-// wo and wi are both above the surface.
+// The glossy BRDF's lobe f ∝ ρ cos^e α around `axis` (r(wo) for glossy), normalized so that about the normal
+// it reflects the fraction ρ; 0 unless wo and wi are both above the surface.
 Color lobe_eval(const Color& albedo, Real exponent, const Vec3& axis, const Vec3& wo, const Vec3& wi,
                 const Vec3& n) {
     // EXERCISE(ch04.glossy) § Four BRDFs
@@ -57,7 +58,7 @@ Color retroreflective_eval(const RetroreflectiveBrdf& retro, const Vec3& wo, con
     // END EXERCISE
 }
 
-// pdf = (e + 1) / (2π) cos^e α: the density of sample_power_cosine about `axis`.
+// The density of sample_power_cosine about `axis`.
 Real lobe_pdf(Real exponent, const Vec3& axis, const Vec3& wi) {
     return power_cosine_pdf(glm::dot(wi, axis), exponent);
 }

@@ -36,8 +36,9 @@ BsdfSample SmoothDielectric::sample(const Vec3& wo, const Vec3& n, Vec2, Real u_
     // f |cos θ_i| / pdf = weight, the convention of every delta lobe (chapter 04's mirror).
     const Real cos_i = std::abs(glm::dot(d.wi, n));
     s.f = cos_i > 0 ? weight / cos_i : Color(0);
-    // Radiance's 1 / η² comes back when the path leaves the glass: roulette leaves it out (bsdf.hpp).
-    if (s.transmitted && transport == Transport::kRadiance) s.roulette_scale = 1 / (eta * eta);
+    // A transmission's weight is radiance's rescaling across the interface alone, which comes back when the
+    // path leaves the glass: roulette leaves it out (bsdf.hpp).
+    if (s.transmitted && transport == Transport::kRadiance) s.roulette_scale = d.weight.g;
     return s;
 }
 

@@ -117,7 +117,7 @@ bool refract_through(vec3 wo, vec3 n, float eta, out vec3 wt) {
 // ---- the BSDF of a material, from one side ----
 bool above(vec3 wo, vec3 wi, vec3 n) { return dot(wo, n) > 0.0 && dot(wi, n) > 0.0; }
 
-// The lobe f = ρ (e + 2) / (2π) cos^e α around `axis`.
+// Chapter 04's normalized lobe f ∝ ρ cos^e α around `axis` (lobe_eval).
 vec3 lobe_eval(vec3 albedo, float exponent, vec3 axis, vec3 wo, vec3 wi, vec3 n) {
     if (!above(wo, wi, n)) return vec3(0.0);
     const float c = min(1.0, dot(wi, axis));

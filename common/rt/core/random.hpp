@@ -31,7 +31,7 @@ public:
         return (xorshifted >> rotation) | (xorshifted << ((32u - rotation) & 31u));
     }
 
-    // Uniform in [0, 1): the top 24 bits scaled by 2^-24, so the largest value is 1 − 2^-24.
+    // Uniform in [0, 1): the top bits a float significand holds exactly, scaled so the largest is below 1.
     Real next_real() { return Real(next_uint() >> 8) * Real(0x1.0p-24); }
     Vec2 next_vec2() {
         const Real u = next_real();
