@@ -70,7 +70,7 @@ Hit hit_facing_up() {
 // Chapter 06's paths on `scene` (the effects chapter 06 simulates for it), guided after `passes` training
 // passes; `spatial` is the spatial tree's threshold c, `combination` what the image is made of.
 GuidedRender render_guided_scene(const Scene& scene, int size, int spp, std::uint64_t seed, int threads,
-                                 int passes, double spatial = 12,
+                                 int passes, double spatial = 12000,
                                  PassCombination combination = PassCombination::kInverseVariance) {
     const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
     const RenderScene prepared(scene, simulated);
@@ -252,39 +252,23 @@ TEST_CASE("The spatial tree splits a leaf past the threshold along alternating a
     CHECK(tree.split(30) == std::vector<std::uint32_t>{0, 1, 2, 3});
 }
 
-TEST_CASE("A leaf splits past c times the square root of its pass's paths, so a small image still cuts space",
-          "[guiding]") {
-    GuidingSettings settings;
-    settings.spatial_threshold = 2;
-    GuidingField field(Aabb{Vec3(0), Vec3(8)}, settings);
-    // A pass of 100 paths: the threshold is 2 √100 = 20, and 21 vertices split the root.
-    for (int i = 0; i < 21; ++i) field.record(Vec3(0.5f), kLobe, 1);
-    field.finish_pass(100);
-    CHECK(field.leaf_count() > 1);
-    // A pass of 400 paths: the threshold is 40; 39 vertices in one leaf do not split it.
-    const std::size_t leaves = field.leaf_count();
-    for (int i = 0; i < 39; ++i) field.record(Vec3(7.5f), kLobe, 1);
-    field.finish_pass(400);
-    CHECK(field.leaf_count() == leaves);
-}
-
 TEST_CASE("The stochastic box filter lands records near a leaf's border in the neighbouring leaf too",
           "[guiding]") {
     for (const SpatialFilter filter : {SpatialFilter::kNearest, SpatialFilter::kBox}) {
         GuidingSettings settings;
-        settings.spatial_threshold = 3;  // 30 vertices for a pass of 100 paths
+        settings.spatial_threshold = 30;
         settings.spatial_filter = filter;
         GuidingField field(Aabb{Vec3(0), Vec3(8)}, settings);
         // Pass 1 splits the box into four leaves, as in the test above: [0, 4] × [0, 4] × [0, 8] holds p.
         for (int i = 0; i < 100; ++i) field.record(Vec3(0.5f), kLobe, 1);
         field.record(Vec3(7), kLobe, 1);
-        field.finish_pass(100);
+        field.finish_pass();
         REQUIRE(field.leaf_count() == 4);
         // Pass 2 records only at p, 0.1 from the border x = 4 (each record's direction its own).
         const Vec3 p(3.9f, 1, 1);
         for (int i = 0; i < 200; ++i)
             field.record(p, glm::normalize(Vec3(Real(i % 17) - 8, Real(i % 13) - 6, 3)), 1);
-        field.finish_pass(100);
+        field.finish_pass();
         CAPTURE(to_string(filter));
         CHECK(field.guide_at(p) != nullptr);
         // The leaf beyond the border learned only from the box filter's records.
@@ -361,7 +345,7 @@ TEST_CASE("A training path records, at each non-delta vertex, what scattered lig
     recorder.reached(third, BsdfFlags{}, 2);
     path.L += Color(0.05f, 0.1f, 0.3f);
     recorder.record();
-    field.finish_pass(1);
+    field.finish_pass();
     // L = (0.75, 0.8, 1.4). Vertex 1: the mean of (L − 0.4) / 0.5 = (0.7, 0.8, 2) over pdf 0.5: 7 / 3.
     // Vertex 2: the mean of 0.05 / 0.2 and 0.1 / 0.4 (the blue channel carries nothing) over pdf 0.25: 1.
     const DirectionalQuadtree* guide = field.guide_at(Vec3(0));
@@ -393,7 +377,7 @@ TEST_CASE("Guided paths keep the white furnace (unguided: nothing scattered to l
     const Scene furnace = furnace_scene();
     const int size = 32;
     // The image is the last render's (every pass's image is chapter 06's, but weighted they are not its image).
-    const GuidedRender guided = render_guided_scene(furnace, size, 16, 1, 2, 3, 12, PassCombination::kLast);
+    const GuidedRender guided = render_guided_scene(furnace, size, 16, 1, 2, 3, 12000, PassCombination::kLast);
     const RenderResult& image = guided.result;
     REQUIRE(image.image.all_finite());
     // A convex sphere under the sky receives only the sky's light, which next-event estimation finds: no
@@ -444,13 +428,13 @@ TEST_CASE("Combined by inverse variance, the guided closed box keeps L = 1 and e
           "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
           "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
     const GuidedRender box =
-        render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12, PassCombination::kInverseVariance);
+        render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kInverseVariance);
     REQUIRE(box.passes.size() == 3);
     CHECK(box.passes[0].variance == 0);  // one sample per pixel: no variance to measure
     CHECK(box.passes[1].variance > 0);
     CHECK(box.passes[2].variance > 0);
     REQUIRE(box.result.image.all_finite());
-    const GuidedRender last = render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12, PassCombination::kLast);
+    const GuidedRender last = render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kLast);
     CHECK(box.result.image.pixels() != last.result.image.pixels());
     CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
 }
@@ -504,8 +488,8 @@ TEST_CASE("A guided render is the same image on 1 and 2 threads, its space split
           "[ex:ch04.uniform_hemisphere][ex:ch04.uniform_hemisphere_pdf][ex:ch05.termination]"
           "[ex:ch06.mis_weight][ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
     const Scene scene = load_scene(scene_path("ch06_default.json"));
-    const GuidedRender one = render_guided_scene(scene, 24, 4, 5, 1, 4, 8);
-    const GuidedRender two = render_guided_scene(scene, 24, 4, 5, 2, 4, 8);
+    const GuidedRender one = render_guided_scene(scene, 24, 4, 5, 1, 4, 200);
+    const GuidedRender two = render_guided_scene(scene, 24, 4, 5, 2, 4, 200);
     CHECK(one.result.image.pixels() == two.result.image.pixels());
     REQUIRE(one.passes.size() == 4);
     CHECK(one.passes.back().leaves > 8);

@@ -97,7 +97,7 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
         MeasuredRender m =
             render_measured(GuidedTracer(tracer, field, true), camera, pass, guided.combination);
         const RenderResult& r = m.result;
-        field.finish_pass(double(pass.width) * pass.height * pass.samples_per_pixel);
+        field.finish_pass();
         out.passes.push_back(
             {pass.samples_per_pixel, r.seconds, r.rays, field.leaf_count(), field.bytes(), m.variance});
         training_seconds += r.seconds;
@@ -140,7 +140,7 @@ std::vector<std::string> guiding_notes(const GuidedRender& render, const GuidedR
     std::snprintf(
         text, sizeof text,
         "guiding: %zu training passes, then the image; one-sample MIS, guide chosen with alpha %.2f; "
-        "spatial split past %.3g sqrt(paths of the pass) vertices, quadrants split past %.3g of the energy, depth "
+        "spatial split past %.0f sqrt(2^k) vertices, quadrants split past %.3g of the energy, depth "
         "<= %d; image: %s",
         render.passes.size(), double(f.guided_fraction), f.spatial_threshold, f.energy_threshold, f.max_depth,
         guided.combination == PassCombination::kLast ? "the last render" : "passes weighted by 1 / variance");

@@ -40,8 +40,9 @@ void GuidingField::record(const Vec3& p, const Vec3& wi, Real weight) {
     recording_[space_.leaf_of(at)].record(wi, weight);
 }
 
-void GuidingField::finish_pass(double paths) {
-    const std::vector<std::uint32_t> origin = space_.split(settings_.spatial_threshold * std::sqrt(paths));
+void GuidingField::finish_pass() {
+    const std::vector<std::uint32_t> origin =
+        space_.split(settings_.spatial_threshold * std::sqrt(std::ldexp(1.0, passes_)));
     std::vector<DirectionalQuadtree> guides, recording;
     guides.reserve(origin.size());
     recording.reserve(origin.size());

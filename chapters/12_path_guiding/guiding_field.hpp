@@ -1,12 +1,9 @@
 // The guiding distribution of a scene: the spatial tree (spatial_tree.hpp) and, in each of its leaves, two
 // directional quadtrees (directional_quadtree.hpp): the guide, learned in the passes before, which paths
 // sample from, and the one the current pass records into. Training runs in passes (Practical Path Guiding,
-// § 4): after a pass of N paths the leaves that counted more than c √N vertices split (each half starts from its
+// § 4): after pass k the leaves that counted more than c √(2^k) vertices split (each half starts from its
 // parent's trees), every recorded quadtree is refined by its own energy and becomes the guide, and an empty
 // copy of it records the next pass. Each pass thus learns from paths that the previous one already guided.
-// The paper's c √(2^k) counts passes of 2^k samples on an image of about a million pixels; here the threshold
-// is c √N for a pass of N paths (the paper's c = 12000 is c = 12 of this), so a small image cuts space as
-// finely, relative to its paths, as a large one.
 #pragma once
 
 #include <cstddef>
@@ -32,7 +29,7 @@ constexpr auto names_of(SpatialFilter) {
 }
 
 struct GuidingSettings {
-    double spatial_threshold = 12;     // c: a leaf splits after a pass of N paths past c √N vertices
+    double spatial_threshold = 12000;  // c: a leaf splits after pass k past c √(2^k) vertices (the paper's)
     double energy_threshold = 0.01;    // ρ: a quadrant splits past this share of its tree's energy
     int max_depth = 20;                // the quadtrees' deepest level
     Real guided_fraction = 0.5;        // α: the chance a guided vertex draws from the guide, not the BSDF
@@ -52,8 +49,8 @@ class GuidingField {
     // p (Müller's stochastic box filter, 2019: a leaf learns from the vertices near it too, and neighbouring
     // guides blend at their border), the point's numbers a hash of p and wi (the same on any thread).
     void record(const Vec3& p, const Vec3& wi, Real weight);
-    // Ends a pass of `paths` paths as the header says.
-    void finish_pass(double paths);
+    // Ends a pass as the header says.
+    void finish_pass();
 
     const GuidingSettings& settings() const { return settings_; }
     int passes() const { return passes_; }

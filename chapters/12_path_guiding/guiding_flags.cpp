@@ -19,8 +19,8 @@ void add_guiding_flags(CLI::App& app, GuidedRenderOptions& guided, GuidePictureR
                    "alpha: the chance a guided vertex draws from the guide rather than the BSDF")
         ->check(CLI::Range(0.0, 0.99));
     app.add_option("--spatial-threshold", guided.field.spatial_threshold,
-                   "c: a leaf of the spatial tree splits after a pass of N paths past c sqrt(N) vertices")
-        ->check(CLI::Range(0.01, 1e9));
+                   "c: a leaf of the spatial tree splits after pass k past c sqrt(2^k) vertices")
+        ->check(CLI::Range(1.0, 1e9));
     app.add_option("--energy-threshold", guided.field.energy_threshold,
                    "rho: a quadrant splits past this share of its quadtree's energy")
         ->check(CLI::Range(1e-4, 0.5));
