@@ -32,7 +32,7 @@ struct GuidingSettings {
     double spatial_threshold = 12000;  // c: a leaf splits after pass k past c √(2^k) vertices (the paper's)
     double energy_threshold = 0.01;    // ρ: a quadrant splits past this share of its tree's energy
     int max_depth = 20;                // the quadtrees' deepest level
-    Real guided_fraction = 0.5;        // α: the chance a guided vertex draws from the guide, not the BSDF
+    Real guided_fraction = Real(0.1);  // α: the chance a guided vertex draws from the guide (measured: § 7)
     SpatialFilter spatial_filter = SpatialFilter::kNearest;
 };
 
