@@ -9,10 +9,18 @@ namespace rt {
 WideRay make_wide_ray(const Ray& ray) {
     const Vec3 inverse = inverse_direction(ray.direction);
     const Vec3& d = ray.direction;
-    auto lanes = [](const Vec3& v) { return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)}; };
+    auto lanes = [](const Vec3& v) {
+        return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)};
+    };
     const bool finite =
         std::abs(inverse.x) < kInfinity && std::abs(inverse.y) < kInfinity && std::abs(inverse.z) < kInfinity;
-    return {ray, inverse, lanes(ray.origin), lanes(inverse), finite, {int(d.x < 0), int(d.y < 0), int(d.z < 0)}};
+    std::array<std::size_t, 3> near_offset{}, far_offset{};
+    for (int i = 0; i < 3; ++i) {
+        const int near = int(d[i] < 0);  // the corner whose face slab i is entered by: 1 (upper) when d_i < 0
+        near_offset[std::size_t(i)] = WideBvhNode::offset_of(near, i);
+        far_offset[std::size_t(i)] = WideBvhNode::offset_of(1 - near, i);
+    }
+    return {ray, inverse, lanes(ray.origin), lanes(inverse), finite, near_offset, far_offset};
 }
 
 WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
@@ -40,8 +48,8 @@ std::uint32_t WideBvh::collapse(const Bvh& binary, std::uint32_t binary_node, co
         int widest = -1;
         for (int k = 0; k < count; ++k) {
             const BvhNode& c = tree[children[std::size_t(k)]];
-            if (!c.leaf() && (widest < 0 || c.box().half_area() >
-                                                tree[children[std::size_t(widest)]].box().half_area()))
+            if (!c.leaf() &&
+                (widest < 0 || c.box().half_area() > tree[children[std::size_t(widest)]].box().half_area()))
                 widest = k;
         }
         if (widest < 0) break;
