@@ -9,9 +9,7 @@ namespace rt {
 WideRay make_wide_ray(const Ray& ray) {
     const Vec3 inverse = inverse_direction(ray.direction);
     const Vec3& d = ray.direction;
-    auto lanes = [](const Vec3& v) {
-        return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)};
-    };
+    auto lanes = [](const Vec3& v) { return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)}; };
     const bool finite =
         std::abs(inverse.x) < kInfinity && std::abs(inverse.y) < kInfinity && std::abs(inverse.z) < kInfinity;
     std::array<std::size_t, 3> near_offset{}, far_offset{};
@@ -48,8 +46,8 @@ std::uint32_t WideBvh::collapse(const Bvh& binary, std::uint32_t binary_node, co
         int widest = -1;
         for (int k = 0; k < count; ++k) {
             const BvhNode& c = tree[children[std::size_t(k)]];
-            if (!c.leaf() &&
-                (widest < 0 || c.box().half_area() > tree[children[std::size_t(widest)]].box().half_area()))
+            if (!c.leaf() && (widest < 0 || c.box().half_area() >
+                                                tree[children[std::size_t(widest)]].box().half_area()))
                 widest = k;
         }
         if (widest < 0) break;

@@ -57,6 +57,7 @@ struct WideRay {
     std::array<std::size_t, 3> near_offset, far_offset;
 };
 
+
 WideRay make_wide_ray(const Ray& ray);
 
 // slab_entry (aabb.hpp) on the node's four boxes at once: each box's entry distance on [0, t_max], or +∞
@@ -136,12 +137,10 @@ class WideBvh {
 };
 
 template <typename Test>
-bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test,
-                       TraversalStats* stats) const {
+bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test, TraversalStats* stats) const {
     // EXERCISE(ch02.wide_bvh_traversal) § Which tree draws the picture, and the exercise wide_bvh_traversal
     if (nodes_.empty()) return false;
-    // A child still to visit: a node (count 0) or a leaf's items, and the distance at which its box is
-    // entered.
+    // A child still to visit: a node (count 0) or a leaf's items, and the distance at which its box is entered.
     struct Pending {
         std::uint32_t child;
         std::uint32_t count;
@@ -187,8 +186,8 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                     for (int k = 0; k < kWideBvhWidth; ++k) {
                         entered[n] = {node.child[k], node.count[k], t[k]};
                         // Every interior child's node asked for early, entered or not: choosing by `entered`
-                        // too cost more than it saved. A leaf asks for this node again, already here (a
-                        // choice of address, not a branch).
+                        // too cost more than it saved. A leaf asks for this node again, already here (a choice
+                        // of address, not a branch).
                         const std::uint32_t ask = node.count[k] == 0 ? node.child[k] : next.child;
                         __builtin_prefetch(&nodes_[ask]);
                         __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[ask]) + 64);
