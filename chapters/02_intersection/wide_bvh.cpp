@@ -12,13 +12,7 @@ WideRay make_wide_ray(const Ray& ray) {
     auto lanes = [](const Vec3& v) { return std::array<BoxLanes, 3>{BoxLanes(v.x), BoxLanes(v.y), BoxLanes(v.z)}; };
     const bool finite =
         std::abs(inverse.x) < kInfinity && std::abs(inverse.y) < kInfinity && std::abs(inverse.z) < kInfinity;
-    std::array<std::size_t, 3> near_offset{}, far_offset{};
-    for (int i = 0; i < 3; ++i) {
-        const int near = int(d[i] < 0);  // the corner whose face slab i is entered by: 1 (upper) when d_i < 0
-        near_offset[std::size_t(i)] = WideBvhNode::offset_of(near, i);
-        far_offset[std::size_t(i)] = WideBvhNode::offset_of(1 - near, i);
-    }
-    return {ray, inverse, lanes(ray.origin), lanes(inverse), finite, near_offset, far_offset};
+    return {ray, inverse, lanes(ray.origin), lanes(inverse), finite, {int(d.x < 0), int(d.y < 0), int(d.z < 0)}};
 }
 
 WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {

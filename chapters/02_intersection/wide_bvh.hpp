@@ -37,12 +37,7 @@ struct alignas(64) WideBvhNode {
         return {{lower[0][k], lower[1][k], lower[2][k]}, {upper[0][k], upper[1][k], upper[2][k]}};
     }
     bool used(int k) const { return corner[0][0][k] <= corner[1][0][k]; }
-    // The byte offset of corner[c][axis] from corner[0][0] (the corners lie one after the other).
-    static constexpr std::size_t offset_of(int c, int axis) {
-        return std::size_t(3 * c + axis) * sizeof(Coordinates);
-    }
 };
-static_assert(sizeof(WideBvhNode::corner) == 6 * sizeof(WideBvhNode::Coordinates));
 
 // What a ray needs for the four-box slab test, computed once per ray.
 struct WideRay {
@@ -50,11 +45,9 @@ struct WideRay {
     Vec3 inverse_d;
     std::array<BoxLanes, 3> origin, inverse;  // o_i and 1 / d_i in every lane
     bool finite;                              // every 1 / d_i finite: the SIMD test applies
-    // Where in a node's corners the ray enters slab i, as a byte offset from corner[0][0]: of corner[0][i]
-    // (lower) when d_i >= 0, of corner[1][i] (upper) when d_i < 0; it leaves by the other. An offset, not a
-    // branch on the sign: the walk loads the node's coordinates with no jump to mispredict, and no index
-    // arithmetic at every node.
-    std::array<std::size_t, 3> near_offset, far_offset;
+    // The corner whose face the ray enters slab i by: 0 (lower) when d_i >= 0, 1 (upper) when d_i < 0; it
+    // leaves by the other. An index, not a branch: the walk loads corner[near_corner[i]] with no jump to mispredict.
+    std::array<int, 3> near_corner;
 };
 
 
@@ -84,11 +77,10 @@ inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real 
     // max_i of it is it of max_i, bit for bit (and min alike).
     BoxLanes t_near_max = 0, t_far_min = kInfinity;
     for (int i = 0; i < 3; ++i) {
-        const char* corners = reinterpret_cast<const char*>(node.corner.data());
-        const Real* near = reinterpret_cast<const Real*>(corners + r.near_offset[i]);
-        const Real* far = reinterpret_cast<const Real*>(corners + r.far_offset[i]);
-        const BoxLanes t_near = (BoxLanes(near, stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
-        const BoxLanes t_far = (BoxLanes(far, stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
+        const auto& near = node.corner[r.near_corner[i]][i];
+        const auto& far = node.corner[1 - r.near_corner[i]][i];
+        const BoxLanes t_near = (BoxLanes(near.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
+        const BoxLanes t_far = (BoxLanes(far.data(), stdx::vector_aligned) - r.origin[i]) * r.inverse[i];
         t_near_max = i == 0 ? t_near : stdx::max(t_near_max, t_near);
         t_far_min = i == 0 ? t_far : stdx::min(t_far_min, t_far);
     }
