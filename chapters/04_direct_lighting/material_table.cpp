@@ -97,7 +97,7 @@ void MaterialTable::add(const Material& m, bool used, const EffectSet& simulated
     sides_.push_back(&outside);
     sides_.push_back(shading.two_sided ? &shading.bsdf(m, false, owned_.emplace_back()) : &outside);
     emission_.push_back(m.emission);
-    two_sided_.push_back(m.two_sided);
+    back_emission_.push_back(m.two_sided ? m.emission : Color(0));
     std::unique_ptr<Textured> textured;
     if (!m.textures.empty()) {
         textured = std::make_unique<Textured>(Textured{m, {}, shading.bsdf});

@@ -56,7 +56,7 @@ class MaterialTable {
     // What the ray meets when it hits material m from that side: its emission, on the outside only unless
     // the material is two-sided.
     Color emission(int material, bool front_face) const {
-        return front_face || two_sided_[std::size_t(material)] ? emission_[std::size_t(material)] : Color(0);
+        return front_face ? emission_[std::size_t(material)] : back_emission_[std::size_t(material)];
     }
     // The medium inside material m's shapes (null: nothing there, the ray travels unattenuated).
     const Medium* interior(int material) const { return interiors_[std::size_t(material)].get(); }
@@ -82,7 +82,7 @@ class MaterialTable {
     std::vector<std::unique_ptr<const Textured>> textured_;  // per material; null: constant colours
     std::vector<const Bsdf*> sides_;                         // 2 per material: outside, inside
     std::vector<Color> emission_;
-    std::vector<bool> two_sided_;  // the material's emission leaves both sides
+    std::vector<Color> back_emission_;  // the emission of the back side: 0 unless the material is two-sided
     std::vector<std::unique_ptr<Medium>> interiors_;
     std::unique_ptr<Medium> exterior_;
     std::vector<std::string> notes_;

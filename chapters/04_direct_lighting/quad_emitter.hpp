@@ -16,23 +16,33 @@ class QuadEmitter final : public Light {
     const QuadLight& quad() const { return quad_; }
 
     std::optional<LightSample> sample(const Vec3& p, Vec2 u, QuadLightSampling quads) const override {
-        return sample_quad_light(facing(quad_, p), p, u, quads);
+        if (quad_.two_sided) return sample_quad_light(facing(quad_, p), p, u, quads);
+        return sample_quad_light(quad_, p, u, quads);  // one-sided: no copy on the hot path
     }
     Real pdf(const Vec3& p, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
-        const QuadLight quad = facing(quad_, p);
-        const Real cos_light = -glm::dot(quad_.two_sided ? quad.normal : hit.normal, wi);
-        if (!(cos_light > 0)) return 0;
-        if (picked.quads == QuadLightSampling::kSolidAngle) {
-            if (const auto view = solid_angle_view(quad, p))
-                return picked.probability * Real(1 / view->solid_angle());
+        if (quad_.two_sided) {
+            const QuadLight quad = facing(quad_, p);
+            return pdf_of(quad, quad.normal, p, wi, hit.t, picked);
         }
-        return picked_planar_pdf(quad.radiance, hit.t, cos_light, picked.total_weight) * sides(quad);
+        return pdf_of(quad_, hit.normal, p, wi, hit.t, picked);
     }
     Real power_weight() const override { return luminance(quad_.radiance) * area_of(quad_) * sides(quad_); }
     bool is_delta() const override { return false; }
     std::string_view kind() const override { return "quad"; }
 
   private:
+    // The density of wi toward `quad`, the one-sided light p sees, hit at distance t where its normal is n.
+    static Real pdf_of(const QuadLight& quad, const Vec3& n, const Vec3& p, const Vec3& wi, Real t,
+                       const PickedLight& picked) {
+        const Real cos_light = -glm::dot(n, wi);
+        if (!(cos_light > 0)) return 0;
+        if (picked.quads == QuadLightSampling::kSolidAngle) {
+            if (const auto view = solid_angle_view(quad, p))
+                return picked.probability * Real(1 / view->solid_angle());
+        }
+        return picked_planar_pdf(quad.radiance, t, cos_light, picked.total_weight) * sides(quad);
+    }
+
     QuadLight quad_;
 };
 

@@ -14,7 +14,8 @@ class TriangleEmitter final : public Light {
     const TriangleLight& triangle() const { return triangle_; }
 
     std::optional<LightSample> sample(const Vec3& p, Vec2 u, QuadLightSampling) const override {
-        return sample_triangle_light(facing(triangle_, p), p, u);
+        if (triangle_.two_sided) return sample_triangle_light(facing(triangle_, p), p, u);
+        return sample_triangle_light(triangle_, p, u);  // one-sided: no copy on the hot path
     }
     Real pdf(const Vec3& p, const Vec3& wi, const Hit& hit, const PickedLight& picked) const override {
         const Real cos_light = -glm::dot(triangle_.two_sided ? facing(triangle_, p).normal : hit.normal, wi);
