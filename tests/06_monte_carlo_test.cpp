@@ -40,6 +40,7 @@
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
+#include "support/closed_box_scene.hpp"
 #include "support/direction_warps.hpp"
 
 using namespace rt;
@@ -868,24 +869,7 @@ TEST_CASE(
     // Every point sees only walls of the same radiance L = Le + ρ L: L = 1 at every bounce, so a path whose
     // later vertices are weighed wrongly (its throughput left out of next-event estimation, a light counted
     // by both strategies) is off by a multiple of the light of those bounces.
-    Scene scene;
-    scene.file = "closed box";
-    scene.camera = CameraDesc{{0.1f, 0.2f, 0.3f}, {0.1f, 0.2f, -1}, {0, 1, 0}, 70};
-    Material wall;
-    wall.name = "glowing wall";
-    wall.albedo = Color(0.5f);
-    wall.emission = Color(0.5f);
-    scene.materials.push_back(wall);
-    // The six faces of [−1, 1]³, each with u × v pointing in.
-    const Vec3 a{-1, -1, -1};
-    const std::pair<Vec3, Vec3> x_face{{0, 2, 0}, {0, 0, 2}}, y_face{{0, 0, 2}, {2, 0, 0}},
-        z_face{{2, 0, 0}, {0, 2, 0}};
-    scene.shapes.push_back(Shape{QuadShape{a, x_face.first, x_face.second}, 0, "x = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{1, -1, -1}, x_face.second, x_face.first}, 0, "x = 1"});
-    scene.shapes.push_back(Shape{QuadShape{a, y_face.first, y_face.second}, 0, "y = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{-1, 1, -1}, y_face.second, y_face.first}, 0, "y = 1"});
-    scene.shapes.push_back(Shape{QuadShape{a, z_face.first, z_face.second}, 0, "z = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{-1, -1, 1}, z_face.second, z_face.first}, 0, "z = 1"});
+    const Scene scene = test::closed_box_scene();
     for (SamplingStrategy s : {SamplingStrategy::kBrdf, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
         const RenderResult r = render_scene(scene, s, 8, 64, 5, 2);
         INFO("strategy " << int(s));
@@ -943,7 +927,7 @@ double under_lamp(bool triangles, bool front_down, bool two_sided, SamplingStrat
 
 TEST_CASE(
     "A two-sided lamp (a quad, two triangles) lights both half-spaces equally, by light and by BSDF "
-    "sampling; a one-sided one only its front",
+    "sampling, a one-sided one only its front",
     "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.triangle_watertight]"
     "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
     "[ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch04.uniform_triangle]"

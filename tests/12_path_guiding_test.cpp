@@ -30,6 +30,7 @@
 #include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
 #include "support/chi_square.hpp"
+#include "support/closed_box_scene.hpp"
 
 using namespace rt;
 using namespace rt::test;
@@ -108,28 +109,6 @@ Scene furnace_scene() {
     scene.materials.push_back(m);
     scene.shapes.push_back(Shape{SphereShape{{0, 0, 0}, 1}, 0, "shapes[0]"});
     scene.environment = EnvironmentLight{Color(1)};
-    return scene;
-}
-
-// Chapter 06's closed box: six walls of emission 0.5 and albedo 0.5 around the camera, L = Le / (1 − ρ) = 1.
-Scene closed_box_scene() {
-    Scene scene;
-    scene.file = "closed box";
-    scene.camera = CameraDesc{{0.1f, 0.2f, 0.3f}, {0.1f, 0.2f, -1}, {0, 1, 0}, 70};
-    Material wall;
-    wall.name = "glowing wall";
-    wall.albedo = Color(0.5f);
-    wall.emission = Color(0.5f);
-    scene.materials.push_back(wall);
-    const Vec3 a{-1, -1, -1};
-    const std::pair<Vec3, Vec3> x_face{{0, 2, 0}, {0, 0, 2}}, y_face{{0, 0, 2}, {2, 0, 0}},
-        z_face{{2, 0, 0}, {0, 2, 0}};
-    scene.shapes.push_back(Shape{QuadShape{a, x_face.first, x_face.second}, 0, "x = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{1, -1, -1}, x_face.second, x_face.first}, 0, "x = 1"});
-    scene.shapes.push_back(Shape{QuadShape{a, y_face.first, y_face.second}, 0, "y = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{-1, 1, -1}, y_face.second, y_face.first}, 0, "y = 1"});
-    scene.shapes.push_back(Shape{QuadShape{a, z_face.first, z_face.second}, 0, "z = -1"});
-    scene.shapes.push_back(Shape{QuadShape{{-1, -1, 1}, z_face.second, z_face.first}, 0, "z = 1"});
     return scene;
 }
 
@@ -401,15 +380,16 @@ TEST_CASE("Guided paths keep the white furnace (unguided: nothing scattered to l
         }
     REQUIRE(pixels > 200);
     CHECK(sum / pixels == Approx(0.5).epsilon(0.01));
-    const GuidedRender box = render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3);
+    const GuidedRender box = render_guided_scene(test::closed_box_scene(), 8, 64, 5, 2, 3);
     REQUIRE(box.result.image.all_finite());
     // The walls light each other: the guide learned, and drew some continuations.
-    CHECK(box.result.image.pixels() != render_unguided(closed_box_scene(), 8, 64, 5, 2).image.pixels());
+    CHECK(box.result.image.pixels() != render_unguided(test::closed_box_scene(), 8, 64, 5, 2).image.pixels());
     CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
 }
 
-TEST_CASE("Passes combined by inverse variance: each image weighted by 1 / its variance, unmeasured ones left out",
-          "[guiding]") {
+TEST_CASE(
+    "Passes combined by inverse variance: each image weighted by 1 / its variance, unmeasured ones left out",
+    "[guiding]") {
     const auto filled = [](Real value) {
         Image image(2, 1);
         for (Color& c : image.pixels()) c = Color(value);
@@ -422,19 +402,21 @@ TEST_CASE("Passes combined by inverse variance: each image weighted by 1 / its v
     CHECK(combined_by_variance(images, {0, 0, 0}).pixels() == images.back().pixels());
 }
 
-TEST_CASE("Combined by inverse variance, the guided closed box keeps L = 1 and each pass of 2+ spp has a variance",
-          "[guiding][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-          "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
-          "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
-          "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
-    const GuidedRender box =
-        render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kInverseVariance);
+TEST_CASE(
+    "Combined by inverse variance, the guided closed box keeps L = 1 and each pass of 2+ spp has a variance",
+    "[guiding][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
+    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+    "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
+    "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
+    const GuidedRender box = render_guided_scene(test::closed_box_scene(), 8, 64, 5, 2, 3, 12000,
+                                                 PassCombination::kInverseVariance);
     REQUIRE(box.passes.size() == 3);
     CHECK(box.passes[0].variance == 0);  // one sample per pixel: no variance to measure
     CHECK(box.passes[1].variance > 0);
     CHECK(box.passes[2].variance > 0);
     REQUIRE(box.result.image.all_finite());
-    const GuidedRender last = render_guided_scene(closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kLast);
+    const GuidedRender last =
+        render_guided_scene(test::closed_box_scene(), 8, 64, 5, 2, 3, 12000, PassCombination::kLast);
     CHECK(box.result.image.pixels() != last.result.image.pixels());
     CHECK(box.result.image.mean() == Approx(1).epsilon(0.03));
 }

@@ -106,8 +106,9 @@ GuidedRender render_guided(const RenderScene& prepared, const PinholeCamera& cam
         variances.push_back(m.variance);
     }
     if (trained) trained(field, tracer);
-    MeasuredRender last =
-        render_measured(GuidedTracer(tracer, field, false), camera, settings, guided.combination);
+    // Without training passes there is nothing to weigh: the image is chapter 06's, which splits and resumes.
+    const PassCombination rule = images.empty() ? PassCombination::kLast : guided.combination;
+    MeasuredRender last = render_measured(GuidedTracer(tracer, field, false), camera, settings, rule);
     out.result = std::move(last.result);
     if (guided.combination == PassCombination::kInverseVariance && !images.empty()) {
         images.push_back(out.result.image);
