@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """How close the course comes to Tungsten on Bitterli's published scenes (issue 45, "What must hold").
 
-For each scene in ../shared/bitterli (beside the repository; its README says what is there), renders the
+For each scene in the data folder (--data; by default ../shared/bitterli beside the repository: a folder per
+scene, e.g. cornell-box/, holding Bitterli's scene-v4.pbrt, its meshes and TungstenRender.exr), renders the
 pbrt-v4 file with chapter 09, the course's most complete renderer (it chooses its tracer per scene), at the
 reference's resolution divided by 4, twice with two seeds, and compares the mean of the two with Tungsten's
 reference, averaged over 4 x 4 pixels:
@@ -39,7 +40,7 @@ import sys
 import tempfile
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
-SHARED = REPO.parent / "shared" / "bitterli"
+DEFAULT_DATA = REPO.parent / "shared" / "bitterli"
 SCENES = {"cornell-box": 0.01, "veach-mis": 0.015}  # the channel means' tolerance
 # Where a reference is known not to be its file's scene (the docstring gives the evidence).
 KNOWN = {"veach-mis": "Tungsten's reference is not this file's scene: its plates are Beckmann facets of albedo 0.3 "
@@ -198,8 +199,8 @@ def render(exe, scene_file, width, height, spp, seed, out):
     return read_pfm(out.with_suffix(".pfm"))
 
 
-def check(name, tolerance, tools, spp, work):
-    folder = SHARED / name
+def check(name, tolerance, tools, spp, work, data):
+    folder = data / name
     scene_file = folder / "scene-v4.pbrt"
     scene = json.loads(subprocess.run([str(tools["rt_scene"]), "--to-json", str(scene_file)], check=True,
                                       capture_output=True, text=True).stdout)
@@ -234,10 +235,12 @@ def main():
     parser.add_argument("--build", default=str(REPO / "build" / "release"))
     parser.add_argument("--spp", type=int, default=256, help="samples per pixel of the course's render (two halves)")
     parser.add_argument("--scene", action="append", choices=sorted(SCENES), help="default: every scene")
+    parser.add_argument("--data", type=pathlib.Path, default=DEFAULT_DATA, help="the folder of the scenes (Bitterli's "
+                        "pbrt-v4 versions with their Tungsten references; default: ../shared/bitterli)")
     args = parser.parse_args()
-    if not SHARED.is_dir():
-        print(f"bitterli_check: {SHARED} is absent (Bitterli's scenes and Tungsten's references are kept beside the "
-              "repository, not in it): nothing checked")
+    if not args.data.is_dir():
+        print(f"bitterli_check: {args.data} is absent (Bitterli's scenes and Tungsten's references are kept outside "
+              "the repository; --data names their folder): nothing checked")
         return 0
     build = pathlib.Path(args.build)
     tools = {"ch09": build / "chapters" / "09_participating_media" / "ch09_participating_media",
@@ -247,7 +250,8 @@ def main():
             print(f"bitterli_check: {path} is missing: build it (cmake --build {build} --target {path.name})")
             return 2
     with tempfile.TemporaryDirectory() as work:
-        results = [check(name, SCENES[name], tools, args.spp, pathlib.Path(work)) for name in args.scene or SCENES]
+        results = [check(name, SCENES[name], tools, args.spp, pathlib.Path(work), args.data)
+                   for name in args.scene or SCENES]
     return 0 if all(results) else 1
 
 
