@@ -12,7 +12,6 @@ command -v python3 > /dev/null || { echo "check_student_edition.sh: python3 not 
 start=$(date +%s)
 python3 "$root/tests/tools/exercises.py" generate "$out" --force
 build="$out/build/release"
-cmake -S "$out" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRT_EXERCISE_WARNINGS_AS_ERRORS=ON \
-    -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
+cmake -S "$out" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_EXPORT_COMPILE_COMMANDS=ON > "$out/configure.log" || { cat "$out/configure.log"; exit 1; }
 python3 "$root/tests/tools/exercises.py" warnings --build "$build"
 echo "student edition checked in $(( $(date +%s) - start )) s"

@@ -1,6 +1,7 @@
 """The student edition: a copy of the repository in which every marked exercise body throws
-"not implemented: chNN.name — see <lesson> § <section>", and still builds with warnings as errors. Also the
-switchable edition of `exercises.py deps`, built once, in which any one exercise is stubbed at run time."""
+"not implemented: chNN.name — see <lesson> § <section>", and still builds with warnings as errors (but in the
+code a student writes). Also the switchable edition of `exercises.py deps`, built once, in which any one
+exercise is stubbed at run time."""
 
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from .wrong_solutions import WrongSolution, load as load_wrong_solutions
 
 EDITION_MARKER = ".student-edition.json"
 SWITCH_HEADER = Path(__file__).resolve().parent / "exercise_switch.hpp"  # copied to common/rt/ of a switchable edition
+WARNINGS_HEADER = Path(__file__).resolve().parent / "exercise_warnings.hpp"  # copied to common/rt/ of both editions
 
 
 def cpp_string(text: str) -> str:
@@ -53,6 +55,7 @@ def stub_file(text: str, exercises: list[Exercise]) -> str:
             number += 1
             continue
         indent = re.match(r"\s*", lines[exercise.begin + 1] if exercise.end > exercise.begin + 1 else line).group(0)
+        out.append(f"{indent_of(line)}RT_YOUR_CODE_BEGIN")
         out.append(line)
         unused = exercise.parameters + exercise.locals
         if unused:
@@ -60,8 +63,17 @@ def stub_file(text: str, exercises: list[Exercise]) -> str:
             out.append(f"{indent}{casts}")
         out.append(f"{indent}throw std::logic_error({cpp_string(not_implemented(exercise))});")
         out.append(lines[exercise.end])
+        out.append(f"{indent_of(line)}RT_YOUR_CODE_END")
         number = exercise.end + 1
-    return add_include("\n".join(out), "<stdexcept>")
+    return with_warnings_header(add_include("\n".join(out), "<stdexcept>"))
+
+
+def indent_of(line: str) -> str:
+    return re.match(r"\s*", line).group(0)
+
+
+def with_warnings_header(text: str) -> str:
+    return add_include(text, '"rt/exercise_warnings.hpp"')
 
 
 def stub_shader(text: str, exercises: list[Exercise]) -> str:
@@ -126,9 +138,14 @@ def switch_file(text: str, exercises: list[Exercise], wrong: dict[str, list[Wron
             switch += ["    " + line if line.strip() else line for line in right]
             switch.append(f"{indent}}}")
             lines[exercise.begin + 1 : exercise.end] = switch
+            end_marker = exercise.begin + 1 + len(switch)
         else:
             lines[exercise.begin + 1 : exercise.begin + 1] = switch
-    return add_include(add_include("\n".join(lines), "<stdexcept>"), '"rt/exercise_switch.hpp"')
+            end_marker = exercise.end + len(switch)
+        marker = indent_of(lines[exercise.begin])
+        lines.insert(end_marker + 1, f"{marker}RT_YOUR_CODE_END")
+        lines.insert(exercise.begin, f"{marker}RT_YOUR_CODE_BEGIN")
+    return with_warnings_header(add_include(add_include("\n".join(lines), "<stdexcept>"), '"rt/exercise_switch.hpp"'))
 
 
 def not_implemented(exercise: Exercise) -> str:
@@ -158,36 +175,9 @@ def edition_note(chosen: list[Exercise]) -> str:
             "until you write them. `python3 tests/tools/exercises.py next` builds only what the next exercise's "
             "tests need, runs them and shows the failures with the file to edit and the lesson section; run it "
             "again after each change (`test ch02.quad`: one exercise; `status`: the exercises done and left). "
-            "Each lesson's \"Exercises\" section says what to write. Compiler warnings are warnings, not errors, "
-            "in the files with exercises (the course's own build, and CI's check of this edition, make them "
-            "errors).\n\n")
-
-
-# The student edition compiles with the course's own flags, warnings as errors included, so that ccache reuses
-# the course's objects for every file that is the same in both. Only in the files a student writes in (those
-# with exercises) do warnings stay warnings: a first attempt with a narrowing conversion still builds and runs
-# its tests. RT_EXERCISE_WARNINGS_AS_ERRORS=ON (CI's check of the edition) makes them errors there too.
-def files_keeping_warnings(exercise_files: list[Path], files: list[Path]) -> dict[Path, list[Path]]:
-    """Folder → the files compiled with -Wno-error there: its .cpp files with exercises; where a header of the
-    folder has one, every .cpp file of the folder and the chapter's test source, which include it."""
-    kept: dict[Path, set[Path]] = {}
-    for file in exercise_files:
-        if file.suffix == ".cpp":
-            kept.setdefault(file.parent, set()).add(file)
-        elif file.suffix == ".hpp":
-            kept.setdefault(file.parent, set()).update(f for f in files if f.parent == file.parent and f.suffix == ".cpp"
-                                                       and f.name != "main.cpp")
-            kept[file.parent].update(f for f in files if f.parent == Path("tests") and
-                                     f.name == f"{file.parent.name}_test.cpp")
-    return {folder: sorted(names) for folder, names in kept.items()}
-
-
-def with_exercise_warnings(cmake: str, folder: Path, files: list[Path]) -> str:
-    names = " ".join(f.name if f.parent == folder else "${PROJECT_SOURCE_DIR}/" + f.as_posix() for f in files)
-    return (cmake.rstrip("\n") + "\n# Student edition: warnings in the files with exercises (and those including a header with one) "
-            "stay warnings;\n# ccache reuses the course's objects of the others, compiled with the same flags.\n"
-            f"if(NOT RT_EXERCISE_WARNINGS_AS_ERRORS)\n  set_source_files_properties({names} PROPERTIES "
-            "COMPILE_OPTIONS -Wno-error)\nendif()\n")
+            "Each lesson's \"Exercises\" section says what to write. A compiler warning in what you write "
+            "between `RT_YOUR_CODE_BEGIN` and `RT_YOUR_CODE_END` stays a warning; everywhere else warnings are "
+            "errors, as in the course's own build.\n\n")
 
 
 def repository_files(root: Path) -> list[Path]:
@@ -245,9 +235,9 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
     for e in chosen:
         by_file.setdefault(e.file, []).append(e)
     files = repository_files(root)
-    exercise_folders = files_keeping_warnings(list(by_file), files)
-    switch_header = Path("common/rt") / SWITCH_HEADER.name
-    wanted = {out / f for f in files} | {out / EDITION_MARKER} | ({out / switch_header} if switchable else set())
+    switch_header, warnings_header = Path("common/rt") / SWITCH_HEADER.name, Path("common/rt") / WARNINGS_HEADER.name
+    wanted = ({out / f for f in files} | {out / EDITION_MARKER, out / warnings_header} |
+              ({out / switch_header} if switchable else set()))
     if out.exists():
         for path in sorted(out.rglob("*"), reverse=True):
             if path.is_file() and path not in wanted and not path.is_relative_to(out / "build"):
@@ -262,11 +252,9 @@ def generate(root: Path, out: Path, only: list[str], force: bool, switchable: bo
             data = rewritten.encode("utf-8")
         elif relative == Path("README.md") and chosen and not switchable:
             data = edition_note(chosen).encode("utf-8") + data
-        elif relative.name == "CMakeLists.txt" and relative.parent in exercise_folders:
-            data = with_exercise_warnings(data.decode("utf-8"), relative.parent,
-                                          exercise_folders[relative.parent]).encode("utf-8")
         write_if_changed(out / relative, data)
         shutil.copymode(source, out / relative)
+    write_if_changed(out / warnings_header, WARNINGS_HEADER.read_bytes())
     if switchable:
         write_if_changed(out / switch_header, SWITCH_HEADER.read_bytes())
     marker = {"source": str(root), "switchable" if switchable else "stubbed": [e.name for e in chosen]}

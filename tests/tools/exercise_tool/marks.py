@@ -138,7 +138,8 @@ def find_exercises(root: Path) -> list[Exercise]:
             errors.append(f"{open_mark.where()}: EXERCISE({open_mark.name}) has no // END EXERCISE")
         if not found:
             continue
-        tokens = tokenize(text)
+        # An edition's RT_YOUR_CODE_BEGIN/END (rt/exercise_warnings.hpp) stand around the marks: not code.
+        tokens = [t for t in tokenize(text) if t.text not in ("RT_YOUR_CODE_BEGIN", "RT_YOUR_CODE_END")]
         for exercise in found:
             function = enclosing_function(tokens, exercise.begin)
             if function is None:
