@@ -1099,7 +1099,8 @@ TEST_CASE("A spot light gives rho/pi I falloff cos / d^2: full inside, smooth in
 
 TEST_CASE("Many lights: picking lights by power costs N shadow rays per hit and agrees with every light",
           "[direct][statistical][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.plane]"
-          "[ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal][ex:ch03.robust_offset][ex:ch03.shadow_ray]"
+          "[ex:ch02.slab_widening][ex:ch02.sphere_stable][ex:ch02.wide_bvh_traversal]"
+          "[ex:ch03.robust_offset][ex:ch03.shadow_ray]"
           "[ex:ch04.cone_solid_angle][ex:ch04.direct_light][ex:ch04.lambert][ex:ch04.uniform_cone]") {
     // 40 small emissive spheres of different brightness above the floor, and one point light.
     FloorScene f;
@@ -1326,7 +1327,8 @@ TEST_CASE(
 
 TEST_CASE(
     "The default scene renders finite, plausible and identical on 1 and 2 threads",
-    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.slab_widening]"
+    "[ex:ch02.sphere_stable]"
     "[ex:ch02.wide_bvh_traversal][ex:ch03.robust_offset][ex:ch04.cone_solid_angle][ex:ch04.direct_light]"
     "[ex:ch04.glossy][ex:ch04.lambert][ex:ch04.retroreflective][ex:ch04.sample_quad_light]"
     "[ex:ch04.uniform_cone]") {

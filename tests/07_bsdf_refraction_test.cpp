@@ -1198,7 +1198,7 @@ double albedo_by_quadrature(const Bsdf& bsdf, const Vec3& wo, const Vec3& n) {
 
 TEST_CASE(
     "Conductor Fresnel: at k = 0 it is the dielectric's, at normal incidence the closed form, 1 at grazing",
-    "[ch07][ex:ch07.fresnel_exact]") {
+    "[ch07][ex:ch07.fresnel_conductor][ex:ch07.fresnel_exact]") {
     for (double eta : {1.2, 1.5, 2.4, 1 / 1.5, 1 / 2.4}) {
         for (int i = 0; i <= 100; ++i) {
             const Real c = Real(i) / 100;

@@ -200,7 +200,8 @@ TEST_CASE("The shader's PCG32 draws the C++ generator's numbers bit for bit",
 }
 
 TEST_CASE("Shader rays from inside a closed mesh never escape, and meet what chapter 02 meets",
-          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_test][ex:ch02.wide_bvh_traversal]") {
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_test][ex:ch02.slab_widening]"
+          "[ex:ch02.wide_bvh_traversal]") {
     MeshShape mesh = make_icosphere(3);  // 1280 triangles
     jitter_radii(mesh, Real(0.05), 11);
     for (Vec3& p : mesh.positions) p = p * Real(3.7) + Vec3{10.3f, -5.1f, 2.9f};

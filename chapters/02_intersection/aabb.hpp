@@ -47,20 +47,30 @@ inline Vec3 inverse_direction(const Vec3& d) {
     return Vec3{1} / d;
 }
 
+// Widens a slab's computed entry t_near and exit t_far by the bound on their rounding (in units of γₙ,
+// float_error.hpp; PBRT 4 §6.8, derived in the lesson) and by what rounding does below float's normal range
+// (there a product is rounded to a multiple of the smallest float, not to a relative error), so that the
+// exact interval lies inside the widened one. T is a Real or a SIMD register of them (wide_bvh.hpp).
+template <typename T>
+void widen_slab(T& t_near, T& t_far) {
+    // EXERCISE(ch02.slab_widening) § Bounding boxes and the BVH
+    constexpr Real kGamma3 = gamma_bound(3);
+    constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
+    t_near = t_near * (1 - 2 * kGamma3) - kSmallest;
+    t_far = t_far * (1 + 2 * kGamma3) + kSmallest;
+    // END EXERCISE
+}
+
 // The slab test on [0, t_max]: the entry distance into the box, or +∞ when the ray misses it.
 // A direction component d_i = ±0 never reaches 1 / d_i: the ray is parallel to slab i and stays inside it
 // (min_i <= o_i <= max_i, faces included) or outside it for ever, whatever the zero's sign. A subnormal d_i
 // (below 1.2e-38) has an infinite 1 / d_i in float: its slab is computed in double, where the quotient is
-// finite. A ray starting inside the box enters at t = 0. The entry and exit are widened by the bound on
-// their rounding (in units of γₙ, float_error.hpp; PBRT 4 §6.8, derived in the lesson) and by what rounding
-// does below float's normal range (there a product is rounded to a multiple of the smallest float, not to a
-// relative error), so rounding never culls a surface lying on the box, neither against the exit nor against
-// a t_max that is the rounded distance of a hit on the same plane; a box of zero thickness (min_i = max_i)
-// is entered and left at one t.
+// finite. A ray starting inside the box enters at t = 0. Each slab's entry and exit are widened
+// (widen_slab), so rounding never culls a surface lying on the box, neither against the exit nor against a
+// t_max that is the rounded distance of a hit on the same plane; a box of zero thickness (min_i = max_i) is
+// entered and left at one t.
 inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, Real t_max) {
     // EXERCISE(ch02.slab_test) § Bounding boxes and the BVH
-    constexpr Real kGamma3 = gamma_bound(3);
-    constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
     Real t_enter = 0;
     Real t_exit = t_max;
     for (int i = 0; i < 3; ++i) {
@@ -77,8 +87,9 @@ inline Real slab_entry(const Aabb& box, const Ray& ray, const Vec3& inverse_d, R
             t_far = Real((double(box.max[i]) - double(ray.origin[i])) / d);
         }
         if (t_near > t_far) std::swap(t_near, t_far);
-        t_enter = std::max(t_enter, t_near * (1 - 2 * kGamma3) - kSmallest);
-        t_exit = std::min(t_exit, t_far * (1 + 2 * kGamma3) + kSmallest);
+        widen_slab(t_near, t_far);
+        t_enter = std::max(t_enter, t_near);
+        t_exit = std::min(t_exit, t_far);
     }
     return t_enter <= t_exit ? t_enter : kInfinity;
     // END EXERCISE

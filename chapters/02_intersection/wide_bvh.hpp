@@ -70,8 +70,6 @@ inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real 
         }
         return t;
     }
-    constexpr Real kGamma3 = gamma_bound(3);
-    constexpr Real kSmallest = std::numeric_limits<Real>::denorm_min();
     // The nearest exit and the farthest entry of the three slabs, as they are computed; the rounding
     // margins are applied once, after the max and the min: each widening is a rounded monotone function, so
     // max_i of it is it of max_i, bit for bit (and min alike).
@@ -84,8 +82,9 @@ inline BoxLanes entry_distances(const WideBvhNode& node, const WideRay& r, Real 
         t_near_max = i == 0 ? t_near : stdx::max(t_near_max, t_near);
         t_far_min = i == 0 ? t_far : stdx::min(t_far_min, t_far);
     }
-    const BoxLanes t_enter = stdx::max(BoxLanes(0), t_near_max * (1 - 2 * kGamma3) - kSmallest);
-    const BoxLanes t_exit = stdx::min(BoxLanes(t_max), t_far_min * (1 + 2 * kGamma3) + kSmallest);
+    widen_slab(t_near_max, t_far_min);
+    const BoxLanes t_enter = stdx::max(BoxLanes(0), t_near_max);
+    const BoxLanes t_exit = stdx::min(BoxLanes(t_max), t_far_min);
     BoxLanes entered = t_enter;
     stdx::where(!(t_enter <= t_exit), entered) = kInfinity;
     return entered;

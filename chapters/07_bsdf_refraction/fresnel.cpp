@@ -34,8 +34,9 @@ Real fresnel_dielectric(Real cos_i, Real eta) {
 }
 
 Real fresnel_conductor(Real cos_i, Real eta, Real k) {
-    using Complex = std::complex<Real>;
     const Real ci = std::clamp(cos_i, Real(0), Real(1));
+    // EXERCISE(ch07.fresnel_conductor) § Rough metals
+    using Complex = std::complex<Real>;
     if (ci == 0) return 1;  // grazing: both amplitudes are −1 (the formula's 0 / 0 when η + i k = 1)
     const Complex n(eta, k);
     const Complex sin2_t = (1 - ci * ci) / (n * n);
@@ -43,6 +44,7 @@ Real fresnel_conductor(Real cos_i, Real eta, Real k) {
     const Complex r_par = (n * ci - ct) / (n * ci + ct);
     const Complex r_perp = (ci - n * ct) / (ci + n * ct);
     return std::min(Real(1), (std::norm(r_par) + std::norm(r_perp)) / 2);
+    // END EXERCISE
 }
 
 Color fresnel_conductor(Real cos_i, const Color& eta, const Color& k) {
