@@ -1,4 +1,4 @@
-// Chapter 03: shadow rays. Point lights light diffuse surfaces (E = I cos θ / r², L = (ρ / π) E) wherever a
+// Chapter 03: shadow rays. Point lights light diffuse surfaces (point_light.hpp) wherever a
 // shadow ray reaches them; `--offset none|epsilon|robust` chooses how a shadow ray leaves the surface, and
 // `--offset-study` measures what each method costs and gets wrong at scales from 1e-3 to 1e5.
 #include <string>

@@ -1,5 +1,5 @@
 // Chapter 03's picture: what the camera sees, lit by the scene's point lights through shadow rays.
-//   L(p) = L_e(p) + Σ_lights (ρ / π) E_i V_i,   E_i = point_light_irradiance,   V_i = 1 if the light is visible
+//   L(p) = L_e(p) + Σ_lights k ρ E_i V_i,   k ρ E_i = lambert_radiance,   V_i = 1 if the light is visible
 // A shadow ray is traced only where it can change the answer: a light behind the surface (cos θ ≤ 0) adds
 // nothing and costs nothing, and a scene without point lights traces no shadow rays at all.
 #pragma once
@@ -33,7 +33,7 @@ ShadowOptions shadow_options(const EffectSet& simulated, const RayOffset& offset
 // The ray of sample `s` (stratified in its pixel, `spp` samples per pixel) from the camera.
 Ray primary_ray(const PinholeCamera& camera, const PixelSample& s, int spp, Pcg32& rng);
 
-// The direct light of the scene's point lights at `hit`, a surface of that albedo: Σ (ρ / π) E_i V_i, one
+// The direct light of the scene's point lights at `hit`, a surface of that albedo: Σ k ρ E_i V_i, one
 // shadow ray per light in front.
 Color point_lights_at(const World& world, const Scene& scene, const Hit& hit, const Color& albedo,
                       const ShadowOptions& options, RayCounts& rays);
