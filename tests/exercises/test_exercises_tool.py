@@ -210,6 +210,8 @@ class Marks(unittest.TestCase):
         self.assertEqual(log.read_text().split(), ["ch07.hypotenuse"])  # the one exercise it reached, once
         self.assertEqual(run(RT_STUB_EXERCISE="ch07.counter"), "5")  # another exercise stubbed: no change
         self.assertTrue(run(RT_STUB_EXERCISE="ch07.hypotenuse").startswith("not implemented: ch07.hypotenuse — see"))
+        self.assertTrue(run(RT_STUB_EXERCISE="ch07.counter,ch07.hypotenuse").startswith("not implemented"))  # a list
+        self.assertEqual(run(RT_STUB_EXERCISE="ch07.counter,ch07.hypot"), "5")  # a name's prefix is not the name
         # The fixture's wrong solutions (tests/wrong_solutions/ch07.json), chosen at run time.
         self.assertIn("wrong_here", source)
         self.assertEqual(run(RT_WRONG_SOLUTION="ch07.hypotenuse:1"), "2.64575")  # √(3 + 4)

@@ -3,7 +3,8 @@
 //     static const bool stubbed_here = rt::exercise_switch::stubbed("chNN.name");
 //     if (stubbed_here) throw std::logic_error("not implemented: chNN.name ...");
 // so one build can stand for the edition with any one exercise stubbed, chosen when a test runs:
-//   RT_STUB_EXERCISE=chNN.name  that exercise throws as in the student edition, the others run as written;
+//   RT_STUB_EXERCISE=chNN.name  that exercise throws as in the student edition, the others run as written
+//                               (a,b,c: those three);
 //   RT_STUB_EXERCISE=*          every exercise throws: the student edition, at run time;
 //   RT_EXERCISE_LOG=FILE        each exercise the process reaches appends its name to FILE;
 //   RT_WRONG_SOLUTION=chNN.name:K  that exercise runs its K-th wrong solution (tests/wrong_solutions/) instead.
@@ -25,7 +26,14 @@ inline bool stubbed(const char* exercise) {
         }
     }
     const char* chosen = std::getenv("RT_STUB_EXERCISE");
-    return chosen != nullptr && (std::strcmp(chosen, "*") == 0 || std::strcmp(chosen, exercise) == 0);
+    if (chosen == nullptr) return false;
+    if (std::strcmp(chosen, "*") == 0) return true;
+    const std::size_t length = std::strlen(exercise);
+    for (const char* name = chosen;; ++name) {  // one of the comma-separated names
+        if (std::strncmp(name, exercise, length) == 0 && (name[length] == ',' || name[length] == '\0')) return true;
+        name = std::strchr(name, ',');
+        if (name == nullptr) return false;
+    }
 }
 
 // Which of the exercise's wrong solutions (tests/wrong_solutions/) runs instead of its body: K when
