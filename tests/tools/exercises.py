@@ -316,9 +316,9 @@ def build_test_programs(source: Path, jobs: int, only: set[str] | None = None) -
     objects of every file without an exercise; in the files with one, warnings stay warnings (a wrong solution
     may leave a variable unused)."""
     build = source / "build" / "release"  # as deep as the course's own build: ccache reuses unchanged objects
-    if not (build / "CMakeCache.txt").is_file():
-        subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"],
-                       check=True, stdout=subprocess.DEVNULL)
+    # Configured every time: `--target help` lists the targets of the last configure, which may predate a chapter.
+    subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"],
+                   check=True, stdout=subprocess.DEVNULL)
     targets = re.findall(r"^\.\.\. (\w+_test)$", subprocess.run(
         ["cmake", "--build", str(build), "--target", "help"], capture_output=True, text=True).stdout, re.M)
     if only is not None:
