@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 #include <set>
+#include <span>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -970,9 +971,9 @@ TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endi
     CHECK(ascii.positions[2] == rt::Vec3(1, 1, 0));
     CHECK(ascii.normals[1] == rt::Vec3(0, 0, 2));  // as written: the loader normalises
     CHECK(ascii.texture_coordinates[3] == rt::Vec2(0.5f, 1));
-    REQUIRE(ascii.faces.size() == 2);
-    CHECK(ascii.faces[0] == std::vector<std::uint32_t>{0, 1, 2, 3});
-    CHECK(ascii.faces[1] == std::vector<std::uint32_t>{0, 2, 3});
+    REQUIRE(ascii.face_count() == 2);
+    CHECK(std::vector(ascii.face(0).begin(), ascii.face(0).end()) == std::vector<std::uint32_t>{0, 1, 2, 3});
+    CHECK(std::vector(ascii.face(1).begin(), ascii.face(1).end()) == std::vector<std::uint32_t>{0, 2, 3});
     for (const bool little : {true, false}) {
         std::string data;
         auto put = [&](auto value) {
@@ -987,7 +988,8 @@ TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endi
             for (int a = 0; a < 3; ++a) put(float(ascii.normals[v][a]));
             for (int a = 0; a < 2; ++a) put(double(ascii.texture_coordinates[v][a]));
         }
-        for (const auto& face : ascii.faces) {
+        for (std::size_t f = 0; f < ascii.face_count(); ++f) {
+            const std::span<const std::uint32_t> face = ascii.face(f);
             put(std::uint8_t(0));
             put(std::uint8_t(face.size()));
             for (const std::uint32_t i : face) put(i);
@@ -999,7 +1001,8 @@ TEST_CASE("PLY reads the same mesh from ASCII, binary little-endian and big-endi
         CHECK(binary.positions == ascii.positions);
         CHECK(binary.normals == ascii.normals);
         CHECK(binary.texture_coordinates == ascii.texture_coordinates);
-        CHECK(binary.faces == ascii.faces);
+        CHECK(binary.corners == ascii.corners);
+        CHECK(binary.face_starts == ascii.face_starts);
     }
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -40,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                "texture coordinates per vertex or none");
         for (const rt::Vec3& n : mesh.normals)
             expect(rt::is_finite(n) && glm::dot(n, n) > 0, "normals are finite and not zero");
-        for (const auto& f : mesh.faces) {
+        for (std::size_t face = 0; face < mesh.face_count(); ++face) {
+            const std::span<const std::uint32_t> f = mesh.face(face);
             expect(f.size() >= 3, "a face has at least 3 vertices");
             for (const std::uint32_t i : f) expect(i < mesh.positions.size(), "indices are in range");
         }

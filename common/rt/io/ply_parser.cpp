@@ -241,6 +241,7 @@ class Reader {
                 throw InputError("element " + e.name + ": the header counts " + std::to_string(e.count) +
                                  ", more than the rest of the file can hold");
             }
+            reserve(mesh, e);
             for (std::uint64_t i = 0; i < e.count; ++i) {
                 data.begin(e.name, i);
                 if (e.name == "vertex") {
@@ -444,6 +445,18 @@ class Reader {
         if (vertex_.u) mesh.texture_coordinates.push_back({at(vertex_.u), at(vertex_.v)});
     }
 
+    // Room for an element's items, which the file is known to be able to hold (can_hold): a triangle per face.
+    void reserve(PlyMesh& mesh, const Element& e) const {
+        if (e.name == "vertex") {
+            mesh.positions.reserve(e.count);
+            if (vertex_.nx) mesh.normals.reserve(e.count);
+            if (vertex_.u) mesh.texture_coordinates.reserve(e.count);
+        } else if (e.name == "face" && face_indices_) {
+            mesh.face_starts.reserve(e.count + 1);
+            mesh.corners.reserve(3 * e.count);
+        }
+    }
+
     void face(Data& data, const Element& e, PlyMesh& mesh) const {
         for (std::size_t i = 0; i < e.properties.size(); ++i) {
             const Property& p = e.properties[i];
@@ -456,7 +469,6 @@ class Reader {
                 data.fail(p.name + ": a face must have 3 to " + std::to_string(kMostCorners) +
                           " vertices, got " + show(n));
             }
-            std::vector<std::uint32_t> corners;
             const double vertices = double(mesh.positions.size());
             for (int k = 0; k < int(n); ++k) {
                 const double index = data.value(p.type, p.name);
@@ -464,9 +476,9 @@ class Reader {
                     data.fail(p.name + ": a vertex index must be in [0, " + show(vertices - 1) + "], got " +
                               show(index));
                 }
-                corners.push_back(std::uint32_t(index));
+                mesh.corners.push_back(std::uint32_t(index));
             }
-            mesh.faces.push_back(std::move(corners));
+            mesh.face_starts.push_back(mesh.corners.size());
         }
     }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -21,9 +22,17 @@ namespace rt {
 
 struct PlyMesh {
     std::vector<Vec3> positions;
-    std::vector<Vec3> normals;                      // one per position, or empty
-    std::vector<Vec2> texture_coordinates;          // one per position, or empty
-    std::vector<std::vector<std::uint32_t>> faces;  // each at least 3 indices into positions
+    std::vector<Vec3> normals;              // one per position, or empty
+    std::vector<Vec2> texture_coordinates;  // one per position, or empty
+    // Every face's indices into positions (at least 3), one face after another; face f is corners[face_starts[f]]
+    // up to corners[face_starts[f + 1]]. Flat: a vector per face would cost an allocation per face.
+    std::vector<std::uint32_t> corners;
+    std::vector<std::size_t> face_starts{0};
+
+    std::size_t face_count() const { return face_starts.size() - 1; }
+    std::span<const std::uint32_t> face(std::size_t f) const {
+        return {corners.data() + face_starts[f], corners.data() + face_starts[f + 1]};
+    }
 };
 
 // Throws InputError with the place (the caller puts the file's name before it). Coordinates beyond

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <span>
 #include <utility>
 
 #include "rt/io/input_file.hpp"
@@ -78,7 +79,7 @@ void check_within_limits(const Node& node, const std::string& what, const Vec3& 
 
 // The triangles a polygon (a, b, c, ...) is split into: the fan (a, b, c), (a, c, d), ...
 template <class Corners>
-void add_fan(const std::vector<std::uint32_t>& polygon, Corners& triangles) {
+void add_fan(std::span<const std::uint32_t> polygon, Corners& triangles) {
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
         triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
 }
@@ -103,7 +104,8 @@ void read_ply_into(MeshShape& mesh, std::string_view bytes) {
     mesh.positions = std::move(parsed.positions);
     mesh.normals = std::move(parsed.normals);
     mesh.texture_coordinates = std::move(parsed.texture_coordinates);
-    for (const std::vector<std::uint32_t>& face : parsed.faces) add_fan(face, mesh.triangles);
+    mesh.triangles.reserve(parsed.corners.size() - 2 * parsed.face_count());  // n − 2 per n-gon
+    for (std::size_t f = 0; f < parsed.face_count(); ++f) add_fan(parsed.face(f), mesh.triangles);
     if (!mesh.normals.empty()) mesh.normal_corners = mesh.triangles;
     if (!mesh.texture_coordinates.empty()) mesh.texture_corners = mesh.triangles;
 }
