@@ -179,7 +179,7 @@ TEST_CASE("A ray leaving a triangle from its own hit point, away from its plane,
 }
 
 TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges enter it, and a box behind is missed",
-          "[bvh][ex:ch02.slab_test]") {
+          "[bvh][ex:ch02.slab_test][ex:ch02.slab_widening]") {
     // The box's own corner and edge points, from random origins far and near: the three slabs' distances are
     // rounded apart, and only widening entry and exit by their rounding bound keeps the entry before the exit.
     Pcg32 rng(17, 3);
@@ -208,7 +208,7 @@ TEST_CASE("Rays aimed exactly at a box's corners and at points of its edges ente
 }
 
 TEST_CASE("The slab test's widening stays within rounding: clear misses miss and the entry is near the exact one",
-          "[bvh][ex:ch02.slab_test]") {
+          "[bvh][ex:ch02.slab_test][ex:ch02.slab_widening]") {
     // Any correct bound is a few γₙ: a ray passing a box a thousandth of its size away misses it, and the entry
     // distance is the exact one (in double) to a relative 10⁻⁵.
     Pcg32 rng(23, 5);
@@ -782,7 +782,7 @@ TEST_CASE("Hit points carry an error bound that contains the exact surface point
 }
 
 TEST_CASE("The slab test handles zero direction components of either sign and flat boxes",
-          "[stability][bvh][ex:ch02.slab_test]") {
+          "[stability][bvh][ex:ch02.slab_test][ex:ch02.slab_widening]") {
     const Aabb box{{0, 0, 0}, {1, 1, 1}};
     for (Real zero : {Real(0), -Real(0)}) {
         INFO("zero component " << zero);

@@ -1236,7 +1236,7 @@ TEST_CASE(
 TEST_CASE(
     "Rough metal: sample() fits pdf() by chi-square over the whole sphere for roughness 0.1, 0.3 and 0.7, wo "
     "at 0 and 70 degrees, and the pdf integrates to what is not lost",
-    "[statistical]") {
+    "[statistical][ex:ch07.fresnel_conductor]") {
     std::uint64_t seed = 3100;
     for (double roughness : {0.1, 0.3, 0.7}) {
         const Conductor metal(gold().eta, gold().k, Real(roughness));
@@ -1252,7 +1252,8 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("Rough metal: a sample's f and pdf are eval()'s and pdf()'s, and f is reciprocal", "[ch07]") {
+TEST_CASE("Rough metal: a sample's f and pdf are eval()'s and pdf()'s, and f is reciprocal",
+          "[ch07][ex:ch07.fresnel_conductor]") {
     Pcg32 rng(3200, 1);
     int checked = 0;
     for (int k = 0; k < 20000; ++k) {
@@ -1278,7 +1279,7 @@ TEST_CASE("Rough metal: a sample's f and pdf are eval()'s and pdf()'s, and f is 
 TEST_CASE(
     "White furnace of a perfect reflector: the albedo by sampling is the albedo by quadrature, 1 when "
     "smooth, and falls with roughness (single scattering's loss)",
-    "[ch07][statistical]") {
+    "[ch07][ex:ch07.fresnel_conductor][statistical]") {
     std::uint64_t seed = 3300;
     for (double degrees : {0.0, 45.0, 75.0}) {
         const Vec3 wo = direction_at(deg(degrees));
@@ -1309,7 +1310,7 @@ TEST_CASE(
 }
 
 TEST_CASE("Rough metal tends to the smooth conductor (a mirror with Fresnel's colour) as roughness -> 0",
-          "[ch07][ex:ch04.mirror]") {
+          "[ch07][ex:ch07.fresnel_conductor][ex:ch04.mirror]") {
     const Conductor smooth(gold().eta, gold().k, 0);
     for (double degrees : {0.0, 30.0, 60.0, 80.0}) {
         const Vec3 wo = direction_at(deg(degrees));
@@ -1342,7 +1343,8 @@ TEST_CASE("Rough metal tends to the smooth conductor (a mirror with Fresnel's co
 TEST_CASE(
     "Veach's smooth plate (copper, alpha 0.01) mirrors a sphere lamp at F(cos) L, by MIS, BSDF and light "
     "sampling alike",
-    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
+    "[render][ex:ch07.fresnel_conductor]"
+    "[ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch02.sphere_stable]"
     "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cone_solid_angle][ex:ch04.uniform_cone]"
     "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // The plate of Bitterli's veach-mis scene (pbrt roughness 0.01, not remapped: course r = 0.1; Tungsten's
@@ -1413,7 +1415,7 @@ TEST_CASE("A conductor is a reflector of the effects, stood in for by its normal
 }
 
 TEST_CASE("A texture feeds a conductor's index: the metal at a hit is the checker's square's",
-          "[conductor][texture]") {
+          "[conductor][ex:ch07.fresnel_conductor][texture]") {
     const Scene scene = parse_scene(R"({
       "camera": {"from": [0, 0, 4], "at": [0, 0, 0]},
       "materials": {"tiles": {"type": "conductor", "roughness": 0.3, "k": [3, 3, 3],

@@ -39,7 +39,7 @@ json answer_json(const LiveAnswer& a) {
 }  // namespace
 
 TEST_CASE("The sampler view's verdict on a right sampler is the harness's: the same statistic, and it passes",
-          "[sampler_view][statistical]") {
+          "[sampler_view][ex:ch07.fresnel_conductor][statistical]") {
     const std::vector<RegisteredSampler> registry = sampler_registry();
     const json a = answer_json(sample_answer(
         registry,
