@@ -311,10 +311,10 @@ def command_deps(args: argparse.Namespace) -> int:
 
 
 def build_test_programs(source: Path, jobs: int, only: set[str] | None = None) -> Path:
-    """Configures (once) and builds the test programs of the edition in `source`, in source/build/release (with
+    """Configures and builds the test programs of the edition in `source`, in source/build/release (with
     `only`, those programs only, e.g. {"ch04_test"}). With the course's flags, so that ccache reuses the course's
-    objects of every file without an exercise; in the files with one, warnings stay warnings (a wrong solution
-    may leave a variable unused)."""
+    objects of every file without an exercise; within an exercise's lines warnings stay warnings
+    (rt/exercise_warnings.hpp: a wrong solution may leave a variable unused)."""
     build = source / "build" / "release"  # as deep as the course's own build: ccache reuses unchanged objects
     # Configured every time: `--target help` lists the targets of the last configure, which may predate a chapter.
     subprocess.run(["cmake", "-S", str(source), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release"],
