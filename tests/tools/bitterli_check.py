@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """How close the course comes to Tungsten on Bitterli's published scenes (issue 45, "What must hold").
 
-For each scene in the data folder (--data; by default ../shared/bitterli beside the repository: a folder per
-scene, e.g. cornell-box/, holding Bitterli's scene-v4.pbrt, its meshes and TungstenRender.exr), renders the
-pbrt-v4 file with chapter 09, the course's most complete renderer (it chooses its tracer per scene), at the
-reference's resolution divided by 4, twice with two seeds, and compares the mean of the two with Tungsten's
+For each scene in the data folder (--data, kept outside the repository: a folder per scene, e.g.
+cornell-box/, holding Bitterli's scene-v4.pbrt, its meshes and TungstenRender.exr), renders the pbrt-v4 file
+with chapter 09, the course's most complete renderer (it chooses its tracer per scene), at the reference's
+resolution divided by 4, twice with two seeds, and compares the mean of the two with Tungsten's
 reference, averaged over 4 x 4 pixels:
 
   - every channel's mean, leaving out the directly seen lamps and 2 pixels around them, within 1 % of the
@@ -40,7 +40,6 @@ import sys
 import tempfile
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
-DEFAULT_DATA = REPO.parent / "shared" / "bitterli"
 SCENES = {"cornell-box": 0.01, "veach-mis": 0.015}  # the channel means' tolerance
 # Where a reference is known not to be its file's scene (the docstring gives the evidence).
 KNOWN = {"veach-mis": "Tungsten's reference is not this file's scene: its plates are Beckmann facets of albedo 0.3 "
@@ -235,13 +234,13 @@ def main():
     parser.add_argument("--build", default=str(REPO / "build" / "release"))
     parser.add_argument("--spp", type=int, default=256, help="samples per pixel of the course's render (two halves)")
     parser.add_argument("--scene", action="append", choices=sorted(SCENES), help="default: every scene")
-    parser.add_argument("--data", type=pathlib.Path, default=DEFAULT_DATA, help="the folder of the scenes (Bitterli's "
-                        "pbrt-v4 versions with their Tungsten references; default: ../shared/bitterli)")
+    parser.add_argument("--data", type=pathlib.Path, required=True, help="the folder of the scenes (Bitterli's "
+                        "pbrt-v4 versions with their Tungsten references)")
     args = parser.parse_args()
     if not args.data.is_dir():
-        print(f"bitterli_check: {args.data} is absent (Bitterli's scenes and Tungsten's references are kept outside "
-              "the repository; --data names their folder): nothing checked")
-        return 0
+        print(f"bitterli_check: --data {args.data}: no such folder (Bitterli's scenes and Tungsten's references are "
+              "kept outside the repository)", file=sys.stderr)
+        return 2
     build = pathlib.Path(args.build)
     tools = {"ch09": build / "chapters" / "09_participating_media" / "ch09_participating_media",
              "rt_scene": build / "common" / "rt_scene", "exr_to_pfm": build / "tests" / "exr_to_pfm"}
