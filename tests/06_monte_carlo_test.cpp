@@ -39,6 +39,7 @@
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "support/block_means.hpp"
 #include "support/chi_square.hpp"
 #include "support/closed_box_scene.hpp"
 #include "support/direction_warps.hpp"
@@ -769,36 +770,17 @@ TEST_CASE("Every strategy converges to the same image on the chapter's scene",
     // The image cut into 2×2 blocks; each block's mean over kRuns independent renders, with its standard
     // error.
     constexpr int kSize = 16, kSpp = 16, kRuns = 8;
-    struct Blocks {
-        double mean[4] = {0, 0, 0, 0};
-        double error[4] = {0, 0, 0, 0};
-    };
     auto blocks_of = [&](SamplingStrategy s) {
-        double sum[4] = {0, 0, 0, 0}, sum2[4] = {0, 0, 0, 0};
-        for (int r = 0; r < kRuns; ++r) {
-            const RenderResult result = render_scene(scene, s, kSize, kSpp, 50 + std::uint64_t(r), 2);
+        return test::block_means(kSize, kRuns, [&](std::uint64_t seed) {
+            const RenderResult result = render_scene(scene, s, kSize, kSpp, seed, 2);
             REQUIRE(result.image.all_finite());
-            double block[4] = {0, 0, 0, 0};
-            for (int y = 0; y < kSize; ++y)
-                for (int x = 0; x < kSize; ++x) {
-                    const Color& c = result.image.at(x, y);
-                    block[(y * 2 / kSize) * 2 + x * 2 / kSize] +=
-                        double(c.r + c.g + c.b) / (3.0 * kSize * kSize / 4);
-                }
-            for (int b = 0; b < 4; ++b) sum[b] += block[b], sum2[b] += block[b] * block[b];
-        }
-        Blocks out;
-        for (int b = 0; b < 4; ++b) {
-            out.mean[b] = sum[b] / kRuns;
-            out.error[b] =
-                std::sqrt(std::max(0.0, sum2[b] / kRuns - out.mean[b] * out.mean[b]) / (kRuns - 1));
-        }
-        return out;
+            return result.image;
+        });
     };
-    const Blocks reference = blocks_of(SamplingStrategy::kMis);
+    const test::BlockMeans reference = blocks_of(SamplingStrategy::kMis);
     for (SamplingStrategy s : {SamplingStrategy::kUniform, SamplingStrategy::kCosine, SamplingStrategy::kBrdf,
                                SamplingStrategy::kLight}) {
-        const Blocks other = blocks_of(s);
+        const test::BlockMeans other = blocks_of(s);
         for (int b = 0; b < 4; ++b) {
             const double sigma =
                 std::sqrt(reference.error[b] * reference.error[b] + other.error[b] * other.error[b]);

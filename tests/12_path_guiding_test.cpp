@@ -29,6 +29,7 @@
 #include "rt/io/assets.hpp"
 #include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "support/block_means.hpp"
 #include "support/chi_square.hpp"
 #include "support/closed_box_scene.hpp"
 
@@ -431,35 +432,22 @@ TEST_CASE("Guided paths converge to chapter 06's image on its Cornell box",
     // renders with its standard error; guided against unguided within 4.5 σ.
     const Scene scene = load_scene(scene_path("ch06_default.json"));
     constexpr int kSize = 16, kSpp = 16, kRuns = 8;
-    auto blocks_of = [&](bool guided, double* mean, double* error) {
-        double sum[4] = {0, 0, 0, 0}, sum2[4] = {0, 0, 0, 0};
-        for (int r = 0; r < kRuns; ++r) {
-            const std::uint64_t seed = 50 + std::uint64_t(r);
+    auto blocks_of = [&](bool guided) {
+        return test::block_means(kSize, kRuns, [&](std::uint64_t seed) {
             const Image image = guided ? render_guided_scene(scene, kSize, kSpp, seed, 2, 3, 500).result.image
                                        : render_unguided(scene, kSize, kSpp, seed, 2).image;
             REQUIRE(image.all_finite());
-            double block[4] = {0, 0, 0, 0};
-            for (int y = 0; y < kSize; ++y)
-                for (int x = 0; x < kSize; ++x) {
-                    const Color& c = image.at(x, y);
-                    block[(y * 2 / kSize) * 2 + x * 2 / kSize] += double(c.r + c.g + c.b) / (3.0 * kSize * kSize / 4);
-                }
-            for (int b = 0; b < 4; ++b) sum[b] += block[b], sum2[b] += block[b] * block[b];
-        }
-        for (int b = 0; b < 4; ++b) {
-            mean[b] = sum[b] / kRuns;
-            error[b] = std::sqrt(std::max(0.0, sum2[b] / kRuns - mean[b] * mean[b]) / (kRuns - 1));
-        }
+            return image;
+        });
     };
-    double guided[4], guided_error[4], unguided[4], unguided_error[4];
-    blocks_of(true, guided, guided_error);
-    blocks_of(false, unguided, unguided_error);
+    const test::BlockMeans guided = blocks_of(true), unguided = blocks_of(false);
     for (int b = 0; b < 4; ++b) {
-        const double sigma = std::sqrt(guided_error[b] * guided_error[b] + unguided_error[b] * unguided_error[b]);
-        INFO("block " << b << ": guided " << guided[b] << " +- " << guided_error[b] << ", unguided "
-                      << unguided[b] << " +- " << unguided_error[b]);
-        CHECK(std::abs(guided[b] - unguided[b]) <= 4.5 * sigma);
-        CHECK(guided_error[b] > 0);
+        const double sigma =
+            std::sqrt(guided.error[b] * guided.error[b] + unguided.error[b] * unguided.error[b]);
+        INFO("block " << b << ": guided " << guided.mean[b] << " +- " << guided.error[b] << ", unguided "
+                      << unguided.mean[b] << " +- " << unguided.error[b]);
+        CHECK(std::abs(guided.mean[b] - unguided.mean[b]) <= 4.5 * sigma);
+        CHECK(guided.error[b] > 0);
     }
 }
 
