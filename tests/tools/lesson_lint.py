@@ -4,7 +4,8 @@
   lesson_lint.py [REPOSITORY_ROOT]
 
 Prints each lesson (chapters/*/README.md) with its word count (words as `wc -w` counts them), then one
-line per flag: FILE:LINE: what was found. A lesson is flagged for
+line per flag: FILE:LINE: what was found. The top README.md is held to MAX_README_WORDS (its first screen is
+for students; the detail lives in common/README.md). A lesson is flagged for
   * more than MAX_WORDS words;
   * a date or a clock time (a measurement's date belongs in the chapter's benchmark/README.md);
   * a load average, or a figure tied to one core ("core 0", "on core 1"): a lab notebook's detail;
@@ -30,6 +31,7 @@ import sys
 from pathlib import Path
 
 MAX_WORDS = 5000
+MAX_README_WORDS = 3000
 
 MONTH = r"(?:January|February|March|April|May|June|July|August|September|October|November|December)"
 FLAGS = [
@@ -135,6 +137,12 @@ def main(argv: list[str]) -> int:
             print(f"  {name}:{line}: {what}: \"{match}\"")
             failed = True
         failed = failed or over or measured_over
+    readme = root / "README.md"
+    if readme.is_file():
+        words = len(readme.read_text(encoding="utf-8").split())
+        print(f"{words:7d} words  README.md" +
+              (f"  (over the budget of {MAX_README_WORDS} words)" if words > MAX_README_WORDS else ""))
+        failed = failed or words > MAX_README_WORDS
     return 1 if failed else 0
 
 

@@ -81,6 +81,14 @@ def main() -> int:
         lesson.write_text(teaching + "\n\nrender " + "took " * 13 + "2.5 s\n", encoding="utf-8")
         if lesson_lint.main(["lesson_lint", root]) != 1:
             failures.append("a lesson over 15 % measurement passes")
+        lesson.write_text(teaching, encoding="utf-8")
+        readme = Path(root) / "README.md"
+        readme.write_text("word " * lesson_lint.MAX_README_WORDS, encoding="utf-8")
+        if lesson_lint.main(["lesson_lint", root]) != 0:
+            failures.append("a top README of exactly its budget fails")
+        readme.write_text("word " * (lesson_lint.MAX_README_WORDS + 1), encoding="utf-8")
+        if lesson_lint.main(["lesson_lint", root]) != 1:
+            failures.append("a top README over its budget passes")
     for failure in failures:
         print("FAIL:", failure)
     print("OK" if not failures else f"{len(failures)} failures")
