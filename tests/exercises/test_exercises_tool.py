@@ -245,6 +245,13 @@ class Marks(unittest.TestCase):
         with self.assertRaisesRegex(marks.ToolError, 'ch07.hypotenuse #3: needs an "answer"'):
             load()
 
+    def test_a_derive_item_is_known_by_its_lesson_row(self):
+        lesson = self.root / "chapters/07_fixture/README.md"
+        lesson.write_text(lesson.read_text(encoding="utf-8") + "\n| exercise | what to write |\n|---|---|\n"
+                          "| `ch07.hypotenuse` | the length. **Derive** it from Pythagoras |\n"
+                          "| `ch07.counter` | the next value |\n", encoding="utf-8")
+        self.assertEqual(wrong_solutions.derive_items(self.root), {"ch07.hypotenuse"})
+
     def rewrite(self, old, new):
         path = self.root / "chapters/07_fixture/fixture.cpp"
         text = path.read_text(encoding="utf-8")

@@ -68,7 +68,8 @@ from exercise_tool.marks import TAG_PREFIX, Exercise, ToolError, find_exercises,
 from exercise_tool.stub_warnings import stub_warnings  # noqa: E402
 from exercise_tool.test_runs import (TestResult, UnitTest, exercise_tags, next_exercise, run_each,  # noqa: E402
                                      run_tests, source_of_build, summarise, unit_tests)
-from exercise_tool.wrong_solutions import MINIMUM_PER_EXERCISE, load as load_wrong_solutions  # noqa: E402
+from exercise_tool.wrong_solutions import (MINIMUM_PER_EXERCISE, derive_items,  # noqa: E402
+                                          load as load_wrong_solutions)
 
 ROOT = Path(__file__).resolve().parent.parent.parent
 
@@ -345,6 +346,10 @@ def command_wrong(args: argparse.Namespace) -> int:
     problems = [f"{e.where()}: exercise {e.name} has {counts[e.name]} wrong solutions in "
                 f"tests/wrong_solutions/{e.chapter}.json; at least {MINIMUM_PER_EXERCISE} are needed"
                 for e in exercises if counts[e.name] < MINIMUM_PER_EXERCISE]
+    derive = derive_items(args.root)
+    problems += [f"{e.where()}: exercise {e.name} asks to derive, but tests/wrong_solutions/{e.chapter}.json has no "
+                 "other right solution (\"correct\": true) that its tests must accept" for e in exercises
+                 if e.name in derive and not any(s.correct for s in wrong.get(e.name, []))]
     programs = {f"{e.chapter}_test" for e in exercises}
     build = build_test_programs(out, args.jobs, programs if only else None)
     program_of = {t.program: t.command[0] for t in unit_tests(build)}

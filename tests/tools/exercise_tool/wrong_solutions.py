@@ -27,6 +27,7 @@ body, chosen when a test runs by RT_WRONG_SOLUTION=chNN.name:K (the K-th, from 1
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -34,6 +35,14 @@ from .marks import Exercise, ToolError
 
 DATA_FOLDER = Path("tests/wrong_solutions")
 MINIMUM_PER_EXERCISE = 3
+DERIVE_ROW = re.compile(r"^\| `(ch\d\d\.\w+)` \|.*\*\*Derive\*\*", re.MULTILINE)
+
+
+def derive_items(root: Path) -> set[str]:
+    """The exercises whose row in their lesson's exercise table asks the student to **Derive**: each needs
+    another right solution (a different correct derivation) that its tests accept."""
+    return {m.group(1) for lesson in sorted(root.glob("chapters/*/README.md"))
+            for m in DERIVE_ROW.finditer(lesson.read_text(encoding="utf-8"))}
 
 
 @dataclass
