@@ -17,6 +17,7 @@
 #include "05_recursive_gi/recursive_tracer.hpp"
 #include "05_recursive_gi/scatter.hpp"
 #include "05_recursive_gi/termination.hpp"
+#include "05_recursive_gi/termination_flags.hpp"
 #include "random_unit.hpp"
 #include "rt/io/effects.hpp"
 #include "rt/core/errors.hpp"
@@ -607,4 +608,24 @@ TEST_CASE("The default scene renders finite, plausible and identical on 1 and 2 
     CHECK(one.image.mean() > 0.08);
     CHECK(one.image.mean() < 0.4);
     CHECK(one.rays[RayKind::kCamera] == 40u * 40u * 2u);
+}
+
+TEST_CASE("The depth cap: --max-depth, else the scene's max_depth, else the rule's own", "[termination]") {
+    const auto resolved = [](std::vector<std::string> args, std::optional<int> scene_depth) {
+        CLI::App app;
+        TerminationFlags flags;
+        add_termination_flags(app, flags);
+        std::reverse(args.begin(), args.end());  // CLI11 reads a vector of arguments from its back
+        app.parse(args);
+        Scene scene;
+        scene.max_depth = scene_depth;
+        return flags.resolved(scene);
+    };
+    CHECK(resolved({}, std::nullopt).max_depth == kSafetyDepthCap);
+    CHECK(resolved({"--termination", "depth"}, std::nullopt).max_depth == 8);
+    CHECK(resolved({}, 3).max_depth == 3);
+    CHECK(resolved({"--termination", "depth"}, 3).max_depth == 3);
+    const TerminationSettings given = resolved({"--max-depth", "5"}, 3);
+    CHECK(given.max_depth == 5);
+    CHECK(given.rule == Termination::kRussianRoulette);
 }

@@ -138,13 +138,15 @@ bool wholly_on_unit_sphere(const PinholeCamera& camera, int x, int y) {
 }
 
 RenderResult render_scene(const Scene& scene, SamplingStrategy strategy, int size, int spp,
-                          std::uint64_t seed, int threads = 1) {
+                          std::uint64_t seed, int threads = 1,
+                          const TerminationSettings& termination = PathOptions{}.termination) {
     // What a run of chapter 06 simulates for the scene, as for a user's scene file.
     const EffectSet simulated = simulated_effects(scene, kRecursiveChapterEffects);
     const RenderScene prepared(scene, simulated);
     PathOptions options;
     options.simulated = simulated;
     options.strategy = strategy;
+    options.termination = termination;
     const PathTracer tracer(prepared.world, prepared.materials, prepared.lights, options);
     const PinholeCamera camera = make_pinhole_camera(scene.camera, size, size);
     const RenderSettings settings{size, size, spp, seed, threads, ProgressStyle::kNone};
@@ -669,6 +671,38 @@ TEST_CASE(
         CHECK(worst <= 1e-5);  // zero variance: float rounding only
         CHECK(mis_sum / sphere_pixels == Approx(albedo).epsilon(1e-5));
         CHECK(cosine.rays[RayKind::kShadow] == 0);
+    }
+}
+
+TEST_CASE(
+    "A depth cap of N counts every path of at most N bounces whatever the strategy, the furnace's sum of "
+    "rho^k for k from 0 to N",
+    "[render][ex:ch06.path_tracer]") {
+    // Chapter 05's furnace: six walls of albedo 0.8 that each emit 1. A path of k bounces carries 0.8^k.
+    // Light sampling counts the light of bounce N by its estimate at vertex N; the BSDF strategy and MIS
+    // need the ray drawn there, traced for the light it meets alone.
+    const Scene scene = load_scene(scene_path("ch05_furnace.json"));
+    for (int cap : {1, 2, 3}) {
+        double expected = 0;
+        for (int k = 0; k <= cap; ++k) expected += std::pow(0.8, k);
+        for (SamplingStrategy strategy :
+             {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
+            const RenderResult r = render_scene(scene, strategy, 32, 16, 7, 1,
+                                                TerminationSettings{Termination::kMaxDepth, cap});
+            // The pixels are independent estimates: their spread gives the mean's standard error.
+            double sum = 0, squares = 0;
+            for (const Color& c : r.image.pixels()) {
+                sum += c.g;
+                squares += double(c.g) * c.g;
+            }
+            const double n = double(r.image.pixels().size());
+            const double mean = sum / n;
+            const double error = std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1));
+            INFO("cap " << cap << ", " << to_string(strategy) << ": mean " << mean << " ± " << error
+                        << ", expected " << expected);
+            // (The cosine strategy has no variance here: float rounding alone, 1e-5.)
+            CHECK(std::abs(mean - expected) <= 5 * error + 1e-5 * expected);
+        }
     }
 }
 

@@ -796,6 +796,14 @@ TEST_CASE(
         "mirrors or smooth glass lit by area or point lights: light paths find the "
         "caustics the camera sees (chapter 08)";
     CHECK(because(load_scene(scene_path("ch08_mirror.json"))) == "combined: " + caustics);
+    // Under a depth cap (the scene's max_depth or --max-depth) camera paths alone: light paths count their
+    // bounces from the light, and would not end where the cap says.
+    const Scene mirror = load_scene(scene_path("ch08_mirror.json"));
+    const TracerChoice capped = choose_tracer(
+        TracerRule::kAuto, {mirror, settings, simulated_effects(mirror, kMediaChapterEffects)},
+        {.termination = true});
+    CHECK_FALSE(capped.combined);
+    CHECK(capped.because == "a depth or a termination rule is set, and light paths count bounces from the light");
     CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
           "paths: no mirror or smooth glass: no caustic for light paths to find");
     // In fog, Cycles' volume sampling, where the flags leave it open; inside a shape (the milk), the flags'.

@@ -127,6 +127,17 @@ TEST_CASE("pbrt's Camera, Film and Sampler: fov on the shorter axis, lens, size 
     CHECK(j["camera"]["vfov"] == 90);
 }
 
+TEST_CASE("pbrt's Integrator maxdepth is the scene's path depth, pbrt's 5 when the file gives none",
+          "[pbrt][loader]") {
+    CHECK(loaded("Integrator \"path\" \"integer maxdepth\" 3\n" + kCamera + "WorldBegin\n").max_depth == 3);
+    CHECK(loaded("Integrator \"volpath\"\n" + kCamera + "WorldBegin\n").max_depth == 5);
+    CHECK(loaded(kCamera + "WorldBegin\n").max_depth == 5);
+    CHECK_THAT(error_of("Integrator \"path\" \"integer maxdepth\" 1025\n" + kCamera + "WorldBegin\n"),
+               Contains("\"integer maxdepth\": must be in [1, 1024]"));
+    // The course's own scenes have no depth unless they say so: each chapter's rule then holds.
+    CHECK_FALSE(load_scene(scene_path("cornell.json")).max_depth);
+}
+
 TEST_CASE("A pbrt camera shows pbrt's picture, not its mirror, in both aspect ratios", "[pbrt][camera]") {
     for (const auto& [width, height] : {std::pair{64, 32}, std::pair{32, 64}}) {
         INFO(width << "x" << height);

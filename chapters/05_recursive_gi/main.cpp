@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
                             study_request);
             return std::nullopt;
         }
-        const TerminationSettings rule = termination.resolved();
+        const TerminationSettings rule = termination.resolved(context.scene);
         const Scene& scene = context.scene;
         const RenderSettings& settings = context.settings;
         const World world(scene, world_options_for(context.simulated));

@@ -27,6 +27,8 @@ struct TerminationSettings {
     int max_depth = 8;  // kMaxDepth: bounces after the camera ray; also a hard cap for the others
     Real min_throughput = Real(0.01);  // kMinThroughput: stop when max component of throughput falls below it
     int roulette_start_depth = 3;      // kRussianRoulette: bounces before roulette starts
+
+    bool operator==(const TerminationSettings&) const = default;
 };
 
 // The hard cap this course gives the rules that end paths by themselves (throughput and roulette), so that

@@ -4,11 +4,12 @@
 
 namespace rt {
 
-TerminationSettings TerminationFlags::resolved() const {
+TerminationSettings TerminationFlags::resolved(const Scene& scene) const {
     TerminationSettings out = settings;
     // Roulette and the throughput rule end paths themselves; the cap then only guards against a path between
     // two mirrors, high enough not to bias the result measurably.
-    out.max_depth = max_depth.value_or(settings.rule == Termination::kMaxDepth ? 8 : kSafetyDepthCap);
+    const int own = settings.rule == Termination::kMaxDepth ? 8 : kSafetyDepthCap;
+    out.max_depth = max_depth.value_or(scene.max_depth.value_or(own));
     return out;
 }
 
@@ -19,9 +20,9 @@ CLI::Option* add_termination_flags(CLI::App& app, TerminationFlags& flags) {
                         "max(throughput) falls below a threshold) or roulette (Russian "
                         "roulette, unbiased)");
     app.add_option("--max-depth", flags.max_depth,
-                   "Bounces after the camera ray: the depth rule's N (default 8), a hard cap for the others "
-                   "(default 64)")
-        ->check(CLI::Range(1, 1024));
+                   "Bounces after the camera ray: the depth rule's N, a hard cap for the others (default: the "
+                   "scene's max_depth, else 8 for the depth rule and 64 for the others)")
+        ->check(CLI::Range(1, kMaxPathDepth));
     return rule;
 }
 

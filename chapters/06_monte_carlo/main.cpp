@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         const RenderSettings& settings = context.settings;
-        options.termination = termination.resolved();
+        options.termination = termination.resolved(context.scene);
         options.simulated = context.simulated;
         const RenderScene prepared(context.scene, context.simulated);
         const PinholeCamera camera =

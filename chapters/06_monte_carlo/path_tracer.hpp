@@ -144,6 +144,12 @@ class PathTracer {
     // The MIS weight of the emitter `hit` that `ray` from `from` meets (an emissive plane is none, Hit::light
     // = −1: light sampling cannot find it, so it counts in full).
     Real emitter_weight(const PathVertex& from, const Ray& ray, const Hit& hit) const;
+    // Whether light met by a ray from `from` can count at all: after the camera or a delta bounce, or when
+    // direct light is simulated and the met light is not all next-event estimation's (MIS, the BSDF strategy,
+    // or an emitter it cannot sample).
+    bool counts_met_light(const PathVertex& from) const {
+        return from.specular || (direct_ && (!nee_ || mis_ || has_unsampled_emitters_));
+    }
     // Russian roulette after `depth` bounces, judged on β × eta_scale (the product of the samples'
     // 1 / roulette_scale: a path through a refracting surface is judged on what it carries back out):
     // survive with q, then β /= q.
@@ -210,7 +216,8 @@ template <class Path, class Extension>
 void PathTracer::trace(Ray ray, Path& path, SampleStream rng, RayCounts& rays, PathObserver* observer,
                        const Extension& ext) const {
     // EXERCISE(ch06.path_tracer) § The path tracer
-    BsdfAtHit at;  // a textured material's BSDF at the vertex
+    BsdfAtHit at;           // a textured material's BSDF at the vertex
+    bool last_ray = false;  // the ray drawn at the depth cap: it adds the light it meets, nothing after
     for (;;) {
         const auto hit = world_.intersect(ray);
         const Segment segment = ext.segment(ray, hit, path, rng, rays);
@@ -229,6 +236,7 @@ void PathTracer::trace(Ray ray, Path& path, SampleStream rng, RayCounts& rays, P
         const Color emitted = materials_.emission(hit->material, hit->front_face);
         if (!is_black(emitted) && (from.specular || direct_))
             path.add_met(path.beta * emitted * emitter_weight(from, ray, *hit));
+        if (last_ray) break;
         if (!indirect_ && path.bounces >= 1) break;
         const Bsdf& bsdf = materials_.bsdf(*hit, at);
         const BsdfFlags& flags = bsdf.flags();
@@ -248,7 +256,13 @@ void PathTracer::trace(Ray ray, Path& path, SampleStream rng, RayCounts& rays, P
         path.eta_scale /= s.roulette_scale;
         path.from = {hit->point, hit->shading_normal, s.delta ? kInfinity : s.pdf, s.delta};
         if (!s.delta) ++path.bounces;
-        if (!ext.survives(*hit, path, rng)) break;
+        if (!ext.survives(*hit, path, rng)) {
+            // At the depth cap the drawn ray is still traced, for the light it meets alone: a path of N
+            // bounces keeps both strategies' shares of that light (pbrt's maxdepth), and every strategy
+            // renders the same depth-N image.
+            if (path.depth < options_.termination.max_depth || !counts_met_light(path.from)) break;
+            last_ray = true;
+        }
         ray = spawn_ray(*hit, s.wi, options_.offset);
         rays.add(ray_kind(flags, s.transmitted));
     }

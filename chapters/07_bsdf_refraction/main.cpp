@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         options.simulated = context.simulated;
-        options.termination = termination.resolved();
+        options.termination = termination.resolved(scene);
         if (depth) {
             run_glass_depth_study(scene, context.settings, options, depth_request);
             return std::nullopt;

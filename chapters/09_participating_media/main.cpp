@@ -7,6 +7,7 @@
 // spectral MIS against the naive per-channel density. As the course's most complete renderer it chooses per
 // scene (`--tracer`, tracer_choice.hpp): chapter 08's combined tracer where mirrors or glass cast caustics,
 // Cycles' volume sampling in fog.
+#include "05_recursive_gi/termination_flags.hpp"
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "media_materials.hpp"
 #include "media_studies.hpp"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
     MediumWalk walk;
     bool no_roulette = false;
     PathOptions options;
+    TerminationFlags termination{options.termination, std::nullopt};
     TracerRule tracer = TracerRule::kAuto;
     const CLI::Option* distance_flag = nullptr;
     const CLI::Option* quad_lights_flag = nullptr;
@@ -34,6 +36,7 @@ int main(int argc, char** argv) {
             ->check(CLI::Range(1, 1 << 30));
         app.add_flag("--no-medium-roulette", no_roulette,
                      "No Russian roulette at scattering events in media");
+        add_termination_flags(app, termination);
         add_sampling_flag(app, options.strategy, options.quad_lights);
         quad_lights_flag = app.get_option("--quad-lights");
         add_sampler_flag(app, options.sampler);
@@ -50,12 +53,14 @@ int main(int argc, char** argv) {
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         options.simulated = context.simulated;
+        options.termination = termination.resolved(context.scene);
         walk.roulette = !no_roulette;
         if (studies.any()) {
             run_media_study(studies, context.scene, context.settings, options);
             return std::nullopt;
         }
-        const GivenFlags given{distance_flag->count() > 0, quad_lights_flag->count() > 0};
+        const GivenFlags given{distance_flag->count() > 0, quad_lights_flag->count() > 0,
+                               !(options.termination == PathOptions{}.termination)};
         return render_by_choice(tracer, context, options, walk, given);
     };
     return run_chapter(argc, argv, chapter, flags, render);

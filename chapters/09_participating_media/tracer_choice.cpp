@@ -53,6 +53,8 @@ TracerChoice choose_tracer(TracerRule rule, const RunContext& context, GivenFlag
         if (!sampling.empty()) choice.because += "; in the fog, " + sampling + ", as Cycles samples volumes";
         return choice;
     }
+    if (given.termination)
+        return paths("a depth or a termination rule is set, and light paths count bounces from the light");
     if (!has_delta_surface(scene, simulated))
         return paths("no mirror or smooth glass: no caustic for light paths to find");
     const LightSet lights = collect_lights(scene);

@@ -28,6 +28,7 @@ constexpr auto names_of(TracerRule) {
 struct GivenFlags {
     bool distance_sampling = false;
     bool quad_lights = false;
+    bool termination = false;  // a rule or a depth other than the loop's own (flags or the scene's max_depth)
 };
 
 struct TracerChoice {

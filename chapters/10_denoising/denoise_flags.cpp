@@ -19,6 +19,7 @@ DenoiseSettings DenoiseFlags::resolved(int threads) const {
 }
 
 void add_denoise_flags(CLI::App& app, DenoiseFlags& flags) {
+    add_termination_flags(app, flags.termination);
     CLI::Option* study_flag = app.add_flag(
         "--study", flags.study,
         "Measure the denoisers against a converged reference (error, SSIM, time, equal-error spp, "

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
         const DenoiseSettings denoise_settings = denoising.resolved(settings.threads);
         PathOptions options;
         options.simulated = context.simulated;
+        options.termination = denoising.termination.resolved(context.scene);
         // A piece of a render (--samples, --resume, an MPI rank's share) is plain path tracing: the same
         // image as the noisy one of a whole render, without the features, to be merged by rt_merge.
         const SampleRange all{0, settings.samples_per_pixel};

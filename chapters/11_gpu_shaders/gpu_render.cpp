@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "04_direct_lighting/light_set.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "04_direct_lighting/material_table.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "embedded_shaders.hpp"
@@ -235,6 +236,7 @@ GpuRenderer::GpuRenderer(const GlContext& context, const Scene& scene, const Eff
     p.set("simulate_direct", simulated.contains(Effect::kDirect));
     p.set("simulate_indirect", simulated.contains(Effect::kIndirect));
     p.set("simulate_shadows", simulated.contains(Effect::kShadows));
+    p.set("max_depth", scene.max_depth.value_or(kSafetyDepthCap));
     notes_.push_back("renderer: chapter 06's path loop with MIS as a " + std::string(to_string(kind)) +
                      " shader on " + context.description());
     notes_.push_back("GPU buffers: " + std::to_string(gpu.nodes.size()) + " BVH nodes, " +

@@ -4,6 +4,7 @@
 // continuation from the learned distribution or the BSDF, by one-sample MIS. `--training-passes 0` renders
 // chapter 06's unguided paths; the summary gives each pass's rays and the trees' memory; `--guide-picture`
 // draws what the guide learned at a point beside the light that arrives there.
+#include "05_recursive_gi/termination_flags.hpp"
 #include "06_monte_carlo/sampling_flags.hpp"
 #include "07_bsdf_refraction/refraction_notes.hpp"
 #include "guiding_flags.hpp"
@@ -13,6 +14,7 @@
 int main(int argc, char** argv) {
     using namespace rt;
     PathOptions options;
+    TerminationFlags termination{options.termination, std::nullopt};
     GuidedRenderOptions guided;
     GuidePictureRequest picture;
     const ChapterInfo chapter{
@@ -30,11 +32,13 @@ int main(int argc, char** argv) {
                        : "";
         }};
     auto flags = [&](CLI::App& app) {
+        add_termination_flags(app, termination);
         add_sampler_flag(app, options.sampler);
         add_guiding_flags(app, guided, picture);
     };
     auto render = [&](const RunContext& context) -> std::optional<ChapterRun> {
         if (!picture.file.empty()) check_writable("--guide-picture", picture.file);
+        options.termination = termination.resolved(context.scene);
         std::vector<std::string> notes = refraction_notes(context.scene, Renderer::kPaths, options);
         const auto draw = [&](const GuidingField& field, const PathTracer& tracer) {
             if (picture.file.empty()) return;

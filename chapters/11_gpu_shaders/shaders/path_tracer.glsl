@@ -7,6 +7,7 @@
 uniform bool simulate_direct;    // Effect::kDirect
 uniform bool simulate_indirect;  // Effect::kIndirect
 uniform bool simulate_shadows;   // Effect::kShadows
+uniform int max_depth;           // the cap on bounces: the scene's max_depth, else chapter 06's 64
 
 // The camera (chapter 01's PinholeCamera) and the film.
 uniform vec3 camera_eye;
@@ -91,13 +92,13 @@ vec3 next_event(Hit hit, vec3 wo, Material m, inout Pcg32 rng) {
 }
 
 // Chapter 05's continue_path with Russian roulette: q = min(1, max β η-scale) from kRouletteStart, 0 at bounce
-// 64 (chapter 06's loop judges β with refraction's 1/η² divided out: eta_scale = Π η²).
+// max_depth (chapter 06's loop judges β with refraction's 1/η² divided out: eta_scale = Π η²).
 const int kRouletteStart = 8;  // chapter 06's kPathRouletteStart
 bool continue_path(int depth, inout vec3 beta, float u, float eta_scale) {
     float q = 0.0;
     const vec3 judged = beta * eta_scale;
     const float largest = max(max(judged.r, judged.g), judged.b);
-    if (depth < 64 && all_finite(judged) && largest > 0.0)
+    if (depth < max_depth && all_finite(judged) && largest > 0.0)
         q = depth < kRouletteStart ? 1.0 : min(1.0, largest);
     if (!(u < q)) return false;
     if (q < 1.0) beta /= q;
@@ -112,6 +113,7 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
     vec3 previous_point = vec3(0.0), previous_normal = vec3(0.0);
     int bounces = 0;
     float eta_scale = 1.0;
+    bool last_ray = false;  // chapter 06's: the ray drawn at the depth cap adds the light it meets, no more
     for (int depth = 0;; ++depth) {
         Hit hit;
         if (!intersect_scene(ray, kInfinity, hit)) {
@@ -132,6 +134,7 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
                 w = power_heuristic(previous_pdf, light_pdf(previous_point, ray.direction, hit));
             L += beta * emitted * w;
         }
+        if (last_ray) break;
         if (!simulate_indirect && bounces >= 1) break;
         if (m.info.y != 0u) break;  // black: it scatters nothing
         const bool delta = is_delta(m);
@@ -165,8 +168,11 @@ vec3 radiance(Ray ray, inout Pcg32 rng) {
         previous_point = hit.point;
         previous_normal = n;
         // Chapter 06's roulette step: a number is drawn only from kRouletteStart, where roulette starts.
-        if (!continue_path(depth + 1, beta, depth + 1 >= kRouletteStart ? pcg_next_real(rng) : 0.0, eta_scale))
-            break;
+        if (!continue_path(depth + 1, beta, depth + 1 >= kRouletteStart ? pcg_next_real(rng) : 0.0, eta_scale)) {
+            // At the cap, light met by the drawn ray still counts where MIS or a delta bounce weighs it.
+            if (depth + 1 < max_depth || !(specular || simulate_direct)) break;
+            last_ray = true;
+        }
         ray = spawn_ray(hit, s.wi);
         ++rays_traced[s.transmitted ? kRefractionRay : is_diffuse(m) ? kIndirectRay : kReflectionRay];
     }

@@ -34,6 +34,9 @@ struct CameraDesc {
     bool mirrored = false;
 };
 
+// The deepest path a scene or --max-depth may ask for.
+inline constexpr int kMaxPathDepth = 1024;
+
 struct ImageDesc {
     int width = 320;
     int height = 240;
@@ -237,6 +240,9 @@ struct Scene {
     std::optional<EnvironmentLight> environment;
     std::optional<MediumDesc> medium;  // what fills the space outside every shape, where the camera is (fog)
     std::optional<EffectSet> effects;  // the scene's explicit list, when it has one
+    // The path depth the scene asks for (pbrt's maxdepth): bounces after the camera ray, at most; --max-depth
+    // overrides it. None: each chapter's own rule.
+    std::optional<int> max_depth;
     // What the scene file said that changes nothing in the course's image (a pbrt scene's sampler type, its
     // pixel filter), for the run's summary.
     std::vector<std::string> notes;

@@ -14,6 +14,7 @@
 
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
+#include "rt/core/scene.hpp"
 #include "rt/io/input_file.hpp"
 #include "rt/io/pbrt_objects.hpp"
 #include "rt/io/pbrt_parameters.hpp"
@@ -97,6 +98,7 @@ class Reader {
     std::optional<CameraState> camera_;
     bool world_ = false;
     int width_ = 1280, height_ = 720, spp_ = 16;
+    int max_depth_ = 5;  // the Integrator's maxdepth: pbrt's default, with or without an Integrator
     std::map<std::string, Json> materials_;  // the translation's materials, as used by shapes
     Json shapes_ = Json::array(), lights_ = Json::array();
     std::optional<Json> environment_;
@@ -289,11 +291,12 @@ bool Reader::options_directive(const std::string& name, const std::string& type,
         note_ignored(owner + " (the course's own sampler)");
     } else if (name == "Integrator") {
         if (type != "path" && type != "volpath") throw InputError(where + "integrator \"" + type + "\" is not in the course; it reads path and volpath");
-        if (const std::optional<int> depth = params.integer("maxdepth")) {
-            if (*depth < 0 || *depth > 1 << 20) params.fail("maxdepth", "must be in [0, 1048576]");
-            note_ignored(owner + " \"maxdepth\" " + std::to_string(*depth) +
-                         " (the course ends paths by Russian roulette, under its cap of 64 bounces)");
-        }
+        // pbrt's path of maxdepth N and the course's depth cap N count the same paths (chapter 06's loop
+        // traces the ray drawn at the cap for the light it meets).
+        max_depth_ = params.integer("maxdepth").value_or(max_depth_);
+        if (max_depth_ < 1 || max_depth_ > kMaxPathDepth)
+            params.fail("maxdepth", "must be in [1, " + std::to_string(kMaxPathDepth) +
+                                        "] (the bounces a course path may make), got " + std::to_string(max_depth_));
         if (params.ignore("lightsampler")) note_ignored(owner + " \"lightsampler\" (the course picks lights by power)");
         params.refuse_unused("maxdepth, lightsampler");
     } else if (name == "PixelFilter") {
@@ -478,6 +481,7 @@ Json Reader::finish() {
         camera["focus_distance"] = c.focal_distance;
     }
     Json scene = {{"camera", camera}, {"image", {{"width", width_}, {"height", height_}, {"spp", spp_}}}};
+    scene["max_depth"] = max_depth_;
     if (!materials_.empty()) scene["materials"] = materials_;
     if (!shapes_.empty()) scene["shapes"] = shapes_;
     if (environment_) lights_.push_back(*environment_);

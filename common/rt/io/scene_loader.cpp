@@ -19,8 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using namespace scene_reading;
 
-constexpr std::string_view kTopKeys[] = {"description", "camera", "image",  "materials",
-                                         "shapes",      "lights", "medium", "effects"};
+constexpr std::string_view kTopKeys[] = {"description", "camera", "image",   "materials", "shapes",
+                                         "lights",      "medium", "effects", "max_depth"};
 constexpr std::string_view kCameraKeys[] = {"from", "at", "up", "vfov", "aperture", "focus_distance",
                                             "mirrored"};
 constexpr std::string_view kImageKeys[] = {"width", "height", "spp"};
@@ -112,6 +112,7 @@ Scene read_scene(const nlohmann::json& root, const fs::path& file) {
     scene.file = name;
     scene.camera = read_camera(top["camera"]);
     if (top.has("image")) scene.image = read_image(top["image"]);
+    if (top.has("max_depth")) scene.max_depth = top["max_depth"].integer(1, kMaxPathDepth);
 
     std::map<std::string, int> material_index;
     std::vector<std::string_view> material_names;
