@@ -677,7 +677,9 @@ TEST_CASE(
 TEST_CASE(
     "A depth cap of N counts every path of at most N bounces whatever the strategy, the furnace's sum of "
     "rho^k for k from 0 to N",
-    "[render][ex:ch06.path_tracer]") {
+    "[render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+    "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // Chapter 05's furnace: six walls of albedo 0.8 that each emit 1. A path of k bounces carries 0.8^k.
     // Light sampling counts the light of bounce N by its estimate at vertex N; the BSDF strategy and MIS
     // need the ray drawn there, traced for the light it meets alone.
