@@ -64,7 +64,7 @@ from exercise_tool.course_map import (chapters_needed, map_problems, needs_first
                                      needs_first_cell)
 from exercise_tool.edition import generate, set_shader_switch  # noqa: E402
 from exercise_tool.next_exercise import command_next as run_next  # noqa: E402
-from exercise_tool.marks import TAG_PREFIX, Exercise, ToolError, find_exercises, selected  # noqa: E402
+from exercise_tool.marks import TAG_PREFIX, Exercise, ToolError, find_exercises  # noqa: E402
 from exercise_tool.stub_warnings import stub_warnings  # noqa: E402
 from exercise_tool.test_runs import (TestResult, UnitTest, exercise_tags, next_exercise, run_each,  # noqa: E402
                                      run_tests, source_of_build, summarise, unit_tests)
