@@ -318,11 +318,13 @@ struct Agreement {
     double mean_gpu, mean_cpu;  // of that one seed's images
 };
 
-// The shader draws chapter 06's stratified Pcg32 numbers, so the CPU renders with --sampler stratified.
+// The shader draws chapter 06's stratified Pcg32 numbers, so the CPU renders with --sampler stratified; both
+// end paths at the scene's max_depth, as the executables do.
 Image cpu_image(const Scene& scene, RenderSettings settings, std::uint64_t seed) {
     settings.seed = seed;
     PathOptions options;
     options.sampler = PointSet::kStratified;
+    options.termination.max_depth = scene.max_depth.value_or(options.termination.max_depth);
     return render_with(Renderer::kPaths, scene, needed(scene), settings, options).image;
 }
 
@@ -389,6 +391,18 @@ TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within 
           "[ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]"
           "[ex:ch07.dielectric_sample][ex:ch07.fresnel_exact][ex:ch07.refract]") {
     check_agreement("cornell.json", ShaderKind::kFragment);
+}
+
+TEST_CASE("The compute shader ends paths at the scene's max_depth as the CPU does, the ray drawn there included",
+          "[gpu]" SHADER_EXERCISES
+          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+    // Chapter 05's furnace at depth 2 (1 + ρ + ρ² = 2.44): the light of the second bounce is shared by MIS
+    // between the next-event estimate and the ray drawn at the cap, which must be traced.
+    Scene scene = load_scene(scene_path("ch05_furnace.json"));
+    scene.max_depth = 2;
+    check_agreement("ch05_furnace.json at depth 2", ShaderKind::kCompute, &scene);
 }
 
 // Chapter 07's other scenes: ch07_default.json is the glass Cornell box above; its furnaces are below.
