@@ -689,8 +689,8 @@ TEST_CASE(
         for (int k = 0; k <= cap; ++k) expected += std::pow(0.8, k);
         for (SamplingStrategy strategy :
              {SamplingStrategy::kCosine, SamplingStrategy::kLight, SamplingStrategy::kMis}) {
-            const RenderResult r = render_scene(scene, strategy, 32, 16, 7, 1,
-                                                TerminationSettings{Termination::kMaxDepth, cap});
+            const RenderResult r =
+                render_scene(scene, strategy, 32, 16, 7, 1, TerminationSettings{Termination::kMaxDepth, cap});
             // The pixels are independent estimates: their spread gives the mean's standard error.
             double sum = 0, squares = 0;
             for (const Color& c : r.image.pixels()) {

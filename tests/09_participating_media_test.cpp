@@ -799,11 +799,12 @@ TEST_CASE(
     // Under a depth cap (the scene's max_depth or --max-depth) camera paths alone: light paths count their
     // bounces from the light, and would not end where the cap says.
     const Scene mirror = load_scene(scene_path("ch08_mirror.json"));
-    const TracerChoice capped = choose_tracer(
-        TracerRule::kAuto, {mirror, settings, simulated_effects(mirror, kMediaChapterEffects)},
-        {.termination = true});
+    const TracerChoice capped =
+        choose_tracer(TracerRule::kAuto, {mirror, settings, simulated_effects(mirror, kMediaChapterEffects)},
+                      {.termination = true});
     CHECK_FALSE(capped.combined);
-    CHECK(capped.because == "a depth or a termination rule is set, and light paths count bounces from the light");
+    CHECK(capped.because ==
+          "a depth or a termination rule is set, and light paths count bounces from the light");
     CHECK(because(load_scene(scene_path("suite_diffuse.json"))) ==
           "paths: no mirror or smooth glass: no caustic for light paths to find");
     // In fog, Cycles' volume sampling, where the flags leave it open; inside a shape (the milk), the flags'.

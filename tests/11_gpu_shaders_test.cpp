@@ -393,11 +393,12 @@ TEST_CASE("The fragment shader's glass Cornell box agrees with the CPU's within 
     check_agreement("cornell.json", ShaderKind::kFragment);
 }
 
-TEST_CASE("The compute shader ends paths at the scene's max_depth as the CPU does, the ray drawn there included",
-          "[gpu]" SHADER_EXERCISES
-          "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset]"
-          "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
-          "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
+TEST_CASE(
+    "The compute shader ends paths at the scene's max_depth as the CPU does, the ray drawn there included",
+    "[gpu]" SHADER_EXERCISES
+    "[image][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet][ex:ch03.robust_offset]"
+    "[ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere][ex:ch04.lambert][ex:ch04.sample_quad_light]"
+    "[ex:ch05.termination][ex:ch06.mis_weight][ex:ch06.path_tracer]") {
     // Chapter 05's furnace at depth 2 (1 + ρ + ρ² = 2.44): the light of the second bounce is shared by MIS
     // between the next-event estimate and the ray drawn at the cap, which must be traced.
     Scene scene = load_scene(scene_path("ch05_furnace.json"));

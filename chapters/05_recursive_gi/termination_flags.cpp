@@ -20,8 +20,8 @@ CLI::Option* add_termination_flags(CLI::App& app, TerminationFlags& flags) {
                         "max(throughput) falls below a threshold) or roulette (Russian "
                         "roulette, unbiased)");
     app.add_option("--max-depth", flags.max_depth,
-                   "Bounces after the camera ray: the depth rule's N, a hard cap for the others (default: the "
-                   "scene's max_depth, else 8 for the depth rule and 64 for the others)")
+                   "Bounces after the camera ray: the depth rule's N, a cap for the others (default: the "
+                   "scene's max_depth, else 8 for the depth rule, 64 for the others)")
         ->check(CLI::Range(1, kMaxPathDepth));
     return rule;
 }

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
             return std::nullopt;
         }
         const GivenFlags given{distance_flag->count() > 0, quad_lights_flag->count() > 0,
-                               !(options.termination == PathOptions{}.termination)};
+                               options.termination != PathOptions{}.termination};
         return render_by_choice(tracer, context, options, walk, given);
     };
     return run_chapter(argc, argv, chapter, flags, render);

@@ -17,7 +17,8 @@ struct DenoiseFlags {
     Denoiser denoiser = Denoiser::kAtrous;
     DenoiseSettings settings;
     EdgeStopping edges;  // both filters' edge stopping
-    TerminationFlags termination{PathOptions{}.termination, std::nullopt};  // the paths' (chapter 06's rule)
+    // The paths' termination: chapter 06's rule unless the flags or the scene say otherwise.
+    TerminationFlags termination{PathOptions{}.termination, std::nullopt};
 
     // The settings with `edges` in both filters, on `threads` threads.
     DenoiseSettings resolved(int threads) const;

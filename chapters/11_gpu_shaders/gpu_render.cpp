@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "04_direct_lighting/light_set.hpp"
-#include "05_recursive_gi/termination.hpp"
 #include "04_direct_lighting/material_table.hpp"
+#include "05_recursive_gi/termination.hpp"
 #include "07_bsdf_refraction/refraction_materials.hpp"
 #include "embedded_shaders.hpp"
 #include "gl_program.hpp"

@@ -296,7 +296,8 @@ bool Reader::options_directive(const std::string& name, const std::string& type,
         max_depth_ = params.integer("maxdepth").value_or(max_depth_);
         if (max_depth_ < 1 || max_depth_ > kMaxPathDepth)
             params.fail("maxdepth", "must be in [1, " + std::to_string(kMaxPathDepth) +
-                                        "] (the bounces a course path may make), got " + std::to_string(max_depth_));
+                                        "] (the bounces a course path may make), got " +
+                                        std::to_string(max_depth_));
         if (params.ignore("lightsampler")) note_ignored(owner + " \"lightsampler\" (the course picks lights by power)");
         params.refuse_unused("maxdepth, lightsampler");
     } else if (name == "PixelFilter") {
