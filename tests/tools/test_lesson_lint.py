@@ -67,28 +67,24 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as root:
         lesson = Path(root) / "chapters" / "01_x" / "README.md"
         lesson.parent.mkdir(parents=True)
-        lesson.write_text("word " * lesson_lint.MAX_WORDS, encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 0:
-            failures.append("a lesson of exactly the budget fails")
-        lesson.write_text("word " * (lesson_lint.MAX_WORDS + 1), encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 1:
-            failures.append("a lesson over the budget passes")
+        readme = Path(root) / "README.md"
+
+        def expect(path: Path, text: str, status: int, failure: str) -> None:
+            path.write_text(text, encoding="utf-8")
+            if lesson_lint.main(["lesson_lint", root]) != status:
+                failures.append(failure)
+
+        expect(lesson, "word " * lesson_lint.MAX_WORDS, 0, "a lesson of exactly the budget fails")
+        expect(lesson, "word " * (lesson_lint.MAX_WORDS + 1), 1, "a lesson over the budget passes")
         # 85 words of teaching and 15 of measurement: exactly the share allowed; one more measured word fails.
         teaching = "word " * 85
-        lesson.write_text(teaching + "\n\nrender " + "took " * 12 + "2.5 s\n", encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 0:
-            failures.append("a lesson of exactly 15 % measurement fails")
-        lesson.write_text(teaching + "\n\nrender " + "took " * 13 + "2.5 s\n", encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 1:
-            failures.append("a lesson over 15 % measurement passes")
+        expect(lesson, teaching + "\n\nrender " + "took " * 12 + "2.5 s\n", 0,
+               "a lesson of exactly 15 % measurement fails")
+        expect(lesson, teaching + "\n\nrender " + "took " * 13 + "2.5 s\n", 1,
+               "a lesson over 15 % measurement passes")
         lesson.write_text(teaching, encoding="utf-8")
-        readme = Path(root) / "README.md"
-        readme.write_text("word " * lesson_lint.MAX_README_WORDS, encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 0:
-            failures.append("a top README of exactly its budget fails")
-        readme.write_text("word " * (lesson_lint.MAX_README_WORDS + 1), encoding="utf-8")
-        if lesson_lint.main(["lesson_lint", root]) != 1:
-            failures.append("a top README over its budget passes")
+        expect(readme, "word " * lesson_lint.MAX_README_WORDS, 0, "a top README of exactly its budget fails")
+        expect(readme, "word " * (lesson_lint.MAX_README_WORDS + 1), 1, "a top README over its budget passes")
     for failure in failures:
         print("FAIL:", failure)
     print("OK" if not failures else f"{len(failures)} failures")
