@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <experimental/simd>
 #include <limits>
 #include <thread>
+
+#include "huge_pages.hpp"
 
 namespace rt {
 namespace {
@@ -20,11 +24,15 @@ constexpr double kTraversalCost = 1;
 // the thread's start (tens of microseconds) is then a small part of the subtree's build.
 constexpr std::uint32_t kParallelMinimum = 1 << 14;
 
-// Half the surface area of a box, in double: float's product of two extents underflows to zero below about
-// 1e-23 and overflows above about 1e19, and the SAH divides by it.
-double half_area(const Aabb& b) {
-    const Vec3d e = glm::max(Vec3d(b.max) - Vec3d(b.min), Vec3d(0));
-    return e.x * e.y + e.y * e.z + e.z * e.x;
+namespace stdx = std::experimental;
+// A point in one SIMD register: x, y, z and a fourth lane that the build never reads.
+using Lanes = stdx::simd<Real, stdx::simd_abi::deduce_t<Real, 4>>;
+// The same four in double: where the build bins, in one register on x86-64-v3.
+using DoubleLanes = stdx::simd<double, stdx::simd_abi::deduce_t<double, 4>>;
+using IntLanes = stdx::simd<int, stdx::simd_abi::deduce_t<int, 4>>;
+
+Vec3 vec3_of(const Lanes& l) {
+    return {l[0], l[1], l[2]};
 }
 
 // A centroid that sorts and bins: the midpoint in double (float's min + max can overflow), held within the
@@ -38,46 +46,100 @@ Vec3 centroid_of(const Aabb& b) {
     return out;
 }
 
-// One primitive as the build sees it. A node's primitives are a range of these, reordered in place as the
+// One primitive as the build sees it: its box's corners and its centroid, each one SIMD register (x, y, z,
+// and a fourth lane). The upper corner's fourth lane holds the primitive's number, whose bits are a
+// subnormal float: the build compares that lane (min, max) but computes nothing with it (a subnormal
+// operand costs a microcode assist). A node's primitives are a range of these, reordered in place as the
 // nodes are split: the build reads them one after another, not through an index into the caller's arrays.
 struct Reference {
-    Aabb box;
-    Vec3 centroid;
-    std::uint32_t primitive;
+    alignas(16) std::array<Real, 4> lower;
+    alignas(16) std::array<Real, 4> upper;
+    alignas(16) std::array<Real, 4> center;
+
+    Reference(const Aabb& b, std::uint32_t primitive) {
+        const Vec3 c = centroid_of(b);
+        lower = {b.min.x, b.min.y, b.min.z, 0};
+        upper = {b.max.x, b.max.y, b.max.z, std::bit_cast<Real>(primitive)};
+        center = {c.x, c.y, c.z, 0};
+    }
+    std::uint32_t primitive() const { return std::bit_cast<std::uint32_t>(upper[3]); }
+    Lanes min() const { return Lanes(lower.data(), stdx::vector_aligned); }
+    Lanes max() const { return Lanes(upper.data(), stdx::vector_aligned); }
+    Lanes centroid() const { return Lanes(center.data(), stdx::vector_aligned); }
+    Real centroid(int axis) const { return center[std::size_t(axis)]; }
 };
+static_assert(sizeof(Reference) == 48);
+
+// A box as two SIMD registers, grown with two instructions. Made without a value; empty() is the box
+// around nothing.
+struct LaneBox {
+    Lanes min, max;
+
+    static LaneBox empty() { return {Lanes(kInfinity), Lanes(-kInfinity)}; }
+
+    // glm::min and glm::max lane by lane. (stdx::min and stdx::max carry an attribute of their own, fast
+    // math, and GCC then inlines no function that calls them into one that does not.)
+    void extend(const Lanes& lo, const Lanes& hi) {
+        stdx::where(lo < min, min) = lo;
+        stdx::where(max < hi, max) = hi;
+    }
+    void extend(const LaneBox& b) { extend(b.min, b.max); }
+    Aabb aabb() const { return {vec3_of(min), vec3_of(max)}; }
+};
+
+// Half the surface area of a box, in double: float's product of two extents underflows to zero below about
+// 1e-23 and overflows above about 1e19, and the SAH divides by it.
+double half_area(const Aabb& b) {
+    const Vec3d e = glm::max(Vec3d(b.max) - Vec3d(b.min), Vec3d(0));
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+double half_area(const LaneBox& b) {
+    return half_area(b.aabb());
+}
 
 // What the build knows of a set of primitives: the box around them and the box around their centroids.
 struct Bounds {
-    Aabb box, centroids;
+    LaneBox box = LaneBox::empty(), centroids = LaneBox::empty();
 
     void extend(const Reference& r) {
-        box.extend(r.box);
-        centroids.extend(r.centroid);
+        box.extend(r.min(), r.max());
+        const Lanes c = r.centroid();
+        centroids.extend(c, c);
     }
 };
 
 // The centroids binned into kBins slabs along each axis, in one pass over the node's primitives: each bin's
-// primitives counted and boxed.
+// primitives counted and boxed. A bin's box is written by its first primitive, so only a bin with a count
+// has one: a node of a few primitives fills a few bins and does not clear 48 boxes first.
 struct Bins {
-    std::array<std::array<Aabb, kBins>, 3> box;
+    std::array<std::array<LaneBox, kBins>, 3> box;
     std::array<std::array<std::uint32_t, kBins>, 3> count{};
 };
 
 // Which of kBins slabs a centroid falls in, along each axis of a node, in double: a float extent may be
 // subnormal (its inverse infinite) or overflow to infinity (centroids at -3e38 and 3e38). kBins / extent is
 // computed once per node, so a primitive's bin takes a product, not a division; (c − lo) kBins / extent is
-// in [0, kBins] (up to rounding) for every centroid of the node: the bin is in [0, kBins).
+// in [0, kBins] (up to rounding) for every centroid of the node: the bin is in [0, kBins). The three axes
+// are binned in one register, each lane with the same operations as one axis alone.
 struct BinScale {
-    Vec3d lower, scale;
+    DoubleLanes lower = 0, scale = 0;
 
-    explicit BinScale(const Aabb& centroids) : lower(centroids.min) {
+    explicit BinScale(const Aabb& centroids) {
         for (int axis = 0; axis < 3; ++axis) {
             const double extent = double(centroids.max[axis]) - double(centroids.min[axis]);
+            lower[axis] = centroids.min[axis];
             scale[axis] = extent > 0 ? kBins / extent : 0;
         }
     }
-    int bin_of(const Vec3& c, int axis) const {
-        const double t = (double(c[axis]) - lower[axis]) * scale[axis];
+    IntLanes bins_of(const Reference& r) const {
+        const DoubleLanes t = (DoubleLanes(r.center.data(), stdx::element_aligned) - lower) * scale;
+        DoubleLanes bin = t;
+        stdx::where(!(t > 0), bin) = 0;
+        stdx::where(t >= kBins - 1, bin) = kBins - 1;
+        return stdx::static_simd_cast<IntLanes>(bin);
+    }
+    int bin_of(const Reference& r, int axis) const {
+        const double t = (double(r.centroid(axis)) - lower[axis]) * scale[axis];
         return t >= kBins - 1 ? kBins - 1 : (t > 0 ? int(t) : 0);
     }
 };
@@ -108,10 +170,15 @@ struct Builder {
         Bins bins;
         for (std::uint32_t i = begin; i < end; ++i) {
             const Reference& r = references[i];
+            const IntLanes b = scale.bins_of(r);
+            const Lanes lower = r.min(), upper = r.max();
             for (int axis = 0; axis < 3; ++axis) {
-                const int b = scale.bin_of(r.centroid, axis);
-                ++bins.count[axis][b];
-                bins.box[axis][b].extend(r.box);
+                LaneBox& box = bins.box[axis][b[axis]];
+                if (bins.count[axis][b[axis]]++ == 0) {
+                    box = {lower, upper};
+                } else {
+                    box.extend(lower, upper);
+                }
             }
         }
         return bins;
@@ -124,18 +191,26 @@ struct Builder {
         Split best;
         for (int axis = 0; axis < 3; ++axis) {
             if (!(double(centroids.max[axis]) - double(centroids.min[axis]) > 0)) continue;
+            // An empty bin changes neither side's box nor its count: its costs are its neighbour's.
             std::array<double, kBins - 1> left_cost{};
-            Aabb left;
+            LaneBox left = LaneBox::empty();
             std::uint32_t left_count = 0;
             for (int b = 0; b < kBins - 1; ++b) {
+                if (bins.count[axis][b] == 0) {
+                    left_cost[b] = b > 0 ? left_cost[b - 1] : 0;
+                    continue;
+                }
                 left.extend(bins.box[axis][b]);
                 left_count += bins.count[axis][b];
-                left_cost[b] = left_count > 0 ? half_area(left) * tests(left_count) : 0;
+                left_cost[b] = half_area(left) * tests(left_count);
             }
-            Aabb right;
+            LaneBox right = LaneBox::empty();
             std::uint32_t right_count = 0;
             for (int b = kBins - 1; b > 0; --b) {
-                right.extend(bins.box[axis][b]);
+                // Bin b empty, the boundary below it parts the primitives as the one above it did, at the
+                // same cost, and only the first of equal costs is taken.
+                if (bins.count[axis][b] == 0 && b < kBins - 1) continue;
+                if (bins.count[axis][b] > 0) right.extend(bins.box[axis][b]);
                 right_count += bins.count[axis][b];
                 const double cost =
                     left_cost[b - 1] + (right_count > 0 ? half_area(right) * tests(right_count) : 0);
@@ -150,7 +225,7 @@ struct Builder {
         const std::uint32_t middle = begin + (end - begin) / 2;
         std::nth_element(
             references.begin() + begin, references.begin() + middle, references.begin() + end,
-            [&](const Reference& a, const Reference& b) { return a.centroid[axis] < b.centroid[axis]; });
+            [&](const Reference& a, const Reference& b) { return a.centroid(axis) < b.centroid(axis); });
         return middle;
     }
 
@@ -161,8 +236,8 @@ struct Builder {
 
     // Builds the subtree of `node` over [begin, end), whose bounds are `bounds`.
     void build(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth, const Bounds& bounds) {
-        const Aabb& box = bounds.box;
-        const Aabb& centroids = bounds.centroids;
+        const Aabb box = bounds.box.aabb();
+        const Aabb centroids = bounds.centroids.aabb();
         nodes[node].min = box.min;
         nodes[node].max = box.max;
         const std::uint32_t count = end - begin;
@@ -200,7 +275,7 @@ struct Builder {
     // are made in the same pass, each primitive read once rather than partitioned and then read again.
     std::uint32_t partition(std::uint32_t begin, std::uint32_t end, const Split& split, const BinScale& scale,
                             Bounds& first, Bounds& second) {
-        auto goes_first = [&](const Reference& r) { return scale.bin_of(r.centroid, split.axis) < split.bin; };
+        auto goes_first = [&](const Reference& r) { return scale.bin_of(r, split.axis) < split.bin; };
         std::uint32_t i = begin, j = end;
         while (true) {
             for (; i < j && goes_first(references[i]); ++i) first.extend(references[i]);
@@ -250,7 +325,7 @@ struct Builder {
                                            std::uint32_t begin, std::uint32_t end, int depth,
                                            const Bounds& bounds) {
         Builder builder{leaf_packet, references, {}};
-        builder.nodes.reserve(2 * std::size_t(end - begin) / kMinSplitCount);
+        reserve_on_huge_pages(builder.nodes, 2 * std::size_t(end - begin) / kMinSplitCount);
         builder.nodes.push_back({});
         builder.build(0, begin, end, depth, bounds);
         return builder.nodes;
@@ -263,15 +338,14 @@ Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::u
     order.clear();
     if (bounds.empty()) return;
     std::vector<Reference> references;
-    references.reserve(bounds.size());
-    for (std::uint32_t i = 0; i < bounds.size(); ++i)
-        references.push_back({bounds[i], centroid_of(bounds[i]), i});
+    reserve_on_huge_pages(references, bounds.size());
+    for (std::uint32_t i = 0; i < bounds.size(); ++i) references.emplace_back(bounds[i], i);
     const std::uint32_t n = std::uint32_t(bounds.size());
     const Builder root{std::max(leaf_packet, 1u), references, {}};
     nodes_ = Builder::build_tree(root.leaf_packet, references, 0, n, 0, root.bounds_of(0, n));
     nodes_.shrink_to_fit();
-    order.reserve(bounds.size());
-    for (const Reference& r : references) order.push_back(r.primitive);
+    reserve_on_huge_pages(order, bounds.size());
+    for (const Reference& r : references) order.push_back(r.primitive());
 }
 
 }  // namespace rt

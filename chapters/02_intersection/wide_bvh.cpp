@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "huge_pages.hpp"
+
 namespace rt {
 
 // Every member given its value at once: a WideRay first made empty and then filled in is cleared by a loop
@@ -18,7 +20,7 @@ WideRay make_wide_ray(const Ray& ray) {
 WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
     if (binary.nodes().empty()) return;
     bounds_ = binary.nodes()[0].box();
-    nodes_.reserve(binary.nodes().size() / 2 + 1);
+    reserve_on_huge_pages(nodes_, binary.nodes().size() / 2 + 1);
     collapse(binary, 0, leaf_items);
     nodes_.shrink_to_fit();
 }

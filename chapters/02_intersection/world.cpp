@@ -6,6 +6,7 @@
 
 #include "box.hpp"
 #include "float_error.hpp"
+#include "huge_pages.hpp"
 
 namespace rt {
 
@@ -41,7 +42,7 @@ void World::collapse_to_wide() {
     // At most one packet per leaf more than a packet per four triangles: reserved at once, not grown.
     std::size_t leaves = 0;
     for (const BvhNode& node : bvh_.nodes()) leaves += node.leaf();
-    if (pack) triangle_packets_.reserve(triangles_.size() / kTriangleLanes + leaves);
+    if (pack) reserve_on_huge_pages(triangle_packets_, triangles_.size() / kTriangleLanes + leaves);
     wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
         const std::uint32_t first_packet = std::uint32_t(triangle_packets_.size());
         triangles.clear();
@@ -75,7 +76,7 @@ std::size_t World::acceleration_bytes() const {
 
 std::vector<Aabb> World::all_bounds() const {
     std::vector<Aabb> boxes;
-    boxes.reserve(primitives_.size());
+    reserve_on_huge_pages(boxes, primitives_.size());
     for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
     return boxes;
 }
@@ -119,10 +120,10 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     std::vector<Triangle> triangles;
     std::vector<TriangleCorners> corners;
     std::vector<QuadPacket> packets;
-    primitives.reserve(order.size());
+    reserve_on_huge_pages(primitives, order.size());
     spheres.reserve(spheres_.size());
     quads.reserve(quads_.size());
-    triangles.reserve(triangles_.size());
+    reserve_on_huge_pages(triangles, triangles_.size());
     packets.reserve(packets_.size());
     auto move_to = [](auto& to, const auto& from, std::uint32_t index) {
         to.push_back(from[index]);
@@ -181,8 +182,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                 // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
                 // floats on both sides of every edge.
                 const bool has_uv = !g.texture_coordinates.empty();
-                triangles_.reserve(triangles_.size() + g.triangles.size());
-                primitives_.reserve(primitives_.size() + g.triangles.size());
+                reserve_on_huge_pages(triangles_, triangles_.size() + g.triangles.size());
+                reserve_on_huge_pages(primitives_, primitives_.size() + g.triangles.size());
                 for (std::size_t i = 0; i < g.triangles.size(); ++i) {
                     const auto& tri = g.triangles[i];
                     if (g.smooth() || has_uv) {
