@@ -70,12 +70,9 @@ struct Reference {
 };
 static_assert(sizeof(Reference) == 48);
 
-// A box as two SIMD registers, grown with two instructions. Made without a value; empty() is the box
-// around nothing.
+// A box as two SIMD registers, grown with two instructions; empty until a box is added.
 struct LaneBox {
-    Lanes min, max;
-
-    static LaneBox empty() { return {Lanes(kInfinity), Lanes(-kInfinity)}; }
+    Lanes min = kInfinity, max = -kInfinity;
 
     // glm::min and glm::max lane by lane. (stdx::min and stdx::max carry an attribute of their own, fast
     // math, and GCC then inlines no function that calls them into one that does not.)
@@ -99,7 +96,7 @@ double half_area(const LaneBox& b) {
 
 // What the build knows of a set of primitives: the box around them and the box around their centroids.
 struct Bounds {
-    LaneBox box = LaneBox::empty(), centroids = LaneBox::empty();
+    LaneBox box, centroids;
 
     void extend(const Reference& r) {
         box.extend(r.min(), r.max());
@@ -109,8 +106,7 @@ struct Bounds {
 };
 
 // The centroids binned into kBins slabs along each axis, in one pass over the node's primitives: each bin's
-// primitives counted and boxed. A bin's box is written by its first primitive, so only a bin with a count
-// has one: a node of a few primitives fills a few bins and does not clear 48 boxes first.
+// primitives counted and boxed.
 struct Bins {
     std::array<std::array<LaneBox, kBins>, 3> box;
     std::array<std::array<std::uint32_t, kBins>, 3> count{};
@@ -173,12 +169,8 @@ struct Builder {
             const IntLanes b = scale.bins_of(r);
             const Lanes lower = r.min(), upper = r.max();
             for (int axis = 0; axis < 3; ++axis) {
-                LaneBox& box = bins.box[axis][b[axis]];
-                if (bins.count[axis][b[axis]]++ == 0) {
-                    box = {lower, upper};
-                } else {
-                    box.extend(lower, upper);
-                }
+                ++bins.count[axis][b[axis]];
+                bins.box[axis][b[axis]].extend(lower, upper);
             }
         }
         return bins;
@@ -193,7 +185,7 @@ struct Builder {
             if (!(double(centroids.max[axis]) - double(centroids.min[axis]) > 0)) continue;
             // An empty bin changes neither side's box nor its count: its costs are its neighbour's.
             std::array<double, kBins - 1> left_cost{};
-            LaneBox left = LaneBox::empty();
+            LaneBox left;
             std::uint32_t left_count = 0;
             for (int b = 0; b < kBins - 1; ++b) {
                 if (bins.count[axis][b] == 0) {
@@ -204,7 +196,7 @@ struct Builder {
                 left_count += bins.count[axis][b];
                 left_cost[b] = half_area(left) * tests(left_count);
             }
-            LaneBox right = LaneBox::empty();
+            LaneBox right;
             std::uint32_t right_count = 0;
             for (int b = kBins - 1; b > 0; --b) {
                 // Bin b empty, the boundary below it parts the primitives as the one above it did, at the
@@ -334,17 +326,21 @@ struct Builder {
 
 }  // namespace
 
-Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::uint32_t leaf_packet) {
+Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::uint32_t leaf_packet)
+    : Bvh(
+          std::uint32_t(bounds.size()), [&](std::uint32_t i) { return bounds[i]; }, order, leaf_packet) {}
+
+Bvh::Bvh(std::uint32_t n, const std::function<Aabb(std::uint32_t)>& bounds_of, std::vector<std::uint32_t>& order,
+         std::uint32_t leaf_packet) {
     order.clear();
-    if (bounds.empty()) return;
+    if (n == 0) return;
     std::vector<Reference> references;
-    reserve_on_huge_pages(references, bounds.size());
-    for (std::uint32_t i = 0; i < bounds.size(); ++i) references.emplace_back(bounds[i], i);
-    const std::uint32_t n = std::uint32_t(bounds.size());
+    reserve_on_huge_pages(references, n);
+    for (std::uint32_t i = 0; i < n; ++i) references.emplace_back(bounds_of(i), i);
     const Builder root{std::max(leaf_packet, 1u), references, {}};
     nodes_ = Builder::build_tree(root.leaf_packet, references, 0, n, 0, root.bounds_of(0, n));
     nodes_.shrink_to_fit();
-    reserve_on_huge_pages(order, bounds.size());
+    reserve_on_huge_pages(order, n);
     for (const Reference& r : references) order.push_back(r.primitive());
 }
 

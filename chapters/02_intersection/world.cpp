@@ -26,7 +26,7 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
                              options_.triangle_test == TriangleTest::kWatertight &&
                              options_.triangle_packets && options_.packet_sah;
         std::vector<std::uint32_t> order;
-        bvh_ = Bvh(all_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
+        bvh_ = Bvh(std::uint32_t(primitives_.size()), slot_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
         lay_out_in(order);
         if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }
@@ -74,18 +74,15 @@ std::size_t World::acceleration_bytes() const {
            leaf_items_.size() * sizeof(std::uint32_t);
 }
 
-std::vector<Aabb> World::all_bounds() const {
-    std::vector<Aabb> boxes;
-    reserve_on_huge_pages(boxes, primitives_.size());
-    for (const Primitive& p : primitives_) boxes.push_back(bounds(p));
-    return boxes;
+std::function<Aabb(std::uint32_t)> World::slot_bounds() const {
+    return [this](std::uint32_t slot) { return bounds(primitives_[slot]); };
 }
 
 // Replaces the quads by packets of four neighbours. A first BVH over every primitive lists them leaf by leaf,
 // so neighbours come one after another; its quads, taken four at a time in that order, become the packets.
 void World::pack_quads() {
     std::vector<std::uint32_t> order;
-    const Bvh neighbours(all_bounds(), order);
+    const Bvh neighbours(std::uint32_t(primitives_.size()), slot_bounds(), order);
     quad_primitives_.resize(quads_.size());
     std::vector<Primitive> items;
     std::vector<std::uint32_t> quads_in_order;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -135,7 +136,8 @@ class World {
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
     void collapse_to_wide();
-    std::vector<Aabb> all_bounds() const;
+    // The box of the primitive in each slot, for the BVH's build.
+    std::function<Aabb(std::uint32_t)> slot_bounds() const;
     Aabb bounds(const Primitive& p) const;
     bool test(const Ray& ray, const WatertightRay& sheared, std::uint32_t slot, Real t_max,
               Candidate& found) const;
