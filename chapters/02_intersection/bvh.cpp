@@ -46,29 +46,26 @@ Vec3 centroid_of(const Aabb& b) {
     return out;
 }
 
-// One primitive as the build sees it: its box's corners and its centroid, each one SIMD register (x, y, z,
-// and a fourth lane). The upper corner's fourth lane holds the primitive's number, whose bits are a
-// subnormal float: the build compares that lane (min, max) but computes nothing with it (a subnormal
-// operand costs a microcode assist). A node's primitives are a range of these, reordered in place as the
-// nodes are split: the build reads them one after another, not through an index into the caller's arrays.
+// One primitive as the build sees it: ten floats, the lower corner, the centroid, the upper corner and the
+// primitive's number (its bits), read four at a time into SIMD registers (x, y, z and a fourth lane holding
+// the next member's first float). Only the upper corner's fourth lane is the number, whose bits are a
+// subnormal float: the build compares it (max) but computes nothing with it (a subnormal operand costs a
+// microcode assist). A node's primitives are a range of these, reordered in place as the nodes are split:
+// the build reads them one after another, not through an index into the caller's arrays.
 struct Reference {
-    alignas(16) std::array<Real, 4> lower;
-    alignas(16) std::array<Real, 4> upper;
-    alignas(16) std::array<Real, 4> center;
+    std::array<Real, 10> v;
 
     Reference(const Aabb& b, std::uint32_t primitive) {
         const Vec3 c = centroid_of(b);
-        lower = {b.min.x, b.min.y, b.min.z, 0};
-        upper = {b.max.x, b.max.y, b.max.z, std::bit_cast<Real>(primitive)};
-        center = {c.x, c.y, c.z, 0};
+        v = {b.min.x, b.min.y, b.min.z, c.x, c.y, c.z, b.max.x, b.max.y, b.max.z, std::bit_cast<Real>(primitive)};
     }
-    std::uint32_t primitive() const { return std::bit_cast<std::uint32_t>(upper[3]); }
-    Lanes min() const { return Lanes(lower.data(), stdx::vector_aligned); }
-    Lanes max() const { return Lanes(upper.data(), stdx::vector_aligned); }
-    Lanes centroid() const { return Lanes(center.data(), stdx::vector_aligned); }
-    Real centroid(int axis) const { return center[std::size_t(axis)]; }
+    std::uint32_t primitive() const { return std::bit_cast<std::uint32_t>(v[9]); }
+    Lanes min() const { return Lanes(&v[0], stdx::element_aligned); }
+    Lanes centroid() const { return Lanes(&v[3], stdx::element_aligned); }
+    Lanes max() const { return Lanes(&v[6], stdx::element_aligned); }
+    Real centroid(int axis) const { return v[3 + std::size_t(axis)]; }
 };
-static_assert(sizeof(Reference) == 48);
+static_assert(sizeof(Reference) == 40);
 
 // A box as two SIMD registers, grown with two instructions; empty until a box is added.
 struct LaneBox {
@@ -128,7 +125,7 @@ struct BinScale {
         }
     }
     IntLanes bins_of(const Reference& r) const {
-        const DoubleLanes t = (DoubleLanes(r.center.data(), stdx::element_aligned) - lower) * scale;
+        const DoubleLanes t = (DoubleLanes(&r.v[3], stdx::element_aligned) - lower) * scale;
         DoubleLanes bin = t;
         stdx::where(!(t > 0), bin) = 0;
         stdx::where(t >= kBins - 1, bin) = kBins - 1;

@@ -15,7 +15,7 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
         const Material& m = scene.material_of(shape);
         add(shape, m.emissive(), !m.textures.empty());
     }
-    if (!corners_.empty()) corners_.resize(triangles_.size());
+    if (!corners_.empty()) corners_.resize(triangle_count_);
     bounded_count_ = std::uint32_t(primitives_.size());
     if (options_.acceleration != Acceleration::kNone) {
         if (!quads_.empty()) pack_quads();
@@ -30,26 +30,33 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
         lay_out_in(order);
         if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }
+    // A tree of one leaf is searched as a list, triangle by triangle (World::search): it keeps a copy.
+    if (!triangle_sources_.empty() && bvh_.nodes().size() <= 1) {
+        for (std::uint32_t i = 0; i < triangle_count_; ++i) triangles_.push_back(triangle_at(i));
+    }
+    triangle_sources_ = std::vector<TriangleSource>();
+}
+
+bool World::packs_triangles() const {
+    return options_.acceleration == Acceleration::kBvh && options_.triangle_test == TriangleTest::kWatertight &&
+           options_.triangle_packets;
 }
 
 // The wide BVH over the binary one. Each binary leaf becomes a list of items: its triangles four at a time
 // in packets (watertight test only: the packet is its SIMD form), in leaf order, then its other primitives.
 // A leaf of triangles only points at its packets directly: a ray reaching it loads them, and no list first.
+// The packets are made first, leaf after leaf in slot order, then the wide nodes.
 void World::collapse_to_wide() {
-    const bool pack = options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
+    const bool pack = packs_triangles();
     std::vector<Triangle> triangles;  // a leaf's, reused from leaf to leaf: no allocation per leaf
     std::vector<std::uint32_t> slots;
-    // At most one packet per leaf more than a packet per four triangles: reserved at once, not grown.
-    std::size_t leaves = 0;
-    for (const BvhNode& node : bvh_.nodes()) leaves += node.leaf();
-    if (pack) reserve_on_huge_pages(triangle_packets_, triangles_.size() / kTriangleLanes + leaves);
-    wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
+    auto items_of = [&](const BvhNode& leaf) {
         const std::uint32_t first_packet = std::uint32_t(triangle_packets_.size());
         triangles.clear();
         slots.clear();
         for (std::uint32_t slot = leaf.offset; slot < leaf.offset + leaf.count; ++slot) {
             if (pack && primitives_[slot].kind == Kind::kTriangle) {
-                triangles.push_back(triangles_[primitives_[slot].index]);
+                triangles.push_back(triangle_at(primitives_[slot].index));
                 slots.push_back(slot);
             }
         }
@@ -66,6 +73,24 @@ void World::collapse_to_wide() {
             if (!(pack && primitives_[slot].kind == Kind::kTriangle)) leaf_items_.push_back(slot);
         }
         return WideBvh::ItemRange{first, std::uint32_t(leaf_items_.size()) - first};
+    };
+    // The binary tree is depth first, so its leaves come in the order of their first slots.
+    std::vector<std::uint32_t> leaf_first_slot;
+    std::vector<WideBvh::ItemRange> leaf_items;
+    // At most one packet per leaf more than a packet per four triangles: reserved at once, not grown.
+    std::size_t leaves = 0;
+    for (const BvhNode& node : bvh_.nodes()) leaves += node.leaf();
+    if (pack) reserve_on_huge_pages(triangle_packets_, triangles_.size() / kTriangleLanes + leaves);
+    leaf_first_slot.reserve(leaves);
+    leaf_items.reserve(leaves);
+    for (const BvhNode& node : bvh_.nodes()) {
+        if (!node.leaf()) continue;
+        leaf_first_slot.push_back(node.offset);
+        leaf_items.push_back(items_of(node));
+    }
+    wide_ = WideBvh(bvh_, [&](const BvhNode& leaf) {
+        const auto at = std::lower_bound(leaf_first_slot.begin(), leaf_first_slot.end(), leaf.offset);
+        return leaf_items[std::size_t(at - leaf_first_slot.begin())];
     });
 }
 
@@ -109,8 +134,11 @@ void World::add_primitive(Kind kind, std::uint32_t index, int material, bool emi
 }
 
 // Stores the primitives, and the spheres, quads, triangles and packets they point to, in the BVH's leaf order
-// (a packet's quads stay where they are: only the packet is tested).
+// (a packet's quads stay where they are: only the packet is tested). Triangles that go into packets stay in
+// scene order too: they are read once more, into their packets, and a copy in leaf order would only double
+// the memory they take while the tree is built.
 void World::lay_out_in(const std::vector<std::uint32_t>& order) {
+    const bool move_triangles = !packs_triangles();
     std::vector<Primitive> primitives;
     std::vector<Sphere> spheres;
     std::vector<Quad> quads;
@@ -120,7 +148,7 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     reserve_on_huge_pages(primitives, order.size());
     spheres.reserve(spheres_.size());
     quads.reserve(quads_.size());
-    reserve_on_huge_pages(triangles, triangles_.size());
+    if (move_triangles) reserve_on_huge_pages(triangles, triangles_.size());
     packets.reserve(packets_.size());
     auto move_to = [](auto& to, const auto& from, std::uint32_t index) {
         to.push_back(from[index]);
@@ -136,6 +164,7 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
                 p.index = move_to(quads, quads_, p.index);
                 break;
             case Kind::kTriangle:
+                if (!move_triangles) break;
                 if (!corners_.empty()) move_to(corners, corners_, p.index);
                 p.index = move_to(triangles, triangles_, p.index);
                 break;
@@ -148,8 +177,10 @@ void World::lay_out_in(const std::vector<std::uint32_t>& order) {
     primitives_ = std::move(primitives);
     spheres_ = std::move(spheres);
     if (packets_.empty()) quads_ = std::move(quads);
-    triangles_ = std::move(triangles);
-    corners_ = std::move(corners);
+    if (move_triangles) {
+        triangles_ = std::move(triangles);
+        corners_ = std::move(corners);
+    }
     packets_ = std::move(packets);
 }
 
@@ -165,9 +196,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                 add_primitive(Kind::kQuad, std::uint32_t(quads_.size()), material, emissive, textured);
                 quads_.push_back(make_quad(g.origin, g.u, g.v));
             } else if constexpr (std::is_same_v<T, TriangleShape>) {
-                add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive,
-                              textured);
-                triangles_.push_back({g.vertices[0], g.vertices[1], g.vertices[2]});
+                add_primitive(Kind::kTriangle, std::uint32_t(triangle_count_), material, emissive, textured);
+                take_triangles(shape, 1);
             } else if constexpr (std::is_same_v<T, PlaneShape>) {
                 planes_.push_back({make_plane(g.point, g.normal), material});
             } else if constexpr (std::is_same_v<T, BoxShape>) {
@@ -176,15 +206,12 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                     quads_.push_back(face);
                 }
             } else if constexpr (std::is_same_v<T, MeshShape>) {
-                // Each triangle copies its shared vertices bit for bit: the watertight test sees the same
-                // floats on both sides of every edge.
                 const bool has_uv = !g.texture_coordinates.empty();
-                reserve_on_huge_pages(triangles_, triangles_.size() + g.triangles.size());
                 reserve_on_huge_pages(primitives_, primitives_.size() + g.triangles.size());
                 for (std::size_t i = 0; i < g.triangles.size(); ++i) {
-                    const auto& tri = g.triangles[i];
+                    const std::uint32_t index = std::uint32_t(triangle_count_ + i);
                     if (g.smooth() || has_uv) {
-                        corners_.resize(triangles_.size());  // the triangles before it have none
+                        corners_.resize(index);  // the triangles before it have none
                         TriangleCorners c{{}, {}, g.smooth(), has_uv};
                         for (std::size_t k = 0; k < 3; ++k) {
                             if (c.smooth) c.normals[k] = g.normals[g.normal_corners[i][k]];
@@ -193,13 +220,41 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
                         }
                         corners_.push_back(c);
                     }
-                    add_primitive(Kind::kTriangle, std::uint32_t(triangles_.size()), material, emissive,
-                                  textured);
-                    triangles_.push_back({g.positions[tri[0]], g.positions[tri[1]], g.positions[tri[2]]});
+                    add_primitive(Kind::kTriangle, index, material, emissive, textured);
                 }
+                take_triangles(shape, g.triangles.size());
             }
         },
         shape.geometry);
+}
+
+// Triangle i of a TriangleShape (i = 0) or a mesh. Each triangle copies its mesh's shared vertices bit for bit:
+// the watertight test sees the same floats on both sides of every edge.
+Triangle triangle_of(const Shape& shape, std::size_t i) {
+    if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry)) {
+        const auto& corner = mesh->triangles[i];
+        return {mesh->positions[corner[0]], mesh->positions[corner[1]], mesh->positions[corner[2]]};
+    }
+    const auto& g = std::get<TriangleShape>(shape.geometry);
+    return {g.vertices[0], g.vertices[1], g.vertices[2]};
+}
+
+void World::take_triangles(const Shape& shape, std::size_t count) {
+    if (packs_triangles()) {
+        triangle_sources_.push_back({std::uint32_t(triangle_count_), &shape});
+    } else {
+        reserve_on_huge_pages(triangles_, triangles_.size() + count);
+        for (std::size_t i = 0; i < count; ++i) triangles_.push_back(triangle_of(shape, i));
+    }
+    triangle_count_ += count;
+}
+
+Triangle World::triangle_at(std::uint32_t index) const {
+    if (triangle_sources_.empty()) return triangles_[index];
+    const auto after = std::upper_bound(triangle_sources_.begin(), triangle_sources_.end(), index,
+                                        [](std::uint32_t i, const TriangleSource& s) { return i < s.first; });
+    const TriangleSource& source = *(after - 1);
+    return triangle_of(*source.shape, index - source.first);
 }
 
 Aabb bounds_of(const Sphere& s) {
@@ -237,7 +292,7 @@ Aabb World::bounds(const Primitive& p) const {
             break;
         }
         case Kind::kTriangle:
-            box = bounds_of(triangles_[p.index]);
+            box = bounds_of(triangle_at(p.index));
             break;
     }
     return box;
@@ -329,7 +384,7 @@ bool World::search(const Ray& ray, Real t_max, bool any_hit, Candidate& found, T
         }
     }
     // The watertight test's per-ray shear, computed only when there are triangles to test.
-    const WatertightRay sheared = triangles_.empty() ? WatertightRay{} : make_watertight_ray(ray);
+    const WatertightRay sheared = triangle_count_ == 0 ? WatertightRay{} : make_watertight_ray(ray);
     auto test_one = [&](std::uint32_t slot, Real& limit) {
         if (!test(ray, sheared, slot, limit, found)) return false;
         limit = found.t;

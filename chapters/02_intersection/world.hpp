@@ -90,7 +90,7 @@ class World {
     // The memory the acceleration adds to the primitives: the nodes of both trees, the triangle packets and
     // the wide leaves' item lists.
     std::size_t acceleration_bytes() const;
-    std::size_t triangle_count() const { return triangles_.size(); }
+    std::size_t triangle_count() const { return triangle_count_; }
 
   private:
     enum class Kind : std::uint8_t { kSphere, kQuad, kTriangle, kQuadPacket };
@@ -136,6 +136,13 @@ class World {
     void pack_quads();
     void lay_out_in(const std::vector<std::uint32_t>& order);
     void collapse_to_wide();
+    // Whether the wide tree's leaves test every triangle in packets of four.
+    bool packs_triangles() const;
+    // Counts `count` triangles of `shape` in: copied into triangles_, or, when they will be packed, noted
+    // in triangle_sources_.
+    void take_triangles(const Shape& shape, std::size_t count);
+    // Triangle `index` (in scene order), from triangles_ or, while a packed World is built, its shape.
+    Triangle triangle_at(std::uint32_t index) const;
     // The box of the primitive in each slot, for the BVH's build.
     std::function<Aabb(std::uint32_t)> slot_bounds() const;
     Aabb bounds(const Primitive& p) const;
@@ -157,8 +164,18 @@ class World {
     WorldOptions options_;
     std::vector<Sphere> spheres_;
     std::vector<Quad> quads_;
+    // The triangles in scene order, tested one by one; empty when the wide tree's packets hold them all
+    // (packs_triangles()) and the tree is more than one leaf.
     std::vector<Triangle> triangles_;
-    // triangles_[i]'s corners, when some mesh has normals or texture coordinates (else empty: no cost).
+    std::size_t triangle_count_ = 0;
+    // Where a packed World's triangles come from while it is built, the first of each shape's: the bounds
+    // and the packets read them in the scene's shapes, and no copy of them is made.
+    struct TriangleSource {
+        std::uint32_t first;
+        const Shape* shape;
+    };
+    std::vector<TriangleSource> triangle_sources_;
+    // triangle i's corners, when some mesh has normals or texture coordinates (else empty: no cost).
     std::vector<TriangleCorners> corners_;
     std::vector<QuadPacket> packets_;
     std::vector<Primitive> quad_primitives_;        // with packets: quad i's own record (material, number)

@@ -21,6 +21,7 @@
 #include "rt/live/live_view.hpp"
 #include "rt/render/heat_maps.hpp"
 #include "rt/render/interrupt.hpp"
+#include "rt/run/large_allocations.hpp"
 #include "rt/run/render_identity.hpp"
 #include "rt/run/split_render.hpp"
 #include "rt/run/strict_flags.hpp"
@@ -374,6 +375,7 @@ int run(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& a
 
 int run_chapter(int argc, char** argv, const ChapterInfo& chapter, const ChapterFlags& add_flags,
                 const ChapterRender& render) {
+    map_large_allocations_apart();
     std::optional<MpiSession> mpi;
     try {
         mpi.emplace();
