@@ -57,7 +57,8 @@ struct Reference {
 
     Reference(const Aabb& b, std::uint32_t primitive) {
         const Vec3 c = centroid_of(b);
-        v = {b.min.x, b.min.y, b.min.z, c.x, c.y, c.z, b.max.x, b.max.y, b.max.z, std::bit_cast<Real>(primitive)};
+        v = {b.min.x, b.min.y, b.min.z, c.x,     c.y,
+             c.z,     b.max.x, b.max.y, b.max.z, std::bit_cast<Real>(primitive)};
     }
     std::uint32_t primitive() const { return std::bit_cast<std::uint32_t>(v[9]); }
     Lanes min() const { return Lanes(&v[0], stdx::element_aligned); }
@@ -327,8 +328,8 @@ Bvh::Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::u
     : Bvh(
           std::uint32_t(bounds.size()), [&](std::uint32_t i) { return bounds[i]; }, order, leaf_packet) {}
 
-Bvh::Bvh(std::uint32_t n, const std::function<Aabb(std::uint32_t)>& bounds_of, std::vector<std::uint32_t>& order,
-         std::uint32_t leaf_packet) {
+Bvh::Bvh(std::uint32_t n, const std::function<Aabb(std::uint32_t)>& bounds_of,
+         std::vector<std::uint32_t>& order, std::uint32_t leaf_packet) {
     order.clear();
     if (n == 0) return;
     std::vector<Reference> references;

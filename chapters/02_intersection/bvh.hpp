@@ -42,8 +42,8 @@ class Bvh {
     Bvh(std::span<const Aabb> bounds, std::vector<std::uint32_t>& order, std::uint32_t leaf_packet = 1);
     // The same over `count` primitives whose bounds `bounds_of(i)` gives, with no array of them: a World
     // of 10^6 triangles builds without 24 MB of boxes beside the build's own records.
-    Bvh(std::uint32_t count, const std::function<Aabb(std::uint32_t)>& bounds_of, std::vector<std::uint32_t>& order,
-        std::uint32_t leaf_packet = 1);
+    Bvh(std::uint32_t count, const std::function<Aabb(std::uint32_t)>& bounds_of,
+        std::vector<std::uint32_t>& order, std::uint32_t leaf_packet = 1);
 
     const std::vector<BvhNode>& nodes() const { return nodes_; }
     // The memory the hierarchy adds to the primitives: its nodes.

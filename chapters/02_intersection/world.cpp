@@ -26,7 +26,8 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
                              options_.triangle_test == TriangleTest::kWatertight &&
                              options_.triangle_packets && options_.packet_sah;
         std::vector<std::uint32_t> order;
-        bvh_ = Bvh(std::uint32_t(primitives_.size()), slot_bounds(), order, packets ? std::uint32_t(kTriangleLanes) : 1);
+        bvh_ = Bvh(std::uint32_t(primitives_.size()), slot_bounds(), order,
+                   packets ? std::uint32_t(kTriangleLanes) : 1);
         lay_out_in(order);
         if (options_.acceleration == Acceleration::kBvh) collapse_to_wide();
     }
@@ -38,8 +39,8 @@ World::World(const Scene& scene, WorldOptions options) : options_(options) {
 }
 
 bool World::packs_triangles() const {
-    return options_.acceleration == Acceleration::kBvh && options_.triangle_test == TriangleTest::kWatertight &&
-           options_.triangle_packets;
+    return options_.acceleration == Acceleration::kBvh &&
+           options_.triangle_test == TriangleTest::kWatertight && options_.triangle_packets;
 }
 
 // The wide BVH over the binary one. Each binary leaf becomes a list of items: its triangles four at a time
@@ -80,7 +81,7 @@ void World::collapse_to_wide() {
     // At most one packet per leaf more than a packet per four triangles: reserved at once, not grown.
     std::size_t leaves = 0;
     for (const BvhNode& node : bvh_.nodes()) leaves += node.leaf();
-    if (pack) reserve_on_huge_pages(triangle_packets_, triangles_.size() / kTriangleLanes + leaves);
+    if (pack) reserve_on_huge_pages(triangle_packets_, triangle_count_ / kTriangleLanes + leaves);
     leaf_first_slot.reserve(leaves);
     leaf_items.reserve(leaves);
     for (const BvhNode& node : bvh_.nodes()) {
@@ -228,8 +229,8 @@ void World::add(const Shape& shape, bool emissive, bool textured) {
         shape.geometry);
 }
 
-// Triangle i of a TriangleShape (i = 0) or a mesh. Each triangle copies its mesh's shared vertices bit for bit:
-// the watertight test sees the same floats on both sides of every edge.
+// Triangle i of a TriangleShape (i = 0) or a mesh. Each triangle copies its mesh's shared vertices bit for
+// bit: the watertight test sees the same floats on both sides of every edge.
 Triangle triangle_of(const Shape& shape, std::size_t i) {
     if (const auto* mesh = std::get_if<MeshShape>(&shape.geometry)) {
         const auto& corner = mesh->triangles[i];

@@ -482,12 +482,14 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent, bool build
     print_build_table(rows, repeats);
     const double build_ratio = worst_build_ratio(rows);
     if (max_exponent >= 5)
-        std::printf("\n  the course's build time / Embree's, worst from 10^5 triangles: %.2f (target <= %.0f): %s\n",
-                    build_ratio, kBuildTimeTarget, build_ratio <= kBuildTimeTarget ? "met" : "NOT MET");
+        std::printf(
+            "\n  the course's build time / Embree's, worst from 10^5 triangles: %.2f (target <= %.0f): %s\n",
+            build_ratio, kBuildTimeTarget, build_ratio <= kBuildTimeTarget ? "met" : "NOT MET");
     if (builds_only) return build_ratio <= kBuildTimeTarget ? 0 : 1;
     const bool watertight = print_escape_table(rows, ray_count);
-    std::printf("\nTargets:\n  the course's Mrays/s / Embree's, worst over the table: %.2f (target >= %.2f): %s\n",
-                worst.rate, kRateTarget, worst.rate >= kRateTarget ? "met" : "NOT MET");
+    std::printf(
+        "\nTargets:\n  the course's Mrays/s / Embree's, worst over the table: %.2f (target >= %.2f): %s\n",
+        worst.rate, kRateTarget, worst.rate >= kRateTarget ? "met" : "NOT MET");
     std::printf("  (the same on one thread's CPU time, worst over the one-thread rows: %.2f)\n", worst.cpu);
     std::printf("  rays escaping the course's BVH: %s\n", watertight ? "none (met)" : "SOME (NOT MET)");
     return worst.rate >= kRateTarget && build_ratio <= kBuildTimeTarget && watertight ? 0 : 1;
@@ -627,7 +629,8 @@ int main(int argc, char** argv) {
     app.add_flag("--embree", embree,
                  "Instead: the course's BVH, step by step, against Embree 3 on identical rays (when built with it)");
     bool builds_only = false;
-    app.add_flag("--builds-only", builds_only, "With --embree: only the build table (times and bytes), no rays")
+    app.add_flag("--builds-only", builds_only,
+                 "With --embree: only the build table (times and bytes), no rays")
         ->needs("--embree");
     CLI11_PARSE(app, argc, argv);
     if (embree) {

@@ -7,11 +7,11 @@
 #include <thread>
 #include <vector>
 
-#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/exr_file.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/output_files.hpp"
