@@ -6,9 +6,9 @@ namespace rt {
 
 TrianglePacket make_triangle_packet(std::span<const Triangle> triangles, std::span<const std::uint32_t> slots) {
     TrianglePacket packet;
-    packet.lanes = int(std::min<std::size_t>(triangles.size(), kTriangleLanes));
+    const int lanes = int(std::min<std::size_t>(triangles.size(), kTriangleLanes));
     for (int lane = 0; lane < kTriangleLanes; ++lane) {
-        const std::size_t used = std::size_t(std::min(lane, packet.lanes - 1));
+        const std::size_t used = std::size_t(std::min(lane, lanes - 1));
         const Triangle& t = triangles[used];
         for (int axis = 0; axis < 3; ++axis) {
             packet.vertex[0][axis][lane] = t.p0[axis];

@@ -26,7 +26,6 @@ struct TrianglePacket {
     // last triangle: it gives that triangle's hit again, in a later lane, so the first of equals wins.
     std::array<std::array<TriangleLanes, 3>, 3> vertex;
     std::array<std::uint32_t, kTriangleLanes> slot{};  // each lane's triangle: the caller's number for it
-    int lanes = 0;                                     // lanes in use, 1 to 4
 };
 
 // Packs triangles[0..] (one to four of them), lane k numbered slots[k].

@@ -1,8 +1,8 @@
-// A wide BVH: the binary BVH (bvh.hpp) collapsed into a tree whose nodes hold the boxes of up to four
+// A wide BVH: the binary BVH (bvh.hpp) collapsed into a tree whose nodes hold the boxes of up to eight
 // children, tested against the ray together in SIMD (std::experimental::simd). A binary tree tests two boxes
-// per node, one level per step; a 4-wide tree tests four per node and has half the levels, so a ray makes
-// half the steps and half the dependent loads from memory, and each step's four slab tests take the
-// instructions of one. The World traces through it; the binary BVH stays the one that is built (by the SAH)
+// per node, one level per step; an 8-wide tree tests eight per node and has a third of the levels, so a ray
+// makes a third of the steps and of the dependent loads from memory, and each step's eight slab tests take
+// the instructions of one (AVX: eight floats in a register). The World traces through it; the binary BVH stays the one that is built (by the SAH)
 // and the one GPU code and the exercises start from.
 #pragma once
 
@@ -19,13 +19,14 @@
 
 namespace rt {
 
-inline constexpr int kWideBvhWidth = 4;
-// Four Reals in one SIMD register where the machine has one (SSE: four floats), as deduce_t picks.
+inline constexpr int kWideBvhWidth = 8;
+// Eight Reals in one SIMD register where the machine has one (AVX: eight floats; SSE: two registers), as
+// deduce_t picks.
 using BoxLanes = std::experimental::simd<Real, std::experimental::simd_abi::deduce_t<Real, kWideBvhWidth>>;
 
-// 128 bytes in float: two cache lines, aligned to them. corner[0][axis][k], corner[1][axis][k]: the lower
+// 256 bytes in float: four cache lines, aligned to them. corner[0][axis][k], corner[1][axis][k]: the lower
 // and upper corners of child k's box, coordinate by coordinate, so one aligned load brings one coordinate of
-// the four boxes. An unused child has the empty box (+∞ below, −∞ above), which no ray enters.
+// the eight boxes. An unused child has the empty box (+∞ below, −∞ above), which no ray enters.
 struct alignas(64) WideBvhNode {
     using Coordinates = std::array<Real, kWideBvhWidth>;
     alignas(BoxLanes::size() * sizeof(Real)) std::array<std::array<Coordinates, 3>, 2> corner;
@@ -39,7 +40,7 @@ struct alignas(64) WideBvhNode {
     bool used(int k) const { return corner[0][0][k] <= corner[1][0][k]; }
 };
 
-// What a ray needs for the four-box slab test, computed once per ray.
+// What a ray needs for the eight-box slab test, computed once per ray.
 struct WideRay {
     Ray ray;
     Vec3 inverse_d;
@@ -53,7 +54,7 @@ struct WideRay {
 
 WideRay make_wide_ray(const Ray& ray);
 
-// slab_entry (aabb.hpp) on the node's four boxes at once: each box's entry distance on [0, t_max], or +∞
+// slab_entry (aabb.hpp) on the node's eight boxes at once: each box's entry distance on [0, t_max], or +∞
 // where the ray misses it. With every 1 / d_i finite, the slab along i is entered at the lower face when
 // d_i > 0 and the upper one when d_i < 0 (ordering by the direction's sign replaces slab_entry's swap), and
 // each lane does slab_entry's operations in its order, with its conservative widening of entry and exit:
@@ -102,7 +103,7 @@ class WideBvh {
 
     WideBvh() = default;
     // Collapses `binary`: each wide node takes a binary node's two children and, while it has fewer than
-    // four, replaces its interior child of largest surface area by that child's two children.
+    // eight, replaces its interior child of largest surface area by that child's two children.
     explicit WideBvh(const Bvh& binary, const LeafItems& leaf_items = {});
 
     const std::vector<WideBvhNode>& nodes() const { return nodes_; }
@@ -110,7 +111,7 @@ class WideBvh {
     const Aabb& bounds() const { return bounds_; }
     std::size_t bytes() const { return nodes_.size() * sizeof(WideBvhNode); }
 
-    // What Bvh::traverse does, four children at a time: visits, nearest box first, every leaf whose box the
+    // What Bvh::traverse does, eight children at a time: visits, nearest box first, every leaf whose box the
     // ray meets before t_max, calling `test(first, count, t_max)` for its items; it returns true on a hit
     // and then lowers t_max. With any_hit, returns at the first hit. Returns whether anything was hit.
     // A ray starting outside bounds() (a camera's) picks the children it enters by a branch per child, one
@@ -131,86 +132,73 @@ template <typename Test>
 bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& test, TraversalStats* stats) const {
     // EXERCISE(ch02.wide_bvh_traversal) § Which tree draws the picture, and the exercise wide_bvh_traversal
     if (nodes_.empty()) return false;
-    // A child still to visit: a node (count 0) or a leaf's items, and the distance at which its box is entered.
-    struct Pending {
-        std::uint32_t child;
-        std::uint32_t count;
-        Real t_enter;
-    };
-    // Each level leaves at most three children pushed, and this tree is no deeper than the binary one: fewer
-    // than 70 levels (36 of SAH splits, then median halvings of at most 2^32 primitives).
-    Pending stack[3 * 70 + 1];
+    // The children still to visit: a node (count 0) or a leaf's items, and the distance at which its box is
+    // entered, in three arrays, so that a child is pushed by three stores and no branch. Each level leaves
+    // at most seven children pushed, and this tree is no deeper than the binary one: fewer than 70 levels
+    // (36 of SAH splits, then median halvings of at most 2^32 primitives).
+    constexpr int kStack = (kWideBvhWidth - 1) * 70 + kWideBvhWidth;
+    std::uint32_t stack_child[kStack], stack_count[kStack];
+    Real stack_t[kStack];
     int top = 0;
-    // Which children a ray enters, node after node: a coherent ray (a camera's, from outside the scene)
-    // takes the same branches as the ray before, and the processor, predicting them, loads the next node
-    // before this one's test is done. A ray from inside the scene (a bounce, a shadow ray) is seldom
-    // coherent with the one before, and a branch per child, entered or not, is often mispredicted: its
-    // entered children are gathered with no branch.
+    // Which children a ray enters: a coherent ray (a camera's, from outside the scene) takes the same
+    // branches as the ray before, which the processor predicts; a ray from inside the scene (a bounce, a
+    // shadow ray) seldom does, and its entered children are pushed with no branch.
     const bool gather = any_hit || bounds_.contains(ray.ray.origin);
-    Pending next{0, 0, 0};  // the root
+    std::uint32_t child = 0, count = 0;  // the root
+    Real t_enter = 0;
     bool hit = false;
     while (true) {
-        if (!(next.t_enter > t_max)) {  // not entered beyond the nearest hit found since it was pushed
-            if (next.count > 0) {
-                if (stats) stats->primitives += next.count;
-                if (test(next.child, next.count, t_max)) {
+        if (!(t_enter > t_max)) {  // not entered beyond the nearest hit found since it was pushed
+            if (count > 0) {
+                if (stats) stats->primitives += count;
+                if (test(child, count, t_max)) {
                     hit = true;
                     if (any_hit) return true;
                 }
             } else {
-                const WideBvhNode& node = nodes_[next.child];
+                const WideBvhNode& node = nodes_[child];
                 const BoxLanes t_lanes = entry_distances(node, ray, t_max);
                 if (stats) {
                     for (int k = 0; k < kWideBvhWidth; ++k) stats->nodes += node.used(k);
                 }
                 alignas(BoxLanes::size() * sizeof(Real)) Real t[kWideBvhWidth];
                 t_lanes.copy_to(t, std::experimental::vector_aligned);
-                Pending entered[kWideBvhWidth];
-                int n = 0;
-                // Places p among entered[0, at), nearest first (the first of equal distances first).
-                auto insert = [&](Pending p, int at) {
-                    for (; at > 0 && entered[at - 1].t_enter > p.t_enter; --at) entered[at] = entered[at - 1];
-                    entered[at] = p;
-                };
-                if (gather) {
-                    // Each child is written to the next place and kept by n += entered, with no branch.
-                    for (int k = 0; k < kWideBvhWidth; ++k) {
-                        entered[n] = {node.child[k], node.count[k], t[k]};
-                        // Every interior child's node asked for early, entered or not: choosing by `entered`
-                        // too cost more than it saved. A leaf asks for this node again, already here (a choice
-                        // of address, not a branch).
-                        const std::uint32_t ask = node.count[k] == 0 ? node.child[k] : next.child;
-                        __builtin_prefetch(&nodes_[ask]);
-                        __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[ask]) + 64);
-                        n += t[k] < kInfinity;
-                    }
-                    // An any-hit query keeps them in their order: any hit ends it, so a nearer one is worth
-                    // nothing. A nearest-hit query sorts them.
-                    if (!any_hit) {
-                        for (int i = 1; i < n; ++i) insert(entered[i], i);
-                    }
-                } else {
-                    // The children entered, each put in its place as it is found.
-                    for (int k = 0; k < kWideBvhWidth; ++k) {
-                        if (!(t[k] < kInfinity)) continue;
-                        const Pending p{node.child[k], node.count[k], t[k]};
-                        if (p.count == 0) {
-                            __builtin_prefetch(&nodes_[p.child]);
-                            __builtin_prefetch(reinterpret_cast<const char*>(&nodes_[p.child]) + 64);
-                        }
-                        insert(p, n++);
-                    }
+                // This node's entered children go to stack[first, top), the last child first, so that the
+                // first is on top.
+                const int first = top;
+                for (int k = kWideBvhWidth - 1; k >= 0; --k) {
+                    const bool entered = t[k] < kInfinity;
+                    if (!gather && !entered) continue;
+                    stack_child[top] = node.child[k];
+                    stack_count[top] = node.count[k];
+                    stack_t[top] = t[k];
+                    top += entered;  // gathered: written always, kept only if entered
                 }
-                // The nearest (or first) is visited next, the others pushed farthest (or last) first.
-                if (n > 0) {
-                    while (n > 1) stack[top++] = entered[--n];
-                    next = entered[0];
-                    continue;
+                // A nearest-hit query sorts them, nearest on top (a stable sort: the first of equal distances
+                // stays above the others); any hit ends an any-hit query, so a nearer one is worth nothing and it
+                // keeps them in the node's order.
+                if (!any_hit) {
+                    for (int i = first + 1; i < top; ++i) {
+                        const std::uint32_t c = stack_child[i], n = stack_count[i];
+                        const Real d = stack_t[i];
+                        int at = i;
+                        for (; at > first && stack_t[at - 1] < d; --at) {
+                            stack_child[at] = stack_child[at - 1];
+                            stack_count[at] = stack_count[at - 1];
+                            stack_t[at] = stack_t[at - 1];
+                        }
+                        stack_child[at] = c;
+                        stack_count[at] = n;
+                        stack_t[at] = d;
+                    }
                 }
             }
         }
         if (top == 0) return hit;
-        next = stack[--top];
+        --top;
+        child = stack_child[top];
+        count = stack_count[top];
+        t_enter = stack_t[top];
     }
     // END EXERCISE
 }
