@@ -166,13 +166,20 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                 // This node's entered children go to stack[first, top), the last child first, so that the
                 // first is on top.
                 const int first = top;
-                for (int k = kWideBvhWidth - 1; k >= 0; --k) {
-                    const bool entered = t[k] < kInfinity;
-                    if (!gather && !entered) continue;
-                    stack_child[top] = node.child[k];
-                    stack_count[top] = node.count[k];
-                    stack_t[top] = t[k];
-                    top += entered;  // gathered: written always, kept only if entered
+                if (gather) {
+                    for (int k = kWideBvhWidth - 1; k >= 0; --k) {
+                        stack_child[top] = node.child[k];
+                        stack_count[top] = node.count[k];
+                        stack_t[top] = t[k];
+                        top += t[k] < kInfinity;  // written always, kept only if entered
+                    }
+                } else {
+                    for (int k = kWideBvhWidth - 1; k >= 0; --k) {
+                        if (!(t[k] < kInfinity)) continue;
+                        stack_child[top] = node.child[k];
+                        stack_count[top] = node.count[k];
+                        stack_t[top++] = t[k];
+                    }
                 }
                 // A nearest-hit query sorts them, nearest on top (a stable sort: the first of equal distances
                 // stays above the others); any hit ends an any-hit query, so a nearer one is worth nothing and it
