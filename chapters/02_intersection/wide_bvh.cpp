@@ -30,26 +30,31 @@ WideBvh::WideBvh(const Bvh& binary, const LeafItems& leaf_items) {
 std::uint32_t WideBvh::collapse(const Bvh& binary, std::uint32_t binary_node, const LeafItems& leaf_items) {
     const std::vector<BvhNode>& tree = binary.nodes();
     std::array<std::uint32_t, kWideBvhWidth> children{};
+    // Each child's surface area, or −1 for a leaf (never opened).
+    std::array<Real, kWideBvhWidth> area{};
     int count = 0;
+    auto add = [&](int k, std::uint32_t node) {
+        children[std::size_t(k)] = node;
+        area[std::size_t(k)] = tree[node].leaf() ? Real(-1) : tree[node].box().half_area();
+    };
     if (tree[binary_node].leaf()) {
-        children[count++] = binary_node;
+        add(count++, binary_node);
     } else {
-        children[count++] = binary_node + 1;
-        children[count++] = tree[binary_node].offset;
+        add(count++, binary_node + 1);
+        add(count++, tree[binary_node].offset);
     }
     while (count < kWideBvhWidth) {
-        // Open the interior child of largest surface area: the one a ray is likeliest to enter.
+        // Open the interior child of largest surface area: the one a ray is likeliest to enter (the first of
+        // equal areas).
         int widest = -1;
         for (int k = 0; k < count; ++k) {
-            const BvhNode& c = tree[children[std::size_t(k)]];
-            if (!c.leaf() && (widest < 0 || c.box().half_area() >
-                                                tree[children[std::size_t(widest)]].box().half_area()))
+            if (area[std::size_t(k)] >= 0 && (widest < 0 || area[std::size_t(k)] > area[std::size_t(widest)]))
                 widest = k;
         }
         if (widest < 0) break;
         const std::uint32_t opened = children[std::size_t(widest)];
-        children[std::size_t(widest)] = opened + 1;
-        children[std::size_t(count++)] = tree[opened].offset;
+        add(widest, opened + 1);
+        add(count++, tree[opened].offset);
     }
     const std::uint32_t index = std::uint32_t(nodes_.size());
     WideBvhNode node;
