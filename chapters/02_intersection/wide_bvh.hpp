@@ -2,8 +2,8 @@
 // children, tested against the ray together in SIMD (std::experimental::simd). A binary tree tests two boxes
 // per node, one level per step; an 8-wide tree tests eight per node and has a third of the levels, so a ray
 // makes a third of the steps and of the dependent loads from memory, and each step's eight slab tests take
-// the instructions of one (AVX: eight floats in a register). The World traces through it; the binary BVH stays the one that is built (by the SAH)
-// and the one GPU code and the exercises start from.
+// the instructions of one (AVX: eight floats in a register). The World traces through it; the binary BVH
+// stays the one that is built (by the SAH) and the one GPU code and the exercises start from.
 #pragma once
 
 #include <algorithm>
@@ -182,8 +182,8 @@ bool WideBvh::traverse(const WideRay& ray, Real& t_max, bool any_hit, Test&& tes
                     }
                 }
                 // A nearest-hit query sorts them, nearest on top (a stable sort: the first of equal distances
-                // stays above the others); any hit ends an any-hit query, so a nearer one is worth nothing and it
-                // keeps them in the node's order.
+                // stays above the others); any hit ends an any-hit query, so a nearer one is worth nothing
+                // and it keeps them in the node's order.
                 if (!any_hit) {
                     for (int i = first + 1; i < top; ++i) {
                         const std::uint32_t c = stack_child[i], n = stack_count[i];
