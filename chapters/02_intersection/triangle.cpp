@@ -51,6 +51,9 @@ std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const W
     // The scaled distance T = det · t, tested against (0, t_max) before dividing.
     const Real az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
     const Real t_scaled = u * az + v * bz + w * cz;
+    if (std::abs(t_scaled) < kSmallestScaledDistance) {  // rounded among subnormals, perhaps: in double
+        return watertight_hit_in_double({u, v, w}, {ax, bx, cx}, {ay, by, cy}, {az, bz, cz}, t_max);
+    }
     if (det < 0 ? (t_scaled >= 0 || t_scaled < t_max * det) : (t_scaled <= 0 || t_scaled > t_max * det)) {
         return std::nullopt;
     }
@@ -61,15 +64,29 @@ std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const W
     const Real max_z = std::max({std::abs(az), std::abs(bz), std::abs(cz)});
     const Real max_x = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
     const Real max_y = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
-    const Real delta_z = gamma_bound(3) * max_z;
-    const Real delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
-    const Real delta_e = 2 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     const Real max_e = std::max({std::abs(u), std::abs(v), std::abs(w)});
-    const Real delta_t =
-        3 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * std::abs(inverse);
+    const Real delta_t = watertight_distance_bound(max_x, max_y, max_z, max_e, std::abs(inverse));
     if (!(t > delta_t && t < t_max)) return std::nullopt;
     return TriangleHit{t, {v * inverse, w * inverse}};
     // END EXERCISE
+}
+
+std::optional<TriangleHit> watertight_hit_in_double(const Vec3& edge, const Vec3& x, const Vec3& y,
+                                                    const Vec3& z, Real t_max) {
+    // det as the float test sums it: the same sign and the same barycentrics.
+    const Real det = edge.x + edge.y + edge.z;
+    if (det == 0) return std::nullopt;
+    const Vec3d e(edge), z_d(z);
+    // t = T / det, each product exact, the sum and the quotient rounded once.
+    const double t = glm::dot(e, z_d) / double(det);
+    auto largest = [](const Vec3& v) {
+        return double(std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}));
+    };
+    const double delta_t = watertight_distance_bound(largest(x), largest(y), largest(z), largest(edge),
+                                                     std::abs(1 / double(det)));
+    if (!(t > delta_t && Real(t) < t_max)) return std::nullopt;
+    const Real inverse = Real(1) / det;
+    return TriangleHit{Real(t), {edge.y * inverse, edge.z * inverse}};
 }
 
 std::optional<TriangleHit> intersect_triangle_moller(const Ray& ray, const Triangle& triangle, Real t_max) {

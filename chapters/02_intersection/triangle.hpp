@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "float_error.hpp"
 #include "rt/core/enum_names.hpp"
 #include "rt/core/math.hpp"
 #include "rt/core/ray.hpp"
@@ -48,6 +49,29 @@ WatertightRay make_watertight_ray(const Ray& ray);
 
 std::optional<TriangleHit> intersect_triangle_watertight(const Ray& ray, const WatertightRay& sheared,
                                                          const Triangle& triangle, Real t_max);
+
+// The bound δt on the rounding error of the watertight test's t (PBRT 4 §6.8.7), from the largest sheared
+// coordinates |x'|, |y'|, |z'|, the largest edge function and |1 / det|: for a Real, a packet's lanes or a
+// double, by the same operations.
+template <typename T>
+T watertight_distance_bound(const T& max_x, const T& max_y, const T& max_z, const T& max_e,
+                            const T& inverse_abs) {
+    const T delta_z = gamma_bound(3) * max_z;
+    const T delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
+    const T delta_e = 2 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    return 3 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inverse_abs;
+}
+
+// Below this, the scaled distance T = U z'_a + V z'_b + W z'_c (a product of three coordinates) may have been
+// rounded among float's subnormals, where an error is absolute, not relative, and δt no longer bounds t: a
+// triangle within about 10⁻¹³ of the ray's origin. Such a hit is decided again in double.
+inline constexpr Real kSmallestScaledDistance = 0x1p-90f;
+
+// The watertight test's last step in double, from its float edge functions (U, V, W) and sheared corners
+// (x', y', z' of a, b, c): the hit if t lies in (δt, t_max). Products of floats are exact in double, and no
+// product of the course's coordinates underflows there.
+std::optional<TriangleHit> watertight_hit_in_double(const Vec3& edge, const Vec3& x, const Vec3& y,
+                                                    const Vec3& z, Real t_max);
 
 std::optional<TriangleHit> intersect_triangle_moller(const Ray& ray, const Triangle& triangle, Real t_max);
 

@@ -105,21 +105,29 @@ inline std::optional<TrianglePacketHit> intersect_triangle_packet(const PacketRa
     const L t_limit = t_max * det;
     const auto beyond = (det < 0 && (t_scaled >= 0 || t_scaled < t_limit)) ||
                         (det >= 0 && (t_scaled <= 0 || t_scaled > t_limit));
+    // A lane whose T may have been rounded among subnormals is decided in double, as in the scalar test.
+    const auto in_double = stdx::abs(t_scaled) < kSmallestScaledDistance;
     // det == 0: the ray lies in the triangle's plane, or the triangle is degenerate; no hit.
-    const auto candidate = !outside && det != 0 && !beyond;
+    const auto candidate = !outside && det != 0 && (!beyond || in_double);
     if (stdx::none_of(candidate)) return std::nullopt;
     const L inverse = Real(1) / det;
-    const L t = t_scaled * inverse;
+    L t = t_scaled * inverse;
     // t is accepted only beyond the bound δt on its rounding error (PBRT 4 §6.8.7), as in the scalar test.
     const L max_z = detail::larger(detail::larger(stdx::abs(az), stdx::abs(bz)), stdx::abs(cz));
     const L max_x = detail::larger(detail::larger(stdx::abs(ax), stdx::abs(bx)), stdx::abs(cx));
     const L max_y = detail::larger(detail::larger(stdx::abs(ay), stdx::abs(by)), stdx::abs(cy));
-    const L delta_z = gamma_bound(3) * max_z;
-    const L delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
-    const L delta_e = 2 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     const L max_e = detail::larger(detail::larger(stdx::abs(u), stdx::abs(v)), stdx::abs(w));
-    const L delta_t = 3 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * stdx::abs(inverse);
-    const auto hit = candidate && t > delta_t && t < t_max;
+    const L delta_t = watertight_distance_bound(max_x, max_y, max_z, max_e, stdx::abs(inverse));
+    auto hit = candidate && !in_double && t > delta_t && t < t_max;
+    if (stdx::any_of(candidate && in_double)) {
+        for (int k = 0; k < kTriangleLanes; ++k) {
+            if (!candidate[k] || !in_double[k]) continue;
+            const auto lane = watertight_hit_in_double({u[k], v[k], w[k]}, {ax[k], bx[k], cx[k]},
+                                                       {ay[k], by[k], cy[k]}, {az[k], bz[k], cz[k]}, t_max);
+            hit[k] = lane.has_value();
+            if (lane) t[k] = lane->t;
+        }
+    }
     if (stdx::none_of(hit)) return std::nullopt;
     // The nearest hit lane; the first of equals, as a scalar loop over the lanes would keep.
     L nearest = kInfinity;

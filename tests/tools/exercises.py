@@ -353,22 +353,31 @@ def command_wrong(args: argparse.Namespace) -> int:
     programs = {f"{e.chapter}_test" for e in exercises}
     build = build_test_programs(out, args.jobs, programs if only else None)
     program_of = {t.program: t.command[0] for t in unit_tests(build)}
-    runs = []  # (exercise, wrong solution or None for the right body)
+    # The right bodies are the same program for every exercise of a chapter: one run of all their tests per
+    # chapter (a test tagged with several exercises runs once), then one per wrong or other right solution.
+    runs = []  # (exercise, wrong solution or None for the right bodies of its chapter's exercises)
+    specs = {}  # chapter → the Catch2 test spec of its exercises' tests
     for e in exercises:
         if f"{e.chapter}_test" not in program_of:
             problems.append(f"{e.where()}: exercise {e.name}: its chapter has no test program {e.chapter}_test")
             continue
-        runs += [(e, None)] + [(e, s) for s in wrong.get(e.name, [])]
+        if e.chapter not in specs:
+            runs.append((e, None))
+        specs[e.chapter] = ",".join(filter(None, [specs.get(e.chapter), f"[{TAG_PREFIX}{e.name}]"]))
+        runs += [(e, s) for s in wrong.get(e.name, [])]
     right = sum(1 for _, s in runs if s and s.correct)
-    print(f"running {len(runs)} times the tests of {len(exercises)} exercises: with the right body, then with each "
-          f"of its {sum(counts.values())} wrong solutions and {right} other right solutions ...", flush=True)
+    print(f"running {len(runs)} times the tests of {len(exercises)} exercises: with the right bodies (a run per "
+          f"chapter), then with each of their {sum(counts.values())} wrong solutions and {right} other right "
+          "solutions ...", flush=True)
     # A run stops at its first failure, unless the wrong solution names what a failure must say: that may be
     # a later test's (the one about the mistake's kind), so all the exercise's tests run.
-    tests = [UnitTest(f"[{TAG_PREFIX}{e.name}]", [program_of[f"{e.chapter}_test"], f"[{TAG_PREFIX}{e.name}]"]
-                      + ([] if s and s.says else ["--abort"]), str(build), e.chapter) for e, s in runs]
-    # A shader's exercise is switched in its source, then rebuilt: those runs one at a time, the others at once.
-    in_shader = [i for i, (e, _) in enumerate(runs) if e.glsl]
-    in_cpp = [i for i in range(len(runs)) if not runs[i][0].glsl]
+    tests = [UnitTest(spec, [program_of[f"{e.chapter}_test"], spec] + ([] if s and s.says else ["--abort"]),
+                      str(build), e.chapter)
+             for e, s in runs for spec in [specs[e.chapter] if s is None else f"[{TAG_PREFIX}{e.name}]"]]
+    # A shader's exercise is switched in its source, then rebuilt: those runs one at a time, the others at once
+    # (the right bodies too: every switch is at 0, the right body, outside run_with_shader_switch).
+    in_shader = [i for i, (e, s) in enumerate(runs) if e.glsl and s is not None]
+    in_cpp = [i for i in range(len(runs)) if i not in in_shader]
     outcomes = [(False, "")] * len(runs)
     for i, outcome in zip(in_cpp, run_each([tests[i] for i in in_cpp], args.jobs, args.timeout,
                                            environment_of=lambda k: {"RT_WRONG_SOLUTION": runs[in_cpp[k]][1].key}
@@ -381,8 +390,8 @@ def command_wrong(args: argparse.Namespace) -> int:
     for (e, s), (passed, output) in zip(runs, outcomes):
         if s is None or s.correct:
             if not passed:
-                which = f"{s.source}: {s.key}, the right solution \"{s.mistake}\"" if s else "the right body"
-                problems.append(f"{e.name}: its tests fail with {which}:\n" + output[-2000:])
+                which = f"{s.source}: {s.key}, the right solution \"{s.mistake}\"" if s else "the right bodies"
+                problems.append(f"{e.name if s else e.chapter}: its tests fail with {which}:\n" + output[-2000:])
             accepted += passed and s is not None
             if args.verbose and s:
                 print(f"  {s.key:34} {'passes' if passed else 'FAILS'} (a right solution): {s.mistake}")
