@@ -1008,7 +1008,7 @@ TEST_CASE(
     // it.
     const Real c = Real(2e-15);
     const double exact = double(c) * double(c) * double(c);
-    CHECK(std::abs(double(c * c * c) - exact) > 1e-4 * exact);  // a relative error ~2000 times float's u
+    CHECK(std::abs(double(c * c * c) - exact) > 1e-2 * exact);  // 5 % off, where float's u is 6e-8
     // The fuzzer found two triangles meeting at a corner on the ray, 2.44e-14 from its origin, hit at
     // distances 0.8 % apart: beyond each hit's error bound, so the wide BVH culled the nearer. In double
     // both are hit at the corner's distance.
@@ -1022,7 +1022,7 @@ TEST_CASE(
         REQUIRE(hit);
         CHECK(std::abs(double(hit->t) - corner_distance) < 1e-6 * corner_distance);
     }
-    // Random triangles and rays at 1e-13 to 1e-15: t within a few ulps of the exact distance to the plane,
+    // Random triangles and rays at 1e-13 to 1e-15: t within 1e-5 of the exact distance to the plane,
     // and the packet's lanes give the same hit bit for bit.
     Pcg32 rng(9, 14);
     int hits = 0;
