@@ -698,7 +698,8 @@ TEST_CASE("Connections at the eye, edge-on and at the film's edge add nothing an
 }
 
 TEST_CASE("A connection's splat falls with the square of the distance and follows the cosine at the vertex",
-          "[ch08][ex:ch08.connect][ex:ch08.pinhole_importance][ex:ch08.project_direction]") {
+          "[ch08][ex:ch02.quad_packet][ex:ch02.sphere_stable][ex:ch08.connect][ex:ch08.pinhole_importance]"
+          "[ex:ch08.project_direction]") {
     // Vertices on the camera's axis, in front of the box, facing the eye or tilted by 60 degrees: whatever
     // form the geometry term takes, the splat of the same vertex at twice the distance is 4 times smaller, and
     // tilted it is cos 60 = 1/2 of facing (a Lambert surface's f is the same both ways).

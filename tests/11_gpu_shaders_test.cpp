@@ -260,6 +260,51 @@ TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles
     CHECK(misses == 0);
 }
 
+TEST_CASE("Shader triangles 1e-14 from the ray's origin are hit as chapter 02 hits them",
+          "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_widening][ex:ch02.wide_bvh_traversal]") {
+    // The scaled distance T, a product of three coordinates, is about 1e-42 here: a float subnormal, which
+    // llvmpipe and GPUs flush to zero. The shader then decides the hit in double, as chapter 02 does.
+    const Real a = Real(-4.65335803e-15), v = Real(-1.87248898e-14);
+    const Ray diagonal{Vec3(a), glm::normalize(Vec3(-1))};
+    const double corner_distance = (double(a) - double(v)) / -double(diagonal.direction.x);
+    // The fuzzer's two triangles, meeting at a corner on the ray (chapter 02's test): both hit there.
+    for (const TriangleShape& corner :
+         {TriangleShape{{Vec3{a, Real(-2.57647920e-15), a}, Vec3{a, Real(-1.86134321e-14), v}, Vec3(v)}},
+          TriangleShape{{Vec3{0, v, Real(-1.86134321e-14)}, Vec3(v), Vec3{Real(-9.36244490e-15), v, v}}}}) {
+        const ShaderProbe probe(gl(), flattened(scene_of({Shape{corner, 0, "corner"}})));
+        const ProbeHit hit = probe.nearest_hits({diagonal}, kInfinity)[0];
+        REQUIRE(hit.hit);
+        CHECK(std::abs(double(hit.t) - corner_distance) < 1e-6 * corner_distance);
+    }
+    // At each scale, 100 triangles 50 sizes apart along x, each met by 4 rays from about its own size away.
+    Pcg32 rng(9, 15);
+    auto near = [&](double x, double size) {
+        const Vec3d offset{rng.next_real(), rng.next_real(), rng.next_real()};
+        return Vec3(Vec3d(x, 0, 0) + (2.0 * offset - 1.0) * size);
+    };
+    for (const double scale : {1e-13, 1e-14, 1e-15}) {
+        std::vector<Shape> triangles;
+        std::vector<Ray> rays;
+        for (int i = 0; i < 100; ++i) {
+            const double x = 50 * scale * i;
+            const TriangleShape tri{{near(x, scale), near(x, scale), near(x, scale)}};
+            triangles.push_back(Shape{tri, 0, "t" + std::to_string(i)});
+            for (int k = 0; k < 4; ++k) {
+                const Vec3d target =
+                    (Vec3d(tri.vertices[0]) + Vec3d(tri.vertices[1]) + Vec3d(tri.vertices[2])) / 3.0;
+                const Vec3 origin = near(x, 3 * scale);
+                rays.push_back({origin, Vec3(glm::normalize(target - Vec3d(origin)))});
+            }
+        }
+        INFO("scale " << scale);
+        const ShaderProbe probe(gl(), flattened(scene_of(triangles)));
+        std::size_t hits = 0;
+        for (const ProbeHit& h : probe.nearest_hits(rays, kInfinity)) hits += h.hit ? 1 : 0;
+        CHECK(hits > 350);
+        check_against_world(scene_of(triangles), rays, 4);
+    }
+}
+
 TEST_CASE("Shader spheres small and far, huge and near, are hit as chapter 02 hits them",
           "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.sphere_stable]") {
     Pcg32 rng(23, 9);

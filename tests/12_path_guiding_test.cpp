@@ -406,7 +406,7 @@ TEST_CASE(
 TEST_CASE(
     "Combined by inverse variance, the guided closed box keeps L = 1 and each pass of 2+ spp has a variance",
     "[guiding][render][ex:ch01.camera_ray][ex:ch01.pixel_sample][ex:ch02.quad_packet]"
-    "[ex:ch02.sphere_stable][ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
+    "[ex:ch03.robust_offset][ex:ch03.shadow_ray][ex:ch04.cosine_hemisphere]"
     "[ex:ch04.lambert][ex:ch04.sample_quad_light][ex:ch05.termination][ex:ch06.mis_weight]"
     "[ex:ch06.path_tracer][ex:ch12.incident_radiance][ex:ch12.one_sample_mis]") {
     const GuidedRender box = render_guided_scene(test::closed_box_scene(), 8, 64, 5, 2, 3, 12000,

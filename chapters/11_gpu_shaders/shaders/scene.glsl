@@ -151,6 +151,30 @@ WatertightRay make_watertight_ray(Ray ray) {
     return WatertightRay(kx, ky, kz, d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
 }
 
+// Below 2^-90, T = U z'_a + V z'_b + W z'_c (a product of three coordinates) may have been rounded among
+// float's subnormals, or flushed to zero as GPUs and llvmpipe do: chapter 02's kSmallestScaledDistance.
+const float kSmallestScaledDistance = 8.0779357e-28;
+
+// Chapter 02's watertight_hit_in_double: the products of floats are exact in double, so only the sums and
+// the quotient round, and a fused multiply-add changes nothing.
+float watertight_hit_in_double(vec3 e, vec3 x, vec3 y, vec3 z, float t_max, out vec2 barycentrics) {
+    const float det = e.x + e.y + e.z;
+    if (det == 0.0) return kInfinity;
+    const double t = (double(e.x) * double(z.x) + double(e.y) * double(z.y) + double(e.z) * double(z.z)) / double(det);
+    const double max_x = double(max(max(abs(x.x), abs(x.y)), abs(x.z)));
+    const double max_y = double(max(max(abs(y.x), abs(y.y)), abs(y.z)));
+    const double max_z = double(max(max(abs(z.x), abs(z.y)), abs(z.z)));
+    const double max_e = double(max(max(abs(e.x), abs(e.y)), abs(e.z)));
+    const double delta_z = double(gamma_bound(3)) * max_z;
+    const double delta_x = double(gamma_bound(5)) * (max_x + max_z), delta_y = double(gamma_bound(5)) * (max_y + max_z);
+    const double delta_e = 2.0 * (double(gamma_bound(2)) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    const double delta_t = 3.0 * (double(gamma_bound(3)) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs(1.0 / double(det));
+    if (!(t > delta_t && float(t) < t_max)) return kInfinity;
+    const float inverse = 1.0 / det;
+    barycentrics = vec2(e.y * inverse, e.z * inverse);
+    return float(t);
+}
+
 float intersect_triangle(Ray ray, WatertightRay s, vec3 p0, vec3 p1, vec3 p2, float t_max,
                          out vec2 barycentrics) {
     barycentrics = vec2(0.0);
@@ -171,6 +195,9 @@ float intersect_triangle(Ray ray, WatertightRay s, vec3 p0, vec3 p1, vec3 p2, fl
     if (det == 0.0) return kInfinity;
     const float az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
     const float t_scaled = u * az + v * bz + w * cz;
+    if (abs(t_scaled) < kSmallestScaledDistance)
+        return watertight_hit_in_double(vec3(u, v, w), vec3(ax, bx, cx), vec3(ay, by, cy), vec3(az, bz, cz), t_max,
+                                        barycentrics);
     if (det < 0.0 ? (t_scaled >= 0.0 || t_scaled < t_max * det) : (t_scaled <= 0.0 || t_scaled > t_max * det))
         return kInfinity;
     const float inverse = 1.0 / det;
