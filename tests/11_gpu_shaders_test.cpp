@@ -263,7 +263,7 @@ TEST_CASE("Shader rays through a shared diagonal always hit one of its triangles
 TEST_CASE("Shader triangles 1e-14 from the ray's origin are hit as chapter 02 hits them",
           "[gpu]" SHADER_EXERCISES "[stability][ex:ch02.slab_widening][ex:ch02.wide_bvh_traversal]") {
     // The scaled distance T, a product of three coordinates, is about 1e-42 here: a float subnormal, which
-    // llvmpipe and GPUs flush to zero. The shader then decides the hit in double, as chapter 02 does.
+    // GLSL lets a GPU flush to zero. The shader then decides the hit in double, as chapter 02 does.
     const Real a = Real(-4.65335803e-15), v = Real(-1.87248898e-14);
     const Ray diagonal{Vec3(a), glm::normalize(Vec3(-1))};
     const double corner_distance = (double(a) - double(v)) / -double(diagonal.direction.x);

@@ -152,7 +152,7 @@ WatertightRay make_watertight_ray(Ray ray) {
 }
 
 // Below 2^-90, T = U z'_a + V z'_b + W z'_c (a product of three coordinates) may have been rounded among
-// float's subnormals, or flushed to zero as GPUs and llvmpipe do: chapter 02's kSmallestScaledDistance.
+// float's subnormals, or flushed to zero (GLSL allows it): chapter 02's kSmallestScaledDistance.
 const float kSmallestScaledDistance = 8.0779357e-28;
 
 // Chapter 02's watertight_hit_in_double: the products of floats are exact in double, so only the sums and
