@@ -160,15 +160,18 @@ const float kSmallestScaledDistance = 8.0779357e-28;
 float watertight_hit_in_double(vec3 e, vec3 x, vec3 y, vec3 z, float t_max, out vec2 barycentrics) {
     const float det = e.x + e.y + e.z;
     if (det == 0.0) return kInfinity;
-    const double t = (double(e.x) * double(z.x) + double(e.y) * double(z.y) + double(e.z) * double(z.z)) / double(det);
+    const double t =
+        (double(e.x) * double(z.x) + double(e.y) * double(z.y) + double(e.z) * double(z.z)) / double(det);
     const double max_x = double(max(max(abs(x.x), abs(x.y)), abs(x.z)));
     const double max_y = double(max(max(abs(y.x), abs(y.y)), abs(y.z)));
     const double max_z = double(max(max(abs(z.x), abs(z.y)), abs(z.z)));
     const double max_e = double(max(max(abs(e.x), abs(e.y)), abs(e.z)));
     const double delta_z = double(gamma_bound(3)) * max_z;
-    const double delta_x = double(gamma_bound(5)) * (max_x + max_z), delta_y = double(gamma_bound(5)) * (max_y + max_z);
+    const double delta_x = double(gamma_bound(5)) * (max_x + max_z);
+    const double delta_y = double(gamma_bound(5)) * (max_y + max_z);
     const double delta_e = 2.0 * (double(gamma_bound(2)) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    const double delta_t = 3.0 * (double(gamma_bound(3)) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs(1.0 / double(det));
+    const double delta_t =
+        3.0 * (double(gamma_bound(3)) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs(1.0 / double(det));
     if (!(t > delta_t && float(t) < t_max)) return kInfinity;
     const float inverse = 1.0 / det;
     barycentrics = vec2(e.y * inverse, e.z * inverse);
