@@ -151,6 +151,19 @@ WatertightRay make_watertight_ray(Ray ray) {
     return WatertightRay(kx, ky, kz, d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]);
 }
 
+// Chapter 02's watertight_distance_bound: the bound δt on the rounding of t (PBRT 4 §6.8.7), from the largest
+// |x'|, |y'|, |z'| of the three vertices, the largest edge function and |1 / det|. One body for float and
+// double: the macro stands in for chapter 02's template.
+#define WATERTIGHT_DISTANCE_BOUND(T) \
+    T watertight_distance_bound(T max_x, T max_y, T max_z, T max_e, T inverse) { \
+        const T delta_z = T(gamma_bound(3)) * max_z; \
+        const T delta_x = T(gamma_bound(5)) * (max_x + max_z), delta_y = T(gamma_bound(5)) * (max_y + max_z); \
+        const T delta_e = T(2.0) * (T(gamma_bound(2)) * max_x * max_y + delta_y * max_x + delta_x * max_y); \
+        return T(3.0) * (T(gamma_bound(3)) * max_e * max_z + delta_e * max_z + delta_z * max_e) * inverse; \
+    }
+WATERTIGHT_DISTANCE_BOUND(float)
+WATERTIGHT_DISTANCE_BOUND(double)
+
 // Below 2^-90, T = U z'_a + V z'_b + W z'_c (a product of three coordinates) may have been rounded among
 // float's subnormals, or flushed to zero (GLSL allows it): chapter 02's kSmallestScaledDistance.
 const float kSmallestScaledDistance = 8.0779357e-28;
@@ -166,12 +179,7 @@ float watertight_hit_in_double(vec3 e, vec3 x, vec3 y, vec3 z, float t_max, out 
     const double max_y = double(max(max(abs(y.x), abs(y.y)), abs(y.z)));
     const double max_z = double(max(max(abs(z.x), abs(z.y)), abs(z.z)));
     const double max_e = double(max(max(abs(e.x), abs(e.y)), abs(e.z)));
-    const double delta_z = double(gamma_bound(3)) * max_z;
-    const double delta_x = double(gamma_bound(5)) * (max_x + max_z);
-    const double delta_y = double(gamma_bound(5)) * (max_y + max_z);
-    const double delta_e = 2.0 * (double(gamma_bound(2)) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-    const double delta_t =
-        3.0 * (double(gamma_bound(3)) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs(1.0 / double(det));
+    const double delta_t = watertight_distance_bound(max_x, max_y, max_z, max_e, abs(1.0 / double(det)));
     if (!(t > delta_t && float(t) < t_max)) return kInfinity;
     const float inverse = 1.0 / det;
     barycentrics = vec2(e.y * inverse, e.z * inverse);
@@ -208,11 +216,8 @@ float intersect_triangle(Ray ray, WatertightRay s, vec3 p0, vec3 p1, vec3 p2, fl
     const float max_z = max(max(abs(az), abs(bz)), abs(cz));
     const float max_x = max(max(abs(ax), abs(bx)), abs(cx));
     const float max_y = max(max(abs(ay), abs(by)), abs(cy));
-    const float delta_z = gamma_bound(3) * max_z;
-    const float delta_x = gamma_bound(5) * (max_x + max_z), delta_y = gamma_bound(5) * (max_y + max_z);
-    const float delta_e = 2.0 * (gamma_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
     const float max_e = max(max(abs(u), abs(v)), abs(w));
-    const float delta_t = 3.0 * (gamma_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e) * abs(inverse);
+    const float delta_t = watertight_distance_bound(max_x, max_y, max_z, max_e, abs(inverse));
     if (!(t > delta_t && t < t_max)) return kInfinity;
     barycentrics = vec2(v * inverse, w * inverse);
     return t;
