@@ -13,8 +13,11 @@
 // core is a small part of it), and counts the rays each lets escape from
 // the closed mesh. Both sides answer the same query: a nearest hit's distance, primitive and barycentrics
 // (World::nearest, rtcIntersect1), or whether anything is hit (World::occluded, rtcOccluded1); a last column
-// times the default World's nearest hits with their hit records (World::intersect), what a renderer asks. On one thread it also gives the ratio of the two engines' CPU times (the thread's own, which
-// other jobs on the machine do not lengthen). Built with Embree only when CMake finds it; otherwise `--embree` says so and stops.
+// times the default World's nearest hits with their hit records (World::intersect), what a renderer asks. On
+// one thread it also gives the ratio of the two engines' CPU times (the thread's own, which other jobs on the
+// machine do not lengthen). `--embree --walk-bound` times the walk alone, told each ray's hit distance and
+// with its leaves free: the most a faster triangle test could buy. Built with Embree only when CMake finds
+// it; otherwise `--embree` says so and stops.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -494,6 +497,75 @@ int compare_with_embree(int repeats, int ray_count, int max_exponent, bool build
     std::printf("  rays escaping the course's BVH: %s\n", watertight ? "none (met)" : "SOME (NOT MET)");
     return worst.rate >= kRateTarget && build_ratio <= kBuildTimeTarget && watertight ? 0 : 1;
 }
+
+// How fast the course could trace rays from inside if its leaves cost nothing. Told each ray's hit distance
+// in advance, the walk visits only the boxes entered before the hit, the fewest any nearest-first walk
+// visits, and its leaves are only counted: the rate no faster triangle test can exceed. Beside it, the same
+// walk with its leaves tested, the whole query and Embree's; one thread, each run's CPU time, in turn.
+int bound_the_walk(int repeats, int ray_count, int max_exponent) {
+    const InsideRays inside = make_inside_rays(std::size_t(ray_count), 11);
+    std::printf(
+        "Rays from inside (%d, nearest hit), one thread on core %d, Mrays/s on the thread's CPU time, the "
+        "median of %d runs in turn\n\n| triangles | the course | its walk alone, hit distance given, "
+        "leaves free | the same walk, leaves tested | Embree | walk alone / Embree | leaves per ray |\n"
+        "|---:|---:|---:|---:|---:|---:|---:|\n",
+        ray_count, core_of_worker(0), repeats);
+    double worst_bound = kInfinity;
+    for (int exponent = 3; exponent <= max_exponent; ++exponent) {
+        const int segments = int(std::lround(std::sqrt(std::pow(10.0, exponent))));
+        MeshShape mesh = make_uv_sphere(segments, segments / 2 + 1);
+        jitter_radii(mesh, Real(0.05), 5);
+        const World world(mesh_scene(mesh));
+        const EmbreeMesh embree(mesh, false);
+        const std::vector<Ray>& rays = inside.nearest;
+        std::vector<Real> hit_t;
+        for (const Ray& ray : rays) hit_t.push_back(world.nearest(ray).value_or(NearestHit{}).t);
+        std::size_t leaves = 0;  // counted, so that the walk alone is not optimised away
+        auto course = [&](std::size_t i) { leaves += world.nearest(rays[i]).has_value(); };
+        auto walk_alone = [&](std::size_t i) {
+            Real t_max = hit_t[i];
+            world.wide_bvh().traverse(make_wide_ray(rays[i]), t_max, false, [&](auto, auto, Real&) {
+                ++leaves;
+                return false;
+            });
+        };
+        auto walk_and_leaves = [&](std::size_t i) {
+            leaves += world.nearest(rays[i], std::nextafter(hit_t[i], kInfinity)).has_value();
+        };
+        auto embree_query = [&](std::size_t i) {
+            leaves += embree.intersect(rays[i], kInfinity).has_value();
+        };
+        std::vector<double> cpu[4];
+        auto time = [&](int q, auto&& query) {
+            const double start = thread_cpu_seconds();
+            int passes = 0;
+            do {
+                for (std::size_t i = 0; i < rays.size(); ++i) query(i);
+                ++passes;
+            } while (thread_cpu_seconds() - start < kShortestRunSeconds);
+            cpu[q].push_back((thread_cpu_seconds() - start) / passes);
+        };
+        const CoreHold hold(0);
+        for (int r = 0; r < repeats; ++r) {
+            time(0, course);
+            time(1, walk_alone);
+            time(2, walk_and_leaves);
+            time(3, embree_query);
+        }
+        leaves = 0;
+        for (std::size_t i = 0; i < rays.size(); ++i) walk_alone(i);
+        double rate[4];
+        for (int q = 0; q < 4; ++q) rate[q] = double(rays.size()) / median(cpu[q]) * 1e-6;
+        std::printf("| %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", mesh.triangles.size(), rate[0],
+                    rate[1], rate[2], rate[3], rate[1] / rate[3], double(leaves) / double(rays.size()));
+        std::fflush(stdout);
+        worst_bound = std::min(worst_bound, rate[1] / rate[3]);
+    }
+    std::printf("\n  the walk alone / Embree, worst: %.2f: %s\n", worst_bound,
+                worst_bound >= kRateTarget ? "a faster triangle test could reach the target on these rows"
+                                           : "below the target before any triangle is tested");
+    return 0;
+}
 #endif
 
 // The figures of one mesh size that the targets are judged on.
@@ -632,10 +704,17 @@ int main(int argc, char** argv) {
     app.add_flag("--builds-only", builds_only,
                  "With --embree: only the build table (times and bytes), no rays")
         ->needs("--embree");
+    bool walk_bound = false;
+    app.add_flag("--walk-bound", walk_bound,
+                 "With --embree: rays from inside only, the walk alone (hit distance given, leaves free) "
+                 "against Embree")
+        ->needs("--embree")
+        ->excludes("--builds-only");
     CLI11_PARSE(app, argc, argv);
     if (embree) {
 #ifdef RT_HAVE_EMBREE
-        return compare_with_embree(repeats, ray_count, max_exponent, builds_only);
+        return walk_bound ? bound_the_walk(repeats, ray_count, max_exponent)
+                          : compare_with_embree(repeats, ray_count, max_exponent, builds_only);
 #else
         std::printf("ch02_benchmark --embree: skipped, built without Embree 3 (install libembree-dev and "
                     "configure again: CMake then finds it)\n");
