@@ -18,6 +18,8 @@
 // machine do not lengthen). `--embree --walk-bound` times the walk alone, told each ray's hit distance and
 // with its leaves free: the most a faster triangle test could buy. Built with Embree only when CMake finds
 // it; otherwise `--embree` says so and stops.
+#include <sched.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -30,14 +32,13 @@
 #include <thread>
 #include <vector>
 
-#include <sched.h>
-
 #include "01_ray_generation/camera.hpp"
 #include "leak_probe.hpp"
 #include "mesh_generator.hpp"
-#include "rt/core/random.hpp"
-#include "world.hpp"
 #include "rt/core/median.hpp"
+#include "rt/core/random.hpp"
+#include "rt/run/strict_flags.hpp"
+#include "world.hpp"
 #ifdef RT_HAVE_EMBREE
 #include "embree_mesh.hpp"
 #endif
@@ -710,7 +711,7 @@ int main(int argc, char** argv) {
                  "against Embree")
         ->needs("--embree")
         ->excludes("--builds-only");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     if (embree) {
 #ifdef RT_HAVE_EMBREE
         return walk_bound ? bound_the_walk(repeats, ray_count, max_exponent)

@@ -13,6 +13,7 @@
 #include "intersection_render.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 #include "world.hpp"
 
 namespace {
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
     app.add_option("--reference", reference_spp, "Samples per pixel of each aperture's reference")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--threads", threads, "Threads (0: every core)")->check(CLI::Range(0, 1024));
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
 
     Scene scene = load_scene(scene_path("ch01_thin_lens.json"));
     const World world(scene, WorldOptions{});

@@ -25,6 +25,7 @@
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -126,7 +127,7 @@ int main(int argc, char** argv) {
     app.add_option("--sampling", sampling, "uniform|cosine|brdf|light|mis")
         ->check(choices<SamplingStrategy>());
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         const Scene scene = load_scene(scene_file);
         const RenderScene prepared(scene, EffectSet::all());

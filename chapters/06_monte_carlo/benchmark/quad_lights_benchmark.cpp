@@ -24,6 +24,7 @@
 #include "rt/core/random.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -69,7 +70,7 @@ int main(int argc, char** argv) {
     app.add_option("--cost-samples", cost_samples, "Samples per cost run")->check(CLI::Range(1, 1 << 30));
     app.add_option("--cache", cache, "Folder of the cached reference PFMs");
     app.add_option("--target", target, "The relative MSE to reach")->check(CLI::Range(1e-8, 1.0));
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         std::vector<double> ns[2];
         for (int r = 0; r < repeats; ++r)

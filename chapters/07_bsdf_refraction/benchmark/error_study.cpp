@@ -28,13 +28,14 @@
 #include "bsdf_render.hpp"
 #include "path_parts.hpp"
 #include "reference_halves.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/false_colour.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     app.add_option("--error-png", error_png,
                    "Write the per-pixel relative squared error (false colour, log10 from 1e-5 to 10) there");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         run(scene, size, spp, reference_spp, threads, repeats, target, cache, error_png);
     } catch (const std::exception& e) {

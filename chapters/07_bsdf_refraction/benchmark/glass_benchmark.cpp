@@ -23,11 +23,12 @@
 #include "06_monte_carlo/path_tracer.hpp"
 #include "bsdf_render.hpp"
 #include "reference_halves.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/image_io.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
     bool speed_only = false;
     app.add_flag("--speed-only", speed_only, "Only the samples per second");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         run(size, spp, repeats, threads, conv_size, reference_spp, max_spp, target, cache, speed_only, conv_scene);
     } catch (const std::exception& e) {

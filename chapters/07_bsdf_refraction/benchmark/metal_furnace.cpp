@@ -10,13 +10,14 @@
 
 #include "conductor.hpp"
 #include "rt/core/random.hpp"
+#include "rt/run/strict_flags.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
     CLI::App app{"ch07_metal_furnace: the albedo of a rough perfect reflector, by roughness and angle"};
     int samples = 1000000;
     app.add_option("--samples", samples, "Samples per albedo")->check(CLI::Range(100, 100000000));
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
 
     const Vec3 n{0, 0, 1};
     const double angles[] = {0, 45, 70, 85};

@@ -27,6 +27,7 @@
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -180,7 +181,7 @@ int main(int argc, char** argv) {
     app.add_option("--samplers", samplers, "The samplers to try")
         ->check(choices<PointSet>());
     app.add_option("--cache", cache, "Folder of the cached reference PFMs")->check(CLI::ExistingDirectory);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
 
     try {
         SceneBenchmark box(size, threads, reference_spp, cache);

@@ -5,32 +5,48 @@
 // estimator's relative MSE falls as 1 / time, so time to 10⁻³ = seconds × relative MSE / 10⁻³; the table
 // gives each strategy's median. Not a test: `ch09_distance_benchmark [scene] [size] [spp] [reference spp]
 // [runs]`.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
-#include "rt/io/effects.hpp"
 #include "rt/core/error_metrics.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 #include "volume_path_tracer.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
-    const std::string file = argc > 1 ? argv[1] : "ch09_thin_fog.json";
-    const int size = argc > 2 ? std::atoi(argv[2]) : 64;
-    const int spp = argc > 3 ? std::atoi(argv[3]) : 16;
-    const int reference_spp = argc > 4 ? std::atoi(argv[4]) : 4096;
-    const int runs = argc > 5 ? std::atoi(argv[5]) : 5;
-    const double density = argc > 6 ? std::atof(argv[6]) : 1;
-    Scene scene = load_scene(scene_path(file.c_str()));
+    std::string file = "ch09_thin_fog.json", surfaces = "as given";
+    int size = 64, spp = 16, reference_spp = 4096, runs = 5;
+    double density = 1;
+    CLI::App app("ch09_distance_benchmark: time to a relative MSE of 1e-3 for each distance sampling");
+    app.option_defaults()->always_capture_default();
+    app.add_option("scene", file, "A scene of assets/scenes");
+    app.add_option("size", size, "Image width and height")->check(CLI::Range(1, 4096));
+    app.add_option("spp", spp, "Samples per pixel of each run")->check(CLI::Range(1, 1 << 20));
+    app.add_option("reference-spp", reference_spp, "Samples per pixel of the reference")
+        ->check(CLI::Range(2, 1 << 24));
+    app.add_option("runs", runs, "Alternating runs of each strategy")->check(CLI::Range(1, 99));
+    app.add_option("density", density, "The fog's coefficients scaled by this")->check(CLI::PositiveNumber);
+    app.add_option("surfaces", surfaces, "black: every surface that does not emit made black")
+        ->check(CLI::IsMember({"as given", "black"}));
+    if (const auto stop = read_flags(app, argc, argv)) return *stop;
+    Scene scene;
+    try {
+        scene = load_scene(scene_path(file.c_str()));
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "ch09_distance_benchmark: %s\n", e.what());
+        return kExitBadInput;
+    }
     if (scene.medium) {
         scene.medium->sigma_a *= Real(density);
         scene.medium->sigma_s *= Real(density);
     }
-    const bool black = argc > 7 && std::string(argv[7]) == "black";
+    const bool black = surfaces == "black";
     if (black)
         for (Material& m : scene.materials)
             if (m.emission == Color(0)) m.albedo = Color(0);

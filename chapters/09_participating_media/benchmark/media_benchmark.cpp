@@ -3,25 +3,30 @@
 // scene (what the hand-over saves), in turn, the order rotated each run; medians of the times, and of each
 // run's ratios to chapter 07 (the renders of a run are close in time, so the machine's drift cancels).
 // Not a test: `ch09_benchmark [runs] [size] [spp]`.
+#include <CLI/CLI.hpp>
 #include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "01_ray_generation/camera.hpp"
 #include "04_direct_lighting/render_scene.hpp"
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "media_materials.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 #include "volume_path_tracer.hpp"
 
 int main(int argc, char** argv) {
     using namespace rt;
-    const int runs = argc > 1 ? std::atoi(argv[1]) : 7;
-    const int size = argc > 2 ? std::atoi(argv[2]) : 200;
-    const int spp = argc > 3 ? std::atoi(argv[3]) : 16;
+    int runs = 7, size = 200, spp = 16;
+    CLI::App app("ch09_benchmark: what media cost a scene without them (cornell.json)");
+    app.option_defaults()->always_capture_default();
+    app.add_option("runs", runs, "Alternating runs of each render")->check(CLI::Range(1, 99));
+    app.add_option("size", size, "Image width and height")->check(CLI::Range(1, 4096));
+    app.add_option("spp", spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
+    if (const auto stop = read_flags(app, argc, argv)) return *stop;
     const Scene scene = load_scene(scene_path("cornell.json"));
     RenderSettings settings;
     settings.width = settings.height = size;

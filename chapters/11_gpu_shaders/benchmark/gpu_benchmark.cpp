@@ -16,11 +16,12 @@
 #include "07_bsdf_refraction/bsdf_render.hpp"
 #include "gl_context.hpp"
 #include "gpu_render.hpp"
-#include "rt/io/effects.hpp"
 #include "rt/core/median.hpp"
 #include "rt/flags/enum_flag.hpp"
 #include "rt/io/assets.hpp"
+#include "rt/io/effects.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -71,7 +72,7 @@ int main(int argc, char** argv) {
     app.add_option("--threads", threads, "The C++ renderer's threads")->check(CLI::Range(1, 1024));
     app.add_option("--egl", egl, "EGL platform: auto|surfaceless|device")
         ->check(choices<EglPlatform>());
-    CLI11_PARSE(app, argc, argv);
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         const GlContext gl(from_string<EglPlatform>(egl));
         const char* lp_threads = std::getenv("LP_NUM_THREADS");

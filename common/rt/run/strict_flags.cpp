@@ -3,9 +3,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <string>
 #include <string_view>
 
+#include "rt/core/errors.hpp"
 #include "rt/core/printable.hpp"
 #include "rt/core/whole_number.hpp"
 
@@ -58,6 +61,20 @@ void make_values_strict(CLI::App& app) {
         }
         option->transform(CLI::Validator(check, ""), "STRICT");
     }
+}
+
+std::optional<int> read_flags(CLI::App& app, int argc, char** argv) {
+    make_values_strict(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        const std::string program = std::filesystem::path(argc > 0 ? argv[0] : "").filename().string();
+        std::fprintf(stderr, "%s: usage: %s (see --help)\n", program.c_str(), printable(e.what()).c_str());
+        return kExitBadInput;
+    }
+    return std::nullopt;
 }
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 namespace rt {
@@ -18,5 +19,10 @@ CLI::Validator power_of_two();
 //  - text (TEXT, a file name or a choice): not empty.
 // Call it once every option has been added, before parsing.
 void make_values_strict(CLI::App& app);
+
+// Reads the command line of a program that is not a chapter (a benchmark), strictly. Returns the exit status
+// when the program stops there: 0 after --help, kExitBadInput after a bad flag, with one line on stderr,
+// "<program>: usage: <what is wrong> (see --help)", as a chapter says it.
+std::optional<int> read_flags(CLI::App& app, int argc, char** argv);
 
 }  // namespace rt
