@@ -10,6 +10,7 @@
 #include "rt/core/printable.hpp"
 #include "rt/io/pbrt_reader.hpp"
 #include "rt/io/scene_loader.hpp"
+#include "rt/run/strict_flags.hpp"
 
 namespace {
 
@@ -55,11 +56,7 @@ int main(int argc, char** argv) {
     CLI::App app("Translates a pbrt-v4 scene into the course's scene JSON and prints it", "rt_scene");
     std::string file;
     app.add_option("--to-json", file, "The pbrt-v4 scene file")->required();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
-    }
+    if (const auto stop = rt::read_flags(app, argc, argv)) return *stop;
     try {
         if (!rt::is_pbrt_file(file)) throw rt::InputError(rt::shown(file) + ": must be a pbrt-v4 scene (a name ending in .pbrt)");
         const rt::PbrtTranslation translation = rt::translate_pbrt(file);

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
-# benchmark_flags.sh BENCHMARK...: every benchmark program refuses a flag it does not know, and a few refuse
-# values a run cannot take (no runs, an image of no pixels, a missing scene), as a chapter does: exit status 2
-# and one line, before any work, with nothing written.
+# program_flags.sh PROGRAM...: the programs that are not chapters (the benchmarks, rt_scene) refuse a flag
+# they do not know, and some refuse values a run cannot take (no runs, an image of no pixels, a missing
+# scene), as a chapter does: exit status 2 and one line, before any work, with nothing written.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/lib.sh"
 scenes=$(cd "$here/../../assets/scenes" && pwd)
 
 for exe in "$@"; do
     n=$(basename "$exe")
-    expect_bad_input "$n --bogus" "$n: usage: The following argument was not expected: --bogus (see --help)" 0 \
-        -- "$exe" --bogus
+    unexpected="The following argument was not expected: --bogus"
+    [ "$n" = rt_scene ] && unexpected="--to-json is required"
+    expect_bad_input "$n --bogus" "$n: usage: $unexpected (see --help)" 0 -- "$exe" --bogus
     case "$n" in
+        rt_scene)
+            expect_bad_input "$n --to-json" "$n: usage: --to-json: 1 required TEXT missing (see --help)" 0 \
+                -- "$exe" --to-json ;;
         ch02_benchmark)
             expect_bad_input "$n --repeats 0" "$n: usage: --repeats: Value 0 not in range 1 to 99 (see --help)" 0 \
                 -- "$exe" --repeats 0
@@ -30,4 +34,4 @@ for exe in "$@"; do
     esac
 done
 [ "$failures" -eq 0 ] || exit 1
-echo "$# benchmarks: bad flags refused with exit 2 and one line"
+echo "$# programs: bad flags refused with exit 2 and one line"
