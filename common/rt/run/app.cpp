@@ -153,17 +153,7 @@ std::optional<int> read_command_line(CLI::App& app, RunFlags& flags, const Chapt
     add_live_flags(app, flags.live);
     for (const CLI::Option* option : app.get_options()) flags.core_flags.insert(option->get_name());
     if (add_flags) add_flags(app);
-    make_values_strict(app);
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        throw InputError(std::string("usage: ") + e.what() + " (see --help)");
-    }
-    return std::nullopt;
+    return parse_strictly(app, argc, argv);
 }
 
 // Refuses flags that cannot go together: the live view (which renders whole, in one process, and writes

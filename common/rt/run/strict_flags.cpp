@@ -63,18 +63,28 @@ void make_values_strict(CLI::App& app) {
     }
 }
 
-std::optional<int> read_flags(CLI::App& app, int argc, char** argv) {
+std::optional<int> parse_strictly(CLI::App& app, int argc, char** argv) {
     make_values_strict(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        const std::string program = std::filesystem::path(argc > 0 ? argv[0] : "").filename().string();
-        std::fprintf(stderr, "%s: usage: %s (see --help)\n", program.c_str(), printable(e.what()).c_str());
-        return kExitBadInput;
+        throw InputError(std::string("usage: ") + e.what() + " (see --help)");
     }
     return std::nullopt;
+}
+
+std::optional<int> read_flags(CLI::App& app, int argc, char** argv) {
+    try {
+        return parse_strictly(app, argc, argv);
+    } catch (const InputError& e) {
+        const std::string program = std::filesystem::path(argc > 0 ? argv[0] : "").filename().string();
+        std::fprintf(stderr, "%s: %s\n", program.c_str(), printable(e.what()).c_str());
+        return kExitBadInput;
+    }
 }
 
 }  // namespace rt

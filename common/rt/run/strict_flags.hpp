@@ -20,9 +20,13 @@ CLI::Validator power_of_two();
 // Call it once every option has been added, before parsing.
 void make_values_strict(CLI::App& app);
 
-// Reads the command line of a program that is not a chapter (a benchmark), strictly. Returns the exit status
-// when the program stops there: 0 after --help, kExitBadInput after a bad flag, with one line on stderr,
-// "<program>: usage: <what is wrong> (see --help)", as a chapter says it.
+// Reads the command line into `app`'s options, once every option has been added, made strict first. Returns
+// the exit status when the command line asked for help instead of a run; throws an InputError,
+// "usage: <what is wrong> (see --help)", for a bad flag.
+std::optional<int> parse_strictly(CLI::App& app, int argc, char** argv);
+
+// The same for a program that is not a chapter (a benchmark, rt_scene): a bad flag is printed as one line,
+// "<program>: usage: ...", as a chapter prints it, and returns kExitBadInput.
 std::optional<int> read_flags(CLI::App& app, int argc, char** argv);
 
 }  // namespace rt
