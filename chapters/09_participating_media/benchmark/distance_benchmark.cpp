@@ -4,7 +4,7 @@
 // then the five strategies rendered alternately, `runs` times each at `spp` on one thread. An unbiased
 // estimator's relative MSE falls as 1 / time, so time to 10⁻³ = seconds × relative MSE / 10⁻³; the table
 // gives each strategy's median. Not a test: `ch09_distance_benchmark [scene] [size] [spp] [reference spp]
-// [runs]`.
+// [runs] [density] [black]` (`--help` gives the defaults).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <string>
