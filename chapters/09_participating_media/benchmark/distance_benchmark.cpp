@@ -18,23 +18,51 @@
 #include "rt/run/strict_flags.hpp"
 #include "volume_path_tracer.hpp"
 
-int main(int argc, char** argv) {
-    using namespace rt;
-    std::string file = "ch09_thin_fog.json", surfaces = "as given";
+namespace {
+
+using namespace rt;
+
+// The positional arguments, in order, with their defaults.
+struct Arguments {
+    std::string file = "ch09_thin_fog.json";
     int size = 64, spp = 16, reference_spp = 4096, runs = 5;
     double density = 1;
-    CLI::App app("ch09_distance_benchmark: time to a relative MSE of 1e-3 for each distance sampling");
+    std::string surfaces = "as given";
+};
+
+void add_arguments(CLI::App& app, Arguments& a) {
     app.option_defaults()->always_capture_default();
-    app.add_option("scene", file, "A scene of assets/scenes");
-    app.add_option("size", size, "Image width and height")->check(CLI::Range(1, 4096));
-    app.add_option("spp", spp, "Samples per pixel of each run")->check(CLI::Range(1, 1 << 20));
-    app.add_option("reference-spp", reference_spp, "Samples per pixel of the reference")
+    app.add_option("scene", a.file, "A scene of assets/scenes");
+    app.add_option("size", a.size, "Image width and height")->check(CLI::Range(1, 4096));
+    app.add_option("spp", a.spp, "Samples per pixel of each run")->check(CLI::Range(1, 1 << 20));
+    app.add_option("reference-spp", a.reference_spp, "Samples per pixel of the reference")
         ->check(CLI::Range(2, 1 << 24));
-    app.add_option("runs", runs, "Alternating runs of each strategy")->check(CLI::Range(1, 99));
-    app.add_option("density", density, "The fog's coefficients scaled by this")->check(CLI::PositiveNumber);
-    app.add_option("surfaces", surfaces, "black: every surface that does not emit made black")
+    app.add_option("runs", a.runs, "Alternating runs of each strategy")->check(CLI::Range(1, 99));
+    app.add_option("density", a.density, "The fog's coefficients scaled by this")->check(CLI::PositiveNumber);
+    app.add_option("surfaces", a.surfaces, "black: every surface that does not emit made black")
         ->check(CLI::IsMember({"as given", "black"}));
+}
+
+// The scene as measured: its fog's coefficients scaled by `density`, and with `black`, every surface that
+// does not emit made black.
+void adjust_scene(Scene& scene, double density, bool black) {
+    if (scene.medium) {
+        scene.medium->sigma_a *= Real(density);
+        scene.medium->sigma_s *= Real(density);
+    }
+    if (black)
+        for (Material& m : scene.materials)
+            if (m.emission == Color(0)) m.albedo = Color(0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Arguments arguments;
+    CLI::App app("ch09_distance_benchmark: time to a relative MSE of 1e-3 for each distance sampling");
+    add_arguments(app, arguments);
     if (const auto stop = read_flags(app, argc, argv)) return *stop;
+    const auto& [file, size, spp, reference_spp, runs, density, surfaces] = arguments;
     Scene scene;
     try {
         scene = load_scene(scene_path(file.c_str()));
@@ -42,14 +70,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "ch09_distance_benchmark: %s\n", e.what());
         return kExitBadInput;
     }
-    if (scene.medium) {
-        scene.medium->sigma_a *= Real(density);
-        scene.medium->sigma_s *= Real(density);
-    }
     const bool black = surfaces == "black";
-    if (black)
-        for (Material& m : scene.materials)
-            if (m.emission == Color(0)) m.albedo = Color(0);
+    adjust_scene(scene, density, black);
     const EffectSet simulated = needed(scene) & EffectSet::all();
     const Renderer renderer = choose_renderer(simulated);
     RenderSettings settings;
